@@ -1,0 +1,1 @@
+set(TL_CORE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_error.c)

@@ -1,0 +1,1 @@
+set(TL_IMAGE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_frame.c)

@@ -1,0 +1,25 @@
+/* tl_frame: one rendered frame in CPU memory.
+ *
+ * Rows are stored top row first (image order, as EXR and PNG want them);
+ * the renderer flips GL's bottom-up rows when it reads back. */
+#ifndef TL_FRAME_H
+#define TL_FRAME_H
+
+#include "core/tl_error.h"
+
+/* Depth written where a view ray hits nothing (sky): a large finite
+ * distance in metres, so that no Inf ever reaches a file. */
+#define TL_FRAME_SKY_DEPTH 1.0e10f
+
+typedef struct tl_frame {
+    int width, height;
+    float *color;   /* width*height*4: linear scene-referred RGBA */
+    float *depth;   /* width*height: distance along the view ray, metres */
+    float *display; /* width*height*4: tonemapped, sRGB-encoded RGBA in [0,1] */
+} tl_frame;
+
+/* Allocates all three planes, zero-filled. */
+int tl_frame_alloc(tl_frame *frame, int width, int height, tl_error *err);
+void tl_frame_free(tl_frame *frame);
+
+#endif

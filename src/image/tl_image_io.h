@@ -1,0 +1,76 @@
+/* tl_image_io: writing (and, for tests and resume, reading) frame files.
+ *
+ * EXR: linear scene-referred half RGBA plus a 32-bit float Z channel
+ *      (distance along the view ray), ZIP compression, through OpenEXR's
+ *      C API (OpenEXRCore). Metadata entries become header attributes.
+ * PNG: the frame's tonemapped `display` plane, 8- or 16-bit sRGB (libpng).
+ *
+ * Every write is atomic: the bytes go to a temporary file in the target's
+ * folder, which is flushed, fsync'd and renamed over the target only when
+ * complete. On any failure the temporary file is removed and an existing
+ * target is left untouched. */
+#ifndef TL_IMAGE_IO_H
+#define TL_IMAGE_IO_H
+
+#include <stdbool.h>
+
+#include "core/tl_error.h"
+#include "image/tl_frame.h"
+
+typedef enum tl_image_format {
+    TL_IMAGE_UNKNOWN = 0,
+    TL_IMAGE_EXR,
+    TL_IMAGE_PNG,
+} tl_image_format;
+
+typedef enum tl_meta_type { TL_META_STRING, TL_META_DOUBLE, TL_META_INT } tl_meta_type;
+
+/* One EXR header attribute. PNG writes strings as tEXt chunks, numbers
+ * printed with %.17g. */
+typedef struct tl_meta {
+    const char *name; /* e.g. "tideline/frame" */
+    tl_meta_type type;
+    const char *s;
+    double d;
+    int i;
+} tl_meta;
+
+typedef struct tl_image_options {
+    int png_bits;          /* 8 (default when 0) or 16 */
+    const tl_meta *meta;   /* may be NULL */
+    int meta_count;
+} tl_image_options;
+
+/* Format from the path's extension (case-insensitive .exr / .png). */
+tl_image_format tl_image_format_from_path(const char *path);
+
+/* Checks, before any rendering, that `path` could be written: a known
+ * extension, an existing folder that we may create files in, and not a
+ * folder itself. The message names the path. */
+int tl_image_check_writable(const char *path, tl_error *err);
+
+/* Writes frame to path atomically, in the format of path's extension. */
+int tl_image_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
+                   tl_error *err);
+
+int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
+                 tl_error *err);
+int tl_png_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
+                 tl_error *err);
+
+/* Reads an EXR written by tl_exr_write into a freshly allocated frame
+ * (color and depth filled; display left zero). Any scanline EXR with
+ * R,G,B[,A] (half or float) and optional Z is accepted. */
+int tl_exr_read(const char *path, tl_frame *frame, tl_error *err);
+
+/* Reads one string/double/int attribute from an EXR header (tests). */
+int tl_exr_read_attr_string(const char *path, const char *name, char *out, int out_size,
+                            tl_error *err);
+int tl_exr_read_attr_double(const char *path, const char *name, double *out,
+                            tl_error *err);
+
+/* Reads a PNG (8- or 16-bit RGB/RGBA) into frame->display as values in
+ * [0,1]; *bits_out (may be NULL) receives the bit depth. */
+int tl_png_read(const char *path, tl_frame *frame, int *bits_out, tl_error *err);
+
+#endif

@@ -1,0 +1,1 @@
+set(TL_PREPARE_SOURCES)

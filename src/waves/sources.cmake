@@ -1,0 +1,1 @@
+set(TL_WAVES_SOURCES)
