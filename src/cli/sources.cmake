@@ -1,1 +1,4 @@
-set(TL_CLI_SOURCES)
+set(TL_CLI_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/tl_args.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_common.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_still.c)

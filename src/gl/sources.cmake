@@ -1,1 +1,1 @@
-set(TL_GL_SOURCES)
+set(TL_GL_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_gl_context.c ${CMAKE_CURRENT_LIST_DIR}/tl_renderer.c)

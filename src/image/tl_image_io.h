@@ -49,6 +49,11 @@ tl_image_format tl_image_format_from_path(const char *path);
  * folder itself. The message names the path. */
 int tl_image_check_writable(const char *path, tl_error *err);
 
+/* Checks opt's metadata entries (a name of 1..255 bytes, a known type, a
+ * string value for strings); the writers call it before creating a file.
+ * The message names the path. */
+int tl_image_check_meta(const char *path, const tl_image_options *opt, tl_error *err);
+
 /* Writes frame to path atomically, in the format of path's extension. */
 int tl_image_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
                    tl_error *err);

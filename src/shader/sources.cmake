@@ -1,1 +1,1 @@
-set(TL_SHADER_SOURCES)
+set(TL_SHADER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_shader_lib.c)

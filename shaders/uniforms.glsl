@@ -1,0 +1,39 @@
+// Frame uniforms shared by every program (filled by tl_prepare on the CPU).
+// Nothing here holds an absolute time or an absolute horizontal position:
+// x and z are relative to the camera, and per-octave phases are reduced on
+// the CPU in double.
+
+uniform vec2 u_resolution;      // pixels
+uniform vec3 u_cam_right;
+uniform vec3 u_cam_up;
+uniform vec3 u_cam_forward;
+uniform float u_tan_half_vfov;
+uniform float u_cam_height;     // absolute world y of the camera (metres)
+
+uniform vec2 u_radial_dir;      // unit xz direction of the camera from the origin
+uniform float u_radial_len;     // its distance from the origin (metres)
+uniform float u_radial_phase;   // phase per metre of distance from the origin
+
+uniform vec4 u_wave[TL_MAX_OCTAVES];        // (dir.x, dir.z, frequency, phase offset)
+uniform float u_wave_weight[TL_MAX_OCTAVES];
+uniform float u_drag;
+uniform float u_depth;
+
+uniform int u_march_octaves;
+uniform int u_normal_octaves;
+uniform int u_march_steps;
+uniform float u_hit_epsilon;
+uniform float u_normal_epsilon;
+
+uniform vec3 u_sun_dir;
+uniform float u_sun_intensity;
+uniform float u_sun_sharpness;
+uniform float u_sky_brightness;
+
+uniform float u_fresnel_f0;
+uniform vec3 u_scatter_color;
+uniform float u_scatter_strength;
+uniform float u_scatter_base;
+uniform float u_normal_smooth_max;
+uniform float u_normal_smooth_rate;
+uniform float u_normal_smooth_gain;

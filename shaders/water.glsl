@@ -1,0 +1,30 @@
+// Water shading: normal from the many-octave height field, distance
+// smoothing, Schlick Fresnel reflection of the sky, depth scattering.
+
+vec3 water_normal(vec2 p, float e)
+{
+    float h = waves_value(p, u_normal_octaves) * u_depth;
+    float hx = waves_value(p - vec2(e, 0.0), u_normal_octaves) * u_depth;
+    float hz = waves_value(p + vec2(0.0, e), u_normal_octaves) * u_depth;
+    vec3 a = vec3(p.x, h, p.y);
+    return normalize(cross(a - vec3(p.x - e, hx, p.y), a - vec3(p.x, hz, p.y + e)));
+}
+
+vec3 water_color(vec3 ray, vec3 hit, float dist)
+{
+    vec3 n = water_normal(hit.xz, u_normal_epsilon);
+    // Far away the normal's detail is below a pixel; blending toward "up"
+    // removes the shimmer the reference also suppresses this way.
+    float smoothing = u_normal_smooth_max *
+                      min(1.0, sqrt(dist * u_normal_smooth_rate) * u_normal_smooth_gain);
+    n = normalize(mix(n, vec3(0.0, 1.0, 0.0), smoothing));
+
+    float fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
+    vec3 r = normalize(reflect(ray, n));
+    r.y = abs(r.y); // reflections never look into the water
+    vec3 reflection = sky_color(r);
+    // Thicker water in the troughs scatters more blue-green light.
+    vec3 scattering = u_scatter_color * u_scatter_strength *
+                      (u_scatter_base + (hit.y + u_depth) / u_depth);
+    return fresnel * reflection + scattering;
+}

@@ -1,0 +1,374 @@
+#include "tl_renderer.h"
+
+#include <epoxy/gl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_PROGRAMS 16
+
+typedef struct cached_program {
+    unsigned features;
+    GLuint program;
+} cached_program;
+
+/* A framebuffer with float colour attachments of one size. */
+typedef struct target {
+    GLuint fbo;
+    GLuint tex[2];
+    int attachments;
+    int width, height;
+} target;
+
+struct tl_renderer {
+    tl_shader_lib lib;
+    GLuint vao;
+    cached_program programs[MAX_PROGRAMS];
+    int program_count;
+    GLuint present_program;
+    GLuint probe_program;
+    target scene;   /* colour RGBA32F + depth R32F */
+    target display; /* tonemapped RGBA32F */
+};
+
+static int gl_check(const char *what, tl_error *err)
+{
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR)
+        return tl_error_set(err, TL_ERR_RUNTIME, "OpenGL error 0x%04x during %s", e, what);
+    return TL_OK;
+}
+
+static GLuint compile_stage(GLenum stage, const tl_shader_source *src, tl_error *err)
+{
+    GLuint s = glCreateShader(stage);
+    const char *text = src->text;
+    glShaderSource(s, 1, &text, NULL);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = "";
+        glGetShaderInfoLog(s, sizeof log, NULL, log);
+        char *annotated = tl_shader_annotate_log(src, log);
+        tl_error_set(err, TL_ERR_RUNTIME, "shader %s failed to compile:\n%s", src->files[0],
+                     annotated ? annotated : log);
+        free(annotated);
+        glDeleteShader(s);
+        return 0;
+    }
+    return s;
+}
+
+/* Builds vertex `vs` + fragment `fs` with the given #defines. */
+static GLuint build_program(tl_renderer *r, const char *vs, const char *fs, const char *defines,
+                            tl_error *err)
+{
+    tl_shader_source vsrc, fsrc;
+    if (tl_shader_compose(&r->lib, vs, defines, &vsrc, err))
+        return 0;
+    if (tl_shader_compose(&r->lib, fs, defines, &fsrc, err)) {
+        tl_shader_source_free(&vsrc);
+        return 0;
+    }
+    GLuint v = compile_stage(GL_VERTEX_SHADER, &vsrc, err);
+    GLuint f = v ? compile_stage(GL_FRAGMENT_SHADER, &fsrc, err) : 0;
+    tl_shader_source_free(&vsrc);
+    tl_shader_source_free(&fsrc);
+    if (!v || !f) {
+        if (v)
+            glDeleteShader(v);
+        return 0;
+    }
+    GLuint p = glCreateProgram();
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    glLinkProgram(p);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = "";
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+        tl_error_set(err, TL_ERR_RUNTIME, "shader program %s failed to link:\n%s", fs, log);
+        glDeleteProgram(p);
+        return 0;
+    }
+    return p;
+}
+
+/* The #defines every program shares, plus one per feature bit. */
+static void make_defines(unsigned features, char *out, size_t size)
+{
+    int n = snprintf(out, size,
+                     "#define TL_MAX_OCTAVES %d\n"
+                     "#define TL_SKY_DEPTH %.1f\n"
+                     "#define TL_FAR 1.0e7\n",
+                     TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH);
+    if (n > 0 && (size_t)n < size && (features & TL_FEATURE_SUN_DISC))
+        snprintf(out + n, size - (size_t)n, "#define TL_FEATURE_SUN_DISC 1\n");
+}
+
+static GLuint ocean_program(tl_renderer *r, unsigned features, tl_error *err)
+{
+    for (int i = 0; i < r->program_count; i++)
+        if (r->programs[i].features == features)
+            return r->programs[i].program;
+    char defines[512];
+    make_defines(features, defines, sizeof defines);
+    GLuint p = build_program(r, "fullscreen.vert", "ocean.frag", defines, err);
+    if (!p)
+        return 0;
+    if (r->program_count == MAX_PROGRAMS) { /* evict the oldest */
+        glDeleteProgram(r->programs[0].program);
+        memmove(r->programs, r->programs + 1, sizeof r->programs[0] * (MAX_PROGRAMS - 1));
+        r->program_count--;
+    }
+    r->programs[r->program_count++] = (cached_program){features, p};
+    return p;
+}
+
+static void target_free(target *t)
+{
+    if (t->fbo)
+        glDeleteFramebuffers(1, &t->fbo);
+    if (t->attachments)
+        glDeleteTextures(t->attachments, t->tex);
+    memset(t, 0, sizeof *t);
+}
+
+/* (Re)creates `t` at the size with the given internal formats. */
+static int target_ensure(target *t, int width, int height, int attachments,
+                         const GLenum *formats, tl_error *err)
+{
+    if (t->fbo && t->width == width && t->height == height)
+        return TL_OK;
+    target_free(t);
+    glGenFramebuffers(1, &t->fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+    glGenTextures(attachments, t->tex);
+    t->attachments = attachments;
+    GLenum draw[2];
+    for (int i = 0; i < attachments; i++) {
+        glBindTexture(GL_TEXTURE_2D, t->tex[i]);
+        glTexImage2D(GL_TEXTURE_2D, 0, (GLint)formats[i], width, height, 0,
+                     formats[i] == GL_R32F ? GL_RED : GL_RGBA, GL_FLOAT, NULL);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, GL_TEXTURE_2D,
+                               t->tex[i], 0);
+        draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
+    }
+    glDrawBuffers(attachments, draw);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        target_free(t);
+        return tl_error_set(err, TL_ERR_RUNTIME,
+                            "cannot create a %dx%d float framebuffer (status 0x%04x)", width,
+                            height, status);
+    }
+    t->width = width;
+    t->height = height;
+    return gl_check("framebuffer creation", err);
+}
+
+int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err)
+{
+    *out = NULL;
+    tl_renderer *r = calloc(1, sizeof *r);
+    if (!r)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    r->lib = *lib;
+    glGenVertexArrays(1, &r->vao); /* core profile draws need a bound VAO */
+    char defines[512];
+    make_defines(0, defines, sizeof defines);
+    r->present_program = build_program(r, "fullscreen.vert", "present.frag", defines, err);
+    if (!r->present_program) {
+        tl_renderer_destroy(r);
+        return err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    *out = r;
+    return gl_check("renderer setup", err);
+}
+
+void tl_renderer_destroy(tl_renderer *r)
+{
+    if (!r)
+        return;
+    for (int i = 0; i < r->program_count; i++)
+        glDeleteProgram(r->programs[i].program);
+    if (r->present_program)
+        glDeleteProgram(r->present_program);
+    if (r->probe_program)
+        glDeleteProgram(r->probe_program);
+    target_free(&r->scene);
+    target_free(&r->display);
+    glDeleteVertexArrays(1, &r->vao);
+    free(r);
+}
+
+static GLint loc(GLuint p, const char *name)
+{
+    return glGetUniformLocation(p, name);
+}
+
+/* Uploads everything in `u`. Uniforms a program does not use are
+ * optimised away and have location -1, which GL ignores. */
+static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
+{
+    glUniform2f(loc(p, "u_resolution"), (float)u->width, (float)u->height);
+    glUniform3fv(loc(p, "u_cam_right"), 1, u->cam_right);
+    glUniform3fv(loc(p, "u_cam_up"), 1, u->cam_up);
+    glUniform3fv(loc(p, "u_cam_forward"), 1, u->cam_forward);
+    glUniform1f(loc(p, "u_tan_half_vfov"), u->tan_half_vfov);
+    glUniform1f(loc(p, "u_cam_height"), u->cam_height);
+    glUniform2fv(loc(p, "u_radial_dir"), 1, u->radial_dir);
+    glUniform1f(loc(p, "u_radial_len"), u->radial_len);
+    glUniform1f(loc(p, "u_radial_phase"), u->radial_phase);
+    glUniform4fv(loc(p, "u_wave"), u->octaves, &u->wave[0][0]);
+    glUniform1fv(loc(p, "u_wave_weight"), u->octaves, u->wave_weight);
+    glUniform1f(loc(p, "u_drag"), u->drag);
+    glUniform1f(loc(p, "u_depth"), u->depth);
+    glUniform1i(loc(p, "u_march_octaves"), u->march_octaves);
+    glUniform1i(loc(p, "u_normal_octaves"), u->normal_octaves);
+    glUniform1i(loc(p, "u_march_steps"), u->march_steps);
+    glUniform1f(loc(p, "u_hit_epsilon"), u->hit_epsilon);
+    glUniform1f(loc(p, "u_normal_epsilon"), u->normal_epsilon);
+    glUniform3fv(loc(p, "u_sun_dir"), 1, u->sun_dir);
+    glUniform1f(loc(p, "u_sun_intensity"), u->sun_intensity);
+    glUniform1f(loc(p, "u_sun_sharpness"), u->sun_sharpness);
+    glUniform1f(loc(p, "u_sky_brightness"), u->sky_brightness);
+    glUniform1f(loc(p, "u_fresnel_f0"), u->fresnel_f0);
+    glUniform3fv(loc(p, "u_scatter_color"), 1, u->scatter_color);
+    glUniform1f(loc(p, "u_scatter_strength"), u->scatter_strength);
+    glUniform1f(loc(p, "u_scatter_base"), u->scatter_base);
+    glUniform1f(loc(p, "u_normal_smooth_max"), u->normal_smooth_max);
+    glUniform1f(loc(p, "u_normal_smooth_rate"), u->normal_smooth_rate);
+    glUniform1f(loc(p, "u_normal_smooth_gain"), u->normal_smooth_gain);
+}
+
+/* Reads attachment `index` of the bound framebuffer in one transfer, then
+ * flips GL's bottom-up rows into image order in place. */
+static void read_rows(int index, int width, int height, int channels, float *dst, float *row)
+{
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)index);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT, dst);
+    size_t bytes = (size_t)width * (size_t)channels * sizeof(float);
+    for (int y = 0; y < height / 2; y++) {
+        float *a = dst + (size_t)y * (size_t)width * (size_t)channels;
+        float *b = dst + (size_t)(height - 1 - y) * (size_t)width * (size_t)channels;
+        memcpy(row, a, bytes);
+        memcpy(a, b, bytes);
+        memcpy(b, row, bytes);
+    }
+}
+
+int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame,
+                       tl_error *err)
+{
+    if (frame->width != u->width || frame->height != u->height)
+        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
+    GLuint program = ocean_program(r, u->features, err);
+    if (!program)
+        return err ? (int)err->status : TL_ERR_RUNTIME;
+    const GLenum scene_formats[2] = {GL_RGBA32F, GL_R32F};
+    const GLenum display_formats[1] = {GL_RGBA32F};
+    int rc = target_ensure(&r->scene, u->width, u->height, 2, scene_formats, err);
+    if (!rc)
+        rc = target_ensure(&r->display, u->width, u->height, 1, display_formats, err);
+    if (rc)
+        return rc;
+
+    glBindVertexArray(r->vao);
+    glViewport(0, 0, u->width, u->height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
+    glUseProgram(program);
+    upload_uniforms(program, u);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    glUseProgram(r->present_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
+    glUniform1i(loc(r->present_program, "u_hdr"), 0);
+    glUniform1f(loc(r->present_program, "u_exposure"), u->exposure);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    float *row = malloc((size_t)u->width * 4 * sizeof(float));
+    if (!row)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
+    read_rows(0, u->width, u->height, 4, frame->color, row);
+    read_rows(1, u->width, u->height, 1, frame->depth, row);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    read_rows(0, u->width, u->height, 4, frame->display, row);
+    free(row);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return gl_check("rendering", err);
+}
+
+int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,
+                              int count, int octaves, float *heights, tl_error *err)
+{
+    if (count < 1 || octaves < 1 || octaves > u->octaves)
+        return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad point or octave count");
+    if (!r->probe_program) {
+        char defines[512];
+        make_defines(0, defines, sizeof defines);
+        r->probe_program = build_program(r, "fullscreen.vert", "probe.frag", defines, err);
+        if (!r->probe_program)
+            return err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    int width = count < 1024 ? count : 1024;
+    int height = (count + width - 1) / width;
+    float *texels = calloc((size_t)width * (size_t)height * 4, sizeof(float));
+    float *out = malloc((size_t)width * (size_t)height * 4 * sizeof(float));
+    if (!texels || !out) {
+        free(texels);
+        free(out);
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    }
+    for (int i = 0; i < count; i++) {
+        texels[i * 4 + 0] = xz[i * 2 + 0];
+        texels[i * 4 + 1] = xz[i * 2 + 1];
+    }
+    GLuint points;
+    glGenTextures(1, &points);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, points);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+
+    target t = {0};
+    const GLenum formats[1] = {GL_RGBA32F};
+    int rc = target_ensure(&t, width, height, 1, formats, err);
+    if (!rc) {
+        glBindVertexArray(r->vao);
+        glViewport(0, 0, width, height);
+        glUseProgram(r->probe_program);
+        upload_uniforms(r->probe_program, u);
+        /* target_ensure bound its own texture to unit 0: bind the points again. */
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, points);
+        glUniform1i(loc(r->probe_program, "u_points"), 0);
+        glUniform1i(loc(r->probe_program, "u_probe_octaves"), octaves);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
+        for (int i = 0; i < count; i++)
+            heights[i] = out[i * 4];
+        rc = gl_check("height probe", err);
+    }
+    target_free(&t);
+    glDeleteTextures(1, &points);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    free(texels);
+    free(out);
+    return rc;
+}

@@ -1,0 +1,31 @@
+/* tl_renderer: the only code that calls gl*. It builds a program per
+ * feature set (cached), uploads a frame's uniforms, draws the ocean into
+ * float targets (linear colour, distance along the ray), runs the display
+ * pass (exposure, ACES, sRGB) and reads everything back into a tl_frame.
+ *
+ * It needs a current OpenGL 3.3 core context and does not care whether it
+ * came from EGL (headless) or a window. */
+#ifndef TL_RENDERER_H
+#define TL_RENDERER_H
+
+#include "core/tl_error.h"
+#include "image/tl_frame.h"
+#include "prepare/tl_prepare.h"
+#include "shader/tl_shader_lib.h"
+
+typedef struct tl_renderer tl_renderer;
+
+int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err);
+void tl_renderer_destroy(tl_renderer *r);
+
+/* Renders one frame of u->width x u->height into `frame` (allocated by the
+ * caller with the same size). Rows come back top row first. */
+int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame,
+                       tl_error *err);
+
+/* Evaluates the shader's wave height at `count` camera-relative points
+ * (x, z pairs) with `octaves` octaves: the GPU side of the accuracy tests. */
+int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,
+                              int count, int octaves, float *heights, tl_error *err);
+
+#endif

@@ -1,0 +1,45 @@
+/* tideline: renders ocean cutscenes from plain-text timelines.
+ * This file only dispatches to the commands in src/cli/. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/tl_cli.h"
+#include "gl/tl_gl_context.h"
+
+static const char usage[] =
+    "Usage: tideline COMMAND [options]\n"
+    "\n"
+    "Commands:\n"
+    "  still     render one frame headless to EXR and/or PNG\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help       show this help ('tideline COMMAND --help' for a command)\n"
+    "  --version        print the version ('--version -v' adds library versions)\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 usage error.\n";
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fputs(usage, stderr);
+        return 2;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "-h") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "help") == 0) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    if (strcmp(cmd, "--version") == 0) {
+        printf("tideline %s\n", TL_VERSION);
+        if (argc > 2 && (strcmp(argv[2], "-v") == 0 || strcmp(argv[2], "--verbose") == 0)) {
+            char libs[256];
+            tl_gl_library_versions(libs, sizeof libs);
+            printf("%s\n", libs);
+        }
+        return 0;
+    }
+    if (strcmp(cmd, "still") == 0)
+        return tl_cli_still(argc - 1, argv + 1);
+    fprintf(stderr, "tideline: unknown command '%s' (see 'tideline --help')\n", cmd);
+    return 2;
+}

@@ -1,0 +1,76 @@
+#include "tl_prepare.h"
+
+#include <math.h>
+#include <string.h>
+
+static void to_float3(const double in[3], float out[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = (float)in[i];
+}
+
+void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
+{
+    memset(u, 0, sizeof *u);
+    u->width = s->width;
+    u->height = s->height;
+
+    double right[3], up[3], forward[3];
+    tl_scene_camera_basis(&s->camera, right, up, forward);
+    to_float3(right, u->cam_right);
+    to_float3(up, u->cam_up);
+    to_float3(forward, u->cam_forward);
+    u->tan_half_vfov = (float)tan(0.5 * s->camera.vfov);
+    u->cam_height = (float)s->camera.position[1];
+
+    const double cx = s->camera.position[0], cz = s->camera.position[2];
+    double len = hypot(cx, cz);
+    u->radial_len = (float)len;
+    if (len > 0.0) {
+        u->radial_dir[0] = (float)(cx / len);
+        u->radial_dir[1] = (float)(cz / len);
+    }
+    u->radial_phase = (float)w->radial_phase;
+
+    const tl_quality *q = &s->quality;
+    int octaves = q->march_octaves > q->normal_octaves ? q->march_octaves : q->normal_octaves;
+    u->octaves = octaves;
+    double phase[TL_MAX_OCTAVES];
+    tl_waves_phases(w, cx, cz, s->time, octaves, phase);
+    for (int i = 0; i < octaves; i++) {
+        const tl_wave_octave *o = &w->octave[i];
+        u->wave[i][0] = (float)o->dir_x;
+        u->wave[i][1] = (float)o->dir_z;
+        u->wave[i][2] = (float)o->frequency;
+        u->wave[i][3] = (float)phase[i];
+        u->wave_weight[i] = (float)o->weight;
+    }
+    u->drag = (float)w->drag;
+    u->depth = (float)w->depth;
+
+    u->march_octaves = q->march_octaves;
+    u->normal_octaves = q->normal_octaves;
+    u->march_steps = q->march_steps;
+    u->hit_epsilon = (float)q->hit_epsilon;
+    u->normal_epsilon = (float)q->normal_epsilon;
+
+    double sun[3];
+    tl_scene_sun_direction(&s->sun, sun);
+    to_float3(sun, u->sun_dir);
+    u->sun_intensity = (float)s->sun.intensity;
+    u->sun_sharpness = (float)s->sun.sharpness;
+    u->sky_brightness = (float)s->sky.brightness;
+    /* The disc lobe is invisible once the sun is well below the horizon:
+     * the lobe's value at the horizon is cos(elevation)^sharpness. */
+    if (s->sun.intensity > 0.0 && s->sun.elevation > -0.2)
+        u->features |= TL_FEATURE_SUN_DISC;
+
+    u->fresnel_f0 = (float)s->water.fresnel_f0;
+    to_float3(s->water.scatter_color, u->scatter_color);
+    u->scatter_strength = (float)s->water.scatter_strength;
+    u->scatter_base = (float)s->water.scatter_base;
+    u->normal_smooth_max = (float)s->water.normal_smooth_max;
+    u->normal_smooth_rate = (float)s->water.normal_smooth_rate;
+    u->normal_smooth_gain = (float)s->water.normal_smooth_gain;
+    u->exposure = (float)s->exposure;
+}

@@ -1,0 +1,58 @@
+/* tl_prepare: turns a double-precision scene into what the GPU needs.
+ *
+ * This is where precision is won: the GPU works in camera-relative
+ * coordinates (x and z relative to the camera; y stays absolute because
+ * heights are small), and every term that would need an absolute time or
+ * position (wave phases, the radial phase) is reduced here in double.
+ * It also decides the feature set a frame needs, which selects the shader
+ * program (see tl_renderer). */
+#ifndef TL_PREPARE_H
+#define TL_PREPARE_H
+
+#include "scene/tl_scene.h"
+#include "waves/tl_waves.h"
+
+/* Shader features a frame may need; each is a #define in the program.
+ * A frame compiles only the code its scene uses. */
+typedef enum tl_feature {
+    TL_FEATURE_SUN_DISC = 1u << 0, /* the sun is above the horizon */
+} tl_feature;
+
+typedef struct tl_frame_uniforms {
+    unsigned features;
+    int width, height;
+
+    /* Camera: basis vectors and lens; the camera sits at the xz origin. */
+    float cam_right[3], cam_up[3], cam_forward[3];
+    float tan_half_vfov;
+    float cam_height; /* absolute world y of the camera */
+
+    /* Radial phase: |ref + p| - |ref| is evaluated in a cancellation-free
+     * form on the GPU from the unit direction and length of ref. */
+    float radial_dir[2];
+    float radial_len;
+    float radial_phase;
+
+    /* Waves, per octave: (dir_x, dir_z, frequency, phase offset), weight. */
+    int octaves; /* entries filled: max(march, normal) octaves */
+    float wave[TL_MAX_OCTAVES][4];
+    float wave_weight[TL_MAX_OCTAVES];
+    float drag, depth;
+
+    /* Quality knobs. */
+    int march_octaves, normal_octaves, march_steps;
+    float hit_epsilon, normal_epsilon;
+
+    /* Lighting and water look. */
+    float sun_dir[3];
+    float sun_intensity, sun_sharpness, sky_brightness;
+    float fresnel_f0, scatter_color[3], scatter_strength, scatter_base;
+    float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
+    float exposure;
+} tl_frame_uniforms;
+
+/* Fills `u` from `scene` (validated by the caller). `waves` must have been
+ * built from scene->ocean; it is passed in so callers reuse it per shot. */
+void tl_prepare_frame(const tl_scene *scene, const tl_waves *waves, tl_frame_uniforms *u);
+
+#endif

@@ -1,0 +1,1 @@
+set(TL_RENDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_render.c)

@@ -1,0 +1,37 @@
+#include "tl_quality.h"
+
+#include <string.h>
+
+/* `seed` is the reference shader's own settings, kept verbatim so tideline
+ * can always be compared with the look it started from. `final` uses the
+ * same octave counts (the look authors see) and a finer hit epsilon;
+ * `reference` is the slow ground truth the bench compares against. */
+static const tl_quality presets[] = {
+    {"draft", 8, 18, 32, 0.02, 0.02},
+    {"preview", 10, 26, 48, 0.01, 0.01},
+    {"final", 12, 36, 96, 0.005, 0.01},
+    {"reference", 12, 48, 400, 0.0005, 0.005},
+    {"seed", 12, 36, 64, 0.01, 0.01},
+};
+
+int tl_quality_preset(const char *name, tl_quality *out, tl_error *err)
+{
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; i++) {
+        if (strcmp(presets[i].name, name) == 0) {
+            *out = presets[i];
+            return TL_OK;
+        }
+    }
+    return tl_error_set(err, TL_ERR_USAGE, "unknown quality preset '%s' (known: %s)", name,
+                        tl_quality_names());
+}
+
+const char *tl_quality_names(void)
+{
+    return "draft, preview, final, reference, seed";
+}
+
+tl_quality tl_quality_default(void)
+{
+    return presets[2];
+}

@@ -1,0 +1,27 @@
+/* tl_quality: every knob that trades speed for accuracy, grouped into
+ * named presets. `tideline bench` (later) measures each preset against
+ * `reference`; nothing else in the renderer hard-codes these numbers. */
+#ifndef TL_QUALITY_H
+#define TL_QUALITY_H
+
+#include "core/tl_error.h"
+
+/* Upper bound on wave octaves; the uniform arrays are sized by it. */
+#define TL_MAX_OCTAVES 64
+
+typedef struct tl_quality {
+    const char *name;
+    int march_octaves;    /* octaves of the height field while marching */
+    int normal_octaves;   /* octaves for the shading normal */
+    int march_steps;      /* max adaptive steps between the two planes */
+    double hit_epsilon;   /* metres above the surface that count as a hit */
+    double normal_epsilon;/* finite-difference step for normals, metres */
+} tl_quality;
+
+/* Known presets: draft, preview, final (the default), reference, seed. */
+int tl_quality_preset(const char *name, tl_quality *out, tl_error *err);
+/* Comma-separated preset names, for help and error texts. */
+const char *tl_quality_names(void);
+tl_quality tl_quality_default(void);
+
+#endif

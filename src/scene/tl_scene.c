@@ -1,0 +1,134 @@
+#include "tl_scene.h"
+
+#include <math.h>
+
+#define TL_DEG (M_PI / 180.0)
+
+void tl_scene_defaults(tl_scene *s)
+{
+    *s = (tl_scene){0};
+    s->time = 0.0;
+    s->width = 1280;
+    s->height = 720;
+    s->exposure = 2.0;
+
+    s->camera.position[0] = 0.0;
+    s->camera.position[1] = 1.5;
+    s->camera.position[2] = 0.0;
+    s->camera.yaw = 0.0;
+    s->camera.pitch = -6.0 * TL_DEG;
+    s->camera.roll = 0.0;
+    /* The reference shader's projection: image plane at 1.5, half height 1. */
+    s->camera.vfov = 2.0 * atan(1.0 / 1.5);
+
+    s->sun.elevation = 10.0 * TL_DEG;
+    s->sun.azimuth = -7.6 * TL_DEG;
+    s->sun.intensity = 210.0;
+    s->sun.sharpness = 720.0;
+
+    s->ocean.depth = 1.0;
+    s->ocean.drag = 0.38;
+    s->ocean.frequency = 1.0;
+    s->ocean.frequency_growth = 1.18;
+    s->ocean.speed = 2.0;
+    s->ocean.speed_growth = 1.07;
+    s->ocean.weight_ratio = 0.8;
+    s->ocean.direction_step = 1232.399963;
+    s->ocean.radial_phase = 0.1;
+
+    s->water.fresnel_f0 = 0.04;
+    s->water.scatter_color[0] = 0.0293;
+    s->water.scatter_color[1] = 0.0698;
+    s->water.scatter_color[2] = 0.1717;
+    s->water.scatter_strength = 0.1;
+    s->water.scatter_base = 0.2;
+    s->water.normal_smooth_max = 0.8;
+    s->water.normal_smooth_rate = 0.01;
+    s->water.normal_smooth_gain = 1.1;
+
+    s->sky.brightness = 0.5;
+    s->quality = tl_quality_default();
+}
+
+void tl_scene_sun_direction(const tl_sun *sun, double out[3])
+{
+    double ce = cos(sun->elevation);
+    out[0] = ce * sin(sun->azimuth);
+    out[1] = sin(sun->elevation);
+    out[2] = ce * cos(sun->azimuth);
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3],
+                           double forward[3])
+{
+    double cp = cos(cam->pitch);
+    forward[0] = cp * sin(cam->yaw);
+    forward[1] = sin(cam->pitch);
+    forward[2] = cp * cos(cam->yaw);
+    /* Right is horizontal and never degenerate, even looking straight down:
+     * it depends on yaw alone. */
+    double r0[3] = {cos(cam->yaw), 0.0, -sin(cam->yaw)};
+    double u0[3];
+    cross3(forward, r0, u0);
+    double cr = cos(cam->roll), sr = sin(cam->roll);
+    for (int i = 0; i < 3; i++) {
+        right[i] = cr * r0[i] + sr * u0[i];
+        up[i] = cr * u0[i] - sr * r0[i];
+    }
+}
+
+int tl_scene_camera_look_at(tl_camera *cam, const double target[3], tl_error *err)
+{
+    double d[3] = {target[0] - cam->position[0], target[1] - cam->position[1],
+                   target[2] - cam->position[2]};
+    double horiz = hypot(d[0], d[2]);
+    double len = hypot(horiz, d[1]);
+    if (!(len > 1e-9))
+        return tl_error_set(err, TL_ERR_USAGE, "look-at target coincides with the camera");
+    /* Straight up or down: keep the current yaw so the image does not spin. */
+    if (horiz > 1e-12 * len)
+        cam->yaw = atan2(d[0], d[2]);
+    cam->pitch = atan2(d[1], horiz);
+    return TL_OK;
+}
+
+static int finite_all(const double *v, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return 0;
+    return 1;
+}
+
+int tl_scene_validate(const tl_scene *s, tl_error *err)
+{
+    if (s->width < 1 || s->height < 1 || s->width > 16384 || s->height > 16384)
+        return tl_error_set(err, TL_ERR_USAGE, "size %dx%d is outside 1..16384", s->width,
+                            s->height);
+    if (!isfinite(s->time))
+        return tl_error_set(err, TL_ERR_USAGE, "time is not finite");
+    if (!finite_all(s->camera.position, 3) || !isfinite(s->camera.yaw) ||
+        !isfinite(s->camera.pitch) || !isfinite(s->camera.roll))
+        return tl_error_set(err, TL_ERR_USAGE, "camera position/orientation is not finite");
+    if (!(s->camera.vfov > 0.0 && s->camera.vfov < M_PI))
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "camera field of view %.6g deg is outside (0, 180)",
+                            s->camera.vfov / TL_DEG);
+    if (!(s->ocean.depth > 0.0) || !isfinite(s->ocean.depth))
+        return tl_error_set(err, TL_ERR_USAGE, "ocean depth must be a positive number");
+    if (!(s->exposure >= 0.0) || !isfinite(s->exposure))
+        return tl_error_set(err, TL_ERR_USAGE, "exposure must be finite and >= 0");
+    const tl_quality *q = &s->quality;
+    if (q->march_octaves < 1 || q->march_octaves > TL_MAX_OCTAVES || q->normal_octaves < 1 ||
+        q->normal_octaves > TL_MAX_OCTAVES)
+        return tl_error_set(err, TL_ERR_USAGE, "octave counts must be in 1..%d",
+                            TL_MAX_OCTAVES);
+    return TL_OK;
+}

@@ -1,0 +1,86 @@
+/* tl_scene: everything one frame needs, in world units and double.
+ *
+ * World axes: +Y up, +Z north, +X east. Yaw and azimuth are compass
+ * angles: 0 looks along +Z, positive turns toward +X. Pitch and elevation
+ * are positive upward. The mean water plane is y = 0; waves occupy
+ * [-ocean.depth, 0] like the reference shader.
+ *
+ * A scene is plain data: scene evaluation (from a timeline or from flags)
+ * fills it, tl_prepare turns it into what the GPU needs. */
+#ifndef TL_SCENE_H
+#define TL_SCENE_H
+
+#include <stdbool.h>
+
+#include "scene/tl_quality.h"
+
+typedef struct tl_camera {
+    double position[3]; /* world metres */
+    double yaw, pitch, roll; /* radians */
+    double vfov;        /* vertical field of view, radians, in (0, pi) */
+} tl_camera;
+
+typedef struct tl_sun {
+    double elevation, azimuth; /* radians */
+    double intensity;          /* peak radiance of the disc (reference: 210) */
+    double sharpness;          /* exponent of the disc lobe (reference: 720) */
+} tl_sun;
+
+/* The exp(sin) wave model with derivative drag (seed 002). */
+typedef struct tl_ocean {
+    double depth;            /* metres between crest plane and trough plane */
+    double drag;             /* domain-warp strength (0.38) */
+    double frequency;        /* first octave, radians per metre (1.0) */
+    double frequency_growth; /* per octave (1.18) */
+    double speed;            /* first octave, radians per second (2.0) */
+    double speed_growth;     /* per octave: dispersion (1.07) */
+    double weight_ratio;     /* per octave amplitude weight ratio (0.8) */
+    double direction_step;   /* radians between octave directions (1232.399963) */
+    double radial_phase;     /* phase per metre from the origin (0.1) */
+} tl_ocean;
+
+typedef struct tl_water {
+    double fresnel_f0;        /* Schlick F0 (0.04) */
+    double scatter_color[3];  /* linear RGB (0.0293, 0.0698, 0.1717) */
+    double scatter_strength;  /* (0.1) */
+    double scatter_base;      /* scattering at the wave troughs (0.2) */
+    double normal_smooth_max; /* max blend of far normals toward up (0.8) */
+    double normal_smooth_rate;/* per metre inside the sqrt (0.01) */
+    double normal_smooth_gain;/* (1.1) */
+} tl_water;
+
+typedef struct tl_sky {
+    double brightness; /* scale of the cheap atmosphere (0.5) */
+} tl_sky;
+
+typedef struct tl_scene {
+    double time; /* seconds since the start of the timeline */
+    int width, height;
+    double exposure; /* linear multiplier before tonemapping (2.0) */
+    tl_camera camera;
+    tl_sun sun;
+    tl_ocean ocean;
+    tl_water water;
+    tl_sky sky;
+    tl_quality quality;
+} tl_scene;
+
+/* The default scene: the reference shader's ocean, a camera 1.5 m above
+ * the water looking slightly down toward a low sun. */
+void tl_scene_defaults(tl_scene *scene);
+
+/* Unit vector toward the sun from elevation and azimuth. */
+void tl_scene_sun_direction(const tl_sun *sun, double out[3]);
+
+/* Camera basis (right, up, forward), all unit vectors, from yaw/pitch/roll. */
+void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3],
+                           double forward[3]);
+
+/* Sets yaw and pitch so the camera looks at `target` (roll unchanged).
+ * Fails if the target coincides with the camera. */
+int tl_scene_camera_look_at(tl_camera *cam, const double target[3], tl_error *err);
+
+/* Checks ranges (sizes, fov, finite values). The message names the field. */
+int tl_scene_validate(const tl_scene *scene, tl_error *err);
+
+#endif

@@ -1,0 +1,71 @@
+#include "tl_waves.h"
+
+#include <math.h>
+
+void tl_waves_init(tl_waves *w, const tl_ocean *ocean)
+{
+    w->count = TL_MAX_OCTAVES;
+    w->drag = ocean->drag;
+    w->depth = ocean->depth;
+    w->radial_phase = ocean->radial_phase;
+    /* The reference shader accumulates the direction angle in a float; doing
+     * the same keeps our octave directions identical to its. */
+    float angle = 0.0f;
+    double frequency = ocean->frequency, speed = ocean->speed, weight = 1.0;
+    for (int i = 0; i < TL_MAX_OCTAVES; i++) {
+        tl_wave_octave *o = &w->octave[i];
+        o->dir_x = sin((double)angle);
+        o->dir_z = cos((double)angle);
+        o->frequency = frequency;
+        o->speed = speed;
+        o->weight = weight;
+        angle += (float)ocean->direction_step;
+        frequency *= ocean->frequency_growth;
+        speed *= ocean->speed_growth;
+        weight *= ocean->weight_ratio;
+    }
+}
+
+double tl_waves_value(const tl_waves *w, double x, double z, double t, int octaves)
+{
+    if (octaves > w->count)
+        octaves = w->count;
+    /* The radial term uses the unwarped position, as in the reference. */
+    double radial = w->radial_phase * hypot(x, z);
+    double sum = 0.0, weights = 0.0;
+    for (int i = 0; i < octaves; i++) {
+        const tl_wave_octave *o = &w->octave[i];
+        double phase = o->frequency * (o->dir_x * x + o->dir_z * z) + o->speed * t + radial;
+        double wave = exp(sin(phase) - 1.0);
+        double slope = wave * cos(phase);
+        /* Derivative drag: later octaves ride on the crests of earlier ones. */
+        x -= o->dir_x * slope * o->weight * w->drag;
+        z -= o->dir_z * slope * o->weight * w->drag;
+        sum += wave * o->weight;
+        weights += o->weight;
+    }
+    return weights > 0.0 ? sum / weights : 1.0;
+}
+
+double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves)
+{
+    return (tl_waves_value(w, x, z, t, octaves) - 1.0) * w->depth;
+}
+
+void tl_waves_phases(const tl_waves *w, double ref_x, double ref_z, double t, int octaves,
+                     double *phase_out)
+{
+    const double two_pi = 2.0 * M_PI;
+    double radial = fmod(w->radial_phase * hypot(ref_x, ref_z), two_pi);
+    for (int i = 0; i < octaves && i < w->count; i++) {
+        const tl_wave_octave *o = &w->octave[i];
+        /* Reduce each large term on its own before summing, so the sum never
+         * carries more magnitude than a few turns. */
+        double spatial = fmod(o->frequency * (o->dir_x * ref_x + o->dir_z * ref_z), two_pi);
+        double temporal = fmod(o->speed * t, two_pi);
+        double p = fmod(spatial + temporal + radial, two_pi);
+        if (p < 0.0)
+            p += two_pi;
+        phase_out[i] = p;
+    }
+}

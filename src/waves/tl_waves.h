@@ -1,0 +1,43 @@
+/* tl_waves: the ocean's height field on the CPU, in double.
+ *
+ * The model is the reference shader's exp(sin) sum with derivative drag
+ * (seed 002). This file is the accuracy reference for the GPU (tests
+ * compare shader probes against it), floats the boat and tells whether
+ * the camera is under water. It also produces the per-octave phase
+ * offsets that keep absolute time and position off the GPU. */
+#ifndef TL_WAVES_H
+#define TL_WAVES_H
+
+#include "scene/tl_quality.h"
+#include "scene/tl_scene.h"
+
+typedef struct tl_wave_octave {
+    double dir_x, dir_z; /* unit travel direction in the xz plane */
+    double frequency;    /* radians per metre */
+    double speed;        /* radians per second */
+    double weight;       /* amplitude weight */
+} tl_wave_octave;
+
+typedef struct tl_waves {
+    int count; /* octaves available (TL_MAX_OCTAVES) */
+    tl_wave_octave octave[TL_MAX_OCTAVES];
+    double drag, depth, radial_phase;
+} tl_waves;
+
+/* Builds the octave table from the ocean parameters. */
+void tl_waves_init(tl_waves *w, const tl_ocean *ocean);
+
+/* Normalised wave value in (0,1] at world (x, z) and time t using the
+ * first `octaves` octaves: sum(weight * exp(sin(phase) - 1)) / sum(weight). */
+double tl_waves_value(const tl_waves *w, double x, double z, double t, int octaves);
+
+/* World height of the surface: (value - 1) * depth, in [-depth, 0]. */
+double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves);
+
+/* Per-octave phase offsets for a GPU frame centred on (ref_x, ref_z):
+ * fmod(f·dot(d, ref) + speed·t + radial·|ref|, 2π), so the shader adds only
+ * terms that are small near the camera. */
+void tl_waves_phases(const tl_waves *w, double ref_x, double ref_z, double t, int octaves,
+                     double *phase_out);
+
+#endif

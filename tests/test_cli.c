@@ -1,0 +1,227 @@
+/* The command line as a user meets it: exit statuses, one-line error
+ * messages that name the flag or path, and no file left behind by a
+ * failed run. argv[1] is the tideline binary, argv[2] the shaders folder. */
+#include <dirent.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "tl_test.h"
+
+static const char *binary;
+static const char *shader_src;
+static char dir[] = "/tmp/tideline-cli-XXXXXX";
+static char out_text[16384];
+
+/* Runs the binary with a NULL-terminated argument list (and an optional
+ * environment override "NAME=VALUE"); returns the exit status and leaves
+ * stdout+stderr in out_text. */
+static int run(const char *env, ...)
+{
+    const char *args[32] = {binary};
+    int n = 1;
+    va_list ap;
+    va_start(ap, env);
+    const char *a;
+    while ((a = va_arg(ap, const char *)) != NULL && n < 31)
+        args[n++] = a;
+    va_end(ap);
+    args[n] = NULL;
+
+    int fds[2];
+    if (pipe(fds) != 0)
+        return -1;
+    pid_t pid = fork();
+    if (pid == 0) {
+        dup2(fds[1], 1);
+        dup2(fds[1], 2);
+        close(fds[0]);
+        if (env)
+            putenv((char *)env);
+        execv(binary, (char *const *)args);
+        _exit(127);
+    }
+    close(fds[1]);
+    size_t len = 0;
+    ssize_t got;
+    while ((got = read(fds[0], out_text + len, sizeof out_text - 1 - len)) > 0)
+        len += (size_t)got;
+    out_text[len] = '\0';
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+static int count_lines(const char *s)
+{
+    int lines = 0;
+    for (; *s; s++)
+        lines += *s == '\n';
+    return lines;
+}
+
+static int dir_entries(const char *path)
+{
+    DIR *d = opendir(path);
+    if (!d)
+        return -1;
+    int count = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
+            count++;
+    closedir(d);
+    return count;
+}
+
+static char path_buf[8][512];
+static const char *in_dir(int slot, const char *name)
+{
+    snprintf(path_buf[slot], sizeof path_buf[slot], "%s/%s", dir, name);
+    return path_buf[slot];
+}
+
+/* A usage error: status 2, one line naming `needle`, nothing written. */
+#define EXPECT_USAGE(needle, ...)                                                            \
+    do {                                                                                     \
+        CHECK(run(NULL, __VA_ARGS__, NULL) == 2);                                            \
+        CHECK_STR_CONTAINS(out_text, needle);                                                \
+        CHECK(count_lines(out_text) == 1);                                                   \
+        CHECK(dir_entries(dir) == 0);                                                        \
+    } while (0)
+
+static void test_help_and_version(void)
+{
+    CHECK(run(NULL, "--help", NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "still");
+    CHECK(run(NULL, "still", "--help", NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "--size WxH");
+    CHECK_STR_CONTAINS(out_text, "--look-at");
+    CHECK(run(NULL, "--version", NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "tideline " TL_VERSION);
+    CHECK(run(NULL, NULL) == 2);
+    CHECK(run(NULL, "paint", NULL) == 2);
+    CHECK_STR_CONTAINS(out_text, "unknown command 'paint'");
+}
+
+static void test_bad_flags(void)
+{
+    const char *png = in_dir(0, "x.png");
+    EXPECT_USAGE("unknown option '--bogus'", "still", "--bogus", "-o", png);
+    EXPECT_USAGE("--size: 0x5 is out of range", "still", "--size", "0x5", "-o", png);
+    EXPECT_USAGE("--size: 20000x10 is out of range", "still", "--size", "20000x10", "-o", png);
+    EXPECT_USAGE("--size: expected WIDTHxHEIGHT, got '12'", "still", "--size", "12", "-o", png);
+    EXPECT_USAGE("--size: -4x3 is out of range", "still", "--size=-4x3", "-o", png);
+    EXPECT_USAGE("--time: 'nan' is not a finite number", "still", "--time", "nan", "-o", png);
+    EXPECT_USAGE("--time: 'inf' is not a finite number", "still", "--time", "inf", "-o", png);
+    EXPECT_USAGE("--time: expected a number, got '3s4'", "still", "--time", "3s4", "-o", png);
+    EXPECT_USAGE("--time: '1e999' is not a finite number", "still", "--time", "1e999", "-o",
+                 png);
+    EXPECT_USAGE("--time needs a value", "still", "-o", png, "--time");
+    EXPECT_USAGE("--camera: '0,inf,0' holds a non-finite number", "still", "--camera",
+                 "0,inf,0", "-o", png);
+    EXPECT_USAGE("--camera: expected X,Y,Z, got '1,2'", "still", "--camera", "1,2", "-o", png);
+    EXPECT_USAGE("--fov: '0' is outside (0, 180) degrees", "still", "--fov", "0", "-o", png);
+    EXPECT_USAGE("--fov: '180' is outside (0, 180) degrees", "still", "--fov", "180", "-o",
+                 png);
+    EXPECT_USAGE("--exposure: '-1' is negative", "still", "--exposure", "-1", "-o", png);
+    EXPECT_USAGE("--quality: unknown quality preset 'ultra'", "still", "--quality", "ultra",
+                 "-o", png);
+    EXPECT_USAGE("look-at target coincides with the camera", "still", "--look-at", "0,1.5,0",
+                 "-o", png);
+    EXPECT_USAGE("no output file", "still");
+}
+
+static void test_bad_outputs(void)
+{
+    const char *jpg = in_dir(0, "x.jpg");
+    EXPECT_USAGE(jpg, "still", "-o", jpg);
+    const char *missing = in_dir(1, "no/such/folder/x.png");
+    EXPECT_USAGE(missing, "still", "-o", missing);
+    /* A good first output does not get written when a later one is bad. */
+    EXPECT_USAGE(missing, "still", "--size", "8x8", "-o", in_dir(2, "good.png"), "-o",
+                 missing);
+    /* A folder that cannot be written to (root may write anywhere). */
+    const char *ro = in_dir(3, "ro");
+    mkdir(ro, 0555);
+    if (geteuid() != 0) {
+        const char *target = in_dir(4, "ro/x.png");
+        CHECK(run(NULL, "still", "-o", target, NULL) == 2);
+        CHECK_STR_CONTAINS(out_text, target);
+        CHECK(dir_entries(ro) == 0);
+    } else {
+        printf("skipped the read-only folder case: running as root\n");
+    }
+    rmdir(ro);
+    const char *as_dir = in_dir(5, "adir.png");
+    mkdir(as_dir, 0755);
+    CHECK(run(NULL, "still", "-o", as_dir, NULL) == 2);
+    CHECK_STR_CONTAINS(out_text, as_dir);
+    rmdir(as_dir);
+}
+
+static void test_runtime_failures(void)
+{
+    /* No EGL vendor at all: every platform fails and the message lists them. */
+    const char *png = in_dir(0, "x.png");
+    CHECK(run("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/vendor.json", "still", "--size",
+              "8x8", "-o", png, NULL) == 1);
+    CHECK_STR_CONTAINS(out_text, "no headless OpenGL 3.3 context");
+    CHECK_STR_CONTAINS(out_text, "device:");
+    CHECK_STR_CONTAINS(out_text, "surfaceless:");
+    CHECK_STR_CONTAINS(out_text, "default:");
+    CHECK(dir_entries(dir) == 0);
+
+    CHECK(run("TIDELINE_EGL_PLATFORM=vulkan", "still", "-o", png, NULL) == 2);
+    CHECK_STR_CONTAINS(out_text, "TIDELINE_EGL_PLATFORM='vulkan'");
+
+    /* A broken shader from --shader-dir: the compiler's message names the
+     * file it came from, and nothing is written. */
+    const char *shaders = in_dir(1, "shaders");
+    mkdir(shaders, 0755);
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "cp %s/* %s/ && printf 'this is not glsl;\\n' >> %s/water.glsl",
+             shader_src, shaders, shaders);
+    CHECK(system(cmd) == 0);
+    CHECK(run(NULL, "still", "--size", "8x8", "--shader-dir", shaders, "-o", png, NULL) == 1);
+    CHECK_STR_CONTAINS(out_text, "failed to compile");
+    CHECK_STR_CONTAINS(out_text, "water.glsl:");
+    snprintf(cmd, sizeof cmd, "rm -rf %s", shaders);
+    CHECK(system(cmd) == 0);
+    CHECK(dir_entries(dir) == 0);
+    EXPECT_USAGE("is not a folder", "still", "--shader-dir", in_dir(2, "nope"), "-o", png);
+}
+
+static void test_success(void)
+{
+    const char *png = in_dir(0, "ok.png");
+    const char *exr = in_dir(1, "ok.exr");
+    CHECK(run(NULL, "still", "--size", "32x18", "--time", "2.5", "--yaw", "0.3rad", "-o", png,
+              "-o", exr, NULL) == 0);
+    CHECK(access(png, R_OK) == 0);
+    CHECK(access(exr, R_OK) == 0);
+    CHECK(dir_entries(dir) == 2); /* no temporary files left */
+    CHECK(run(NULL, "still", "-v", "--size", "16x16", "-o", png, NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "OpenGL");
+    unlink(png);
+    unlink(exr);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3 || !mkdtemp(dir))
+        return 1;
+    binary = argv[1];
+    shader_src = argv[2];
+    test_help_and_version();
+    test_bad_flags();
+    test_bad_outputs();
+    test_runtime_failures();
+    test_success();
+    rmdir(dir);
+    TEST_END();
+}

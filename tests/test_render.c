@@ -1,0 +1,221 @@
+/* Render tests on whatever EGL gives (llvmpipe on CI): the shader's wave
+ * height against the double-precision CPU mirror, and the properties of a
+ * rendered still (finite, sky above water, sun disc where it projects). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "gl/tl_gl_context.h"
+#include "gl/tl_renderer.h"
+#include "prepare/tl_prepare.h"
+#include "scene/tl_scene.h"
+#include "tl_test.h"
+#include "waves/tl_waves.h"
+
+/* Max |GPU - CPU| over a grid of points around the camera. */
+static double probe_error(tl_renderer *r, tl_scene *s, int octaves, double half_extent)
+{
+    enum { N = 24 };
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(s, &w, &u);
+    static float xz[N * N * 2];
+    static float gpu[N * N];
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            xz[(j * N + i) * 2 + 0] = (float)(-half_extent + 2.0 * half_extent * i / (N - 1));
+            xz[(j * N + i) * 2 + 1] = (float)(-half_extent + 2.0 * half_extent * j / (N - 1));
+        }
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe_heights(r, &u, xz, N * N, octaves, gpu, &err)) {
+        fprintf(stderr, "probe failed: %s\n", err.message);
+        return INFINITY;
+    }
+    double worst = 0.0;
+    for (int k = 0; k < N * N; k++) {
+        /* The CPU mirror takes absolute positions: the camera's plus the
+         * (exactly representable) float offset the GPU saw. */
+        double x = s->camera.position[0] + (double)xz[k * 2];
+        double z = s->camera.position[2] + (double)xz[k * 2 + 1];
+        double cpu = tl_waves_height(&w, x, z, s->time, octaves);
+        double d = fabs(cpu - (double)gpu[k]);
+        if (!(d <= worst))
+            worst = d;
+    }
+    return worst;
+}
+
+static void test_probe(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.time = 10.0;
+    double e12 = probe_error(r, &s, 12, 20.0);
+    double e36 = probe_error(r, &s, 36, 20.0);
+    printf("probe t=10 near origin: max |gpu-cpu| = %.3g (12 oct), %.3g (36 oct)\n", e12, e36);
+    CHECK(e12 <= 1e-4);
+    CHECK(e36 <= 1e-4);
+
+    /* The precision strategy: far from the origin and late in time the GPU
+     * must stay as accurate as at the origin. */
+    s.time = 1.0e6;
+    s.camera.position[0] = 1.0e6;
+    s.camera.position[2] = -7.3e5;
+    double far12 = probe_error(r, &s, 12, 20.0);
+    double far36 = probe_error(r, &s, 36, 20.0);
+    printf("probe t=1e6 at (1e6, -7.3e5): max |gpu-cpu| = %.3g (12), %.3g (36)\n", far12, far36);
+    CHECK(far12 <= 1e-4);
+    CHECK(far36 <= 1e-4);
+}
+
+static double luminance(const float *rgb)
+{
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+static int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
+{
+    tl_scene s = *scene;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(&s, &w, &u);
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_frame_alloc(f, s.width, s.height, &err) == 0);
+    int rc = tl_renderer_render(r, &u, f, &err);
+    CHECK(rc == 0);
+    if (rc) {
+        fprintf(stderr, "render failed: %s\n", err.message);
+        tl_frame_free(f);
+    }
+    return rc;
+}
+
+static void small_scene(tl_scene *s)
+{
+    tl_scene_defaults(s);
+    s->width = 160;
+    s->height = 96;
+    s->time = 3.0;
+    s->camera.pitch = 0.0; /* horizon across the middle row */
+}
+
+/* Finite everywhere; sky above is brighter and water below darker and
+ * bluer, with the sun behind the camera so no glitter path is in view. */
+static void test_sky_and_water(tl_renderer *r)
+{
+    tl_scene s;
+    small_scene(&s);
+    s.sun.azimuth = M_PI;
+    s.sun.elevation = 0.5;
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    size_t n = (size_t)s.width * (size_t)s.height;
+    int finite = 1;
+    for (size_t i = 0; i < n * 4; i++)
+        finite &= isfinite(f.color[i]) && isfinite(f.display[i]);
+    for (size_t i = 0; i < n; i++)
+        finite &= isfinite(f.depth[i]) && f.depth[i] > 0.0f;
+    CHECK(finite);
+
+    /* Sky: the top quarter; water: the bottom quarter (rows top first). */
+    double sky[3] = {0}, water[3] = {0};
+    int sky_depth_ok = 1, water_depth_ok = 1;
+    int rows = s.height / 4;
+    for (int y = 0; y < rows; y++)
+        for (int x = 0; x < s.width; x++) {
+            const float *top = f.color + ((size_t)y * s.width + x) * 4;
+            const float *bottom = f.color + ((size_t)(s.height - 1 - y) * s.width + x) * 4;
+            for (int c = 0; c < 3; c++) {
+                sky[c] += top[c];
+                water[c] += bottom[c];
+            }
+            sky_depth_ok &= f.depth[(size_t)y * s.width + x] == TL_FRAME_SKY_DEPTH;
+            float wd = f.depth[(size_t)(s.height - 1 - y) * s.width + x];
+            water_depth_ok &= wd > 1.0f && wd < 100.0f;
+        }
+    printf("sky mean rgb %.4f %.4f %.4f, water mean rgb %.4f %.4f %.4f\n", sky[0] / (rows * s.width),
+           sky[1] / (rows * s.width), sky[2] / (rows * s.width), water[0] / (rows * s.width),
+           water[1] / (rows * s.width), water[2] / (rows * s.width));
+    CHECK(luminance((float[]){(float)sky[0], (float)sky[1], (float)sky[2]}) >
+          2.0 * luminance((float[]){(float)water[0], (float)water[1], (float)water[2]}));
+    CHECK(water[2] > water[0]); /* water is bluer than it is red */
+    CHECK(sky[2] > sky[0]);
+    CHECK(sky_depth_ok);
+    CHECK(water_depth_ok);
+
+    /* Display plane: tonemapped values in [0,1]. */
+    int display_ok = 1;
+    for (size_t i = 0; i < n * 4; i++)
+        display_ok &= f.display[i] >= 0.0f && f.display[i] <= 1.0f;
+    CHECK(display_ok);
+    tl_frame_free(&f);
+}
+
+/* The default low sun in front of the camera: the brightest sky pixel is
+ * where the sun direction projects. */
+static void test_sun_disc(tl_renderer *r)
+{
+    tl_scene s;
+    small_scene(&s);
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+
+    /* Sun disc: the brightest sky pixel is where the sun projects. */
+    double sun[3], right[3], up[3], fwd[3];
+    tl_scene_sun_direction(&s.sun, sun);
+    tl_scene_camera_basis(&s.camera, right, up, fwd);
+    double sx = sun[0] * right[0] + sun[1] * right[1] + sun[2] * right[2];
+    double sy = sun[0] * up[0] + sun[1] * up[1] + sun[2] * up[2];
+    double sz = sun[0] * fwd[0] + sun[1] * fwd[1] + sun[2] * fwd[2];
+    double th = tan(0.5 * s.camera.vfov), aspect = (double)s.width / s.height;
+    double px = ((sx / sz) / (th * aspect) + 1.0) * 0.5 * s.width - 0.5;
+    double py_up = ((sy / sz) / th + 1.0) * 0.5 * s.height - 0.5;
+    double py = (s.height - 1) - py_up; /* image row */
+    int best = 0;
+    double best_l = -1.0;
+    for (int y = 0; y < s.height / 2; y++)
+        for (int x = 0; x < s.width; x++) {
+            double l = luminance(f.color + ((size_t)y * s.width + x) * 4);
+            if (l > best_l) {
+                best_l = l;
+                best = y * s.width + x;
+            }
+        }
+    int bx = best % s.width, by = best / s.width;
+    printf("sun projects to (%.2f, %.2f), brightest sky pixel (%d, %d), radiance %.1f\n", px, py,
+           bx, by, best_l);
+    CHECK(fabs(bx - px) <= 1.0);
+    CHECK(fabs(by - py) <= 1.0);
+    CHECK(best_l > 50.0); /* the disc, not just bright sky */
+    tl_frame_free(&f);
+}
+
+int main(void)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    tl_gl_context *ctx = NULL;
+    if (tl_gl_context_create_headless(&ctx, &err)) {
+        fprintf(stderr, "no GL context: %s\n", err.message);
+        return 1;
+    }
+    printf("%s\n", tl_gl_context_describe(ctx));
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    tl_renderer *r = NULL;
+    if (tl_renderer_create(&r, &lib, &err)) {
+        fprintf(stderr, "renderer: %s\n", err.message);
+        return 1;
+    }
+    test_probe(r);
+    test_sky_and_water(r);
+    test_sun_disc(r);
+    tl_renderer_destroy(r);
+    tl_gl_context_destroy(ctx);
+    TEST_END();
+}
