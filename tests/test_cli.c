@@ -86,12 +86,12 @@ static const char *in_dir(int slot, const char *name)
 }
 
 /* A usage error: status 2, one line naming `needle`, nothing written. */
-#define EXPECT_USAGE(needle, ...)                                                            \
-    do {                                                                                     \
-        CHECK(run(NULL, __VA_ARGS__, NULL) == 2);                                            \
-        CHECK_STR_CONTAINS(out_text, needle);                                                \
-        CHECK(count_lines(out_text) == 1);                                                   \
-        CHECK(dir_entries(dir) == 0);                                                        \
+#define EXPECT_USAGE(needle, ...)                                                                  \
+    do {                                                                                           \
+        CHECK(run(NULL, __VA_ARGS__, NULL) == 2);                                                  \
+        CHECK_STR_CONTAINS(out_text, needle);                                                      \
+        CHECK(count_lines(out_text) == 1);                                                         \
+        CHECK(dir_entries(dir) == 0);                                                              \
     } while (0)
 
 static void test_help_and_version(void)
@@ -119,20 +119,18 @@ static void test_bad_flags(void)
     EXPECT_USAGE("--time: 'nan' is not a finite number", "still", "--time", "nan", "-o", png);
     EXPECT_USAGE("--time: 'inf' is not a finite number", "still", "--time", "inf", "-o", png);
     EXPECT_USAGE("--time: expected a number, got '3s4'", "still", "--time", "3s4", "-o", png);
-    EXPECT_USAGE("--time: '1e999' is not a finite number", "still", "--time", "1e999", "-o",
-                 png);
+    EXPECT_USAGE("--time: '1e999' is not a finite number", "still", "--time", "1e999", "-o", png);
     EXPECT_USAGE("--time needs a value", "still", "-o", png, "--time");
-    EXPECT_USAGE("--camera: '0,inf,0' holds a non-finite number", "still", "--camera",
-                 "0,inf,0", "-o", png);
+    EXPECT_USAGE("--camera: '0,inf,0' holds a non-finite number", "still", "--camera", "0,inf,0",
+                 "-o", png);
     EXPECT_USAGE("--camera: expected X,Y,Z, got '1,2'", "still", "--camera", "1,2", "-o", png);
     EXPECT_USAGE("--fov: '0' is outside (0, 180) degrees", "still", "--fov", "0", "-o", png);
-    EXPECT_USAGE("--fov: '180' is outside (0, 180) degrees", "still", "--fov", "180", "-o",
-                 png);
+    EXPECT_USAGE("--fov: '180' is outside (0, 180) degrees", "still", "--fov", "180", "-o", png);
     EXPECT_USAGE("--exposure: '-1' is negative", "still", "--exposure", "-1", "-o", png);
-    EXPECT_USAGE("--quality: unknown quality preset 'ultra'", "still", "--quality", "ultra",
-                 "-o", png);
-    EXPECT_USAGE("look-at target coincides with the camera", "still", "--look-at", "0,1.5,0",
-                 "-o", png);
+    EXPECT_USAGE("--quality: unknown quality preset 'ultra'", "still", "--quality", "ultra", "-o",
+                 png);
+    EXPECT_USAGE("look-at target coincides with the camera", "still", "--look-at", "0,1.5,0", "-o",
+                 png);
     EXPECT_USAGE("no output file", "still");
 }
 
@@ -143,8 +141,7 @@ static void test_bad_outputs(void)
     const char *missing = in_dir(1, "no/such/folder/x.png");
     EXPECT_USAGE(missing, "still", "-o", missing);
     /* A good first output does not get written when a later one is bad. */
-    EXPECT_USAGE(missing, "still", "--size", "8x8", "-o", in_dir(2, "good.png"), "-o",
-                 missing);
+    EXPECT_USAGE(missing, "still", "--size", "8x8", "-o", in_dir(2, "good.png"), "-o", missing);
     /* A folder that cannot be written to (root may write anywhere). */
     const char *ro = in_dir(3, "ro");
     mkdir(ro, 0555);
@@ -168,8 +165,8 @@ static void test_runtime_failures(void)
 {
     /* No EGL vendor at all: every platform fails and the message lists them. */
     const char *png = in_dir(0, "x.png");
-    CHECK(run("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/vendor.json", "still", "--size",
-              "8x8", "-o", png, NULL) == 1);
+    CHECK(run("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/vendor.json", "still", "--size", "8x8",
+              "-o", png, NULL) == 1);
     CHECK_STR_CONTAINS(out_text, "no headless OpenGL 3.3 context");
     CHECK_STR_CONTAINS(out_text, "device:");
     CHECK_STR_CONTAINS(out_text, "surfaceless:");
@@ -200,8 +197,8 @@ static void test_success(void)
 {
     const char *png = in_dir(0, "ok.png");
     const char *exr = in_dir(1, "ok.exr");
-    CHECK(run(NULL, "still", "--size", "32x18", "--time", "2.5", "--yaw", "0.3rad", "-o", png,
-              "-o", exr, NULL) == 0);
+    CHECK(run(NULL, "still", "--size", "32x18", "--time", "2.5", "--yaw", "0.3rad", "-o", png, "-o",
+              exr, NULL) == 0);
     CHECK(access(png, R_OK) == 0);
     CHECK(access(exr, R_OK) == 0);
     CHECK(dir_entries(dir) == 2); /* no temporary files left */

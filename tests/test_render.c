@@ -137,9 +137,9 @@ static void test_sky_and_water(tl_renderer *r)
             float wd = f.depth[(size_t)(s.height - 1 - y) * s.width + x];
             water_depth_ok &= wd > 1.0f && wd < 100.0f;
         }
-    printf("sky mean rgb %.4f %.4f %.4f, water mean rgb %.4f %.4f %.4f\n", sky[0] / (rows * s.width),
-           sky[1] / (rows * s.width), sky[2] / (rows * s.width), water[0] / (rows * s.width),
-           water[1] / (rows * s.width), water[2] / (rows * s.width));
+    printf("sky mean rgb %.4f %.4f %.4f, water mean rgb %.4f %.4f %.4f\n",
+           sky[0] / (rows * s.width), sky[1] / (rows * s.width), sky[2] / (rows * s.width),
+           water[0] / (rows * s.width), water[1] / (rows * s.width), water[2] / (rows * s.width));
     CHECK(luminance((float[]){(float)sky[0], (float)sky[1], (float)sky[2]}) >
           2.0 * luminance((float[]){(float)water[0], (float)water[1], (float)water[2]}));
     CHECK(water[2] > water[0]); /* water is bluer than it is red */

@@ -11,42 +11,42 @@
 static int tl_test_failures = 0;
 static int tl_test_checks = 0;
 
-#define CHECK(cond)                                                                     \
-    do {                                                                                \
-        tl_test_checks++;                                                               \
-        if (!(cond)) {                                                                  \
-            tl_test_failures++;                                                         \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);    \
-        }                                                                               \
+#define CHECK(cond)                                                                                \
+    do {                                                                                           \
+        tl_test_checks++;                                                                          \
+        if (!(cond)) {                                                                             \
+            tl_test_failures++;                                                                    \
+            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);               \
+        }                                                                                          \
     } while (0)
 
-#define CHECK_NEAR(a, b, tol)                                                           \
-    do {                                                                                \
-        double tl_a_ = (double)(a), tl_b_ = (double)(b), tl_t_ = (double)(tol);         \
-        tl_test_checks++;                                                               \
-        if (!(fabs(tl_a_ - tl_b_) <= tl_t_)) {                                          \
-            tl_test_failures++;                                                         \
-            fprintf(stderr, "%s:%d: CHECK_NEAR failed: %s = %.17g, %s = %.17g, tol %g\n", \
-                    __FILE__, __LINE__, #a, tl_a_, #b, tl_b_, tl_t_);                   \
-        }                                                                               \
+#define CHECK_NEAR(a, b, tol)                                                                      \
+    do {                                                                                           \
+        double tl_a_ = (double)(a), tl_b_ = (double)(b), tl_t_ = (double)(tol);                    \
+        tl_test_checks++;                                                                          \
+        if (!(fabs(tl_a_ - tl_b_) <= tl_t_)) {                                                     \
+            tl_test_failures++;                                                                    \
+            fprintf(stderr, "%s:%d: CHECK_NEAR failed: %s = %.17g, %s = %.17g, tol %g\n",          \
+                    __FILE__, __LINE__, #a, tl_a_, #b, tl_b_, tl_t_);                              \
+        }                                                                                          \
     } while (0)
 
-#define CHECK_STR_CONTAINS(haystack, needle)                                            \
-    do {                                                                                \
-        const char *tl_h_ = (haystack), *tl_n_ = (needle);                              \
-        tl_test_checks++;                                                               \
-        if (!tl_h_ || !strstr(tl_h_, tl_n_)) {                                          \
-            tl_test_failures++;                                                         \
-            fprintf(stderr, "%s:%d: expected \"%s\" in \"%s\"\n", __FILE__, __LINE__,   \
-                    tl_n_, tl_h_ ? tl_h_ : "(null)");                                   \
-        }                                                                               \
+#define CHECK_STR_CONTAINS(haystack, needle)                                                       \
+    do {                                                                                           \
+        const char *tl_h_ = (haystack), *tl_n_ = (needle);                                         \
+        tl_test_checks++;                                                                          \
+        if (!tl_h_ || !strstr(tl_h_, tl_n_)) {                                                     \
+            tl_test_failures++;                                                                    \
+            fprintf(stderr, "%s:%d: expected \"%s\" in \"%s\"\n", __FILE__, __LINE__, tl_n_,       \
+                    tl_h_ ? tl_h_ : "(null)");                                                     \
+        }                                                                                          \
     } while (0)
 
 /* Ends main(): prints a summary and returns the process status. */
-#define TEST_END()                                                                      \
-    do {                                                                                \
-        printf("%d checks, %d failed\n", tl_test_checks, tl_test_failures);             \
-        return tl_test_failures ? 1 : 0;                                                \
+#define TEST_END()                                                                                 \
+    do {                                                                                           \
+        printf("%d checks, %d failed\n", tl_test_checks, tl_test_failures);                        \
+        return tl_test_failures ? 1 : 0;                                                           \
     } while (0)
 
 #endif

@@ -20,8 +20,7 @@ bool tl_args_done(const tl_args *a)
     return a->index >= a->argc;
 }
 
-bool tl_args_match(tl_args *a, const char *name, const char *alias, bool takes_value,
-                   tl_error *err)
+bool tl_args_match(tl_args *a, const char *name, const char *alias, bool takes_value, tl_error *err)
 {
     const char *arg = a->argv[a->index];
     const char *names[2] = {name, alias};
@@ -97,8 +96,10 @@ int tl_args_angle(const char *flag, const char *text, double *radians, tl_error 
     }
     double v;
     if (tl_args_double(flag, buf, &v, err))
-        return tl_error_set(err, TL_ERR_USAGE, "%s: expected an angle (degrees, or NUMrad), "
-                            "got '%s'", flag, text);
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "%s: expected an angle (degrees, or NUMrad), "
+                            "got '%s'",
+                            flag, text);
     *radians = v * scale;
     return TL_OK;
 }
@@ -109,17 +110,14 @@ int tl_args_size(const char *flag, const char *text, int *w, int *h, tl_error *e
     errno = 0;
     long a = strtol(text, &end, 10);
     if (end == text || (*end != 'x' && *end != 'X'))
-        return tl_error_set(err, TL_ERR_USAGE, "%s: expected WIDTHxHEIGHT, got '%s'", flag,
-                            text);
+        return tl_error_set(err, TL_ERR_USAGE, "%s: expected WIDTHxHEIGHT, got '%s'", flag, text);
     const char *second = end + 1;
     long b = strtol(second, &end, 10);
     if (end == second || *end != '\0' || errno == ERANGE)
-        return tl_error_set(err, TL_ERR_USAGE, "%s: expected WIDTHxHEIGHT, got '%s'", flag,
-                            text);
+        return tl_error_set(err, TL_ERR_USAGE, "%s: expected WIDTHxHEIGHT, got '%s'", flag, text);
     if (a < 1 || b < 1 || a > TL_MAX_SIZE || b > TL_MAX_SIZE)
-        return tl_error_set(err, TL_ERR_USAGE,
-                            "%s: %ldx%ld is out of range (each side 1..%d)", flag, a, b,
-                            TL_MAX_SIZE);
+        return tl_error_set(err, TL_ERR_USAGE, "%s: %ldx%ld is out of range (each side 1..%d)",
+                            flag, a, b, TL_MAX_SIZE);
     *w = (int)a;
     *h = (int)b;
     return TL_OK;

@@ -74,11 +74,9 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
         } else if (tl_args_match(&a, "--time", NULL, true, err)) {
             rc = a.value ? tl_args_double(a.flag, a.value, &s->time, err) : TL_ERR_USAGE;
         } else if (tl_args_match(&a, "--size", NULL, true, err)) {
-            rc = a.value ? tl_args_size(a.flag, a.value, &s->width, &s->height, err)
-                         : TL_ERR_USAGE;
+            rc = a.value ? tl_args_size(a.flag, a.value, &s->width, &s->height, err) : TL_ERR_USAGE;
         } else if (tl_args_match(&a, "--camera", NULL, true, err)) {
-            rc = a.value ? tl_args_vec3(a.flag, a.value, s->camera.position, err)
-                         : TL_ERR_USAGE;
+            rc = a.value ? tl_args_vec3(a.flag, a.value, s->camera.position, err) : TL_ERR_USAGE;
         } else if (tl_args_match(&a, "--look-at", NULL, true, err)) {
             rc = a.value ? tl_args_vec3(a.flag, a.value, o->look_at, err) : TL_ERR_USAGE;
             o->has_look_at = 1;
@@ -94,8 +92,7 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
                 rc = tl_error_set(err, TL_ERR_USAGE, "--fov: '%s' is outside (0, 180) degrees",
                                   a.value);
         } else if (tl_args_match(&a, "--sun-elevation", NULL, true, err)) {
-            rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.elevation, err)
-                         : TL_ERR_USAGE;
+            rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.elevation, err) : TL_ERR_USAGE;
             if (!rc && fabs(s->sun.elevation) > M_PI / 2)
                 rc = tl_error_set(err, TL_ERR_USAGE,
                                   "--sun-elevation: '%s' is outside -90..90 degrees", a.value);
@@ -177,8 +174,8 @@ int tl_cli_still(int argc, char **argv)
     char camera_text[256];
     snprintf(camera_text, sizeof camera_text,
              "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
-             cam->position[0], cam->position[1], cam->position[2], cam->yaw, cam->pitch,
-             cam->roll, cam->vfov);
+             cam->position[0], cam->position[1], cam->position[2], cam->yaw, cam->pitch, cam->roll,
+             cam->vfov);
     const tl_meta meta[] = {
         {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
         {"tideline/time", TL_META_DOUBLE, NULL, o.scene.time, 0},

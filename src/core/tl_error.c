@@ -27,8 +27,8 @@ int tl_error_set(tl_error *err, tl_status status, const char *fmt, ...)
     return (int)status;
 }
 
-int tl_error_set_at(tl_error *err, tl_status status, const char *file, int line,
-                    int column, const char *fmt, ...)
+int tl_error_set_at(tl_error *err, tl_status status, const char *file, int line, int column,
+                    const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);

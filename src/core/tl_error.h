@@ -8,7 +8,7 @@
 
 #include <stdarg.h>
 
-#define TL_ERROR_MSG_MAX 1024
+#define TL_ERROR_MSG_MAX  1024
 #define TL_ERROR_PATH_MAX 512
 
 typedef enum tl_status {
@@ -34,12 +34,10 @@ int tl_error_set(tl_error *err, tl_status status, const char *fmt, ...)
 int tl_error_setv(tl_error *err, tl_status status, const char *fmt, va_list ap);
 
 /* Like tl_error_set, and records a source location. */
-int tl_error_set_at(tl_error *err, tl_status status, const char *file, int line,
-                    int column, const char *fmt, ...)
-    __attribute__((format(printf, 6, 7)));
+int tl_error_set_at(tl_error *err, tl_status status, const char *file, int line, int column,
+                    const char *fmt, ...) __attribute__((format(printf, 6, 7)));
 
 /* Prepends "context: " to an existing message (e.g. a file name). */
-void tl_error_prefix(tl_error *err, const char *fmt, ...)
-    __attribute__((format(printf, 2, 3)));
+void tl_error_prefix(tl_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

@@ -1,7 +1,9 @@
 #include "tl_gl_context.h"
 
+/* epoxy must come before any other GL header. */
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+
 #include <GLFW/glfw3.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,8 +63,7 @@ static int make_context(struct tl_gl_context *c, EGLDisplay dpy, char *why, size
         return 0;
     }
     if (!eglBindAPI(EGL_OPENGL_API)) {
-        snprintf(why, why_size, "desktop OpenGL not supported (%s)",
-                 egl_error_name(eglGetError()));
+        snprintf(why, why_size, "desktop OpenGL not supported (%s)", egl_error_name(eglGetError()));
         eglTerminate(dpy);
         return 0;
     }
@@ -77,13 +78,16 @@ static int make_context(struct tl_gl_context *c, EGLDisplay dpy, char *why, size
             return 0;
         }
     }
-    const EGLint ctx_attrs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+    const EGLint ctx_attrs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                3,
+                                EGL_CONTEXT_MINOR_VERSION,
+                                3,
                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                EGL_NONE};
     EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, ctx_attrs);
     if (ctx == EGL_NO_CONTEXT) {
-        snprintf(why, why_size, "no OpenGL 3.3 core context (%s)",
-                 egl_error_name(eglGetError()));
+        snprintf(why, why_size, "no OpenGL 3.3 core context (%s)", egl_error_name(eglGetError()));
         eglTerminate(dpy);
         return 0;
     }
@@ -170,8 +174,8 @@ int tl_gl_context_create_headless(tl_gl_context **out, tl_error *err)
             return TL_OK;
         }
         size_t used = strlen(tried);
-        snprintf(tried + used, sizeof tried - used, "%s%s: %s", used ? "; " : "",
-                 platform_names[p], why);
+        snprintf(tried + used, sizeof tried - used, "%s%s: %s", used ? "; " : "", platform_names[p],
+                 why);
     }
     free(c);
     return tl_error_set(err, TL_ERR_RUNTIME,

@@ -139,8 +139,8 @@ static void target_free(target *t)
 }
 
 /* (Re)creates `t` at the size with the given internal formats. */
-static int target_ensure(target *t, int width, int height, int attachments,
-                         const GLenum *formats, tl_error *err)
+static int target_ensure(target *t, int width, int height, int attachments, const GLenum *formats,
+                         tl_error *err)
 {
     if (t->fbo && t->width == width && t->height == height)
         return TL_OK;
@@ -265,8 +265,7 @@ static void read_rows(int index, int width, int height, int channels, float *dst
     }
 }
 
-int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame,
-                       tl_error *err)
+int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)
 {
     if (frame->width != u->width || frame->height != u->height)
         return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");

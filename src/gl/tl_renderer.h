@@ -20,8 +20,7 @@ void tl_renderer_destroy(tl_renderer *r);
 
 /* Renders one frame of u->width x u->height into `frame` (allocated by the
  * caller with the same size). Rows come back top row first. */
-int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame,
-                       tl_error *err);
+int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err);
 
 /* Evaluates the shader's wave height at `count` camera-relative points
  * (x, z pairs) with `octaves` octaves: the GPU side of the accuracy tests. */

@@ -1,1 +1,5 @@
-set(TL_IMAGE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_frame.c)
+set(TL_IMAGE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_frame.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_atomic.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_exr.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_png.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_image_io.c)

@@ -15,8 +15,7 @@ int tl_frame_alloc(tl_frame *frame, int width, int height, tl_error *err)
     frame->display = calloc(pixels * 4, sizeof(float));
     if (!frame->color || !frame->depth || !frame->display) {
         tl_frame_free(frame);
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for a %dx%d frame", width,
-                            height);
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for a %dx%d frame", width, height);
     }
     frame->width = width;
     frame->height = height;

@@ -7,10 +7,8 @@
  * same octave counts (the look authors see) and a finer hit epsilon;
  * `reference` is the slow ground truth the bench compares against. */
 static const tl_quality presets[] = {
-    {"draft", 8, 18, 32, 0.02, 0.02},
-    {"preview", 10, 26, 48, 0.01, 0.01},
-    {"final", 12, 36, 96, 0.005, 0.01},
-    {"reference", 12, 48, 400, 0.0005, 0.005},
+    {"draft", 8, 18, 32, 0.02, 0.02},   {"preview", 10, 26, 48, 0.01, 0.01},
+    {"final", 12, 36, 96, 0.005, 0.01}, {"reference", 12, 48, 400, 0.0005, 0.005},
     {"seed", 12, 36, 64, 0.01, 0.01},
 };
 

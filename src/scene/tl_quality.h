@@ -11,11 +11,11 @@
 
 typedef struct tl_quality {
     const char *name;
-    int march_octaves;    /* octaves of the height field while marching */
-    int normal_octaves;   /* octaves for the shading normal */
-    int march_steps;      /* max adaptive steps between the two planes */
-    double hit_epsilon;   /* metres above the surface that count as a hit */
-    double normal_epsilon;/* finite-difference step for normals, metres */
+    int march_octaves;     /* octaves of the height field while marching */
+    int normal_octaves;    /* octaves for the shading normal */
+    int march_steps;       /* max adaptive steps between the two planes */
+    double hit_epsilon;    /* metres above the surface that count as a hit */
+    double normal_epsilon; /* finite-difference step for normals, metres */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

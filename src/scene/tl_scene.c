@@ -65,8 +65,7 @@ static void cross3(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3],
-                           double forward[3])
+void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3], double forward[3])
 {
     double cp = cos(cam->pitch);
     forward[0] = cp * sin(cam->yaw);
@@ -118,8 +117,7 @@ int tl_scene_validate(const tl_scene *s, tl_error *err)
         !isfinite(s->camera.pitch) || !isfinite(s->camera.roll))
         return tl_error_set(err, TL_ERR_USAGE, "camera position/orientation is not finite");
     if (!(s->camera.vfov > 0.0 && s->camera.vfov < M_PI))
-        return tl_error_set(err, TL_ERR_USAGE,
-                            "camera field of view %.6g deg is outside (0, 180)",
+        return tl_error_set(err, TL_ERR_USAGE, "camera field of view %.6g deg is outside (0, 180)",
                             s->camera.vfov / TL_DEG);
     if (!(s->ocean.depth > 0.0) || !isfinite(s->ocean.depth))
         return tl_error_set(err, TL_ERR_USAGE, "ocean depth must be a positive number");
@@ -128,7 +126,6 @@ int tl_scene_validate(const tl_scene *s, tl_error *err)
     const tl_quality *q = &s->quality;
     if (q->march_octaves < 1 || q->march_octaves > TL_MAX_OCTAVES || q->normal_octaves < 1 ||
         q->normal_octaves > TL_MAX_OCTAVES)
-        return tl_error_set(err, TL_ERR_USAGE, "octave counts must be in 1..%d",
-                            TL_MAX_OCTAVES);
+        return tl_error_set(err, TL_ERR_USAGE, "octave counts must be in 1..%d", TL_MAX_OCTAVES);
     return TL_OK;
 }

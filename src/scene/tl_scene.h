@@ -15,9 +15,9 @@
 #include "scene/tl_quality.h"
 
 typedef struct tl_camera {
-    double position[3]; /* world metres */
+    double position[3];      /* world metres */
     double yaw, pitch, roll; /* radians */
-    double vfov;        /* vertical field of view, radians, in (0, pi) */
+    double vfov;             /* vertical field of view, radians, in (0, pi) */
 } tl_camera;
 
 typedef struct tl_sun {
@@ -40,13 +40,13 @@ typedef struct tl_ocean {
 } tl_ocean;
 
 typedef struct tl_water {
-    double fresnel_f0;        /* Schlick F0 (0.04) */
-    double scatter_color[3];  /* linear RGB (0.0293, 0.0698, 0.1717) */
-    double scatter_strength;  /* (0.1) */
-    double scatter_base;      /* scattering at the wave troughs (0.2) */
-    double normal_smooth_max; /* max blend of far normals toward up (0.8) */
-    double normal_smooth_rate;/* per metre inside the sqrt (0.01) */
-    double normal_smooth_gain;/* (1.1) */
+    double fresnel_f0;         /* Schlick F0 (0.04) */
+    double scatter_color[3];   /* linear RGB (0.0293, 0.0698, 0.1717) */
+    double scatter_strength;   /* (0.1) */
+    double scatter_base;       /* scattering at the wave troughs (0.2) */
+    double normal_smooth_max;  /* max blend of far normals toward up (0.8) */
+    double normal_smooth_rate; /* per metre inside the sqrt (0.01) */
+    double normal_smooth_gain; /* (1.1) */
 } tl_water;
 
 typedef struct tl_sky {
@@ -73,8 +73,7 @@ void tl_scene_defaults(tl_scene *scene);
 void tl_scene_sun_direction(const tl_sun *sun, double out[3]);
 
 /* Camera basis (right, up, forward), all unit vectors, from yaw/pitch/roll. */
-void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3],
-                           double forward[3]);
+void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3], double forward[3]);
 
 /* Sets yaw and pitch so the camera looks at `target` (roll unchanged).
  * Fails if the target coincides with the camera. */

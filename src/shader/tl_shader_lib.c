@@ -6,7 +6,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define MAX_INCLUDE_DEPTH 8
+#define MAX_INCLUDE_DEPTH     8
 #define MAX_SHADER_FILE_BYTES (1 << 20)
 
 typedef struct buffer {

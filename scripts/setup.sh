@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Sets tideline up on Debian 12: installs the Debian packages that are
+# missing (quietly; nothing when all are present), then configures and
+# builds into build/. Safe to run any number of times.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  build-essential cmake pkg-config # toolchain
+  libegl-dev libegl-mesa0          # EGL (headless GL) and Mesa's EGL driver
+  libgl1-mesa-dri                  # llvmpipe, the software GL used without a GPU
+  libepoxy-dev                     # GL/EGL function dispatch
+  libcglm-dev                      # vector math
+  libopenexr-dev                   # OpenEXR 3 C API (OpenEXRCore)
+  libpng-dev                       # PNG output
+  libglfw3-dev                     # windows (the live preview)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  echo "setup: installing ${missing[*]}"
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build -j"$(nproc)" -- --no-print-directory | grep -v '^\[' || true
+test -x build/tideline
