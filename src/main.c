@@ -11,12 +11,14 @@ static const char usage[] =
     "\n"
     "Commands:\n"
     "  still     render one frame headless to EXR and/or PNG\n"
+    "  check     validate a timeline and summarise it\n"
+    "  eval      print a timeline's channel values at a time or frames\n"
     "\n"
     "Options:\n"
     "  -h, --help       show this help ('tideline COMMAND --help' for a command)\n"
     "  --version        print the version ('--version -v' adds library versions)\n"
     "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 usage error.\n";
+    "Exit status: 0 success, 1 runtime failure or invalid timeline, 2 usage error.\n";
 
 int main(int argc, char **argv)
 {
@@ -40,6 +42,10 @@ int main(int argc, char **argv)
     }
     if (strcmp(cmd, "still") == 0)
         return tl_cli_still(argc - 1, argv + 1);
+    if (strcmp(cmd, "check") == 0)
+        return tl_cli_check(argc - 1, argv + 1);
+    if (strcmp(cmd, "eval") == 0)
+        return tl_cli_eval(argc - 1, argv + 1);
     fprintf(stderr, "tideline: unknown command '%s' (see 'tideline --help')\n", cmd);
     return 2;
 }

@@ -7,6 +7,13 @@
 #include "core/tl_error.h"
 
 int tl_cli_still(int argc, char **argv);
+int tl_cli_check(int argc, char **argv);
+int tl_cli_eval(int argc, char **argv);
+
+/* Parses a timeline file, printing every diagnostic; returns the exit
+ * status (0, or 1 when the file is invalid or unreadable). */
+struct tl_timeline;
+int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl);
 
 /* Prints err as one line (with file:line:col when it has one). */
 void tl_cli_print_error(const char *command, const tl_error *err);

@@ -10,13 +10,16 @@
 #include "image/tl_image_io.h"
 #include "render/tl_render.h"
 #include "scene/tl_scene.h"
+#include "timeline/tl_parse.h"
 
 #define MAX_OUTPUTS 8
 
 static const char usage[] =
-    "Usage: tideline still [options] -o FILE [-o FILE...]\n"
+    "Usage: tideline still [TIMELINE.tl] [options] -o FILE [-o FILE...]\n"
     "\n"
-    "Render one frame headless. The extension of each -o picks the format:\n"
+    "Render one frame headless: the default ocean, or the scene a timeline gives\n"
+    "at --time / --frame. Flags below override what the timeline says.\n"
+    "The extension of each -o picks the format:\n"
     "  .exr  linear scene-referred half RGBA + float Z (distance along the view\n"
     "        ray, metres; sky = 1e10), ZIP compressed\n"
     "  .png  tonemapped (exposure, ACES, sRGB) 8-bit RGB\n"
@@ -24,7 +27,8 @@ static const char usage[] =
     "\n"
     "Options:\n"
     "  -o, --output FILE      output file (repeat for several formats)\n"
-    "  --time T               seconds since the start (default 0)\n"
+    "  --time T               time since the start: 2.5, 2.5s, 1500ms, 60f (default 0)\n"
+    "  --frame N              the timeline's frame N (time N / fps)\n"
     "  --size WxH             image size, each side 1..16384 (default 1280x720)\n"
     "  --camera X,Y,Z         camera position in metres (default 0,1.5,0;\n"
     "                         +Y up, +Z north, +X east, water at y = 0)\n"
@@ -42,8 +46,16 @@ static const char usage[] =
     "  -h, --help             show this help\n"
     "Angles accept a 'rad' suffix for radians.\n";
 
+/* What the flags say; each has_ flag marks a value that overrides the
+ * timeline (or the defaults). */
 typedef struct still_options {
-    tl_scene scene;
+    const char *timeline;
+    const char *time_text;
+    long frame;
+    int has_frame;
+    tl_scene values; /* holds the flag values; only fields with has_ set count */
+    int has_size, has_camera, has_yaw, has_pitch, has_roll, has_fov, has_sun_elevation,
+        has_sun_azimuth, has_exposure, has_quality;
     const char *outputs[MAX_OUTPUTS];
     int output_count;
     double look_at[3];
@@ -57,9 +69,10 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
     tl_args a;
     tl_args_init(&a, argc, argv);
     a.index = 1;
-    tl_scene *s = &o->scene;
+    tl_scene *s = &o->values;
     while (!tl_args_done(&a)) {
         int rc = TL_OK;
+        const char *pos;
         if (tl_args_match(&a, "--help", "-h", false, err)) {
             *help = 1;
             return TL_OK;
@@ -72,43 +85,67 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
                 return tl_error_set(err, TL_ERR_USAGE, "at most %d outputs", MAX_OUTPUTS);
             o->outputs[o->output_count++] = a.value;
         } else if (tl_args_match(&a, "--time", NULL, true, err)) {
-            rc = a.value ? tl_args_double(a.flag, a.value, &s->time, err) : TL_ERR_USAGE;
+            o->time_text = a.value;
+            rc = a.value ? TL_OK : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--frame", NULL, true, err)) {
+            double f = 0.0;
+            rc = a.value ? tl_args_double(a.flag, a.value, &f, err) : TL_ERR_USAGE;
+            if (!rc && (f < 0.0 || f != floor(f) || f > 1e12))
+                rc = tl_error_set(err, TL_ERR_USAGE, "--frame: '%s' is not a frame number",
+                                  a.value);
+            o->frame = (long)f;
+            o->has_frame = 1;
         } else if (tl_args_match(&a, "--size", NULL, true, err)) {
-            rc = a.value ? tl_args_size(a.flag, a.value, &s->width, &s->height, err) : TL_ERR_USAGE;
+            rc = a.value ? tl_args_size(a.flag, a.value, &s->width, &s->height, err)
+                         : TL_ERR_USAGE;
+            o->has_size = 1;
         } else if (tl_args_match(&a, "--camera", NULL, true, err)) {
-            rc = a.value ? tl_args_vec3(a.flag, a.value, s->camera.position, err) : TL_ERR_USAGE;
+            rc = a.value ? tl_args_vec3(a.flag, a.value, s->camera.position, err)
+                         : TL_ERR_USAGE;
+            o->has_camera = 1;
         } else if (tl_args_match(&a, "--look-at", NULL, true, err)) {
             rc = a.value ? tl_args_vec3(a.flag, a.value, o->look_at, err) : TL_ERR_USAGE;
             o->has_look_at = 1;
         } else if (tl_args_match(&a, "--yaw", NULL, true, err)) {
             rc = a.value ? tl_args_angle(a.flag, a.value, &s->camera.yaw, err) : TL_ERR_USAGE;
+            o->has_yaw = 1;
         } else if (tl_args_match(&a, "--pitch", NULL, true, err)) {
             rc = a.value ? tl_args_angle(a.flag, a.value, &s->camera.pitch, err) : TL_ERR_USAGE;
+            o->has_pitch = 1;
         } else if (tl_args_match(&a, "--roll", NULL, true, err)) {
             rc = a.value ? tl_args_angle(a.flag, a.value, &s->camera.roll, err) : TL_ERR_USAGE;
+            o->has_roll = 1;
         } else if (tl_args_match(&a, "--fov", NULL, true, err)) {
             rc = a.value ? tl_args_angle(a.flag, a.value, &s->camera.vfov, err) : TL_ERR_USAGE;
             if (!rc && !(s->camera.vfov > 0.0 && s->camera.vfov < M_PI))
                 rc = tl_error_set(err, TL_ERR_USAGE, "--fov: '%s' is outside (0, 180) degrees",
                                   a.value);
+            o->has_fov = 1;
         } else if (tl_args_match(&a, "--sun-elevation", NULL, true, err)) {
-            rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.elevation, err) : TL_ERR_USAGE;
+            rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.elevation, err)
+                         : TL_ERR_USAGE;
             if (!rc && fabs(s->sun.elevation) > M_PI / 2)
                 rc = tl_error_set(err, TL_ERR_USAGE,
                                   "--sun-elevation: '%s' is outside -90..90 degrees", a.value);
+            o->has_sun_elevation = 1;
         } else if (tl_args_match(&a, "--sun-azimuth", NULL, true, err)) {
             rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.azimuth, err) : TL_ERR_USAGE;
+            o->has_sun_azimuth = 1;
         } else if (tl_args_match(&a, "--exposure", NULL, true, err)) {
             rc = a.value ? tl_args_double(a.flag, a.value, &s->exposure, err) : TL_ERR_USAGE;
             if (!rc && s->exposure < 0.0)
                 rc = tl_error_set(err, TL_ERR_USAGE, "--exposure: '%s' is negative", a.value);
+            o->has_exposure = 1;
         } else if (tl_args_match(&a, "--quality", NULL, true, err)) {
             rc = a.value ? tl_quality_preset(a.value, &s->quality, err) : TL_ERR_USAGE;
-            if (rc)
+            if (rc && a.value)
                 tl_error_prefix(err, "--quality");
+            o->has_quality = 1;
         } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
             o->shader_dir = a.value;
             rc = a.value ? TL_OK : TL_ERR_USAGE;
+        } else if (!o->timeline && tl_args_positional(&a, &pos)) {
+            o->timeline = pos;
         } else {
             return tl_args_unknown(&a, "still", err);
         }
@@ -117,7 +154,71 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
     }
     if (o->output_count == 0)
         return tl_error_set(err, TL_ERR_USAGE, "no output file: give -o FILE.exr or -o FILE.png");
+    if (o->time_text && o->has_frame)
+        return tl_error_set(err, TL_ERR_USAGE, "give --time or --frame, not both");
+    if (o->has_frame && !o->timeline)
+        return tl_error_set(err, TL_ERR_USAGE, "--frame needs a timeline file");
     return TL_OK;
+}
+
+/* The scene to render: the timeline's at the requested time (or the
+ * defaults), then every flag the user gave on top. */
+static int build_scene(still_options *o, tl_scene *scene, tl_error *err)
+{
+    double fps = 24.0, t = 0.0;
+    tl_timeline tl;
+    int have_timeline = 0;
+    if (o->timeline) {
+        if (tl_cli_load_timeline("still", o->timeline, &tl))
+            return -1; /* diagnostics already printed */
+        have_timeline = 1;
+        fps = tl.fps;
+    }
+    int rc = TL_OK;
+    if (o->time_text && tl_parse_time_text(o->time_text, fps, &t, err)) {
+        tl_error_prefix(err, "--time");
+        rc = TL_ERR_USAGE;
+    }
+    if (!rc && o->has_frame)
+        t = tl_timeline_frame_time(&tl, o->frame);
+    if (!rc) {
+        if (have_timeline)
+            tl_timeline_eval(&tl, t, scene);
+        else
+            tl_scene_defaults(scene);
+        scene->time = t;
+    }
+    if (have_timeline)
+        tl_timeline_free(&tl);
+    if (rc)
+        return rc;
+
+    const tl_scene *v = &o->values;
+    if (o->has_size) {
+        scene->width = v->width;
+        scene->height = v->height;
+    }
+    if (o->has_camera)
+        memcpy(scene->camera.position, v->camera.position, sizeof v->camera.position);
+    if (o->has_yaw)
+        scene->camera.yaw = v->camera.yaw;
+    if (o->has_pitch)
+        scene->camera.pitch = v->camera.pitch;
+    if (o->has_roll)
+        scene->camera.roll = v->camera.roll;
+    if (o->has_fov)
+        scene->camera.vfov = v->camera.vfov;
+    if (o->has_sun_elevation)
+        scene->sun.elevation = v->sun.elevation;
+    if (o->has_sun_azimuth)
+        scene->sun.azimuth = v->sun.azimuth;
+    if (o->has_exposure)
+        scene->exposure = v->exposure;
+    if (o->has_quality)
+        scene->quality = v->quality;
+    if (o->has_look_at)
+        rc = tl_scene_camera_look_at(&scene->camera, o->look_at, err);
+    return rc ? rc : tl_scene_validate(scene, err);
 }
 
 static double now_seconds(void)
@@ -132,17 +233,19 @@ int tl_cli_still(int argc, char **argv)
     tl_error err;
     tl_error_clear(&err);
     still_options o = {0};
-    tl_scene_defaults(&o.scene);
+    tl_scene_defaults(&o.values);
     int help = 0;
     int rc = parse(argc, argv, &o, &help, &err);
     if (help) {
         fputs(usage, stdout);
         return 0;
     }
-    if (!rc && o.has_look_at)
-        rc = tl_scene_camera_look_at(&o.scene.camera, o.look_at, &err);
-    if (!rc)
-        rc = tl_scene_validate(&o.scene, &err);
+    tl_scene scene;
+    if (!rc) {
+        rc = build_scene(&o, &scene, &err);
+        if (rc < 0)
+            return 1; /* the timeline's diagnostics were printed */
+    }
     /* Check every output before rendering: a bad path costs nothing. */
     for (int i = 0; !rc && i < o.output_count; i++)
         if (tl_image_check_writable(o.outputs[i], &err))
@@ -164,13 +267,13 @@ int tl_cli_still(int argc, char **argv)
         fprintf(stderr, "tideline still: %s\n", tl_render_describe(render));
     double t1 = now_seconds();
     if (!rc)
-        rc = tl_render_frame(render, &o.scene, &frame, &err);
+        rc = tl_render_frame(render, &scene, &frame, &err);
     double t2 = now_seconds();
     if (!rc && o.verbose)
         fprintf(stderr, "tideline still: %dx%d in %.1f ms (context and shaders %.1f ms)\n",
-                o.scene.width, o.scene.height, (t2 - t1) * 1e3, (t1 - t0) * 1e3);
+                scene.width, scene.height, (t2 - t1) * 1e3, (t1 - t0) * 1e3);
 
-    const tl_camera *cam = &o.scene.camera;
+    const tl_camera *cam = &scene.camera;
     char camera_text[256];
     snprintf(camera_text, sizeof camera_text,
              "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
@@ -178,9 +281,10 @@ int tl_cli_still(int argc, char **argv)
              cam->vfov);
     const tl_meta meta[] = {
         {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
-        {"tideline/time", TL_META_DOUBLE, NULL, o.scene.time, 0},
+        {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0},
+        {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0},
         {"tideline/camera", TL_META_STRING, camera_text, 0, 0},
-        {"tideline/quality", TL_META_STRING, o.scene.quality.name, 0, 0},
+        {"tideline/quality", TL_META_STRING, scene.quality.name, 0, 0},
     };
     tl_image_options opt = {0, meta, (int)(sizeof meta / sizeof meta[0])};
     for (int i = 0; !rc && i < o.output_count; i++) {

@@ -46,7 +46,32 @@ void tl_scene_defaults(tl_scene *s)
     s->water.normal_smooth_rate = 0.01;
     s->water.normal_smooth_gain = 1.1;
 
+    s->water.absorption[0] = 0.34; /* Pope & Fry 1997: 650, 550, 450 nm */
+    s->water.absorption[1] = 0.057;
+    s->water.absorption[2] = 0.009;
+    s->water.foam = 0.0;
+
     s->sky.brightness = 0.5;
+
+    s->fog.density = 0.0;
+    s->fog.color[0] = 0.55;
+    s->fog.color[1] = 0.65;
+    s->fog.color[2] = 0.75;
+    s->underwater.mode = TL_UNDERWATER_AUTO;
+
+    s->giant.enabled = false;
+    s->giant.height = 12.0;
+    s->giant.width = 120.0;
+    s->giant.wavelength = 80.0;
+    s->giant.angle = 0.0;
+    s->giant.falloff = 30.0;
+    s->giant.phase = 0.0;
+    s->giant.steepness = 0.6;
+    s->giant.curve_strength = 0.3;
+    s->giant.fade = 1.0;
+
+    s->boat.enabled = false;
+    s->boat.size = 8.0;
     s->quality = tl_quality_default();
 }
 

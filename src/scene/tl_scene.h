@@ -40,6 +40,8 @@ typedef struct tl_ocean {
 } tl_ocean;
 
 typedef struct tl_water {
+    double absorption[3];      /* per metre, R G B (pure water: 0.34, 0.057, 0.009) */
+    double foam;               /* foam amount on crests, 0..1 */
     double fresnel_f0;         /* Schlick F0 (0.04) */
     double scatter_color[3];   /* linear RGB (0.0293, 0.0698, 0.1717) */
     double scatter_strength;   /* (0.1) */
@@ -53,6 +55,45 @@ typedef struct tl_sky {
     double brightness; /* scale of the cheap atmosphere (0.5) */
 } tl_sky;
 
+/* Distance fog: extinction plus in-scatter toward `color`. */
+typedef struct tl_fog {
+    double density;  /* per metre; 0 turns fog off */
+    double color[3]; /* linear RGB */
+} tl_fog;
+
+typedef enum tl_underwater_mode {
+    TL_UNDERWATER_AUTO = 0, /* under water when the camera is below the surface */
+    TL_UNDERWATER_ON,
+    TL_UNDERWATER_OFF,
+} tl_underwater_mode;
+
+typedef struct tl_underwater {
+    tl_underwater_mode mode;
+} tl_underwater;
+
+/* The scripted giant wave (seed 003, "North Star"): one Gerstner crest
+ * with width and falloff masks, faded in and out by the timeline. */
+typedef struct tl_giant_wave {
+    bool enabled;
+    double height;         /* crest amplitude, metres */
+    double width;          /* extent across the travel direction, metres */
+    double wavelength;     /* metres */
+    double angle;          /* travel direction, compass radians */
+    double center[2];      /* world x, z of the crest centre */
+    double falloff;        /* softness of the width/crest masks, metres */
+    double phase;          /* radians along the travel direction */
+    double steepness;      /* Gerstner steepness in [0, 1] */
+    double curve_strength; /* crest curl along the travel direction, [0, 1] */
+    double fade;           /* 0 invisible .. 1 full strength */
+} tl_giant_wave;
+
+typedef struct tl_boat {
+    bool enabled;     /* true when the timeline has a boat path */
+    double position[3]; /* world metres; y follows the water */
+    double heading;   /* compass radians, from the path tangent */
+    double size;      /* hull length, metres */
+} tl_boat;
+
 typedef struct tl_scene {
     double time; /* seconds since the start of the timeline */
     int width, height;
@@ -62,6 +103,10 @@ typedef struct tl_scene {
     tl_ocean ocean;
     tl_water water;
     tl_sky sky;
+    tl_fog fog;
+    tl_underwater underwater;
+    tl_giant_wave giant;
+    tl_boat boat;
     tl_quality quality;
 } tl_scene;
 

@@ -1,0 +1,282 @@
+/* tideline check / tideline eval: validate a timeline and print what it
+ * evaluates to, for authors and for tools (--json). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/tl_args.h"
+#include "cli/tl_cli.h"
+#include "timeline/tl_parse.h"
+
+#define DEG (M_PI / 180.0)
+
+static const char check_usage[] =
+    "Usage: tideline check FILE.tl\n"
+    "\n"
+    "Validate a timeline. Prints every error with file:line:column (exit 1), or\n"
+    "a summary: duration, fps, frame count, size, the channels that are set and\n"
+    "keyed, paths, links, and the features the scene requires (exit 0).\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help   show this help\n";
+
+static const char eval_usage[] =
+    "Usage: tideline eval FILE.tl (--at T | --frames A-B) [--json]\n"
+    "\n"
+    "Print every channel's evaluated value. Angles are printed in degrees,\n"
+    "lengths in metres, as the language writes them.\n"
+    "\n"
+    "Options:\n"
+    "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps)\n"
+    "  --frames A-B   every frame from A to B inclusive (frame time = frame / fps)\n"
+    "  --json         one JSON object: {\"file\", \"fps\", \"samples\": [{\"time\",\n"
+    "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\"}]}\n"
+    "  -h, --help     show this help\n";
+
+/* Loads a timeline, printing its diagnostics; returns the exit status. */
+int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl)
+{
+    tl_diags diags;
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_timeline_parse_file(path, tl, &diags, &err) == TL_OK)
+        return 0;
+    if (diags.count)
+        tl_diags_write(&diags, stderr);
+    else
+        tl_cli_print_error(command, &err);
+    return 1;
+}
+
+static void list_tracks(const tl_timeline *tl, tl_track_state state, const char *label)
+{
+    int first = 1;
+    for (int i = 0; i < tl_channel_count(); i++) {
+        if (tl->tracks[i].state != state)
+            continue;
+        printf("%s%s", first ? label : ", ", tl_channel_at(i)->name);
+        first = 0;
+    }
+    if (!first)
+        printf("\n");
+}
+
+int tl_cli_check(int argc, char **argv)
+{
+    tl_args a;
+    tl_args_init(&a, argc, argv);
+    a.index = 1;
+    tl_error err;
+    tl_error_clear(&err);
+    const char *file = NULL;
+    while (!tl_args_done(&a)) {
+        const char *pos;
+        if (tl_args_match(&a, "--help", "-h", false, &err)) {
+            fputs(check_usage, stdout);
+            return 0;
+        } else if (!file && tl_args_positional(&a, &pos)) {
+            file = pos;
+        } else {
+            tl_args_unknown(&a, "check", &err);
+            tl_cli_print_error("check", &err);
+            return 2;
+        }
+    }
+    if (!file) {
+        fprintf(stderr, "tideline check: no timeline file given (see 'tideline check --help')\n");
+        return 2;
+    }
+    tl_timeline tl;
+    int rc = tl_cli_load_timeline("check", file, &tl);
+    if (rc)
+        return rc;
+    printf("%s: ok\n", file);
+    printf("  duration  %.6g s at %.6g fps = %ld frames, %dx%d, quality %s\n", tl.duration, tl.fps,
+           tl_timeline_frame_count(&tl), tl.width, tl.height, tl.quality.name);
+    list_tracks(&tl, TL_TRACK_KEYED, "  keyed     ");
+    list_tracks(&tl, TL_TRACK_SET, "  set       ");
+    const tl_path_track *paths[2] = {&tl.boat_path, &tl.camera_path};
+    const char *names[2] = {"boat", "camera"};
+    for (int i = 0; i < 2; i++)
+        if (paths[i]->present)
+            printf("  path      %s: %zu points, %.6g m%s\n", names[i], paths[i]->path.count,
+                   paths[i]->path.length, paths[i]->path.constant_speed ? ", constant speed" : "");
+    if (tl.camera_look.target == TL_TARGET_BOAT)
+        printf("  link      camera looks at boat + %g %g %g\n", tl.camera_look.offset[0],
+               tl.camera_look.offset[1], tl.camera_look.offset[2]);
+    else if (tl.camera_look.target == TL_TARGET_POINT)
+        printf("  link      camera looks at %g %g %g\n", tl.camera_look.point[0],
+               tl.camera_look.point[1], tl.camera_look.point[2]);
+    if (tl.camera_follow.target == TL_TARGET_BOAT)
+        printf("  link      camera follows boat + %g %g %g\n", tl.camera_follow.offset[0],
+               tl.camera_follow.offset[1], tl.camera_follow.offset[2]);
+    if (tl.giant_follow.target == TL_TARGET_BOAT)
+        printf("  link      giant.center follows boat + %g %g\n", tl.giant_follow.offset[0],
+               tl.giant_follow.offset[2]);
+    tl_timeline_features f;
+    tl_timeline_features_of(&tl, &f);
+    printf("  features  ocean%s%s%s%s\n", f.giant_wave ? ", giant wave" : "",
+           f.boat ? ", boat" : "", f.underwater ? ", underwater" : "", f.fog ? ", fog" : "");
+    tl_timeline_free(&tl);
+    return 0;
+}
+
+static double shown(const tl_channel *ch, double v)
+{
+    return ch->unit == TL_UNIT_ANGLE ? v / DEG : v;
+}
+
+static void print_sample_text(const tl_timeline *tl, double t, long frame)
+{
+    tl_scene s;
+    tl_timeline_eval(tl, t, &s);
+    if (frame >= 0)
+        printf("frame %ld, time %.9g s\n", frame, t);
+    else
+        printf("time %.9g s\n", t);
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_channel *ch = tl_channel_at(i);
+        double v[3];
+        tl_channel_get(ch, &s, v);
+        printf("  %-26s", ch->name);
+        if (ch->kind == TL_CH_BOOL)
+            printf(" %s", v[0] >= 0.5 ? "on" : "off");
+        else if (ch->kind == TL_CH_ENUM)
+            printf(" %s", ch->names[(int)v[0]]);
+        else
+            for (int c = 0; c < ch->components; c++)
+                printf(" %.9g", shown(ch, v[c]));
+        printf("%s\n", ch->unit == TL_UNIT_ANGLE ? " deg" : ch->unit == TL_UNIT_LENGTH ? " m" : "");
+    }
+    if (s.boat.enabled)
+        printf("  %-26s %.9g %.9g %.9g m\n", "boat.position", s.boat.position[0],
+               s.boat.position[1], s.boat.position[2]);
+}
+
+static void print_sample_json(const tl_timeline *tl, double t, long frame, int first)
+{
+    tl_scene s;
+    tl_timeline_eval(tl, t, &s);
+    printf("%s{\"time\": %.17g, \"frame\": ", first ? "" : ", ", t);
+    if (frame >= 0)
+        printf("%ld", frame);
+    else
+        printf("null");
+    printf(", \"channels\": {");
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_channel *ch = tl_channel_at(i);
+        double v[3];
+        tl_channel_get(ch, &s, v);
+        printf("%s\"%s\": ", i ? ", " : "", ch->name);
+        if (ch->kind == TL_CH_BOOL) {
+            printf("%s", v[0] >= 0.5 ? "true" : "false");
+        } else if (ch->kind == TL_CH_ENUM) {
+            printf("\"%s\"", ch->names[(int)v[0]]);
+        } else if (ch->components == 1) {
+            printf("%.17g", shown(ch, v[0]));
+        } else {
+            printf("[");
+            for (int c = 0; c < ch->components; c++)
+                printf("%s%.17g", c ? ", " : "", shown(ch, v[c]));
+            printf("]");
+        }
+    }
+    printf("}, \"boat\": ");
+    if (s.boat.enabled)
+        printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g}", s.boat.position[0],
+               s.boat.position[1], s.boat.position[2], s.boat.heading / DEG);
+    else
+        printf("null");
+    printf("}");
+}
+
+/* "A-B" with 0 <= A <= B; returns 0 on success. */
+static int parse_frame_range(const char *text, long *a, long *b, tl_error *err)
+{
+    char *end = NULL;
+    long x = strtol(text, &end, 10);
+    if (end == text || *end != '-')
+        return tl_error_set(err, TL_ERR_USAGE, "--frames: expected A-B, got '%s'", text);
+    const char *second = end + 1;
+    long y = strtol(second, &end, 10);
+    if (end == second || *end != '\0')
+        return tl_error_set(err, TL_ERR_USAGE, "--frames: expected A-B, got '%s'", text);
+    if (x < 0 || y < x)
+        return tl_error_set(err, TL_ERR_USAGE, "--frames: '%s' must satisfy 0 <= A <= B", text);
+    *a = x;
+    *b = y;
+    return TL_OK;
+}
+
+int tl_cli_eval(int argc, char **argv)
+{
+    tl_args a;
+    tl_args_init(&a, argc, argv);
+    a.index = 1;
+    tl_error err;
+    tl_error_clear(&err);
+    const char *file = NULL, *at = NULL, *frames = NULL;
+    int json = 0, rc = 0;
+    while (!rc && !tl_args_done(&a)) {
+        const char *pos;
+        if (tl_args_match(&a, "--help", "-h", false, &err)) {
+            fputs(eval_usage, stdout);
+            return 0;
+        } else if (tl_args_match(&a, "--json", NULL, false, &err)) {
+            json = 1;
+        } else if (tl_args_match(&a, "--at", NULL, true, &err)) {
+            at = a.value;
+            rc = at ? 0 : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--frames", NULL, true, &err)) {
+            frames = a.value;
+            rc = frames ? 0 : TL_ERR_USAGE;
+        } else if (!file && tl_args_positional(&a, &pos)) {
+            file = pos;
+        } else {
+            rc = tl_args_unknown(&a, "eval", &err);
+        }
+    }
+    if (!rc && !file)
+        rc = tl_error_set(&err, TL_ERR_USAGE, "no timeline file given");
+    if (!rc && !at == !frames)
+        rc = tl_error_set(&err, TL_ERR_USAGE, "give exactly one of --at T and --frames A-B");
+    long first = 0, last = -1;
+    if (!rc && frames)
+        rc = parse_frame_range(frames, &first, &last, &err);
+    if (rc) {
+        tl_cli_print_error("eval", &err);
+        return 2;
+    }
+    tl_timeline tl;
+    rc = tl_cli_load_timeline("eval", file, &tl);
+    if (rc)
+        return rc;
+    double t = 0.0;
+    if (at && tl_parse_time_text(at, tl.fps, &t, &err)) {
+        tl_error_prefix(&err, "--at");
+        tl_cli_print_error("eval", &err);
+        tl_timeline_free(&tl);
+        return 2;
+    }
+    if (frames && last - first >= 1000000) {
+        fprintf(stderr, "tideline eval: --frames: at most 1000000 frames at once\n");
+        tl_timeline_free(&tl);
+        return 2;
+    }
+    if (json)
+        printf("{\"file\": \"%s\", \"fps\": %.17g, \"samples\": [", file, tl.fps);
+    for (long f = at ? -1 : first; at ? f == -1 : f <= last; f++) {
+        double time = at ? t : tl_timeline_frame_time(&tl, f);
+        if (json)
+            print_sample_json(&tl, time, f, at ? 1 : f == first);
+        else
+            print_sample_text(&tl, time, f);
+        if (at)
+            break;
+    }
+    if (json)
+        printf("]}\n");
+    tl_timeline_free(&tl);
+    return 0;
+}

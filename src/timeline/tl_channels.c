@@ -1,0 +1,217 @@
+#include "tl_channels.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define DEG (M_PI / 180.0)
+#define BIG 1.0e9 /* positions and sizes: far beyond any scene, still finite */
+
+static const char *const underwater_names[] = {"auto", "on", "off", NULL};
+
+#define REAL(n, comps, unit, lo, hi, field, doc)                                                   \
+    {n, TL_CH_REAL, comps, unit, lo, hi, true, offsetof(tl_scene, field), NULL, doc}
+
+static const tl_channel channels[] = {
+    REAL("render.exposure", 1, TL_UNIT_NONE, 0.0, 1e6, exposure,
+         "linear exposure before tonemapping"),
+
+    REAL("camera.position", 3, TL_UNIT_LENGTH, -BIG, BIG, camera.position,
+         "camera position x y z (metres; +Y up, +Z north)"),
+    REAL("camera.yaw", 1, TL_UNIT_ANGLE, -BIG, BIG, camera.yaw,
+         "heading: 0 looks along +Z, 90 along +X"),
+    REAL("camera.pitch", 1, TL_UNIT_ANGLE, -90 * DEG, 90 * DEG, camera.pitch,
+         "up/down, positive looks up"),
+    REAL("camera.roll", 1, TL_UNIT_ANGLE, -BIG, BIG, camera.roll, "roll about the view direction"),
+    REAL("camera.fov", 1, TL_UNIT_ANGLE, 0.1 * DEG, 179 * DEG, camera.vfov,
+         "vertical field of view"),
+
+    REAL("sun.elevation", 1, TL_UNIT_ANGLE, -90 * DEG, 90 * DEG, sun.elevation,
+         "sun above the horizon"),
+    REAL("sun.azimuth", 1, TL_UNIT_ANGLE, -BIG, BIG, sun.azimuth, "sun compass direction"),
+    REAL("sun.intensity", 1, TL_UNIT_NONE, 0.0, 1e6, sun.intensity, "peak radiance of the disc"),
+    REAL("sun.sharpness", 1, TL_UNIT_NONE, 1.0, 1e6, sun.sharpness,
+         "exponent of the disc lobe (larger = smaller sun)"),
+    REAL("sky.brightness", 1, TL_UNIT_NONE, 0.0, 1e3, sky.brightness, "scale of the atmosphere"),
+
+    REAL("ocean.depth", 1, TL_UNIT_LENGTH, 0.001, 1e3, ocean.depth,
+         "crest-to-trough height band of the waves"),
+    REAL("ocean.drag", 1, TL_UNIT_NONE, 0.0, 1.0, ocean.drag,
+         "derivative drag: ripples gather on crests"),
+    REAL("ocean.frequency", 1, TL_UNIT_NONE, 1e-4, 1e3, ocean.frequency,
+         "first octave frequency, radians per metre"),
+    REAL("ocean.frequency_growth", 1, TL_UNIT_NONE, 1.0, 4.0, ocean.frequency_growth,
+         "frequency ratio between octaves"),
+    REAL("ocean.speed", 1, TL_UNIT_NONE, -1e3, 1e3, ocean.speed,
+         "first octave speed, radians per second"),
+    REAL("ocean.speed_growth", 1, TL_UNIT_NONE, 0.0, 4.0, ocean.speed_growth,
+         "speed ratio between octaves (dispersion)"),
+    REAL("ocean.weight_ratio", 1, TL_UNIT_NONE, 0.0, 1.0, ocean.weight_ratio,
+         "amplitude ratio between octaves"),
+    REAL("ocean.direction_step", 1, TL_UNIT_NONE, -1e6, 1e6, ocean.direction_step,
+         "radians between octave directions"),
+    REAL("ocean.radial_phase", 1, TL_UNIT_NONE, -1e3, 1e3, ocean.radial_phase,
+         "phase per metre of distance from the origin"),
+
+    REAL("water.scatter_color", 3, TL_UNIT_NONE, 0.0, 1e3, water.scatter_color,
+         "linear RGB of light scattered in the water"),
+    REAL("water.scatter_strength", 1, TL_UNIT_NONE, 0.0, 1e3, water.scatter_strength,
+         "scale of the scattering"),
+    REAL("water.scatter_base", 1, TL_UNIT_NONE, 0.0, 1e3, water.scatter_base,
+         "scattering at the crests"),
+    REAL("water.absorption", 3, TL_UNIT_NONE, 0.0, 1e3, water.absorption,
+         "absorption per metre, R G B"),
+    REAL("water.foam", 1, TL_UNIT_NONE, 0.0, 1.0, water.foam, "foam on the crests"),
+    REAL("water.fresnel_f0", 1, TL_UNIT_NONE, 0.0, 1.0, water.fresnel_f0,
+         "reflectance at normal incidence"),
+    REAL("water.normal_smooth_max", 1, TL_UNIT_NONE, 0.0, 1.0, water.normal_smooth_max,
+         "max blend of far normals toward up"),
+    REAL("water.normal_smooth_rate", 1, TL_UNIT_NONE, 0.0, 1e3, water.normal_smooth_rate,
+         "normal smoothing per metre of distance"),
+    REAL("water.normal_smooth_gain", 1, TL_UNIT_NONE, 0.0, 1e3, water.normal_smooth_gain,
+         "normal smoothing gain"),
+
+    REAL("fog.density", 1, TL_UNIT_NONE, 0.0, 10.0, fog.density, "extinction per metre; 0 = off"),
+    REAL("fog.color", 3, TL_UNIT_NONE, 0.0, 1e3, fog.color, "linear RGB of the fog"),
+    {"underwater.mode", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, 2, true,
+     offsetof(tl_scene, underwater.mode), underwater_names,
+     "auto: under water when the camera is below the surface; on; off"},
+
+    {"giant.enabled", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, giant.enabled),
+     NULL, "the giant wave exists"},
+    REAL("giant.height", 1, TL_UNIT_LENGTH, 0.0, 1e3, giant.height, "crest height"),
+    REAL("giant.width", 1, TL_UNIT_LENGTH, 0.01, 1e5, giant.width,
+         "extent across the travel direction"),
+    REAL("giant.wavelength", 1, TL_UNIT_LENGTH, 0.01, 1e5, giant.wavelength, "wavelength"),
+    REAL("giant.angle", 1, TL_UNIT_ANGLE, -BIG, BIG, giant.angle, "travel direction (compass)"),
+    REAL("giant.center", 2, TL_UNIT_LENGTH, -BIG, BIG, giant.center,
+         "x z the wave travels toward"),
+    REAL("giant.falloff", 1, TL_UNIT_LENGTH, 0.0, 1e5, giant.falloff,
+         "softness of the side and crest masks"),
+    REAL("giant.phase", 1, TL_UNIT_ANGLE, -BIG, BIG, giant.phase,
+         "progress along the travel direction"),
+    REAL("giant.steepness", 1, TL_UNIT_NONE, 0.0, 1.0, giant.steepness, "Gerstner steepness"),
+    REAL("giant.curve_strength", 1, TL_UNIT_NONE, 0.0, 1.0, giant.curve_strength,
+         "crest curl toward the travel direction"),
+    REAL("giant.fade", 1, TL_UNIT_NONE, 0.0, 1.0, giant.fade, "0 invisible .. 1 full strength"),
+
+    REAL("boat.heading", 1, TL_UNIT_ANGLE, -BIG, BIG, boat.heading,
+         "compass heading (from the path tangent unless set or keyed)"),
+    REAL("boat.size", 1, TL_UNIT_LENGTH, 0.1, 1e3, boat.size, "hull length"),
+
+    {"quality.march_octaves", TL_CH_INT, 1, TL_UNIT_NONE, 1, TL_MAX_OCTAVES, false,
+     offsetof(tl_scene, quality.march_octaves), NULL, "wave octaves while marching"},
+    {"quality.normal_octaves", TL_CH_INT, 1, TL_UNIT_NONE, 1, TL_MAX_OCTAVES, false,
+     offsetof(tl_scene, quality.normal_octaves), NULL, "wave octaves for normals"},
+    {"quality.march_steps", TL_CH_INT, 1, TL_UNIT_NONE, 1, 10000, false,
+     offsetof(tl_scene, quality.march_steps), NULL, "max march steps"},
+    {"quality.hit_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,
+     offsetof(tl_scene, quality.hit_epsilon), NULL, "distance that counts as a hit"},
+    {"quality.normal_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,
+     offsetof(tl_scene, quality.normal_epsilon), NULL, "normal finite-difference step"},
+};
+
+#define CHANNEL_COUNT ((int)(sizeof channels / sizeof channels[0]))
+
+int tl_channel_count(void)
+{
+    return CHANNEL_COUNT;
+}
+
+const tl_channel *tl_channel_at(int index)
+{
+    return index >= 0 && index < CHANNEL_COUNT ? &channels[index] : NULL;
+}
+
+const tl_channel *tl_channel_find(const char *name)
+{
+    for (int i = 0; i < CHANNEL_COUNT; i++)
+        if (strcmp(channels[i].name, name) == 0)
+            return &channels[i];
+    return NULL;
+}
+
+int tl_channel_index(const tl_channel *ch)
+{
+    return (int)(ch - channels);
+}
+
+void tl_channel_get(const tl_channel *ch, const tl_scene *scene, double out[3])
+{
+    const char *base = (const char *)scene + ch->offset;
+    for (int i = 0; i < 3; i++)
+        out[i] = 0.0;
+    switch (ch->kind) {
+    case TL_CH_REAL: memcpy(out, base, sizeof(double) * (size_t)ch->components); break;
+    case TL_CH_BOOL: out[0] = *(const bool *)base ? 1.0 : 0.0; break;
+    case TL_CH_ENUM: out[0] = (double)*(const tl_underwater_mode *)base; break;
+    case TL_CH_INT: out[0] = (double)*(const int *)base; break;
+    }
+}
+
+void tl_channel_set(const tl_channel *ch, tl_scene *scene, const double in[3])
+{
+    char *base = (char *)scene + ch->offset;
+    switch (ch->kind) {
+    case TL_CH_REAL: memcpy(base, in, sizeof(double) * (size_t)ch->components); break;
+    case TL_CH_BOOL: *(bool *)base = in[0] >= 0.5; break;
+    case TL_CH_ENUM: *(tl_underwater_mode *)base = (tl_underwater_mode)lround(in[0]); break;
+    case TL_CH_INT: *(int *)base = (int)lround(in[0]); break;
+    }
+}
+
+/* Optimal string alignment distance (edits incl. transposition), capped
+ * at 64 characters so the cost stays bounded whatever the input. */
+static int edit_distance(const char *a, const char *b)
+{
+    enum { MAXLEN = 64 };
+    size_t n = strlen(a), m = strlen(b);
+    if (n > MAXLEN || m > MAXLEN)
+        return MAXLEN;
+    int d[MAXLEN + 1][MAXLEN + 1];
+    for (size_t i = 0; i <= n; i++)
+        d[i][0] = (int)i;
+    for (size_t j = 0; j <= m; j++)
+        d[0][j] = (int)j;
+    for (size_t i = 1; i <= n; i++)
+        for (size_t j = 1; j <= m; j++) {
+            int cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            int best = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < best)
+                best = d[i][j - 1] + 1;
+            if (d[i - 1][j - 1] + cost < best)
+                best = d[i - 1][j - 1] + cost;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+                d[i - 2][j - 2] + 1 < best)
+                best = d[i - 2][j - 2] + 1;
+            d[i][j] = best;
+        }
+    return d[n][m];
+}
+
+const char *tl_suggest(const char *word, const char *const *candidates)
+{
+    const char *best = NULL;
+    int best_d = 1 << 30;
+    for (int i = 0; candidates[i]; i++) {
+        int d = edit_distance(word, candidates[i]);
+        if (d < best_d) {
+            best_d = d;
+            best = candidates[i];
+        }
+    }
+    /* A likely typo: at most a third of the word wrong (and at least one). */
+    int allowed = (int)strlen(word) / 3;
+    if (allowed < 1)
+        allowed = 1;
+    return best_d <= allowed ? best : NULL;
+}
+
+const char *tl_channel_suggest(const char *word)
+{
+    const char *names[CHANNEL_COUNT + 1];
+    for (int i = 0; i < CHANNEL_COUNT; i++)
+        names[i] = channels[i].name;
+    names[CHANNEL_COUNT] = NULL;
+    return tl_suggest(word, names);
+}

@@ -1,0 +1,53 @@
+/* tl_ease: Robert Penner's easing functions on a normalised parameter.
+ *
+ * Each function maps u in [0,1] to a progress value with f(0) = 0 and
+ * f(1) = 1; back and elastic overshoot outside [0,1] in between. u outside
+ * [0,1] is clamped. Definitions follow Penner as Blender's BLI_easing uses
+ * them (back overshoot 1.70158, 1.525x for in-out; expo pinned to exactly
+ * 0 and 1 at the ends). Elastic uses Penner's normalised defaults,
+ * amplitude 1 (times the change) and period 0.3 of the duration (0.45 for
+ * in-out), not Blender's per-key absolute amplitude/period. */
+#ifndef TL_EASE_H
+#define TL_EASE_H
+
+#include <stdbool.h>
+
+#define TL_EASE_BACK_OVERSHOOT 1.70158
+#define TL_EASE_ELASTIC_PERIOD 0.3        /* fraction of the duration, in and out */
+#define TL_EASE_ELASTIC_PERIOD_IN_OUT 0.45
+
+typedef enum tl_ease_family {
+    TL_EASE_SINE,
+    TL_EASE_QUAD,
+    TL_EASE_CUBIC,
+    TL_EASE_QUART,
+    TL_EASE_QUINT,
+    TL_EASE_EXPO,
+    TL_EASE_CIRC,
+    TL_EASE_BACK,
+    TL_EASE_BOUNCE,
+    TL_EASE_ELASTIC,
+    TL_EASE_FAMILY_COUNT
+} tl_ease_family;
+
+typedef enum tl_ease_dir {
+    TL_EASE_IN,
+    TL_EASE_OUT,
+    TL_EASE_IN_OUT,
+    TL_EASE_DIR_COUNT
+} tl_ease_dir;
+
+/* Eased progress at u. An out-of-range family or direction gives u. */
+double tl_ease(tl_ease_family family, tl_ease_dir dir, double u);
+
+/* Parses "ease-in-sine", "ease-out-bounce", "ease-in-out-elastic", ...
+ * Returns false (outputs untouched) for an unknown name. */
+bool tl_ease_from_name(const char *name, tl_ease_family *family, tl_ease_dir *dir);
+
+/* The canonical name ("ease-in-out-sine"), or NULL when out of range. */
+const char *tl_ease_name(tl_ease_family family, tl_ease_dir dir);
+
+/* "sine", "quad", ...; NULL when out of range. */
+const char *tl_ease_family_name(tl_ease_family family);
+
+#endif

@@ -1,0 +1,1106 @@
+#include "tl_parse.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+#define DEG (M_PI / 180.0)
+#define MAX_TOKENS 64
+#define MAX_TIME 1.0e9 /* seconds: ~31 years, far past any cutscene */
+
+typedef struct token {
+    char *s; /* NUL-terminated copy inside the line buffer */
+    int col; /* 1-based */
+    int len;
+} token;
+
+typedef enum block_kind { BLOCK_NONE, BLOCK_KEY, BLOCK_PATH } block_kind;
+
+typedef struct parser {
+    const char *name;
+    tl_timeline *tl;
+    tl_diags *diags;
+    int line_no;
+    const char *line_text; /* the current line, for diagnostics */
+    size_t line_len;
+    int saw_header;
+    int frame_units_line; /* first line that used a time in frames */
+    long keys_total;
+    int stopped;
+
+    /* The open `key` or `path` block. */
+    block_kind block;
+    int block_line;
+    const tl_channel *block_ch;
+    tl_track *block_track;
+    tl_interp block_interp;
+    tl_ease_family block_family;
+    tl_ease_dir block_dir;
+    int block_shortest;
+    tl_path_track *block_path;
+    int block_dims;
+    struct key_source {
+        int line;
+        const char *text;
+        size_t len;
+        int col;
+    } *key_lines; /* where each key/point of the block was written */
+    size_t key_count, key_cap;
+    int block_failed;
+    char buf[TL_PARSE_MAX_LINE + 1]; /* the current line, split into tokens */
+} parser;
+
+static const char *const directives[] = {"tideline", "fps",  "duration", "size",   "quality",
+                                         "set",      "key",  "path",     "look",   "follow",
+                                         NULL};
+static const char *const key_words[] = {
+    "cut",          "constant",     "step",          "linear",       "bezier",      "spline",
+    "auto-clamped", "auto",         "vector",        "aligned",      "free",        "left",
+    "right",        "ease-in-sine", "ease-out-sine", "ease-in-out-sine", NULL};
+
+/* ---- diagnostics ---- */
+
+static void diag_add(parser *p, int col, int len, const char *hint, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+static void diag_add(parser *p, int col, int len, const char *hint, const char *fmt, ...)
+{
+    tl_diags *d = p->diags;
+    if (d->count >= TL_PARSE_MAX_ERRORS) {
+        d->more++;
+        p->stopped = 1;
+        return;
+    }
+    tl_diag *g = &d->items[d->count++];
+    memset(g, 0, sizeof *g);
+    g->line = p->line_no;
+    g->column = col;
+    g->length = len > 0 ? len : 1;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(g->message, sizeof g->message, fmt, ap);
+    va_end(ap);
+    if (hint)
+        snprintf(g->hint, sizeof g->hint, "did you mean '%s'?", hint);
+    size_t n = p->line_len < sizeof g->text - 1 ? p->line_len : sizeof g->text - 1;
+    if (p->line_text)
+        memcpy(g->text, p->line_text, n);
+    g->text[n] = '\0';
+}
+
+/* A diagnostic about an earlier line (a key found bad when its block
+ * closes, or a conflict found at the end). `src` may be NULL when only the
+ * line number is known. */
+static void diag_at_line(parser *p, int line, const struct key_source *src, const char *fmt,
+                         const char *msg)
+{
+    int saved_line = p->line_no;
+    const char *saved_text = p->line_text;
+    size_t saved_len = p->line_len;
+    p->line_no = line;
+    p->line_text = src ? src->text : NULL;
+    p->line_len = src ? src->len : 0;
+    diag_add(p, src ? src->col : 0, 1, NULL, fmt, msg);
+    p->line_no = saved_line;
+    p->line_text = saved_text;
+    p->line_len = saved_len;
+}
+
+#define ERR_AT(tok, ...) diag_add(p, (tok)->col, (tok)->len, NULL, __VA_ARGS__)
+
+/* ---- numbers and units ---- */
+
+static double display_value(tl_unit unit, double v)
+{
+    return unit == TL_UNIT_ANGLE ? v / DEG : v;
+}
+
+static const char *display_unit(tl_unit unit)
+{
+    switch (unit) {
+    case TL_UNIT_ANGLE: return " deg";
+    case TL_UNIT_LENGTH: return " m";
+    case TL_UNIT_TIME: return " s";
+    default: return "";
+    }
+}
+
+/* Parses a number with an optional unit suffix; returns 0 on success. */
+static int parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
+{
+    char *end = NULL;
+    errno = 0;
+    double v = strtod(t->s, &end);
+    const char *word = t->s + (t->s[0] == '-' || t->s[0] == '+');
+    if (strncasecmp(word, "nan", 3) == 0 || strncasecmp(word, "inf", 3) == 0) {
+        ERR_AT(t, "'%s' is not a finite number", t->s);
+        return 1;
+    }
+    if (end == t->s || !(isdigit((unsigned char)t->s[0]) || t->s[0] == '-' || t->s[0] == '+' ||
+                         t->s[0] == '.')) {
+        ERR_AT(t, "expected a number, got '%s'", t->s);
+        return 1;
+    }
+    if (!isfinite(v) || errno == ERANGE) {
+        ERR_AT(t, "'%s' is not a finite number", t->s);
+        return 1;
+    }
+    const char *suffix = end;
+    double scale = 1.0;
+    int ok = *suffix == '\0';
+    switch (unit) {
+    case TL_UNIT_TIME:
+        if (strcmp(suffix, "s") == 0) {
+            ok = 1;
+        } else if (strcmp(suffix, "ms") == 0) {
+            ok = 1;
+            scale = 1e-3;
+        } else if (strcmp(suffix, "f") == 0) {
+            ok = 1;
+            scale = 1.0 / p->tl->fps;
+            if (!p->frame_units_line)
+                p->frame_units_line = p->line_no;
+        }
+        if (!ok) {
+            ERR_AT(t, "unknown time unit '%s' (use s, ms or f)", suffix);
+            return 1;
+        }
+        break;
+    case TL_UNIT_ANGLE:
+        scale = DEG; /* bare numbers are degrees */
+        if (strcmp(suffix, "deg") == 0) {
+            ok = 1;
+        } else if (strcmp(suffix, "rad") == 0) {
+            ok = 1;
+            scale = 1.0;
+        }
+        if (!ok) {
+            ERR_AT(t, "unknown angle unit '%s' (use deg or rad)", suffix);
+            return 1;
+        }
+        break;
+    case TL_UNIT_LENGTH:
+        ok |= strcmp(suffix, "m") == 0;
+        if (!ok) {
+            ERR_AT(t, "unknown length unit '%s' (use m)", suffix);
+            return 1;
+        }
+        break;
+    case TL_UNIT_NONE:
+        if (!ok) {
+            ERR_AT(t, "'%s' takes no unit here", t->s);
+            return 1;
+        }
+        break;
+    }
+    v *= scale;
+    if (unit == TL_UNIT_TIME && fabs(v) > MAX_TIME) {
+        ERR_AT(t, "time '%s' is out of range (|t| <= 1e9 s)", t->s);
+        return 1;
+    }
+    *out = v;
+    return 0;
+}
+
+static int parse_time(parser *p, const token *t, double *out)
+{
+    return parse_quantity(p, t, TL_UNIT_TIME, out);
+}
+
+/* One component of a channel value, range-checked. */
+static int parse_channel_value(parser *p, const tl_channel *ch, const token *t, double *out)
+{
+    if (ch->kind == TL_CH_BOOL) {
+        static const char *const yes[] = {"on", "true", "yes", "1", NULL};
+        static const char *const no[] = {"off", "false", "no", "0", NULL};
+        for (int i = 0; yes[i]; i++) {
+            if (strcmp(t->s, yes[i]) == 0) {
+                *out = 1.0;
+                return 0;
+            }
+            if (strcmp(t->s, no[i]) == 0) {
+                *out = 0.0;
+                return 0;
+            }
+        }
+        ERR_AT(t, "%s is on or off, got '%s'", ch->name, t->s);
+        return 1;
+    }
+    if (ch->kind == TL_CH_ENUM) {
+        for (int i = 0; ch->names[i]; i++)
+            if (strcmp(t->s, ch->names[i]) == 0) {
+                *out = i;
+                return 0;
+            }
+        diag_add(p, t->col, t->len, tl_suggest(t->s, ch->names), "%s has no value '%s'",
+                 ch->name, t->s);
+        return 1;
+    }
+    double v;
+    if (parse_quantity(p, t, ch->unit, &v))
+        return 1;
+    if (ch->kind == TL_CH_INT && v != floor(v)) {
+        ERR_AT(t, "%s takes a whole number, got '%s'", ch->name, t->s);
+        return 1;
+    }
+    if (v < ch->min || v > ch->max) {
+        ERR_AT(t, "%s = %s is outside its range %.6g..%.6g%s", ch->name, t->s,
+               display_value(ch->unit, ch->min), display_value(ch->unit, ch->max),
+               display_unit(ch->unit));
+        return 1;
+    }
+    *out = v;
+    return 0;
+}
+
+/* ---- blocks ---- */
+
+static int remember_key_line(parser *p, const token *first)
+{
+    if (p->key_count == p->key_cap) {
+        size_t cap = p->key_cap ? p->key_cap * 2 : 64;
+        struct key_source *k = realloc(p->key_lines, cap * sizeof *k);
+        if (!k)
+            return 1;
+        p->key_lines = k;
+        p->key_cap = cap;
+    }
+    p->key_lines[p->key_count++] =
+        (struct key_source){p->line_no, p->line_text, p->line_len, first->col};
+    return 0;
+}
+
+/* Skips "key N: " / "point N: " prefixes of engine messages: the
+ * diagnostic already points at the line. */
+static const char *strip_index_prefix(const char *msg)
+{
+    const char *colon = strstr(msg, ": ");
+    if (colon && (strncmp(msg, "key ", 4) == 0 || strncmp(msg, "point ", 6) == 0))
+        return colon + 2;
+    return msg;
+}
+
+static void finish_block(parser *p)
+{
+    if (p->block == BLOCK_KEY && !p->block_failed) {
+        tl_track *tr = p->block_track;
+        if (tr->curve[0].count == 0) {
+            diag_at_line(p, p->block_line, NULL, "%s has no keys (indent key lines under it)",
+                         p->block_ch->name);
+        } else {
+            for (int c = 0; c < p->block_ch->components; c++) {
+                size_t bad = 0;
+                tl_error e;
+                tl_error_clear(&e);
+                if (tl_curve_validate(&tr->curve[c], &bad, &e)) {
+                    const struct key_source *src = bad < p->key_count ? &p->key_lines[bad] : NULL;
+                    diag_at_line(p, src ? src->line : p->block_line, src, "%s",
+                                 strip_index_prefix(e.message));
+                    break;
+                }
+                if (p->block_shortest)
+                    tl_curve_unwrap(&tr->curve[c], 2.0 * M_PI);
+                tl_curve_prepare(&tr->curve[c]);
+            }
+        }
+    } else if (p->block == BLOCK_PATH && !p->block_failed) {
+        tl_path *path = &p->block_path->path;
+        size_t bad = 0;
+        tl_error e;
+        tl_error_clear(&e);
+        if (path->count == 0) {
+            diag_at_line(p, p->block_line, NULL, "%s", "path has no points (indent them under it)");
+        } else if (tl_path_validate(path, &bad, &e)) {
+            const struct key_source *src = bad < p->key_count ? &p->key_lines[bad] : NULL;
+            diag_at_line(p, src ? src->line : p->block_line, src, "%s",
+                         strip_index_prefix(e.message));
+        } else if (tl_path_prepare(path, &e)) {
+            diag_at_line(p, p->block_line, NULL, "%s", e.message);
+        }
+    }
+    p->block = BLOCK_NONE;
+    p->key_count = 0;
+    p->block_failed = 0;
+}
+
+static int count_key(parser *p, const token *t)
+{
+    if (++p->keys_total > TL_PARSE_MAX_KEYS) {
+        ERR_AT(t, "more than %d keys and path points; split the timeline", TL_PARSE_MAX_KEYS);
+        p->stopped = 1;
+        return 1;
+    }
+    return 0;
+}
+
+/* `TIME [cut] V... [interp] [handle type] [left DT V...] [right DT V...]` */
+static void key_line(parser *p, token *tok, int n)
+{
+    const tl_channel *ch = p->block_ch;
+    int i = 0;
+    double t;
+    if (count_key(p, &tok[0]) || parse_time(p, &tok[i++], &t)) {
+        p->block_failed = 1;
+        return;
+    }
+    int cut = 0;
+    if (i < n && strcmp(tok[i].s, "cut") == 0) {
+        cut = 1;
+        i++;
+    }
+    double v[3];
+    for (int c = 0; c < ch->components; c++, i++) {
+        if (i >= n) {
+            diag_add(p, tok[n - 1].col + tok[n - 1].len, 1, NULL,
+                     "%s needs %d value%s per key, found %d", ch->name, ch->components,
+                     ch->components > 1 ? "s" : "", c);
+            p->block_failed = 1;
+            return;
+        }
+        if (parse_channel_value(p, ch, &tok[i], &v[c])) {
+            p->block_failed = 1;
+            return;
+        }
+    }
+    tl_interp interp = p->block_interp;
+    tl_ease_family family = p->block_family;
+    tl_ease_dir dir = p->block_dir;
+    tl_handle_type htype = TL_HANDLE_AUTO_CLAMPED;
+    int has_htype = 0, has_left = 0, has_right = 0;
+    double left[4] = {0}, right[4] = {0}; /* dt, then one value per component */
+    for (; i < n; i++) {
+        tl_handle_type h;
+        if (tl_interp_from_name(tok[i].s, &interp) || strcmp(tok[i].s, "step") == 0) {
+            if (strcmp(tok[i].s, "step") == 0)
+                interp = TL_INTERP_CONSTANT;
+        } else if (tl_ease_from_name(tok[i].s, &family, &dir)) {
+            interp = TL_INTERP_EASE;
+        } else if (tl_handle_type_from_name(tok[i].s, &h)) {
+            htype = h;
+            has_htype = 1;
+        } else if (strcmp(tok[i].s, "left") == 0 || strcmp(tok[i].s, "right") == 0) {
+            double *dst = tok[i].s[0] == 'l' ? left : right;
+            const token *word = &tok[i];
+            if (n - 1 - i < 1 + ch->components) {
+                ERR_AT(word, "'%s' needs a time offset and %d value%s", word->s,
+                       ch->components, ch->components > 1 ? "s" : "");
+                p->block_failed = 1;
+                return;
+            }
+            if (parse_time(p, &tok[++i], &dst[0])) {
+                p->block_failed = 1;
+                return;
+            }
+            for (int c = 0; c < ch->components; c++) {
+                double tmp;
+                if (parse_quantity(p, &tok[++i], ch->unit, &tmp)) {
+                    p->block_failed = 1;
+                    return;
+                }
+                dst[1 + c] = tmp;
+            }
+            if (dst == left)
+                has_left = 1;
+            else
+                has_right = 1;
+        } else if (strcmp(tok[i].s, "cut") == 0) {
+            ERR_AT(&tok[i], "'cut' goes right after the key's time");
+            p->block_failed = 1;
+            return;
+        } else {
+            diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, key_words),
+                     "unknown key option '%s'", tok[i].s);
+            p->block_failed = 1;
+            return;
+        }
+    }
+    if (ch->kind != TL_CH_REAL && interp != TL_INTERP_CONSTANT) {
+        if (interp != p->block_interp) {
+            ERR_AT(&tok[0], "%s changes in steps; its keys take no interpolation", ch->name);
+            p->block_failed = 1;
+            return;
+        }
+        interp = TL_INTERP_CONSTANT;
+    }
+    if ((has_left || has_right) && !has_htype)
+        htype = TL_HANDLE_FREE;
+    if (remember_key_line(p, &tok[0])) {
+        ERR_AT(&tok[0], "out of memory");
+        p->stopped = 1;
+        return;
+    }
+    for (int c = 0; c < ch->components; c++) {
+        tl_key k = tl_key_make(t, v[c], interp);
+        k.ease_family = family;
+        k.ease_dir = dir;
+        k.left_type = k.right_type = htype;
+        k.cut = cut;
+        if (has_left)
+            k.left = (tl_curve_point){t + left[0], v[c] + left[1 + c]};
+        if (has_right)
+            k.right = (tl_curve_point){t + right[0], v[c] + right[1 + c]};
+        tl_error e;
+        if (tl_curve_add_key(&p->block_track->curve[c], &k, &e)) {
+            ERR_AT(&tok[0], "%s", e.message);
+            p->stopped = 1;
+            return;
+        }
+    }
+}
+
+/* `TIME X Z` (boat) or `TIME X Y Z` (camera). */
+static void path_line(parser *p, token *tok, int n)
+{
+    double t, pos[3] = {0, 0, 0};
+    if (count_key(p, &tok[0]) || parse_time(p, &tok[0], &t)) {
+        p->block_failed = 1;
+        return;
+    }
+    if (n - 1 != p->block_dims) {
+        diag_add(p, tok[n - 1].col, tok[n - 1].len, NULL, "a %s path point is TIME %s, found %d "
+                 "value%s", p->block_dims == 2 ? "boat" : "camera",
+                 p->block_dims == 2 ? "X Z" : "X Y Z", n - 1, n - 1 == 1 ? "" : "s");
+        p->block_failed = 1;
+        return;
+    }
+    int axis[3] = {0, 2, 1}; /* boat: x z; camera: x y z */
+    for (int i = 0; i < p->block_dims; i++) {
+        int a = p->block_dims == 2 ? axis[i] : i;
+        if (parse_quantity(p, &tok[1 + i], TL_UNIT_LENGTH, &pos[a])) {
+            p->block_failed = 1;
+            return;
+        }
+        if (fabs(pos[a]) > 1e9) {
+            ERR_AT(&tok[1 + i], "position '%s' is out of range (|x| <= 1e9 m)", tok[1 + i].s);
+            p->block_failed = 1;
+            return;
+        }
+    }
+    tl_error e;
+    if (remember_key_line(p, &tok[0]) || tl_path_add_point(&p->block_path->path, t, pos, &e)) {
+        ERR_AT(&tok[0], "out of memory");
+        p->stopped = 1;
+    }
+}
+
+/* ---- directives ---- */
+
+static int expect_args(parser *p, token *tok, int n, int min, int max, const char *usage)
+{
+    if (n - 1 < min) {
+        diag_add(p, tok[n - 1].col + tok[n - 1].len, 1, NULL, "'%s' expects %s", tok[0].s,
+                 usage);
+        return 1;
+    }
+    if (n - 1 > max) {
+        diag_add(p, tok[max + 1].col, tok[max + 1].len, NULL,
+                 "unexpected '%s': '%s' expects %s", tok[max + 1].s, tok[0].s, usage);
+        return 1;
+    }
+    return 0;
+}
+
+static const tl_channel *lookup_channel(parser *p, const token *t)
+{
+    const tl_channel *ch = tl_channel_find(t->s);
+    if (!ch)
+        diag_add(p, t->col, t->len, tl_channel_suggest(t->s), "unknown channel '%s'", t->s);
+    return ch;
+}
+
+static tl_track *claim_track(parser *p, const tl_channel *ch, const token *t)
+{
+    tl_track *tr = &p->tl->tracks[tl_channel_index(ch)];
+    if (tr->state != TL_TRACK_DEFAULT) {
+        ERR_AT(t, "%s is already %s on line %d", ch->name,
+               tr->state == TL_TRACK_SET ? "set" : "keyed", tr->line);
+        return NULL;
+    }
+    tr->line = p->line_no;
+    return tr;
+}
+
+static void dir_set(parser *p, token *tok, int n)
+{
+    if (expect_args(p, tok, n, 2, 4, "a channel and its value"))
+        return;
+    const tl_channel *ch = lookup_channel(p, &tok[1]);
+    if (!ch)
+        return;
+    if (n - 2 != ch->components) {
+        diag_add(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
+                 ch->name, ch->components, ch->components > 1 ? "s" : "", n - 2);
+        return;
+    }
+    double v[3] = {0, 0, 0};
+    for (int c = 0; c < ch->components; c++)
+        if (parse_channel_value(p, ch, &tok[2 + c], &v[c]))
+            return;
+    tl_track *tr = claim_track(p, ch, &tok[1]);
+    if (!tr)
+        return;
+    if (!ch->keyable) {
+        /* Quality knobs change the render settings, not a per-frame track. */
+        tl_scene tmp;
+        memset(&tmp, 0, sizeof tmp);
+        tmp.quality = p->tl->quality;
+        tl_channel_set(ch, &tmp, v);
+        p->tl->quality = tmp.quality;
+        tr->state = TL_TRACK_SET;
+        memcpy(tr->value, v, sizeof v);
+        return;
+    }
+    tr->state = TL_TRACK_SET;
+    memcpy(tr->value, v, sizeof v);
+}
+
+static void dir_key(parser *p, token *tok, int n)
+{
+    if (n < 2) {
+        diag_add(p, tok[0].col + tok[0].len, 1, NULL, "'key' expects a channel name");
+        return;
+    }
+    const tl_channel *ch = lookup_channel(p, &tok[1]);
+    if (!ch)
+        return;
+    if (!ch->keyable) {
+        ERR_AT(&tok[1], "%s is a render setting: use 'set', not 'key'", ch->name);
+        return;
+    }
+    tl_interp interp = TL_INTERP_BEZIER;
+    tl_ease_family family = TL_EASE_SINE;
+    tl_ease_dir dir = TL_EASE_IN_OUT;
+    tl_extrap extrap = TL_EXTRAP_CONSTANT;
+    int shortest = 0;
+    for (int i = 2; i < n; i++) {
+        if (tl_interp_from_name(tok[i].s, &interp)) {
+        } else if (strcmp(tok[i].s, "step") == 0) {
+            interp = TL_INTERP_CONSTANT;
+        } else if (tl_ease_from_name(tok[i].s, &family, &dir)) {
+            interp = TL_INTERP_EASE;
+        } else if (strcmp(tok[i].s, "extrapolate") == 0) {
+            static const char *const modes[] = {"constant", "linear", "cycle", "cycle-offset",
+                                                "ping-pong", NULL};
+            if (i + 1 >= n) {
+                ERR_AT(&tok[i], "'extrapolate' expects constant, linear, cycle, cycle-offset or "
+                                "ping-pong");
+                return;
+            }
+            if (!tl_extrap_from_name(tok[++i].s, &extrap)) {
+                diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, modes),
+                         "unknown extrapolation '%s'", tok[i].s);
+                return;
+            }
+        } else if (strcmp(tok[i].s, "shortest") == 0) {
+            if (ch->unit != TL_UNIT_ANGLE) {
+                ERR_AT(&tok[i], "'shortest' applies to angle channels; %s is not one", ch->name);
+                return;
+            }
+            shortest = 1;
+        } else {
+            static const char *const opts[] = {"extrapolate", "shortest", "linear", "bezier",
+                                               "spline", "constant", "step", NULL};
+            diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, opts),
+                     "unknown option '%s' for 'key'", tok[i].s);
+            return;
+        }
+    }
+    if (ch->kind != TL_CH_REAL)
+        interp = TL_INTERP_CONSTANT;
+    tl_track *tr = claim_track(p, ch, &tok[1]);
+    if (!tr)
+        return;
+    tr->state = TL_TRACK_KEYED;
+    for (int c = 0; c < ch->components; c++)
+        tr->curve[c].extrap = extrap;
+    p->block = BLOCK_KEY;
+    p->block_line = p->line_no;
+    p->block_ch = ch;
+    p->block_track = tr;
+    p->block_interp = interp;
+    p->block_family = family;
+    p->block_dir = dir;
+    p->block_shortest = shortest;
+}
+
+static void dir_path(parser *p, token *tok, int n)
+{
+    if (expect_args(p, tok, n, 1, 2, "boat or camera, then optionally constant-speed"))
+        return;
+    tl_path_track *pt;
+    int dims;
+    if (strcmp(tok[1].s, "boat") == 0) {
+        pt = &p->tl->boat_path;
+        dims = 2;
+    } else if (strcmp(tok[1].s, "camera") == 0) {
+        pt = &p->tl->camera_path;
+        dims = 3;
+    } else {
+        static const char *const names[] = {"boat", "camera", NULL};
+        diag_add(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names),
+                 "paths are for 'boat' or 'camera', not '%s'", tok[1].s);
+        return;
+    }
+    if (n == 3) {
+        if (strcmp(tok[2].s, "constant-speed") != 0) {
+            static const char *const opts[] = {"constant-speed", NULL};
+            diag_add(p, tok[2].col, tok[2].len, tl_suggest(tok[2].s, opts),
+                     "unknown path option '%s'", tok[2].s);
+            return;
+        }
+        pt->path.constant_speed = true;
+    }
+    if (pt->present) {
+        ERR_AT(&tok[1], "the %s already has a path on line %d", tok[1].s, pt->line);
+        return;
+    }
+    pt->present = true;
+    pt->line = p->line_no;
+    p->block = BLOCK_PATH;
+    p->block_line = p->line_no;
+    p->block_path = pt;
+    p->block_dims = dims;
+}
+
+/* Parses `boat [+ X Y Z]` or `X Y Z` (dims values) into a link. */
+static int parse_target(parser *p, token *tok, int n, int first, int dims, int allow_point,
+                        tl_link *link)
+{
+    if (first >= n) {
+        diag_add(p, tok[n - 1].col + tok[n - 1].len, 1, NULL, "expected %s",
+                 allow_point ? "'boat' or a point X Y Z" : "'boat'");
+        return 1;
+    }
+    double *dst;
+    int i = first;
+    if (strcmp(tok[i].s, "boat") == 0) {
+        link->target = TL_TARGET_BOAT;
+        dst = link->offset;
+        i++;
+        if (i == n)
+            return 0;
+        if (strcmp(tok[i].s, "+") != 0) {
+            ERR_AT(&tok[i], "expected '+' and an offset after 'boat', got '%s'", tok[i].s);
+            return 1;
+        }
+        i++;
+    } else if (allow_point) {
+        link->target = TL_TARGET_POINT;
+        dst = link->point;
+    } else {
+        diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, (const char *const[]){"boat", NULL}),
+                 "only the boat can be followed, not '%s'", tok[i].s);
+        return 1;
+    }
+    if (n - i != dims) {
+        diag_add(p, tok[n - 1].col, tok[n - 1].len, NULL, "expected %d numbers (%s), found %d",
+                 dims, dims == 2 ? "X Z" : "X Y Z", n - i);
+        return 1;
+    }
+    int axis2[2] = {0, 2};
+    for (int c = 0; c < dims; c++)
+        if (parse_quantity(p, &tok[i + c], TL_UNIT_LENGTH, &dst[dims == 2 ? axis2[c] : c]))
+            return 1;
+    return 0;
+}
+
+static void dir_look(parser *p, token *tok, int n)
+{
+    if (n < 3 || strcmp(tok[1].s, "camera") != 0 || strcmp(tok[2].s, "at") != 0) {
+        const token *t = n > 1 ? &tok[1] : &tok[0];
+        ERR_AT(t, "expected 'look camera at boat [+ X Y Z]' or 'look camera at X Y Z'");
+        return;
+    }
+    tl_link link = {0};
+    if (parse_target(p, tok, n, 3, 3, 1, &link))
+        return;
+    if (p->tl->camera_look.target != TL_TARGET_NONE) {
+        ERR_AT(&tok[0], "the camera already looks somewhere (line %d)", p->tl->camera_look.line);
+        return;
+    }
+    link.line = p->line_no;
+    p->tl->camera_look = link;
+}
+
+static void dir_follow(parser *p, token *tok, int n)
+{
+    static const char *const who[] = {"camera", "giant.center", NULL};
+    if (n < 2) {
+        diag_add(p, tok[0].col + tok[0].len, 1, NULL, "'follow' expects camera or giant.center");
+        return;
+    }
+    tl_link *link;
+    int dims;
+    if (strcmp(tok[1].s, "camera") == 0) {
+        link = &p->tl->camera_follow;
+        dims = 3;
+    } else if (strcmp(tok[1].s, "giant.center") == 0) {
+        link = &p->tl->giant_follow;
+        dims = 2;
+    } else {
+        diag_add(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, who),
+                 "only camera and giant.center can follow, not '%s'", tok[1].s);
+        return;
+    }
+    if (link->target != TL_TARGET_NONE) {
+        ERR_AT(&tok[1], "%s already follows the boat (line %d)", tok[1].s, link->line);
+        return;
+    }
+    tl_link l = {0};
+    if (parse_target(p, tok, n, 2, dims, 0, &l))
+        return;
+    l.line = p->line_no;
+    *link = l;
+}
+
+static void dir_header(parser *p, token *tok, int n)
+{
+    const char *d = tok[0].s;
+    tl_timeline *tl = p->tl;
+    if (strcmp(d, "tideline") == 0) {
+        if (expect_args(p, tok, n, 1, 1, "a version number (1)"))
+            return;
+        if (p->saw_header) {
+            ERR_AT(&tok[0], "'tideline' appears twice");
+            return;
+        }
+        if (strcmp(tok[1].s, "1") != 0) {
+            ERR_AT(&tok[1], "unsupported timeline version '%s' (this tideline reads version 1)",
+                   tok[1].s);
+            return;
+        }
+        p->saw_header = 1;
+    } else if (strcmp(d, "fps") == 0) {
+        double fps;
+        if (expect_args(p, tok, n, 1, 1, "frames per second") ||
+            parse_quantity(p, &tok[1], TL_UNIT_NONE, &fps))
+            return;
+        if (!(fps >= 1.0 && fps <= 1000.0)) {
+            ERR_AT(&tok[1], "fps %s is outside 1..1000", tok[1].s);
+            return;
+        }
+        if (p->frame_units_line) {
+            ERR_AT(&tok[0], "fps must come before line %d, which gives a time in frames",
+                   p->frame_units_line);
+            return;
+        }
+        tl->fps = fps;
+    } else if (strcmp(d, "duration") == 0) {
+        double dur;
+        if (expect_args(p, tok, n, 1, 1, "a time (e.g. 12s)") || parse_time(p, &tok[1], &dur))
+            return;
+        if (!(dur > 0.0) || dur > 1e7) {
+            ERR_AT(&tok[1], "duration %s is outside (0, 1e7 s]", tok[1].s);
+            return;
+        }
+        tl->duration = dur;
+    } else if (strcmp(d, "size") == 0) {
+        if (expect_args(p, tok, n, 1, 1, "WIDTHxHEIGHT"))
+            return;
+        char *end = NULL;
+        long w = strtol(tok[1].s, &end, 10), h = -1;
+        if (end != tok[1].s && (*end == 'x' || *end == 'X')) {
+            const char *second = end + 1;
+            h = strtol(second, &end, 10);
+            if (end == second || *end != '\0')
+                h = -1;
+        } else {
+            w = -1;
+        }
+        if (w < 1 || h < 1 || w > 16384 || h > 16384) {
+            ERR_AT(&tok[1], "size '%s' is not WIDTHxHEIGHT with each side 1..16384", tok[1].s);
+            return;
+        }
+        tl->width = (int)w;
+        tl->height = (int)h;
+    } else if (strcmp(d, "quality") == 0) {
+        if (expect_args(p, tok, n, 1, 1, "a preset name"))
+            return;
+        tl_error e;
+        if (tl_quality_preset(tok[1].s, &tl->quality, &e)) {
+            static const char *const names[] = {"draft", "preview", "final", "reference",
+                                                "seed", NULL};
+            diag_add(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names), "%s", e.message);
+        }
+    }
+}
+
+static void directive(parser *p, token *tok, int n)
+{
+    const char *d = tok[0].s;
+    if (!p->saw_header && strcmp(d, "tideline") != 0) {
+        ERR_AT(&tok[0], "a timeline starts with the line 'tideline 1'");
+        p->saw_header = 1; /* report it once, then read on */
+    }
+    if (strcmp(d, "tideline") == 0 || strcmp(d, "fps") == 0 || strcmp(d, "duration") == 0 ||
+        strcmp(d, "size") == 0 || strcmp(d, "quality") == 0)
+        dir_header(p, tok, n);
+    else if (strcmp(d, "set") == 0)
+        dir_set(p, tok, n);
+    else if (strcmp(d, "key") == 0)
+        dir_key(p, tok, n);
+    else if (strcmp(d, "path") == 0)
+        dir_path(p, tok, n);
+    else if (strcmp(d, "look") == 0)
+        dir_look(p, tok, n);
+    else if (strcmp(d, "follow") == 0)
+        dir_follow(p, tok, n);
+    else
+        diag_add(p, tok[0].col, tok[0].len, tl_suggest(d, directives), "unknown directive '%s'",
+                 d);
+}
+
+/* ---- lines ---- */
+
+/* Splits `buf` (a copy of the line) into tokens; returns the count, or -1
+ * after reporting a bad byte or too many tokens. */
+static int tokenize(parser *p, char *buf, size_t len, token *tok)
+{
+    int n = 0;
+    size_t i = 0;
+    while (i < len) {
+        unsigned char c = (unsigned char)buf[i];
+        if (c == '#')
+            break;
+        if (c == ' ' || c == '\t' || c == '\r') {
+            buf[i++] = '\0';
+            continue;
+        }
+        if (c < 0x20 || c >= 0x7f) {
+            diag_add(p, (int)i + 1, 1, NULL,
+                     "unexpected byte 0x%02x (outside comments a timeline is plain ASCII)", c);
+            return -1;
+        }
+        if (n == MAX_TOKENS) {
+            diag_add(p, (int)i + 1, 1, NULL, "more than %d words on one line", MAX_TOKENS);
+            return -1;
+        }
+        tok[n].s = buf + i;
+        tok[n].col = (int)i + 1;
+        while (i < len && buf[i] != ' ' && buf[i] != '\t' && buf[i] != '\r' && buf[i] != '#' &&
+               (unsigned char)buf[i] >= 0x20 && (unsigned char)buf[i] < 0x7f)
+            i++;
+        tok[n].len = (int)(buf + i - tok[n].s);
+        n++;
+        if (i < len && buf[i] == '#') {
+            buf[i] = '\0';
+            break;
+        }
+    }
+    if (i <= len)
+        buf[i < len ? i : len] = '\0';
+    return n;
+}
+
+static void parse_line(parser *p, const char *text, size_t len)
+{
+    char *buf = p->buf;
+    token tok[MAX_TOKENS];
+    p->line_text = text;
+    p->line_len = len;
+    if (len > TL_PARSE_MAX_LINE) {
+        diag_add(p, TL_PARSE_MAX_LINE + 1, 1, NULL, "line is longer than %d characters",
+                 TL_PARSE_MAX_LINE);
+        p->line_len = 120;
+        return;
+    }
+    memcpy(buf, text, len);
+    buf[len] = '\0';
+    int n = tokenize(p, buf, len, tok);
+    if (n <= 0)
+        return;
+    int indented = text[0] == ' ' || text[0] == '\t';
+    if (indented) {
+        if (p->block == BLOCK_KEY)
+            key_line(p, tok, n);
+        else if (p->block == BLOCK_PATH)
+            path_line(p, tok, n);
+        else
+            ERR_AT(&tok[0], "indented line outside a 'key' or 'path' block");
+        return;
+    }
+    finish_block(p);
+    directive(p, tok, n);
+}
+
+/* Conflicts between what drives the camera and the boat links. */
+static void check_links(parser *p)
+{
+    tl_timeline *tl = p->tl;
+    const tl_track *pos = &tl->tracks[tl_channel_index(tl_channel_find("camera.position"))];
+    const tl_track *yaw = &tl->tracks[tl_channel_index(tl_channel_find("camera.yaw"))];
+    const tl_track *pitch = &tl->tracks[tl_channel_index(tl_channel_find("camera.pitch"))];
+    p->line_text = NULL;
+    p->line_len = 0;
+    struct {
+        int line, active;
+        const char *what;
+    } drivers[3] = {{pos->line, pos->state != TL_TRACK_DEFAULT, "camera.position"},
+                    {tl->camera_path.line, tl->camera_path.present, "path camera"},
+                    {tl->camera_follow.line, tl->camera_follow.target != TL_TARGET_NONE,
+                     "follow camera"}};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (drivers[i].active && drivers[j].active) {
+                int later = drivers[i].line > drivers[j].line ? i : j;
+                int earlier = later == i ? j : i;
+                p->line_no = drivers[later].line;
+                diag_add(p, 0, 1, NULL, "the camera position comes from both %s (line %d) and %s",
+                         drivers[earlier].what, drivers[earlier].line, drivers[later].what);
+            }
+    if (tl->camera_look.target != TL_TARGET_NONE) {
+        const tl_track *aim[2] = {yaw, pitch};
+        const char *names[2] = {"camera.yaw", "camera.pitch"};
+        for (int i = 0; i < 2; i++)
+            if (aim[i]->state != TL_TRACK_DEFAULT) {
+                p->line_no = aim[i]->line > tl->camera_look.line ? aim[i]->line
+                                                                 : tl->camera_look.line;
+                diag_add(p, 0, 1, NULL, "the camera looks at a target (line %d), so %s "
+                         "(line %d) cannot be set or keyed", tl->camera_look.line, names[i],
+                         aim[i]->line);
+            }
+    }
+    const tl_link *needs_boat[3] = {&tl->camera_look, &tl->camera_follow, &tl->giant_follow};
+    for (int i = 0; i < 3; i++)
+        if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present) {
+            p->line_no = needs_boat[i]->line;
+            diag_add(p, 0, 1, NULL, "this refers to the boat, but the timeline has no "
+                                    "'path boat'");
+        }
+}
+
+int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl_timeline *out,
+                           tl_diags *diags, tl_error *err)
+{
+    memset(diags, 0, sizeof *diags);
+    snprintf(diags->file, sizeof diags->file, "%s", name);
+    if (tl_timeline_init(out, err))
+        return err ? (int)err->status : TL_ERR_RUNTIME;
+    snprintf(out->file, sizeof out->file, "%s", name);
+    parser p = {0}; /* ~4 KiB: the line buffer */
+    p.name = name;
+    p.tl = out;
+    p.diags = diags;
+    size_t pos = 0;
+    while (pos < length && !p.stopped) {
+        const char *eol = memchr(text + pos, '\n', length - pos);
+        size_t len = eol ? (size_t)(eol - (text + pos)) : length - pos;
+        p.line_no++;
+        parse_line(&p, text + pos, len);
+        pos += len + (eol ? 1 : 0);
+    }
+    if (!p.stopped) {
+        p.line_text = NULL;
+        p.line_len = 0;
+        finish_block(&p);
+        if (!p.saw_header) {
+            p.line_no = 1;
+            diag_add(&p, 0, 1, NULL, "a timeline starts with the line 'tideline 1'");
+        }
+        check_links(&p);
+    }
+    free(p.key_lines);
+    if (diags->count == 0)
+        return TL_OK;
+    /* Conflicts are found after the whole file: show everything in line
+     * order (insertion sort keeps equal lines in the order found). */
+    for (int i = 1; i < diags->count; i++) {
+        tl_diag d = diags->items[i];
+        int j = i - 1;
+        while (j >= 0 && diags->items[j].line > d.line) {
+            diags->items[j + 1] = diags->items[j];
+            j--;
+        }
+        diags->items[j + 1] = d;
+    }
+    const tl_diag *first = &diags->items[0];
+    tl_error_set_at(err, TL_ERR_RUNTIME, name, first->line, first->column, "%s", first->message);
+    tl_timeline_free(out);
+    return TL_ERR_RUNTIME;
+}
+
+int tl_timeline_parse_file(const char *path, tl_timeline *out, tl_diags *diags, tl_error *err)
+{
+    memset(diags, 0, sizeof *diags);
+    memset(out, 0, sizeof *out);
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: cannot open timeline: %s", path,
+                            strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: not a regular file", path);
+    if (st.st_size > TL_PARSE_MAX_BYTES)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: %.1f MB is too large for a timeline (limit %d MiB)",
+                            path, (double)st.st_size / 1e6, TL_PARSE_MAX_BYTES >> 20);
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: cannot open timeline: %s", path,
+                            strerror(errno));
+    size_t cap = (size_t)st.st_size + 1;
+    char *text = malloc(cap);
+    if (!text) {
+        fclose(f);
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory", path);
+    }
+    /* Read at most the limit even if the file grew since stat. */
+    size_t len = fread(text, 1, cap, f);
+    int bad = ferror(f) || len > (size_t)st.st_size;
+    fclose(f);
+    if (bad) {
+        free(text);
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: cannot read timeline (changed while read?)",
+                            path);
+    }
+    int rc = tl_timeline_parse_text(path, text, len, out, diags, err);
+    free(text);
+    return rc;
+}
+
+void tl_diags_write(const tl_diags *d, FILE *out)
+{
+    for (int i = 0; i < d->count; i++) {
+        const tl_diag *g = &d->items[i];
+        if (g->column > 0)
+            fprintf(out, "%s:%d:%d: error: %s\n", d->file, g->line, g->column, g->message);
+        else
+            fprintf(out, "%s:%d: error: %s\n", d->file, g->line, g->message);
+        if (g->text[0] && g->column > 0) {
+            fprintf(out, "%6d | %s\n", g->line, g->text);
+            fprintf(out, "       | ");
+            /* Tabs stay tabs so the caret lines up under the same column. */
+            for (int c = 1; c < g->column && c <= (int)strlen(g->text); c++)
+                fputc(g->text[c - 1] == '\t' ? '\t' : ' ', out);
+            fputc('^', out);
+            for (int c = 1; c < g->length && c < 80; c++)
+                fputc('~', out);
+            fputc('\n', out);
+        }
+        if (g->hint[0])
+            fprintf(out, "       = %s\n", g->hint);
+    }
+    if (d->more)
+        fprintf(out, "%s: %d more error%s not shown\n", d->file, d->more, d->more > 1 ? "s" : "");
+}
+
+int tl_parse_time_text(const char *text, double fps, double *out, tl_error *err)
+{
+    tl_timeline tl;
+    memset(&tl, 0, sizeof tl);
+    tl.fps = fps;
+    tl_diags diags;
+    memset(&diags, 0, sizeof diags);
+    parser p = {0};
+    p.tl = &tl;
+    p.diags = &diags;
+    char copy[128];
+    snprintf(copy, sizeof copy, "%s", text);
+    token t = {copy, 1, (int)strlen(copy)};
+    if (strlen(text) >= sizeof copy || parse_time(&p, &t, out))
+        return tl_error_set(err, TL_ERR_USAGE, "%s",
+                            diags.count ? diags.items[0].message : "time is too long");
+    return TL_OK;
+}

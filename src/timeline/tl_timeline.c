@@ -1,0 +1,162 @@
+#include "tl_timeline.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "waves/tl_waves.h"
+
+int tl_timeline_init(tl_timeline *tl, tl_error *err)
+{
+    memset(tl, 0, sizeof *tl);
+    tl->version = 1;
+    tl->fps = 24.0;
+    tl->duration = 10.0;
+    tl->width = 1280;
+    tl->height = 720;
+    tl->quality = tl_quality_default();
+    tl->tracks = calloc((size_t)tl_channel_count(), sizeof *tl->tracks);
+    if (!tl->tracks)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (int i = 0; i < tl_channel_count(); i++)
+        for (int c = 0; c < 3; c++)
+            tl_curve_init(&tl->tracks[i].curve[c]);
+    tl_path_init(&tl->boat_path.path);
+    tl_path_init(&tl->camera_path.path);
+    return TL_OK;
+}
+
+void tl_timeline_free(tl_timeline *tl)
+{
+    if (tl->tracks) {
+        for (int i = 0; i < tl_channel_count(); i++)
+            for (int c = 0; c < 3; c++)
+                tl_curve_free(&tl->tracks[i].curve[c]);
+        free(tl->tracks);
+    }
+    tl_path_free(&tl->boat_path.path);
+    tl_path_free(&tl->camera_path.path);
+    memset(tl, 0, sizeof *tl);
+}
+
+long tl_timeline_frame_count(const tl_timeline *tl)
+{
+    double n = floor(tl->duration * tl->fps + 0.5);
+    return n < 1.0 ? 1 : (long)n;
+}
+
+double tl_timeline_frame_time(const tl_timeline *tl, long frame)
+{
+    return (double)frame / tl->fps;
+}
+
+static double clampd(double v, double lo, double hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+static const tl_track *track_of(const tl_timeline *tl, const char *name)
+{
+    const tl_channel *ch = tl_channel_find(name);
+    return ch ? &tl->tracks[tl_channel_index(ch)] : NULL;
+}
+
+static void add3(double out[3], const double a[3], const double b[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = a[i] + b[i];
+}
+
+void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
+{
+    tl_scene_defaults(s);
+    s->time = t;
+    s->width = tl->width;
+    s->height = tl->height;
+    s->quality = tl->quality;
+
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_channel *ch = tl_channel_at(i);
+        const tl_track *tr = &tl->tracks[i];
+        if (tr->state == TL_TRACK_DEFAULT)
+            continue;
+        double v[3] = {0, 0, 0};
+        for (int c = 0; c < ch->components; c++) {
+            double x = tr->state == TL_TRACK_SET ? tr->value[c] : tl_curve_eval(&tr->curve[c], t);
+            /* Clamp: overshooting eases (back, elastic) and Bezier handles
+             * may leave the range the keys respect. */
+            v[c] = clampd(x, ch->min, ch->max);
+        }
+        tl_channel_set(ch, s, v);
+    }
+
+    /* The boat rides the path and floats on the waves. */
+    if (tl->boat_path.present) {
+        double p[3], tangent[3];
+        tl_path_eval(&tl->boat_path.path, t, p, tangent);
+        tl_waves waves;
+        tl_waves_init(&waves, &s->ocean);
+        s->boat.enabled = true;
+        s->boat.position[0] = p[0];
+        s->boat.position[2] = p[2];
+        s->boat.position[1] = tl_waves_height(&waves, p[0], p[2], t, s->quality.march_octaves);
+        const tl_track *heading = track_of(tl, "boat.heading");
+        if (heading->state == TL_TRACK_DEFAULT && (tangent[0] != 0.0 || tangent[2] != 0.0))
+            s->boat.heading = atan2(tangent[0], tangent[2]);
+    }
+
+    if (tl->camera_path.present)
+        tl_path_eval(&tl->camera_path.path, t, s->camera.position, NULL);
+    if (tl->camera_follow.target == TL_TARGET_BOAT)
+        add3(s->camera.position, s->boat.position, tl->camera_follow.offset);
+    if (tl->giant_follow.target == TL_TARGET_BOAT) {
+        s->giant.center[0] = s->boat.position[0] + tl->giant_follow.offset[0];
+        s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
+    }
+    if (tl->camera_look.target != TL_TARGET_NONE) {
+        double target[3];
+        if (tl->camera_look.target == TL_TARGET_BOAT)
+            add3(target, s->boat.position, tl->camera_look.offset);
+        else
+            memcpy(target, tl->camera_look.point, sizeof target);
+        /* A target on the camera keeps the previous orientation (no flip). */
+        tl_scene_camera_look_at(&s->camera, target, NULL);
+    }
+}
+
+bool tl_timeline_has_cut_between(const tl_timeline *tl, double t0, double t1)
+{
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_track *tr = &tl->tracks[i];
+        if (tr->state != TL_TRACK_KEYED)
+            continue;
+        for (int c = 0; c < tl_channel_at(i)->components; c++)
+            if (tl_curve_has_cut_between(&tr->curve[c], t0, t1))
+                return true;
+    }
+    return false;
+}
+
+/* Samples the evaluated scene: at every frame for ordinary timelines, and at
+ * most TL_FEATURE_SAMPLES evenly spaced times for enormous ones. */
+#define TL_FEATURE_SAMPLES 20000
+
+void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *f)
+{
+    memset(f, 0, sizeof *f);
+    long frames = tl_timeline_frame_count(tl);
+    long samples = frames < TL_FEATURE_SAMPLES ? frames : TL_FEATURE_SAMPLES;
+    for (long i = 0; i < samples; i++) {
+        double t = samples == frames ? tl_timeline_frame_time(tl, i)
+                                     : tl->duration * (double)i / (double)(samples - 1);
+        tl_scene s;
+        tl_timeline_eval(tl, t, &s);
+        f->boat |= s.boat.enabled;
+        f->giant_wave |= s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
+        f->fog |= s.fog.density > 0.0;
+        /* Auto: the camera may be under water once it is below the crest
+         * plane (the exact test against the waves happens per frame). */
+        f->underwater |= s.underwater.mode == TL_UNDERWATER_ON ||
+                         (s.underwater.mode == TL_UNDERWATER_AUTO && s.camera.position[1] < 0.0);
+    }
+}

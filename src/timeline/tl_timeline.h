@@ -1,0 +1,80 @@
+/* tl_timeline: a parsed cutscene and its evaluation into scenes.
+ *
+ * A timeline holds render settings, one track per channel (default, a
+ * constant from `set`, or keyed curves from `key`), paths for the boat and
+ * the camera, and links (look at, follow). tl_timeline_eval is a pure
+ * function of time: the same t always gives the same scene. The language is
+ * described in docs/timeline.md; tl_timeline_parse reads it. */
+#ifndef TL_TIMELINE_H
+#define TL_TIMELINE_H
+
+#include <stdbool.h>
+
+#include "scene/tl_scene.h"
+#include "timeline/tl_channels.h"
+#include "timeline/tl_curve.h"
+#include "timeline/tl_path.h"
+
+typedef enum tl_track_state { TL_TRACK_DEFAULT, TL_TRACK_SET, TL_TRACK_KEYED } tl_track_state;
+
+typedef struct tl_track {
+    tl_track_state state;
+    double value[3];   /* TL_TRACK_SET */
+    tl_curve curve[3]; /* TL_TRACK_KEYED: one per component */
+    int line;          /* where it was set or keyed (0: default) */
+} tl_track;
+
+typedef enum tl_target { TL_TARGET_NONE, TL_TARGET_POINT, TL_TARGET_BOAT } tl_target;
+
+/* `look camera at ...`, `follow camera boat`, `follow giant.center boat`. */
+typedef struct tl_link {
+    tl_target target;
+    double point[3];  /* TL_TARGET_POINT */
+    double offset[3]; /* added to the boat's position */
+    int line;
+} tl_link;
+
+typedef struct tl_path_track {
+    bool present;
+    tl_path path;
+    int line;
+} tl_path_track;
+
+typedef struct tl_timeline {
+    char file[512];
+    int version;
+    double fps;
+    double duration; /* seconds */
+    int width, height;
+    tl_quality quality;
+    tl_track *tracks; /* tl_channel_count() entries */
+    tl_path_track boat_path;   /* points x 0 z */
+    tl_path_track camera_path; /* points x y z */
+    tl_link camera_look;
+    tl_link camera_follow;
+    tl_link giant_follow;
+} tl_timeline;
+
+/* A timeline with no keys: render defaults (24 fps, 10 s, 1280x720, final). */
+int tl_timeline_init(tl_timeline *tl, tl_error *err);
+void tl_timeline_free(tl_timeline *tl);
+
+/* Number of frames: floor(duration * fps + 0.5), at least 1. */
+long tl_timeline_frame_count(const tl_timeline *tl);
+/* A frame's time: frame / fps, from the integer frame, never accumulated. */
+double tl_timeline_frame_time(const tl_timeline *tl, long frame);
+
+/* The scene at time t (seconds). Evaluated values stay inside each
+ * channel's range (an overshooting ease is clamped to it). */
+void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *scene);
+
+/* True if any keyed channel jumps at a cut in (t0, t1]. */
+bool tl_timeline_has_cut_between(const tl_timeline *tl, double t0, double t1);
+
+/* Features the timeline needs over its whole duration (for `check`). */
+typedef struct tl_timeline_features {
+    bool giant_wave, boat, underwater, fog;
+} tl_timeline_features;
+void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *out);
+
+#endif

@@ -1,0 +1,847 @@
+/* Keyframe engine tests. Expected values are derived by hand (closed forms)
+ * or by an independent method (dense sampling of the Bezier cubic), never
+ * by calling the code under test. */
+#include "timeline/tl_curve.h"
+#include "timeline/tl_ease.h"
+#include "tl_test.h"
+
+#include <float.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#define F 2.5614 /* Blender's auto handle: reaches dt / F towards each neighbour */
+
+/* ---- helpers ------------------------------------------------------------ */
+
+static tl_key key(double t, double v, tl_interp interp)
+{
+    return tl_key_make(t, v, interp);
+}
+
+static void add(tl_curve *c, tl_key k)
+{
+    CHECK(tl_curve_add_key(c, &k, NULL) == 0);
+}
+
+/* Reference for one Bezier segment: sample (x(s), y(s)) densely and invert
+ * x by bisection over the samples plus linear interpolation. */
+#define REF_SAMPLES 200000
+static double ref_bezier(const double p0[2], const double p1[2], const double p2[2],
+                         const double p3[2], double t)
+{
+    static double xs[REF_SAMPLES + 1], ys[REF_SAMPLES + 1];
+    for (int i = 0; i <= REF_SAMPLES; i++) {
+        double s = (double)i / REF_SAMPLES, r = 1.0 - s;
+        double b0 = r * r * r, b1 = 3 * r * r * s, b2 = 3 * r * s * s, b3 = s * s * s;
+        xs[i] = b0 * p0[0] + b1 * p1[0] + b2 * p2[0] + b3 * p3[0];
+        ys[i] = b0 * p0[1] + b1 * p1[1] + b2 * p2[1] + b3 * p3[1];
+    }
+    int lo = 0, hi = REF_SAMPLES;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (xs[mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    double w = xs[hi] > xs[lo] ? (t - xs[lo]) / (xs[hi] - xs[lo]) : 0.0;
+    return ys[lo] + w * (ys[hi] - ys[lo]);
+}
+
+/* A tiny local PRNG (no global state). */
+static double rnd(uint64_t *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+/* ---- easing ------------------------------------------------------------- */
+
+static void test_ease(void)
+{
+    for (int f = 0; f < TL_EASE_FAMILY_COUNT; f++) {
+        for (int d = 0; d < TL_EASE_DIR_COUNT; d++) {
+            CHECK_NEAR(tl_ease(f, d, 0.0), 0.0, 1e-15);
+            CHECK_NEAR(tl_ease(f, d, 1.0), 1.0, 1e-15);
+            CHECK_NEAR(tl_ease(f, d, -3.0), 0.0, 1e-15); /* clamped */
+            CHECK_NEAR(tl_ease(f, d, 7.0), 1.0, 1e-15);
+        }
+    }
+    const double r2 = sqrt(2.0), r3 = sqrt(3.0);
+    struct {
+        tl_ease_family f;
+        tl_ease_dir d;
+        double u, want;
+    } cases[] = {
+        {TL_EASE_SINE, TL_EASE_IN, 0.5, 1 - r2 / 2},
+        {TL_EASE_SINE, TL_EASE_IN, 0.25, 1 - sqrt(2 + r2) / 2}, /* cos(pi/8) */
+        {TL_EASE_SINE, TL_EASE_OUT, 0.5, r2 / 2},
+        {TL_EASE_SINE, TL_EASE_OUT, 0.25, sqrt(2 - r2) / 2}, /* sin(pi/8) */
+        {TL_EASE_SINE, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_SINE, TL_EASE_IN_OUT, 0.25, (1 - r2 / 2) / 2},
+        {TL_EASE_QUAD, TL_EASE_IN, 0.5, 0.25},
+        {TL_EASE_QUAD, TL_EASE_IN, 0.25, 1.0 / 16},
+        {TL_EASE_QUAD, TL_EASE_OUT, 0.5, 0.75},
+        {TL_EASE_QUAD, TL_EASE_OUT, 0.25, 7.0 / 16},
+        {TL_EASE_QUAD, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_QUAD, TL_EASE_IN_OUT, 0.25, 0.125},
+        {TL_EASE_QUAD, TL_EASE_IN_OUT, 0.75, 0.875},
+        {TL_EASE_CUBIC, TL_EASE_IN, 0.5, 0.125},
+        {TL_EASE_CUBIC, TL_EASE_IN, 0.25, 1.0 / 64},
+        {TL_EASE_CUBIC, TL_EASE_OUT, 0.5, 0.875},
+        {TL_EASE_CUBIC, TL_EASE_OUT, 0.25, 37.0 / 64},
+        {TL_EASE_CUBIC, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_CUBIC, TL_EASE_IN_OUT, 0.25, 1.0 / 16},
+        {TL_EASE_CUBIC, TL_EASE_IN_OUT, 0.75, 15.0 / 16},
+        {TL_EASE_QUART, TL_EASE_IN, 0.5, 1.0 / 16},
+        {TL_EASE_QUART, TL_EASE_IN, 0.25, 1.0 / 256},
+        {TL_EASE_QUART, TL_EASE_OUT, 0.5, 15.0 / 16},
+        {TL_EASE_QUART, TL_EASE_OUT, 0.25, 175.0 / 256},
+        {TL_EASE_QUART, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_QUART, TL_EASE_IN_OUT, 0.25, 1.0 / 32},
+        {TL_EASE_QUART, TL_EASE_IN_OUT, 0.75, 31.0 / 32},
+        {TL_EASE_QUINT, TL_EASE_IN, 0.5, 1.0 / 32},
+        {TL_EASE_QUINT, TL_EASE_IN, 0.25, 1.0 / 1024},
+        {TL_EASE_QUINT, TL_EASE_OUT, 0.5, 31.0 / 32},
+        {TL_EASE_QUINT, TL_EASE_OUT, 0.25, 781.0 / 1024},
+        {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.25, 1.0 / 64},
+        {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.75, 63.0 / 64},
+        {TL_EASE_EXPO, TL_EASE_IN, 0.5, 1.0 / 32},
+        {TL_EASE_EXPO, TL_EASE_IN, 0.25, 1.0 / (128 * r2)}, /* 2^-7.5 */
+        {TL_EASE_EXPO, TL_EASE_OUT, 0.5, 31.0 / 32},
+        {TL_EASE_EXPO, TL_EASE_OUT, 0.25, 1 - 1.0 / (4 * r2)}, /* 1 - 2^-2.5 */
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.25, 1.0 / 64},
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.75, 63.0 / 64},
+        {TL_EASE_CIRC, TL_EASE_IN, 0.5, 1 - r3 / 2},
+        {TL_EASE_CIRC, TL_EASE_IN, 0.25, 1 - sqrt(15.0) / 4},
+        {TL_EASE_CIRC, TL_EASE_OUT, 0.5, r3 / 2},
+        {TL_EASE_CIRC, TL_EASE_OUT, 0.25, sqrt(7.0) / 4},
+        {TL_EASE_CIRC, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_CIRC, TL_EASE_IN_OUT, 0.25, (1 - r3 / 2) / 2},
+        /* back, s = 1.70158: in(0.5) = 0.25 (1.5 s + 0.5 - s)... */
+        {TL_EASE_BACK, TL_EASE_IN, 0.5, 0.25 * (0.5 * 2.70158 - 1.70158)},
+        {TL_EASE_BACK, TL_EASE_OUT, 0.5, 1 - 0.25 * (0.5 * 2.70158 - 1.70158)},
+        {TL_EASE_BACK, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_BACK, TL_EASE_IN_OUT, 0.25, -0.09968184375}, /* s' = 1.525 s */
+        /* bounce: out(0.5) = 7.5625 (1/22)^2 + 0.75 = 49/64 */
+        {TL_EASE_BOUNCE, TL_EASE_OUT, 0.5, 49.0 / 64},
+        {TL_EASE_BOUNCE, TL_EASE_OUT, 0.25, 0.47265625},
+        {TL_EASE_BOUNCE, TL_EASE_IN, 0.5, 15.0 / 64},
+        {TL_EASE_BOUNCE, TL_EASE_IN, 0.25, 0.02734375}, /* 1 - (9/256 + 15/16) */
+        {TL_EASE_BOUNCE, TL_EASE_IN_OUT, 0.5, 0.5},
+        {TL_EASE_BOUNCE, TL_EASE_IN_OUT, 0.25, 0.1171875},
+        {TL_EASE_BOUNCE, TL_EASE_IN_OUT, 0.75, 0.8828125},
+        /* elastic, p = 0.3: in(0.5) = -2^-5 sin(-23 pi / 6) = -1/64 */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.5, -1.0 / 64},
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.25, -1.0 / (128 * r2)}, /* sin(-11 pi / 2) = 1 */
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.5, 1 + 1.0 / 64},      /* sin(17 pi / 6) = 1/2 */
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.25, 1 - 0.5 / (4 * r2)}, /* sin(7 pi / 6) */
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.5, 0.5},
+        /* p = 0.45: -0.5 * 2^-5 * sin(-49 pi / 18) = sin(50 deg) / 64 */
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.25, 0.76604444311897804 / 64},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double got = tl_ease(cases[i].f, cases[i].d, cases[i].u);
+        if (fabs(got - cases[i].want) > 1e-12)
+            fprintf(stderr, "  ease %s at %g\n", tl_ease_name(cases[i].f, cases[i].d),
+                    cases[i].u);
+        CHECK_NEAR(got, cases[i].want, 1e-12);
+    }
+    /* 1.70158 is chosen for a 10% undershoot: minimum at u = 2s / (3(s+1)). */
+    double s = TL_EASE_BACK_OVERSHOOT, umin = 2 * s / (3 * (s + 1));
+    CHECK_NEAR(tl_ease(TL_EASE_BACK, TL_EASE_IN, umin), -0.1, 1e-5);
+
+    /* Names round-trip. */
+    tl_ease_family fam;
+    tl_ease_dir dir;
+    CHECK(tl_ease_from_name("ease-in-out-sine", &fam, &dir));
+    CHECK(fam == TL_EASE_SINE && dir == TL_EASE_IN_OUT);
+    CHECK(tl_ease_from_name("ease-out-elastic", &fam, &dir));
+    CHECK(fam == TL_EASE_ELASTIC && dir == TL_EASE_OUT);
+    CHECK(!tl_ease_from_name("ease-sideways-sine", &fam, &dir));
+    CHECK(!tl_ease_from_name("", &fam, &dir));
+    for (int f = 0; f < TL_EASE_FAMILY_COUNT; f++) {
+        for (int d = 0; d < TL_EASE_DIR_COUNT; d++) {
+            const char *name = tl_ease_name(f, d);
+            CHECK(name && tl_ease_from_name(name, &fam, &dir) && (int)fam == f && (int)dir == d);
+        }
+    }
+    CHECK(tl_ease_name(TL_EASE_FAMILY_COUNT, TL_EASE_IN) == NULL);
+    CHECK_STR_CONTAINS(tl_ease_name(TL_EASE_BOUNCE, TL_EASE_IN), "bounce");
+}
+
+/* ---- simple interpolations ---------------------------------------------- */
+
+static void test_constant_linear_ease(void)
+{
+    tl_curve c;
+    tl_curve_init(&c);
+    add(&c, key(0.0, 1.0, TL_INTERP_CONSTANT));
+    add(&c, key(2.0, 3.0, TL_INTERP_LINEAR));
+    tl_key e = key(4.0, 7.0, TL_INTERP_EASE);
+    e.ease_family = TL_EASE_QUAD;
+    e.ease_dir = TL_EASE_IN;
+    add(&c, e);
+    add(&c, key(6.0, 9.0, TL_INTERP_LINEAR));
+    CHECK(tl_curve_validate(&c, NULL, NULL) == 0);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 0.0), 1.0, 0);
+    CHECK_NEAR(tl_curve_eval(&c, 1.999), 1.0, 0); /* step holds */
+    CHECK_NEAR(tl_curve_eval(&c, 2.0), 3.0, 0);
+    CHECK_NEAR(tl_curve_eval(&c, 2.5), 4.0, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, 3.0), 5.0, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, 4.0), 7.0, 0);
+    CHECK_NEAR(tl_curve_eval(&c, 5.0), 7.0 + 2.0 * 0.25, 1e-15); /* quad-in at 1/2 */
+    CHECK_NEAR(tl_curve_eval(&c, 6.0), 9.0, 0);
+    CHECK_NEAR(tl_curve_eval(&c, -1.0), 1.0, 0); /* constant extrapolation */
+    CHECK_NEAR(tl_curve_eval(&c, 9.0), 9.0, 0);
+
+    /* Step keys may share a time: the later key wins from that time on. */
+    tl_curve s;
+    tl_curve_init(&s);
+    add(&s, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&s, key(1.0, 1.0, TL_INTERP_CONSTANT));
+    add(&s, key(1.0, 4.0, TL_INTERP_LINEAR));
+    add(&s, key(2.0, 6.0, TL_INTERP_LINEAR));
+    CHECK(tl_curve_validate(&s, NULL, NULL) == 0);
+    tl_curve_prepare(&s);
+    CHECK_NEAR(tl_curve_eval(&s, 0.5), 0.5, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&s, 1.0), 4.0, 0);
+    CHECK_NEAR(tl_curve_eval(&s, 1.5), 5.0, 1e-15);
+
+    /* Empty and single-key curves. */
+    tl_curve z;
+    tl_curve_init(&z);
+    CHECK(tl_curve_eval(&z, 3.0) == 0.0);
+    add(&z, key(1.0, 2.5, TL_INTERP_BEZIER));
+    tl_curve_prepare(&z);
+    CHECK(tl_curve_eval(&z, -4.0) == 2.5 && tl_curve_eval(&z, 1e6) == 2.5);
+    tl_curve_free(&z);
+    tl_curve_free(&s);
+    tl_curve_free(&c);
+}
+
+static double quad_f(double t)
+{
+    return t * t - 3.0 * t + 1.0;
+}
+
+static void test_spline(void)
+{
+    /* Three-point tangents make a cubic Hermite reproduce a quadratic
+     * exactly, ends included, at any key spacing. */
+    const double ts[] = {0.0, 0.5, 1.7, 3.0, 3.2, 5.0};
+    tl_curve c;
+    tl_curve_init(&c);
+    for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++)
+        add(&c, key(ts[i], quad_f(ts[i]), TL_INTERP_SPLINE));
+    tl_curve_prepare(&c);
+    for (double t = 0.0; t <= 5.0; t += 0.01)
+        CHECK_NEAR(tl_curve_eval(&c, t), quad_f(t), 1e-12);
+    /* Linear extrapolation continues with the end derivative 2t - 3. */
+    c.extrap = TL_EXTRAP_LINEAR;
+    CHECK_NEAR(tl_curve_eval(&c, 6.0), quad_f(5.0) + 7.0, 1e-12);
+    CHECK_NEAR(tl_curve_eval(&c, -1.0), quad_f(0.0) + 3.0, 1e-12);
+    tl_curve_free(&c);
+
+    /* C1 at a key for arbitrary data: one-sided difference quotients agree. */
+    tl_curve w;
+    tl_curve_init(&w);
+    const double vs[] = {0.0, 2.0, -1.0, 0.5, 3.0};
+    const double tw[] = {0.0, 0.3, 1.0, 2.5, 2.9};
+    for (int i = 0; i < 5; i++)
+        add(&w, key(tw[i], vs[i], TL_INTERP_SPLINE));
+    tl_curve_prepare(&w);
+    for (int i = 1; i < 4; i++) {
+        double h = 1e-6, t = tw[i];
+        double left = (tl_curve_eval(&w, t) - tl_curve_eval(&w, t - h)) / h;
+        double right = (tl_curve_eval(&w, t + h) - tl_curve_eval(&w, t)) / h;
+        CHECK_NEAR(left, right, 1e-3 * (1.0 + fabs(left)));
+        CHECK_NEAR(tl_curve_eval(&w, t), vs[i], 1e-15);
+    }
+    tl_curve_free(&w);
+}
+
+/* ---- Bezier handles ------------------------------------------------------- */
+
+static void prepared3(tl_curve *c, double t0, double v0, double t1, double v1, double t2,
+                      double v2, tl_handle_type type)
+{
+    tl_curve_init(c);
+    tl_key k[3] = {key(t0, v0, TL_INTERP_BEZIER), key(t1, v1, TL_INTERP_BEZIER),
+                   key(t2, v2, TL_INTERP_BEZIER)};
+    for (int i = 0; i < 3; i++) {
+        k[i].left_type = k[i].right_type = type;
+        add(c, k[i]);
+    }
+}
+
+static void test_handles(void)
+{
+    tl_curve c;
+    /* Auto-clamped at a maximum: both handles flat, reaching dt / F. */
+    prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_AUTO_CLAMPED);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].left.t, 1 - 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 1, 0);
+    CHECK_NEAR(c.keys[1].right.t, 1 + 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].right.v, 1, 0);
+    tl_curve_free(&c);
+
+    /* Auto: handle slope = mean of the neighbouring chord slopes (1 and
+     * 0.25), lengths dt_prev / F and dt_next / F in time. */
+    prepared3(&c, 0, 0, 1, 1, 3, 1.5, TL_HANDLE_AUTO);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].left.t, 1 - 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 1 - 0.625 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].right.t, 1 + 2 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].right.v, 1 + 1.25 / F, 1e-12);
+    /* End keys with constant extrapolation: flat (Blender's auto ease). */
+    CHECK_NEAR(c.keys[0].right.t, 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[0].right.v, 0, 0);
+    CHECK_NEAR(c.keys[2].left.t, 3 - 2 / F, 1e-12);
+    CHECK_NEAR(c.keys[2].left.v, 1.5, 0);
+    /* With linear extrapolation the ends point along their chord. */
+    c.extrap = TL_EXTRAP_LINEAR;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[0].right.v, 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[0].left.t, -1 / F, 1e-12);
+    CHECK_NEAR(c.keys[0].left.v, -1 / F, 1e-12);
+    CHECK_NEAR(c.keys[2].right.t, 3 + 2 / F, 1e-12);
+    CHECK_NEAR(c.keys[2].right.v, 1.5 + 0.5 / F, 1e-12);
+    tl_curve_free(&c);
+
+    /* Auto-clamped, not an extremum, right handle would pass the next value
+     * (1 + 1.1 * 2 / (2F) > 1.2): clamped to 1.2, left realigned through the
+     * key: slope 0.2 / (2/F) so left = 1 - 0.2 / 2 = 0.9. */
+    prepared3(&c, 0, 0, 1, 1, 3, 1.2, TL_HANDLE_AUTO_CLAMPED);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].right.t, 1 + 2 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].right.v, 1.2, 1e-15);
+    CHECK_NEAR(c.keys[1].left.t, 1 - 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 0.9, 1e-12);
+    tl_curve_free(&c);
+
+    /* Vector: one third of the way to each neighbour. */
+    prepared3(&c, 0, 0, 3, 3, 6, 0, TL_HANDLE_VECTOR);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].left.t, 2, 1e-15);
+    CHECK_NEAR(c.keys[1].left.v, 2, 1e-15);
+    CHECK_NEAR(c.keys[1].right.t, 4, 1e-15);
+    CHECK_NEAR(c.keys[1].right.v, 2, 1e-15);
+    CHECK_NEAR(c.keys[0].right.t, 1, 1e-15); /* end: mirrored neighbour */
+    CHECK_NEAR(c.keys[0].right.v, 1, 1e-15);
+    CHECK_NEAR(c.keys[0].left.t, -1, 1e-15);
+    CHECK_NEAR(c.keys[0].left.v, -1, 1e-15);
+    tl_curve_free(&c);
+
+    /* Aligned both sides: the right handle's direction wins, the left keeps
+     * its length (1) pointing the opposite way. */
+    prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_AUTO_CLAMPED);
+    c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_ALIGNED;
+    c.keys[1].left = (tl_curve_point){0.0, 1.0};
+    c.keys[1].right = (tl_curve_point){3.0, 3.0};
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].right.t, 3, 1e-12);
+    CHECK_NEAR(c.keys[1].right.v, 3, 1e-12);
+    CHECK_NEAR(c.keys[1].left.t, 1 - sqrt(0.5), 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 1 - sqrt(0.5), 1e-12);
+    /* Aligned left with an auto-clamped right (flat at the maximum). */
+    c.keys[1].right_type = TL_HANDLE_AUTO_CLAMPED;
+    c.keys[1].left = (tl_curve_point){0.5, 1.5};
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].right.v, 1, 0);
+    CHECK_NEAR(c.keys[1].left.t, 1 - sqrt(0.5), 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 1, 1e-15);
+    /* Free stays where it is, except a handle on the wrong side of its key
+     * in time, which is clamped to the key's time (Blender). */
+    c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_FREE;
+    c.keys[1].left = (tl_curve_point){0.2, 5.0};
+    c.keys[1].right = (tl_curve_point){0.5, -2.0};
+    tl_curve_prepare(&c);
+    CHECK(c.keys[1].left.t == 0.2 && c.keys[1].left.v == 5.0);
+    CHECK(c.keys[1].right.t == 1.0 && c.keys[1].right.v == -2.0);
+    tl_curve_free(&c);
+
+    /* Cycle: with auto ends, the first key's neighbour before it is the
+     * second-to-last key one cycle earlier: (-2, 2) around (0,0) with next
+     * (1, 2); slopes -1 and 2, mean 0.5. */
+    prepared3(&c, 0, 0, 1, 2, 3, 0, TL_HANDLE_AUTO);
+    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[0].left.t, -2 / F, 1e-12);
+    CHECK_NEAR(c.keys[0].left.v, -1 / F, 1e-12);
+    CHECK_NEAR(c.keys[0].right.t, 1 / F, 1e-12);
+    CHECK_NEAR(c.keys[0].right.v, 0.5 / F, 1e-12);
+    /* ... and the same seam seen from the last key (next = (4, 2)). */
+    CHECK_NEAR(c.keys[2].right.v, 0.5 / F, 1e-12);
+    CHECK_NEAR(c.keys[2].left.v, -1 / F, 1e-12);
+    tl_curve_free(&c);
+
+    /* Neighbour weighting limit: a handle never exceeds 5x the other side. */
+    prepared3(&c, 0, 0, 1, 1, 11, 2, TL_HANDLE_AUTO);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].right.t, 1 + 5 / F, 1e-12);
+    tl_curve_free(&c);
+}
+
+/* ---- Bezier segments -------------------------------------------------------- */
+
+static void check_segment(const tl_curve *c, const double p0[2], const double p1[2],
+                          const double p2[2], const double p3[2], double tol)
+{
+    for (int i = 0; i <= 40; i++) {
+        double t = p0[0] + (p3[0] - p0[0]) * i / 40.0;
+        double want = ref_bezier(p0, p1, p2, p3, t);
+        double got = tl_curve_eval(c, t);
+        if (fabs(got - want) > tol)
+            fprintf(stderr, "  bezier at t=%.17g\n", t);
+        CHECK_NEAR(got, want, tol);
+    }
+}
+
+static void test_bezier_segments(void)
+{
+    /* Auto-clamped keys: handles derived by hand as in test_handles. */
+    tl_curve c;
+    prepared3(&c, 0, 0, 1, 1, 3, 1.5, TL_HANDLE_AUTO_CLAMPED);
+    tl_curve_prepare(&c);
+    {
+        double p0[2] = {0, 0}, p1[2] = {1 / F, 0}, p2[2] = {1 - 1 / F, 1 - 0.625 / F},
+               p3[2] = {1, 1};
+        check_segment(&c, p0, p1, p2, p3, 1e-8);
+        double q0[2] = {1, 1}, q1[2] = {1 + 2 / F, 1 + 1.25 / F}, q2[2] = {3 - 2 / F, 1.5},
+               q3[2] = {3, 1.5};
+        check_segment(&c, q0, q1, q2, q3, 1e-8);
+    }
+    tl_curve_free(&c);
+
+    /* Handles twice as long as the segment: Blender scales each back to the
+     * segment span, keeping direction: (2,1) -> (1,0.5), (-1,1) -> (0,1).
+     * The time cubic is then 3s - 6s^2 + 4s^3, flat at s = 1/2. */
+    tl_curve_init(&c);
+    tl_key a = key(0, 0, TL_INTERP_BEZIER), b = key(1, 1, TL_INTERP_BEZIER);
+    a.left_type = a.right_type = b.left_type = b.right_type = TL_HANDLE_FREE;
+    a.right = (tl_curve_point){2.0, 1.0};
+    b.left = (tl_curve_point){-1.0, 1.0};
+    add(&c, a);
+    add(&c, b);
+    tl_curve_prepare(&c);
+    {
+        double p0[2] = {0, 0}, p1[2] = {1, 0.5}, p2[2] = {0, 1}, p3[2] = {1, 1};
+        check_segment(&c, p0, p1, p2, p3, 1e-6);
+        /* x(1/2) = 1/2 exactly; y(1/2) = (0 + 3*0.5 + 3*1 + 1) / 8 = 0.6875 */
+        CHECK_NEAR(tl_curve_eval(&c, 0.5), 0.6875, 1e-9);
+    }
+    /* Zero-length handles: x and y are the same polynomial, so linear. */
+    c.keys[0].right = (tl_curve_point){0.0, 0.0};
+    c.keys[1].left = (tl_curve_point){1.0, 1.0};
+    for (double t = 0.0; t <= 1.0; t += 0.0625)
+        CHECK_NEAR(tl_curve_eval(&c, t), t, 1e-12);
+    /* One handle at full length, the other zero (x'(1) = 0 at the end). */
+    c.keys[0].right = (tl_curve_point){1.0, 3.0};
+    {
+        double p0[2] = {0, 0}, p1[2] = {1, 3}, p2[2] = {1, 1}, p3[2] = {1, 1};
+        check_segment(&c, p0, p1, p2, p3, 1e-6);
+    }
+    tl_curve_free(&c);
+
+    /* Random free handles (any length, any slope): always finite, within
+     * the convex hull of the corrected control values. */
+    uint64_t seed = 12345;
+    for (int trial = 0; trial < 200; trial++) {
+        tl_curve_init(&c);
+        double span = pow(10.0, -6.0 + 8.0 * rnd(&seed));
+        tl_key k0 = key(0, 0, TL_INTERP_BEZIER), k1 = key(span, 1, TL_INTERP_BEZIER);
+        k0.right_type = k1.left_type = TL_HANDLE_FREE;
+        k0.right = (tl_curve_point){span * 3 * rnd(&seed), 4 * rnd(&seed) - 2};
+        k1.left = (tl_curve_point){span * (1 - 3 * rnd(&seed)), 4 * rnd(&seed) - 1};
+        add(&c, k0);
+        add(&c, k1);
+        tl_curve_prepare(&c);
+        for (int i = 0; i <= 50; i++) {
+            double v = tl_curve_eval(&c, span * i / 50.0);
+            CHECK(isfinite(v) && v >= -2.0 - 1e-9 && v <= 3.0 + 1e-9);
+        }
+        if (trial < 20) {
+            /* Against the sampled cubic, with the handles shortened by hand
+             * to the span (Blender's correction) in normalised time. */
+            double p0[2] = {0, 0}, p3[2] = {1, 1};
+            double p1[2] = {k0.right.t / span, k0.right.v};
+            double p2[2] = {(k1.left.t - span) / span, k1.left.v}; /* relative to p3 */
+            double l1 = fabs(p1[0]), l2 = fabs(p2[0]);
+            if (l1 > 1) {
+                p1[0] /= l1;
+                p1[1] /= l1;
+            }
+            if (l2 > 1) {
+                p2[0] /= l2;
+                p2[1] = 1 + (p2[1] - 1) / l2;
+            }
+            p2[0] += 1;
+            /* Off u = 1/2, where full-length handles give a vertical
+             * tangent and 1 ulp in u moves the value by ~1e-6. */
+            for (int i = 0; i < 10; i++) {
+                double u = (i + 0.37) / 10.0;
+                CHECK_NEAR(tl_curve_eval(&c, span * u), ref_bezier(p0, p1, p2, p3, u), 1e-6);
+            }
+        }
+        tl_curve_free(&c);
+    }
+}
+
+/* ---- extrapolation --------------------------------------------------------- */
+
+static void test_extrapolation(void)
+{
+    tl_curve c;
+    tl_curve_init(&c);
+    add(&c, key(0.0, 1.0, TL_INTERP_LINEAR));
+    add(&c, key(2.0, 3.0, TL_INTERP_LINEAR));
+    tl_curve_prepare(&c);
+    CHECK(tl_curve_eval(&c, -5.0) == 1.0);
+    CHECK(tl_curve_eval(&c, 1e6) == 3.0);
+    c.extrap = TL_EXTRAP_LINEAR;
+    CHECK_NEAR(tl_curve_eval(&c, 1e6), 1e6 + 1.0, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, -1e6), 1.0 - 1e6, 1e-9);
+    c.keys[0].interp = TL_INTERP_CONSTANT; /* a step end extrapolates flat */
+    CHECK(tl_curve_eval(&c, -3.0) == 1.0);
+    CHECK(tl_curve_eval(&c, 5.0) == 3.0);
+    tl_curve_free(&c);
+
+    /* Bezier: the outer handle's slope (auto: the end chord, slope 2). */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_BEZIER));
+    add(&c, key(1.0, 2.0, TL_INTERP_BEZIER));
+    c.extrap = TL_EXTRAP_LINEAR;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6), 2.0 + 2.0 * (1e6 - 1.0), 1e-6);
+    CHECK_NEAR(tl_curve_eval(&c, -3.0), -6.0, 1e-12);
+    c.keys[0].left_type = TL_HANDLE_FREE;
+    c.keys[0].left = (tl_curve_point){-1.0, -0.5};
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, -10.0), -5.0, 1e-12);
+    tl_curve_free(&c);
+
+    /* Cycle, period 2.5 (1e6 is exactly 400000 periods). */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    add(&c, key(2.5, 0.0, TL_INTERP_LINEAR));
+    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 3.0), 0.5, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 0.5), 0.5, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 1.75), 0.5, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, -1e6 + 0.25), 0.25, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, -0.5), 1.0 / 3.0, 1e-12); /* = 2.0 in the cycle */
+    tl_curve_free(&c);
+
+    /* Cycle with a period not representable in binary: 1e6 = 3333333 * 0.3
+     * + 0.1, so t = 1e6 sits 0.1 into a cycle (error ~ 1e6 * ulp). */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(0.3, 3.0, TL_INTERP_LINEAR));
+    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6), 1.0, 1e-8);
+    /* Cycle with offset: each cycle adds 3. */
+    c.extrap = TL_EXTRAP_CYCLE_OFFSET;
+    CHECK_NEAR(tl_curve_eval(&c, 1e6), 3333333.0 * 3.0 + 1.0, 1e-6);
+    CHECK_NEAR(tl_curve_eval(&c, 0.45), 4.5, 1e-12);
+    CHECK_NEAR(tl_curve_eval(&c, -0.15), -1.5, 1e-12);
+    tl_curve_free(&c);
+
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 2.0, TL_INTERP_LINEAR));
+    c.extrap = TL_EXTRAP_CYCLE_OFFSET;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 0.25), 2e6 + 0.5, 1e-6);
+    CHECK_NEAR(tl_curve_eval(&c, -1e6 + 0.25), -2e6 + 0.5, 1e-6);
+    tl_curve_free(&c);
+
+    /* Ping-pong over [0, 2]: period 4. */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(2.0, 1.0, TL_INTERP_LINEAR));
+    c.extrap = TL_EXTRAP_PINGPONG;
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 3.0), 0.5, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, 4.5), 0.25, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 1.0), 0.5, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 2.5), 0.75, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 3.0), 0.5, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, -1.0), 0.5, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, -1e6 - 0.5), 0.25, 1e-9);
+    tl_curve_free(&c);
+
+    /* Cyclic Bezier curve at 1e6 s: the value one period later matches. */
+    prepared3(&c, 0, 0, 0.7, 2, 1.9, 0, TL_HANDLE_AUTO_CLAMPED);
+    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_prepare(&c);
+    double base = tl_curve_eval(&c, 1.1);
+    double far = 1.1 + 1.9 * 526316.0; /* ~1e6 */
+    CHECK_NEAR(tl_curve_eval(&c, far), base, 1e-8);
+    tl_curve_free(&c);
+}
+
+/* ---- cuts ------------------------------------------------------------------ */
+
+static void test_cuts(void)
+{
+    tl_curve c;
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    tl_key k = key(1.0, 5.0, TL_INTERP_LINEAR);
+    k.cut = true;
+    add(&c, k);
+    add(&c, key(2.0, 6.0, TL_INTERP_LINEAR));
+    CHECK(tl_curve_validate(&c, NULL, NULL) == 0);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 1.0 - 1e-9), 1.0 - 1e-9, 1e-12);
+    CHECK(tl_curve_eval(&c, 1.0) == 5.0);
+    CHECK_NEAR(tl_curve_eval(&c, 1.5), 5.5, 1e-15);
+    CHECK(tl_curve_has_cut_between(&c, 0.5, 1.0));
+    CHECK(!tl_curve_has_cut_between(&c, 1.0, 1.5));
+    CHECK(!tl_curve_has_cut_between(&c, 0.0, 0.999));
+    tl_curve_free(&c);
+
+    /* A cut later than the previous key: the value holds until the cut. */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    k = key(2.0, 5.0, TL_INTERP_LINEAR);
+    k.cut = true;
+    add(&c, k);
+    add(&c, key(3.0, 6.0, TL_INTERP_LINEAR));
+    tl_curve_prepare(&c);
+    CHECK(tl_curve_eval(&c, 1.5) == 1.0);
+    CHECK(tl_curve_eval(&c, 2.0 - 1e-12) == 1.0);
+    CHECK(tl_curve_eval(&c, 2.0) == 5.0);
+    CHECK_NEAR(tl_curve_eval(&c, 2.5), 5.5, 1e-15);
+    CHECK(tl_curve_has_cut_between(&c, 1.5, 2.0));
+    CHECK(!tl_curve_has_cut_between(&c, 2.0, 3.0));
+    CHECK(!tl_curve_has_cut_between(&c, 2.5, 2.0)); /* empty interval */
+    tl_curve_free(&c);
+
+    /* Bezier handles treat the cut as a boundary: with auto-clamped keys the
+     * key before the cut and the cut key are ends (flat), while a plain
+     * Bezier across the same keys without the cut would not be flat. */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_BEZIER));
+    add(&c, key(1.0, 1.0, TL_INTERP_BEZIER));
+    k = key(2.0, 3.0, TL_INTERP_BEZIER);
+    k.cut = true;
+    add(&c, k);
+    add(&c, key(3.0, 4.0, TL_INTERP_BEZIER));
+    tl_curve_prepare(&c);
+    CHECK(c.keys[1].left.v == 1.0 && c.keys[1].right.v == 1.0);
+    CHECK(c.keys[2].left.v == 3.0 && c.keys[2].right.v == 3.0);
+    CHECK_NEAR(c.keys[1].left.t, 1.0 - 1.0 / F, 1e-12); /* mirrored neighbour */
+    CHECK_NEAR(c.keys[2].right.t, 2.0 + 1.0 / F, 1e-12);
+    CHECK(tl_curve_eval(&c, 1.99) == 1.0);
+    CHECK(tl_curve_eval(&c, 2.0) == 3.0);
+    tl_curve_free(&c);
+
+    /* Cuts repeat with cycles: period 2, cut at 1 (+2k). */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    k = key(1.0, 5.0, TL_INTERP_LINEAR);
+    k.cut = true;
+    add(&c, k);
+    add(&c, key(2.0, 6.0, TL_INTERP_LINEAR));
+    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_prepare(&c);
+    CHECK(tl_curve_has_cut_between(&c, 1e6 + 0.5, 1e6 + 1.0));
+    CHECK(!tl_curve_has_cut_between(&c, 1e6 + 1.0, 1e6 + 1.5));
+    CHECK(tl_curve_has_cut_between(&c, 2.5, 3.5));
+    CHECK(tl_curve_has_cut_between(&c, -1.5, -0.5));
+    CHECK(tl_curve_has_cut_between(&c, 10.0, 30.0));
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 1.0 - 1e-6), 1.0 - 1e-6, 1e-8);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 1.0), 5.0, 1e-8);
+    /* Ping-pong over [0, 3]: the cut at 1 reappears mirrored at 5 (the jump
+     * just after 5, played backwards), then at 7. */
+    c.keys[3].t = 3.0;
+    c.extrap = TL_EXTRAP_PINGPONG;
+    tl_curve_prepare(&c);
+    CHECK(tl_curve_eval(&c, 5.0) == 5.0 && tl_curve_eval(&c, 5.5) == 0.5);
+    CHECK(!tl_curve_has_cut_between(&c, 4.5, 5.0));
+    CHECK(tl_curve_has_cut_between(&c, 5.0, 5.5));
+    CHECK(!tl_curve_has_cut_between(&c, 5.5, 6.5));
+    CHECK(tl_curve_has_cut_between(&c, 6.5, 7.0));
+    tl_curve_free(&c);
+}
+
+/* ---- stability ----------------------------------------------------------- */
+
+static void test_stability(void)
+{
+    /* Keys 1 microsecond apart at t = 1e6: the time grid there is ~1.2e-10,
+     * so values are right to ~1e-4 of the change. */
+    tl_curve c;
+    tl_curve_init(&c);
+    add(&c, key(1e6, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1e6 + 1e-6, 1.0, TL_INTERP_BEZIER));
+    add(&c, key(1e6 + 2e-6, 0.0, TL_INTERP_SPLINE));
+    add(&c, key(1e6 + 3e-6, 1.0, TL_INTERP_LINEAR));
+    CHECK(tl_curve_validate(&c, NULL, NULL) == 0);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 1e6 + 0.5e-6), 0.5, 2e-4);
+    for (int i = 0; i <= 300; i++) {
+        double v = tl_curve_eval(&c, 1e6 + i * 1e-8);
+        CHECK(isfinite(v) && v > -0.5 && v < 1.5);
+    }
+    CHECK(tl_curve_eval(&c, 1e6 + 1e-6) == 1.0);
+    tl_curve_free(&c);
+
+    /* Same spacing near zero: exact grid, Bezier mid-value by symmetry. */
+    prepared3(&c, 0, 0, 1e-6, 1, 2e-6, 2, TL_HANDLE_AUTO_CLAMPED);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(tl_curve_eval(&c, 1e-6), 1.0, 1e-15);
+    /* Second segment: right handle of the middle key (1/F, 1/F) along the
+     * data, last key flat; equal handle spans make x symmetric, so s = 1/2
+     * at the midpoint and y = (1 + 3 (1 + 1/F) + 3 * 2 + 2) / 8. */
+    CHECK_NEAR(tl_curve_eval(&c, 1.5e-6), (12.0 + 3.0 / F) / 8.0, 1e-9);
+    tl_curve_free(&c);
+
+    /* Many keys: v = 2t on a 10 ms grid; binary search must find the right
+     * segment everywhere. */
+    tl_curve_init(&c);
+    for (int i = 0; i < 100000; i++)
+        add(&c, key(i * 0.01, i * 0.02, TL_INTERP_LINEAR));
+    tl_curve_prepare(&c);
+    uint64_t seed = 7;
+    int bad = 0;
+    for (int i = 0; i < 200000; i++) {
+        double t = 999.99 * rnd(&seed);
+        if (fabs(tl_curve_eval(&c, t) - 2.0 * t) > 1e-9)
+            bad++;
+    }
+    CHECK(bad == 0);
+    tl_curve_free(&c);
+
+    /* Non-finite times never give non-finite values. */
+    prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_AUTO);
+    for (int m = 0; m < TL_EXTRAP_COUNT; m++) {
+        c.extrap = (tl_extrap)m;
+        tl_curve_prepare(&c);
+        CHECK(isfinite(tl_curve_eval(&c, INFINITY)));
+        CHECK(isfinite(tl_curve_eval(&c, -INFINITY)));
+        CHECK(isfinite(tl_curve_eval(&c, NAN)));
+        CHECK(isfinite(tl_curve_eval(&c, 1e300)));
+    }
+    tl_curve_free(&c);
+}
+
+/* ---- validation, unwrap, names ---------------------------------------------- */
+
+static void test_validation(void)
+{
+    tl_curve c;
+    tl_error err;
+    size_t bad = 99;
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(2.0, NAN, TL_INTERP_LINEAR));
+    tl_error_clear(&err);
+    CHECK(tl_curve_validate(&c, &bad, &err) != 0);
+    CHECK(bad == 2);
+    CHECK_STR_CONTAINS(err.message, "key 2");
+    CHECK_STR_CONTAINS(err.message, "finite");
+
+    c.keys[2].v = 1.0;
+    c.keys[2].t = 0.5; /* decreasing */
+    tl_error_clear(&err);
+    CHECK(tl_curve_validate(&c, &bad, &err) != 0);
+    CHECK(bad == 2);
+    CHECK_STR_CONTAINS(err.message, "key 2");
+    CHECK_STR_CONTAINS(err.message, "before");
+
+    c.keys[2].t = 1.0; /* same time as key 1, which is linear */
+    tl_error_clear(&err);
+    CHECK(tl_curve_validate(&c, &bad, &err) != 0);
+    CHECK(bad == 2);
+    CHECK_STR_CONTAINS(err.message, "key 2");
+    CHECK_STR_CONTAINS(err.message, "same time");
+    c.keys[2].cut = true;
+    CHECK(tl_curve_validate(&c, &bad, NULL) == 0);
+    c.keys[2].cut = false;
+    c.keys[1].interp = TL_INTERP_CONSTANT;
+    CHECK(tl_curve_validate(&c, &bad, NULL) == 0);
+
+    c.keys[1].t = INFINITY;
+    tl_error_clear(&err);
+    CHECK(tl_curve_validate(&c, &bad, &err) != 0);
+    CHECK(bad == 1);
+    CHECK_STR_CONTAINS(err.message, "key 1");
+    c.keys[1].t = 1.0;
+
+    c.keys[0].right_type = TL_HANDLE_FREE;
+    c.keys[0].right.v = NAN;
+    tl_error_clear(&err);
+    CHECK(tl_curve_validate(&c, &bad, &err) != 0);
+    CHECK(bad == 0);
+    CHECK_STR_CONTAINS(err.message, "handle");
+    tl_curve_free(&c);
+}
+
+static void test_unwrap(void)
+{
+    tl_curve c;
+    tl_curve_init(&c);
+    add(&c, key(0.0, 170.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, -170.0, TL_INTERP_LINEAR)); /* the short way is +20 */
+    add(&c, key(2.0, 175.0, TL_INTERP_LINEAR));  /* from 190: -15 */
+    add(&c, key(3.0, 900.0, TL_INTERP_LINEAR));  /* 900 = 180 + 720: from 175, +5 */
+    tl_curve_unwrap(&c, 360.0);
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].v, 190.0, 1e-12);
+    CHECK_NEAR(c.keys[2].v, 175.0, 1e-12);
+    CHECK_NEAR(c.keys[3].v, 180.0, 1e-12);
+    CHECK_NEAR(tl_curve_eval(&c, 0.5), 180.0, 1e-12);
+    for (size_t i = 1; i < c.count; i++)
+        CHECK(fabs(c.keys[i].v - c.keys[i - 1].v) <= 180.0);
+    tl_curve_free(&c);
+}
+
+static void test_names(void)
+{
+    tl_interp ip;
+    tl_handle_type ht;
+    tl_extrap ex;
+    CHECK(tl_interp_from_name("bezier", &ip) && ip == TL_INTERP_BEZIER);
+    CHECK(!tl_interp_from_name("cubic", &ip));
+    CHECK(tl_handle_type_from_name("auto-clamped", &ht) && ht == TL_HANDLE_AUTO_CLAMPED);
+    CHECK(tl_handle_type_from_name("vector", &ht) && ht == TL_HANDLE_VECTOR);
+    CHECK(tl_extrap_from_name("ping-pong", &ex) && ex == TL_EXTRAP_PINGPONG);
+    CHECK(tl_extrap_from_name("cycle-offset", &ex) && ex == TL_EXTRAP_CYCLE_OFFSET);
+    CHECK(strcmp(tl_interp_name(TL_INTERP_SPLINE), "spline") == 0);
+    CHECK(strcmp(tl_extrap_name(TL_EXTRAP_CYCLE), "cycle") == 0);
+    CHECK(strcmp(tl_handle_type_name(TL_HANDLE_ALIGNED), "aligned") == 0);
+    CHECK(tl_interp_name(TL_INTERP_COUNT) == NULL);
+    tl_key k = tl_key_make(1.0, 2.0, TL_INTERP_BEZIER);
+    CHECK(k.left_type == TL_HANDLE_AUTO_CLAMPED && k.right_type == TL_HANDLE_AUTO_CLAMPED);
+    CHECK(!k.cut);
+}
+
+int main(void)
+{
+    test_ease();
+    test_constant_linear_ease();
+    test_spline();
+    test_handles();
+    test_bezier_segments();
+    test_extrapolation();
+    test_cuts();
+    test_stability();
+    test_validation();
+    test_unwrap();
+    test_names();
+    TEST_END();
+}
