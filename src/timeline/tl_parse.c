@@ -543,17 +543,8 @@ static void dir_set(parser *p, token *tok, int n)
     tl_track *tr = claim_track(p, ch, &tok[1]);
     if (!tr)
         return;
-    if (!ch->keyable) {
-        /* Quality knobs change the render settings, not a per-frame track. */
-        tl_scene tmp;
-        memset(&tmp, 0, sizeof tmp);
-        tmp.quality = p->tl->quality;
-        tl_channel_set(ch, &tmp, v);
-        p->tl->quality = tmp.quality;
-        tr->state = TL_TRACK_SET;
-        memcpy(tr->value, v, sizeof v);
-        return;
-    }
+    /* Render-setting channels (quality.*) apply on top of the preset at
+     * evaluation, wherever the `quality` line is. */
     tr->state = TL_TRACK_SET;
     memcpy(tr->value, v, sizeof v);
 }
