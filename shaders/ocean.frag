@@ -7,8 +7,39 @@
 #include "march.glsl"
 #include "water.glsl"
 
+// Supersampling: u_spp stratified samples per pixel (N-rooks: sample s
+// takes x stratum s and y stratum (s * u_spp_step) mod u_spp, jittered
+// inside its cell by a hash of pixel, sample and u_seed, so a frame is the
+// same every time it is rendered). u_sample_weight scales the result for
+// accumulating sub-frame passes (motion blur).
+uniform int u_spp;
+uniform int u_spp_step;
+uniform uint u_seed;
+uniform float u_sample_weight;
+
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
+
+uint hash_u32(uint x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+vec2 sample_offset(int s)
+{
+    if (u_spp <= 1)
+        return vec2(0.0); // the pixel centre, exactly
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint h = hash_u32(pixel.x * 73856093u ^ pixel.y * 19349663u ^ uint(s) * 83492791u ^ u_seed);
+    vec2 jitter = vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
+    vec2 stratum = vec2(float(s), float((s * u_spp_step) % u_spp));
+    return (stratum + jitter) / float(u_spp) - 0.5;
+}
 
 vec3 camera_ray(vec2 pixel)
 {
@@ -19,22 +50,33 @@ vec3 camera_ray(vec2 pixel)
     return normalize(d);
 }
 
+// Radiance along one ray; *dist is the hit distance or TL_SKY_DEPTH.
+vec3 trace(vec3 ray, out float dist)
+{
+    float t = march_water(ray);
+    if (t < 0.0) {
+        dist = TL_SKY_DEPTH;
+        return sky_color(ray);
+    }
+    dist = t;
+    vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
+    return water_color(ray, hit, t);
+}
+
 void main()
 {
-    vec3 ray = camera_ray(gl_FragCoord.xy);
-    vec3 color;
+    vec3 sum = vec3(0.0);
+    // Depth of a supersampled pixel: the nearest surface any sample saw.
     float depth = TL_SKY_DEPTH;
-    float dist = march_water(ray);
-    if (dist < 0.0) {
-        color = sky_color(ray);
-    } else {
-        vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * dist;
-        color = water_color(ray, hit, dist);
-        depth = dist;
+    for (int s = 0; s < max(u_spp, 1); s++) {
+        float dist;
+        sum += trace(camera_ray(gl_FragCoord.xy + sample_offset(s)), dist);
+        depth = min(depth, dist);
     }
+    vec3 color = sum / float(max(u_spp, 1));
     // Last guard: no NaN or Inf may reach a pixel.
     if (any(isnan(color)) || any(isinf(color)))
         color = vec3(0.0);
-    out_color = vec4(color, 1.0);
+    out_color = vec4(color, 1.0) * u_sample_weight;
     out_depth = depth;
 }

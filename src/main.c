@@ -10,6 +10,7 @@ static const char usage[] =
     "Usage: tideline COMMAND [options]\n"
     "\n"
     "Commands:\n"
+    "  render    render a timeline's frames headless to EXR/PNG files and movies\n"
     "  still     render one frame headless to EXR and/or PNG\n"
     "  check     validate a timeline and summarise it\n"
     "  eval      print a timeline's channel values at a time or frames\n"
@@ -40,6 +41,8 @@ int main(int argc, char **argv)
         }
         return 0;
     }
+    if (strcmp(cmd, "render") == 0)
+        return tl_cli_render(argc - 1, argv + 1);
     if (strcmp(cmd, "still") == 0)
         return tl_cli_still(argc - 1, argv + 1);
     if (strcmp(cmd, "check") == 0)

@@ -5,3 +5,10 @@ tl_add_test(test_cli SOURCES test_cli.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders)
 tl_add_test(test_docs SOURCES test_docs.c LIBS tideline_core
   ARGS ${PROJECT_SOURCE_DIR}/docs/timeline.md)
+# The library example renders a frame of a bundled timeline.
+add_test(NAME example_render_frame
+  COMMAND sh -c "$<TARGET_FILE:render_frame> ${PROJECT_SOURCE_DIR}/timelines/calm.tl 12 example.png 64x36 && test -s example.png && rm example.png && echo EXAMPLE_OK"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(example_render_frame PROPERTIES PASS_REGULAR_EXPRESSION "frame 12 \\(t = 0.5000 s\\) -> example.png\nEXAMPLE_OK")
+tl_add_test(test_render_cmd SOURCES test_render_cmd.c LIBS tideline_gl
+  ARGS $<TARGET_FILE:tideline>)

@@ -9,52 +9,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "tl_run.h"
 #include "tl_test.h"
 
-static const char *binary;
 static const char *shader_src;
 static char dir[] = "/tmp/tideline-cli-XXXXXX";
-static char out_text[16384];
+#define out_text tl_run_output
 
-/* Runs the binary with a NULL-terminated argument list (and an optional
- * environment override "NAME=VALUE"); returns the exit status and leaves
- * stdout+stderr in out_text. */
-static int run(const char *env, ...)
-{
-    const char *args[32] = {binary};
-    int n = 1;
-    va_list ap;
-    va_start(ap, env);
-    const char *a;
-    while ((a = va_arg(ap, const char *)) != NULL && n < 31)
-        args[n++] = a;
-    va_end(ap);
-    args[n] = NULL;
-
-    int fds[2];
-    if (pipe(fds) != 0)
-        return -1;
-    pid_t pid = fork();
-    if (pid == 0) {
-        dup2(fds[1], 1);
-        dup2(fds[1], 2);
-        close(fds[0]);
-        if (env)
-            putenv((char *)env);
-        execv(binary, (char *const *)args);
-        _exit(127);
-    }
-    close(fds[1]);
-    size_t len = 0;
-    ssize_t got;
-    while ((got = read(fds[0], out_text + len, sizeof out_text - 1 - len)) > 0)
-        len += (size_t)got;
-    out_text[len] = '\0';
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
+/* run(env, args..., NULL): the binary's exit status, output in out_text. */
+#define run(env, ...) tl_run(&(tl_run_opts){env, 0}, __VA_ARGS__)
+#define dir_entries   tl_dir_entries
 
 static int count_lines(const char *s)
 {
@@ -62,20 +26,6 @@ static int count_lines(const char *s)
     for (; *s; s++)
         lines += *s == '\n';
     return lines;
-}
-
-static int dir_entries(const char *path)
-{
-    DIR *d = opendir(path);
-    if (!d)
-        return -1;
-    int count = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL)
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
-            count++;
-    closedir(d);
-    return count;
 }
 
 static char path_buf[8][512];
@@ -118,7 +68,8 @@ static void test_bad_flags(void)
     EXPECT_USAGE("--size: -4x3 is out of range", "still", "--size=-4x3", "-o", png);
     EXPECT_USAGE("--time: 'nan' is not a finite number", "still", "--time", "nan", "-o", png);
     EXPECT_USAGE("--time: 'inf' is not a finite number", "still", "--time", "inf", "-o", png);
-    EXPECT_USAGE("--time: unknown time unit 's4' (use s, ms or f)", "still", "--time", "3s4", "-o", png);
+    EXPECT_USAGE("--time: unknown time unit 's4' (use s, ms or f)", "still", "--time", "3s4", "-o",
+                 png);
     EXPECT_USAGE("--time: '1e999' is not a finite number", "still", "--time", "1e999", "-o", png);
     EXPECT_USAGE("--time needs a value", "still", "-o", png, "--time");
     EXPECT_USAGE("--camera: '0,inf,0' holds a non-finite number", "still", "--camera", "0,inf,0",
@@ -212,7 +163,7 @@ int main(int argc, char **argv)
 {
     if (argc < 3 || !mkdtemp(dir))
         return 1;
-    binary = argv[1];
+    tl_run_binary = argv[1];
     shader_src = argv[2];
     test_help_and_version();
     test_bad_flags();

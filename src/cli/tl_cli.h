@@ -7,6 +7,7 @@
 #include "core/tl_error.h"
 
 int tl_cli_still(int argc, char **argv);
+int tl_cli_render(int argc, char **argv);
 int tl_cli_check(int argc, char **argv);
 int tl_cli_eval(int argc, char **argv);
 

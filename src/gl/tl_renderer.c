@@ -246,6 +246,9 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1f(loc(p, "u_normal_smooth_max"), u->normal_smooth_max);
     glUniform1f(loc(p, "u_normal_smooth_rate"), u->normal_smooth_rate);
     glUniform1f(loc(p, "u_normal_smooth_gain"), u->normal_smooth_gain);
+    glUniform1i(loc(p, "u_spp"), u->spp);
+    glUniform1i(loc(p, "u_spp_step"), u->spp_step);
+    glUniform1ui(loc(p, "u_seed"), u->seed);
 }
 
 /* Reads attachment `index` of the bound framebuffer in one transfer, then
@@ -265,50 +268,87 @@ static void read_rows(int index, int width, int height, int channels, float *dst
     }
 }
 
-int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)
+int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err)
 {
-    if (frame->width != u->width || frame->height != u->height)
-        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
+    const GLenum scene_formats[2] = {GL_RGBA32F, GL_R32F};
+    const GLenum display_formats[1] = {GL_RGBA32F};
+    int rc = target_ensure(&r->scene, width, height, 2, scene_formats, err);
+    if (!rc)
+        rc = target_ensure(&r->display, width, height, 1, display_formats, err);
+    if (rc)
+        return rc;
+    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
+    glViewport(0, 0, width, height);
+    const float zero[4] = {0, 0, 0, 0};
+    const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glClearBufferfv(GL_COLOR, 1, sky);
+    return gl_check("frame setup", err);
+}
+
+int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
+                           int write_depth, tl_error *err)
+{
+    if (u->width != r->scene.width || u->height != r->scene.height)
+        return tl_error_set(err, TL_ERR_RUNTIME, "pass size does not match the frame");
     GLuint program = ocean_program(r, u->features, err);
     if (!program)
         return err ? (int)err->status : TL_ERR_RUNTIME;
-    const GLenum scene_formats[2] = {GL_RGBA32F, GL_R32F};
-    const GLenum display_formats[1] = {GL_RGBA32F};
-    int rc = target_ensure(&r->scene, u->width, u->height, 2, scene_formats, err);
-    if (!rc)
-        rc = target_ensure(&r->display, u->width, u->height, 1, display_formats, err);
-    if (rc)
-        return rc;
-
     glBindVertexArray(r->vao);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
     glViewport(0, 0, u->width, u->height);
     glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-
-    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
+    /* Radiance adds up across passes; depth is written by one pass only. */
+    glEnablei(GL_BLEND, 0);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisablei(GL_BLEND, 1);
+    glColorMaski(1, write_depth, write_depth, write_depth, write_depth);
     glUseProgram(program);
     upload_uniforms(program, u);
+    glUniform1f(loc(program, "u_sample_weight"), weight);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisablei(GL_BLEND, 0);
+    return gl_check("rendering", err);
+}
 
+int tl_renderer_finish(tl_renderer *r, float exposure, tl_frame *frame, tl_error *err)
+{
+    int w = r->scene.width, h = r->scene.height;
+    if (frame->width != w || frame->height != h)
+        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
+    glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    glViewport(0, 0, w, h);
     glUseProgram(r->present_program);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
     glUniform1i(loc(r->present_program, "u_hdr"), 0);
-    glUniform1f(loc(r->present_program, "u_exposure"), u->exposure);
+    glUniform1f(loc(r->present_program, "u_exposure"), exposure);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    float *row = malloc((size_t)u->width * 4 * sizeof(float));
+    float *row = malloc((size_t)w * 4 * sizeof(float));
     if (!row)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
-    read_rows(0, u->width, u->height, 4, frame->color, row);
-    read_rows(1, u->width, u->height, 1, frame->depth, row);
+    read_rows(0, w, h, 4, frame->color, row);
+    read_rows(1, w, h, 1, frame->depth, row);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
-    read_rows(0, u->width, u->height, 4, frame->display, row);
+    read_rows(0, w, h, 4, frame->display, row);
     free(row);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return gl_check("rendering", err);
+    return gl_check("reading the frame back", err);
+}
+
+int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)
+{
+    int rc = tl_renderer_begin(r, u->width, u->height, err);
+    if (!rc)
+        rc = tl_renderer_accumulate(r, u, 1.0f, 1, err);
+    if (!rc)
+        rc = tl_renderer_finish(r, u->exposure, frame, err);
+    return rc;
 }
 
 int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,

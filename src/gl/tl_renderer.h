@@ -19,8 +19,18 @@ int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *er
 void tl_renderer_destroy(tl_renderer *r);
 
 /* Renders one frame of u->width x u->height into `frame` (allocated by the
- * caller with the same size). Rows come back top row first. */
+ * caller with the same size). Rows come back top row first. The same as
+ * begin + one accumulate (weight 1, with depth) + finish. */
 int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err);
+
+/* A frame built from several passes (motion blur sub-frames): begin clears
+ * the float target; each accumulate adds weight x its radiance (weights
+ * should sum to 1) and, when write_depth is set, stores its depth; finish
+ * runs the display pass with `exposure` and reads everything back. */
+int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err);
+int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
+                           int write_depth, tl_error *err);
+int tl_renderer_finish(tl_renderer *r, float exposure, tl_frame *frame, tl_error *err);
 
 /* Evaluates the shader's wave height at `count` camera-relative points
  * (x, z pairs) with `octaves` octaves: the GPU side of the accuracy tests. */

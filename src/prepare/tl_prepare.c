@@ -3,6 +3,29 @@
 #include <math.h>
 #include <string.h>
 
+static int gcd(int a, int b)
+{
+    while (b) {
+        int t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* The y-stratum step for N-rooks sampling: near N times the golden ratio's
+ * fractional part (well spread), and coprime with N so that every y
+ * stratum is used exactly once. */
+static int rooks_step(int n)
+{
+    int step = (int)lround(0.6180339887 * n);
+    if (step < 1)
+        step = 1;
+    while (gcd(step, n) != 1)
+        step++;
+    return step;
+}
+
 static void to_float3(const double in[3], float out[3])
 {
     for (int i = 0; i < 3; i++)
@@ -53,6 +76,9 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->march_steps = q->march_steps;
     u->hit_epsilon = (float)q->hit_epsilon;
     u->normal_epsilon = (float)q->normal_epsilon;
+    u->spp = q->spp < 1 ? 1 : q->spp;
+    u->spp_step = rooks_step(u->spp);
+    u->seed = 0;
 
     double sun[3];
     tl_scene_sun_direction(&s->sun, sun);

@@ -1,5 +1,6 @@
 #include "tl_render.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,25 +48,133 @@ const char *tl_render_describe(const tl_render *r)
     return tl_gl_context_describe(r->context);
 }
 
+/* The octave table depends only on the ocean parameters: rebuild it when
+ * they change (keyed ocean channels), not every frame. */
+static const tl_waves *waves_for(tl_render *r, const tl_ocean *ocean)
+{
+    if (!r->waves_valid || memcmp(&r->waves_ocean, ocean, sizeof *ocean) != 0) {
+        tl_waves_init(&r->waves, ocean);
+        r->waves_ocean = *ocean;
+        r->waves_valid = 1;
+    }
+    return &r->waves;
+}
+
+static int ensure_frame(tl_frame *frame, int width, int height, tl_error *err)
+{
+    if (frame->width == width && frame->height == height && frame->color)
+        return TL_OK;
+    tl_frame_free(frame);
+    return tl_frame_alloc(frame, width, height, err);
+}
+
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err)
 {
     int rc = tl_scene_validate(scene, err);
+    if (!rc)
+        rc = ensure_frame(frame, scene->width, scene->height, err);
     if (rc)
         return rc;
-    /* The octave table depends only on the ocean parameters: rebuild it
-     * when they change (keyed ocean channels), not every frame. */
-    if (!r->waves_valid || memcmp(&r->waves_ocean, &scene->ocean, sizeof scene->ocean) != 0) {
-        tl_waves_init(&r->waves, &scene->ocean);
-        r->waves_ocean = scene->ocean;
-        r->waves_valid = 1;
-    }
-    if (frame->width != scene->width || frame->height != scene->height) {
-        tl_frame_free(frame);
-        rc = tl_frame_alloc(frame, scene->width, scene->height, err);
-        if (rc)
-            return rc;
-    }
     tl_frame_uniforms u;
-    tl_prepare_frame(scene, &r->waves, &u);
+    tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     return tl_renderer_render(r->renderer, &u, frame, err);
+}
+
+void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_settings *settings,
+                           tl_scene *scene)
+{
+    tl_timeline_eval(tl, t, scene);
+    if (settings->width > 0 && settings->height > 0) {
+        scene->width = settings->width;
+        scene->height = settings->height;
+    }
+    if (settings->quality)
+        scene->quality = *settings->quality;
+    if (settings->spp > 0)
+        scene->quality.spp = settings->spp;
+}
+
+/* Narrows (lo, hi] around the cut inside it to ~1e-12 relative. */
+static void locate_cut(const tl_timeline *tl, double *lo, double *hi)
+{
+    for (int i = 0; i < 200 && *hi - *lo > 1e-12 * fmax(1.0, fabs(*hi)); i++) {
+        double mid = 0.5 * (*lo + *hi);
+        if (tl_timeline_has_cut_between(tl, *lo, mid))
+            *hi = mid;
+        else
+            *lo = mid;
+    }
+}
+
+void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg, double *open,
+                                double *close)
+{
+    double t = tl_timeline_frame_time(tl, frame);
+    double half = 0.5 * (shutter_deg / 360.0) / tl->fps;
+    double a = t - half, b = t + half;
+    if (tl_timeline_has_cut_between(tl, a, t)) { /* a cut before: open at it */
+        double lo = a, hi = t;
+        locate_cut(tl, &lo, &hi);
+        a = hi; /* the cut's own time already shows the new shot */
+    }
+    if (tl_timeline_has_cut_between(tl, t, b)) { /* a cut after: close before it */
+        double lo = t, hi = b;
+        locate_cut(tl, &lo, &hi);
+        b = lo;
+    }
+    *open = a;
+    *close = b;
+}
+
+int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
+                             const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
+                             tl_error *err)
+{
+    double t = tl_timeline_frame_time(tl, frame);
+    tl_scene scene;
+    tl_render_frame_scene(tl, t, settings, &scene);
+    int rc = tl_scene_validate(&scene, err);
+    if (!rc)
+        rc = ensure_frame(out, scene.width, scene.height, err);
+    if (!rc)
+        rc = tl_renderer_begin(r->renderer, scene.width, scene.height, err);
+    if (rc)
+        return rc;
+    int samples = 1;
+    double open = t, close = t;
+    if (settings->shutter_deg > 0.0) {
+        samples = settings->shutter_samples > 0 ? settings->shutter_samples : 8;
+        tl_render_shutter_interval(tl, frame, settings->shutter_deg, &open, &close);
+    }
+    /* Sub-frame k sits at the centre of the k-th of `samples` equal slices
+     * of the shutter interval; depth comes from the one nearest t. */
+    int depth_sample = 0;
+    double best = INFINITY;
+    for (int k = 0; k < samples; k++) {
+        double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
+        if (fabs(tk - t) < best) {
+            best = fabs(tk - t);
+            depth_sample = k;
+        }
+    }
+    for (int k = 0; !rc && k < samples; k++) {
+        double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
+        tl_scene sub;
+        if (samples == 1)
+            sub = scene;
+        else
+            tl_render_frame_scene(tl, tk, settings, &sub);
+        rc = tl_scene_validate(&sub, err);
+        if (rc)
+            break;
+        tl_frame_uniforms u;
+        tl_prepare_frame(&sub, waves_for(r, &sub.ocean), &u);
+        u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
+        rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
+    }
+    if (!rc)
+        rc = tl_renderer_finish(r->renderer, (float)scene.exposure, out, err);
+    if (!rc && scene_out)
+        *scene_out = scene;
+    return rc;
 }

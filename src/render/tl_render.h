@@ -14,6 +14,7 @@
 #include "image/tl_frame.h"
 #include "scene/tl_scene.h"
 #include "shader/tl_shader_lib.h"
+#include "timeline/tl_timeline.h"
 
 typedef struct tl_render tl_render;
 
@@ -25,5 +26,34 @@ const char *tl_render_describe(const tl_render *r);
 
 /* Renders `scene` into `frame`, (re)allocating it to the scene's size. */
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err);
+
+/* How a timeline's frames are rendered; zero fields keep the timeline's. */
+typedef struct tl_render_settings {
+    int width, height;         /* 0: the timeline's size */
+    const tl_quality *quality; /* NULL: the timeline's preset and knobs */
+    int spp;                   /* 0: the quality's samples per pixel */
+    double shutter_deg;        /* 0: no motion blur; 360 = the whole frame interval */
+    int shutter_samples;       /* sub-frames when shutter_deg > 0 (0: 8) */
+} tl_render_settings;
+
+/* The scene a frame is rendered from: the timeline at frame / fps with the
+ * settings applied. */
+void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_settings *settings,
+                           tl_scene *scene);
+
+/* The shutter interval of a frame: centred on its time, `shutter_deg`/360
+ * of a frame long, and cut short at any cut inside it so that motion blur
+ * never mixes two shots. */
+void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg, double *open,
+                                double *close);
+
+/* Renders frame `frame` of `tl` (time = frame / fps, from the integer) into
+ * `out`. With a shutter, radiance averages `shutter_samples` sub-frames
+ * spread evenly over the shutter interval; depth comes from the sub-frame
+ * nearest the frame's time. `scene_out` (may be NULL) receives the scene
+ * at the frame's time. */
+int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
+                             const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
+                             tl_error *err);
 
 #endif

@@ -8,6 +8,8 @@
 
 /* Upper bound on wave octaves; the uniform arrays are sized by it. */
 #define TL_MAX_OCTAVES 64
+/* Upper bound on samples per pixel (each one a full ray march). */
+#define TL_MAX_SPP 1024
 
 typedef struct tl_quality {
     const char *name;
@@ -16,6 +18,7 @@ typedef struct tl_quality {
     int march_steps;       /* max adaptive steps between the two planes */
     double hit_epsilon;    /* metres above the surface that count as a hit */
     double normal_epsilon; /* finite-difference step for normals, metres */
+    int spp;               /* stratified samples per pixel */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

@@ -10,7 +10,9 @@
 static const char *const underwater_names[] = {"auto", "on", "off", NULL};
 
 #define REAL(n, comps, unit, lo, hi, field, doc)                                                   \
-    {n, TL_CH_REAL, comps, unit, lo, hi, true, offsetof(tl_scene, field), NULL, doc}
+    {                                                                                              \
+        n, TL_CH_REAL, comps, unit, lo, hi, true, offsetof(tl_scene, field), NULL, doc             \
+    }
 
 static const tl_channel channels[] = {
     REAL("render.exposure", 1, TL_UNIT_NONE, 0.0, 1e6, exposure,
@@ -84,8 +86,7 @@ static const tl_channel channels[] = {
          "extent across the travel direction"),
     REAL("giant.wavelength", 1, TL_UNIT_LENGTH, 0.01, 1e5, giant.wavelength, "wavelength"),
     REAL("giant.angle", 1, TL_UNIT_ANGLE, -BIG, BIG, giant.angle, "travel direction (compass)"),
-    REAL("giant.center", 2, TL_UNIT_LENGTH, -BIG, BIG, giant.center,
-         "x z the wave travels toward"),
+    REAL("giant.center", 2, TL_UNIT_LENGTH, -BIG, BIG, giant.center, "x z the wave travels toward"),
     REAL("giant.falloff", 1, TL_UNIT_LENGTH, 0.0, 1e5, giant.falloff,
          "softness of the side and crest masks"),
     REAL("giant.phase", 1, TL_UNIT_ANGLE, -BIG, BIG, giant.phase,
@@ -105,6 +106,8 @@ static const tl_channel channels[] = {
      offsetof(tl_scene, quality.normal_octaves), NULL, "wave octaves for normals"},
     {"quality.march_steps", TL_CH_INT, 1, TL_UNIT_NONE, 1, 10000, false,
      offsetof(tl_scene, quality.march_steps), NULL, "max march steps"},
+    {"quality.spp", TL_CH_INT, 1, TL_UNIT_NONE, 1, TL_MAX_SPP, false,
+     offsetof(tl_scene, quality.spp), NULL, "stratified samples per pixel"},
     {"quality.hit_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,
      offsetof(tl_scene, quality.hit_epsilon), NULL, "distance that counts as a hit"},
     {"quality.normal_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,

@@ -1,0 +1,451 @@
+/* tideline render: a timeline to frame files and/or a movie, headless.
+ *
+ * Built for long unattended runs and render farms: frames are selected by
+ * number only (never by the clock), every file is written atomically,
+ * --skip-existing resumes, SIGINT/SIGTERM stop cleanly after discarding the
+ * frame in flight, and the exit status is 0 only when every requested frame
+ * exists. */
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli/tl_args.h"
+#include "cli/tl_cli.h"
+#include "image/tl_image_io.h"
+#include "job/tl_job.h"
+#include "movie/tl_movie.h"
+#include "render/tl_render.h"
+#include "timeline/tl_parse.h"
+
+#define EXIT_INTERRUPTED 130
+
+static const char usage[] =
+    "Usage: tideline render TIMELINE.tl -o PATTERN [options]\n"
+    "       tideline render TIMELINE.tl --movie FILE.mp4 [options]\n"
+    "\n"
+    "Render a timeline's frames headless. In PATTERN the last run of '#' in the\n"
+    "file name becomes the zero-padded frame number (shot_####.exr ->\n"
+    "shot_0042.exr); the extension picks the format (.exr: linear half RGBA +\n"
+    "float Z + metadata; .png: tonemapped sRGB). Folders are created.\n"
+    "A frame's time is frame / fps; the same frame is identical on every run.\n"
+    "\n"
+    "Options:\n"
+    "  -o, --output PATTERN   frame files (needs '#' when rendering several frames)\n"
+    "  --frames SPEC          frames to render: 0-239, 5, 1-3,5,7-20:2 (default: all)\n"
+    "  --chunk I/N            render only chunk I (0-based) of N even chunks of the\n"
+    "                         selected frames (render farms: --chunk $TASK/$COUNT)\n"
+    "  --size WxH             override the timeline's size (1..16384 each)\n"
+    "  --quality PRESET       draft, preview, final, reference, seed\n"
+    "  --spp N                stratified samples per pixel (1..1024)\n"
+    "  --shutter DEG          motion blur: shutter angle in degrees (180 = half the\n"
+    "                         frame interval; never blurs across a camera cut)\n"
+    "  --shutter-samples N    sub-frames averaged for motion blur (default 8)\n"
+    "  --movie FILE           also encode a movie with ffmpeg: .mp4 (H.264, yuv420p)\n"
+    "                         or .mov (ProRes 422 HQ), at the timeline's fps\n"
+    "  --png-bits 8|16        PNG bit depth (default 8)\n"
+    "  --skip-existing        keep frames whose file is already complete (resume)\n"
+    "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
+    "  -q, --quiet            no progress display\n"
+    "  -v, --verbose          log the GL platform and renderer\n"
+    "  -h, --help             show this help\n"
+    "\n"
+    "Exit status: 0 every requested frame exists, 1 failure, 2 usage error,\n"
+    "130 interrupted (SIGINT/SIGTERM; completed frames are kept, none is partial).\n";
+
+typedef struct render_options {
+    const char *timeline;
+    const char *pattern;
+    const char *frames;
+    const char *chunk;
+    const char *movie;
+    const char *shader_dir;
+    int width, height;
+    tl_quality quality;
+    int has_quality;
+    int spp;
+    double shutter;
+    int shutter_samples;
+    int png_bits;
+    int skip_existing;
+    int quiet, verbose;
+} render_options;
+
+static volatile sig_atomic_t stop_signal = 0;
+
+static void on_signal(int sig)
+{
+    stop_signal = sig;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static int parse_int_range(const char *flag, const char *text, int lo, int hi, int *out,
+                           tl_error *err)
+{
+    double v;
+    if (tl_args_double(flag, text, &v, err))
+        return TL_ERR_USAGE;
+    if (v != floor(v) || v < lo || v > hi)
+        return tl_error_set(err, TL_ERR_USAGE, "%s: '%s' is not a whole number in %d..%d", flag,
+                            text, lo, hi);
+    *out = (int)v;
+    return TL_OK;
+}
+
+static int parse(int argc, char **argv, render_options *o, int *help, tl_error *err)
+{
+    tl_args a;
+    tl_args_init(&a, argc, argv);
+    a.index = 1;
+    while (!tl_args_done(&a)) {
+        int rc = TL_OK;
+        const char *pos;
+        if (tl_args_match(&a, "--help", "-h", false, err)) {
+            *help = 1;
+            return TL_OK;
+        } else if (tl_args_match(&a, "--quiet", "-q", false, err)) {
+            o->quiet = 1;
+        } else if (tl_args_match(&a, "--verbose", "-v", false, err)) {
+            o->verbose = 1;
+        } else if (tl_args_match(&a, "--skip-existing", NULL, false, err)) {
+            o->skip_existing = 1;
+        } else if (tl_args_match(&a, "--output", "-o", true, err)) {
+            o->pattern = a.value;
+        } else if (tl_args_match(&a, "--frames", NULL, true, err)) {
+            o->frames = a.value;
+        } else if (tl_args_match(&a, "--chunk", NULL, true, err)) {
+            o->chunk = a.value;
+        } else if (tl_args_match(&a, "--movie", NULL, true, err)) {
+            o->movie = a.value;
+        } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
+            o->shader_dir = a.value;
+        } else if (tl_args_match(&a, "--size", NULL, true, err)) {
+            rc = a.value ? tl_args_size(a.flag, a.value, &o->width, &o->height, err) : 0;
+        } else if (tl_args_match(&a, "--quality", NULL, true, err)) {
+            rc = a.value ? tl_quality_preset(a.value, &o->quality, err) : 0;
+            if (rc)
+                tl_error_prefix(err, "--quality");
+            o->has_quality = 1;
+        } else if (tl_args_match(&a, "--spp", NULL, true, err)) {
+            rc = a.value ? parse_int_range(a.flag, a.value, 1, TL_MAX_SPP, &o->spp, err) : 0;
+        } else if (tl_args_match(&a, "--shutter", NULL, true, err)) {
+            rc = a.value ? tl_args_double(a.flag, a.value, &o->shutter, err) : 0;
+            if (!rc && a.value && !(o->shutter >= 0.0 && o->shutter <= 360.0))
+                rc = tl_error_set(err, TL_ERR_USAGE, "--shutter: '%s' is outside 0..360 degrees",
+                                  a.value);
+        } else if (tl_args_match(&a, "--shutter-samples", NULL, true, err)) {
+            rc = a.value ? parse_int_range(a.flag, a.value, 1, 256, &o->shutter_samples, err) : 0;
+        } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
+            rc = a.value ? parse_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
+            if (!rc && a.value && o->png_bits != 8 && o->png_bits != 16)
+                rc = tl_error_set(err, TL_ERR_USAGE, "--png-bits: '%s' is not 8 or 16", a.value);
+        } else if (!o->timeline && tl_args_positional(&a, &pos)) {
+            o->timeline = pos;
+        } else {
+            return tl_args_unknown(&a, "render", err);
+        }
+        if (err->status)
+            return err->status; /* a flag without its value */
+        if (rc)
+            return rc;
+    }
+    if (!o->timeline)
+        return tl_error_set(err, TL_ERR_USAGE, "no timeline file given");
+    if (!o->pattern && !o->movie)
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "nothing to write: give -o PATTERN and/or --movie FILE");
+    if (o->movie && (o->chunk || o->skip_existing))
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "--movie encodes every selected frame in one run; it cannot be "
+                            "combined with --%s",
+                            o->chunk ? "chunk" : "skip-existing");
+    return TL_OK;
+}
+
+/* mkdir -p of the folder part of `path`. */
+static int make_parent_dirs(const char *path, tl_error *err)
+{
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (!slash || slash == dir)
+        return TL_OK;
+    *slash = '\0';
+    for (char *p = dir + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+            return tl_error_set(err, TL_ERR_USAGE, "cannot create folder '%s': %s", dir,
+                                strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+        return tl_error_set(err, TL_ERR_USAGE, "cannot create folder '%s': %s", dir,
+                            strerror(errno));
+    return TL_OK;
+}
+
+/* True when `path` holds a complete frame of the expected size. */
+static int frame_file_complete(const char *path, int width, int height)
+{
+    if (access(path, R_OK) != 0)
+        return 0;
+    tl_frame f = {0};
+    tl_error err;
+    int rc = tl_image_format_from_path(path) == TL_IMAGE_EXR ? tl_exr_read(path, &f, &err)
+                                                             : tl_png_read(path, &f, NULL, &err);
+    int ok = rc == TL_OK && f.width == width && f.height == height;
+    tl_frame_free(&f);
+    return ok;
+}
+
+static void format_duration(double s, char *out, size_t size)
+{
+    if (!isfinite(s) || s < 0)
+        snprintf(out, size, "--");
+    else if (s < 60)
+        snprintf(out, size, "%.0fs", s);
+    else if (s < 3600)
+        snprintf(out, size, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
+    else
+        snprintf(out, size, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
+}
+
+typedef struct progress {
+    int tty, quiet;
+    size_t total, done;
+    double start, busy; /* busy: seconds spent rendering (for ms per frame) */
+    long rendered;
+} progress;
+
+static void progress_update(progress *p, long frame, const char *what)
+{
+    if (p->quiet)
+        return;
+    double ms = p->rendered ? p->busy / (double)p->rendered * 1e3 : 0.0;
+    double remaining = ms * 1e-3 * (double)(p->total - p->done);
+    char eta[32];
+    format_duration(remaining, eta, sizeof eta);
+    if (p->tty) {
+        int width = 30, filled = (int)(width * (double)p->done / (double)p->total);
+        char bar[64];
+        for (int i = 0; i < width; i++)
+            bar[i] = i < filled ? '#' : '-';
+        bar[width] = '\0';
+        fprintf(stderr, "\r[%s] %zu/%zu  frame %ld  %.0f ms/frame  ETA %s   ", bar, p->done,
+                p->total, frame, ms, eta);
+    } else {
+        fprintf(stderr, "tideline render: frame %ld %s (%zu/%zu, %.0f ms/frame, ETA %s)\n", frame,
+                what, p->done, p->total, ms, eta);
+    }
+    fflush(stderr);
+}
+
+/* 8-bit RGB rows for ffmpeg from the display plane (round to nearest). */
+static void display_to_rgb8(const tl_frame *f, uint8_t *rgb)
+{
+    size_t n = (size_t)f->width * (size_t)f->height;
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) {
+            float v = f->display[i * 4 + c];
+            v = v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
+            rgb[i * 3 + c] = (uint8_t)lrintf(v * 255.0f);
+        }
+}
+
+static int write_frame_files(const render_options *o, const tl_timeline *tl, long frame,
+                             const tl_scene *scene, const tl_frame *f, const char *path,
+                             tl_error *err)
+{
+    char camera[256];
+    const tl_camera *c = &scene->camera;
+    snprintf(camera, sizeof camera,
+             "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
+             c->position[0], c->position[1], c->position[2], c->yaw, c->pitch, c->roll, c->vfov);
+    const tl_meta meta[] = {
+        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
+        {"tideline/timeline", TL_META_STRING, o->timeline, 0, 0},
+        {"tideline/frame", TL_META_INT, NULL, 0, (int)frame},
+        {"tideline/time", TL_META_DOUBLE, NULL, scene->time, 0},
+        {"tideline/fps", TL_META_DOUBLE, NULL, tl->fps, 0},
+        {"tideline/camera", TL_META_STRING, camera, 0, 0},
+        {"tideline/quality", TL_META_STRING, scene->quality.name, 0, 0},
+        {"tideline/spp", TL_META_INT, NULL, 0, scene->quality.spp},
+        {"tideline/shutter", TL_META_DOUBLE, NULL, o->shutter, 0},
+    };
+    tl_image_options opt = {o->png_bits, meta, (int)(sizeof meta / sizeof meta[0])};
+    return tl_image_write(path, f, &opt, err);
+}
+
+int tl_cli_render(int argc, char **argv)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    render_options o = {0};
+    o.png_bits = 8;
+    int help = 0;
+    int rc = parse(argc, argv, &o, &help, &err);
+    if (help) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    if (rc) {
+        tl_cli_print_error("render", &err);
+        return 2;
+    }
+    tl_timeline tl;
+    if (tl_cli_load_timeline("render", o.timeline, &tl))
+        return 1;
+
+    tl_render_settings settings = {o.width, o.height,  o.has_quality ? &o.quality : NULL,
+                                   o.spp,   o.shutter, o.shutter_samples};
+    tl_scene first_scene;
+    tl_render_frame_scene(&tl, 0.0, &settings, &first_scene);
+    int width = first_scene.width, height = first_scene.height;
+
+    /* Everything that can be checked is checked before the first frame. */
+    tl_frame_list frames = {0};
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    rc = tl_frame_list_parse(o.frames, tl_timeline_frame_count(&tl), "--frames", &frames, &err);
+    if (!rc && o.chunk)
+        rc = tl_frame_list_chunk(&frames, o.chunk, "--chunk", &err);
+    if (!rc && o.pattern && frames.count > 1 && !tl_pattern_has_frame(o.pattern))
+        rc = tl_error_set(&err, TL_ERR_USAGE,
+                          "-o %s has no '#' for the frame number, and this run writes %zu "
+                          "frames (e.g. -o shot_####.exr)",
+                          o.pattern, frames.count);
+    char path[4096];
+    if (!rc && o.pattern && frames.count > 0) {
+        rc = tl_pattern_format(o.pattern, frames.frames[0], frames.count == 1, path, sizeof path,
+                               &err);
+        if (!rc && tl_image_format_from_path(path) == TL_IMAGE_UNKNOWN)
+            rc = tl_error_set(&err, TL_ERR_USAGE, "-o %s: unknown image format (use .exr or .png)",
+                              o.pattern);
+        if (!rc)
+            rc = make_parent_dirs(path, &err);
+        if (!rc && tl_image_check_writable(path, &err))
+            rc = TL_ERR_USAGE;
+    }
+    if (!rc && o.movie) {
+        rc = make_parent_dirs(o.movie, &err);
+        if (!rc && tl_movie_check(o.movie, width, height, &err))
+            rc = TL_ERR_USAGE;
+    }
+    if (!rc && o.shader_dir)
+        rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err);
+    if (rc) {
+        tl_cli_print_error("render", &err);
+        tl_frame_list_free(&frames);
+        tl_timeline_free(&tl);
+        return rc == TL_ERR_RUNTIME ? 1 : 2;
+    }
+
+    tl_render *render = NULL;
+    tl_movie *movie = NULL;
+    tl_frame frame = {0};
+    uint8_t *rgb = NULL;
+    rc = tl_render_open(&render, &lib, &err);
+    if (!rc && o.verbose)
+        fprintf(stderr, "tideline render: %s\n", tl_render_describe(render));
+    if (!rc && o.movie) {
+        rgb = malloc((size_t)width * (size_t)height * 3);
+        rc = rgb ? tl_movie_open(&movie, o.movie, width, height, tl.fps, &err)
+                 : tl_error_set(&err, TL_ERR_RUNTIME, "out of memory");
+    }
+
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    stop_signal = 0;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+
+    progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, now_seconds(), 0.0, 0};
+    size_t written = 0, skipped = 0;
+    for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
+        long n = frames.frames[i];
+        if (o.pattern)
+            rc = tl_pattern_format(o.pattern, n, frames.count == 1, path, sizeof path, &err);
+        if (rc)
+            break;
+        if (o.skip_existing && o.pattern && frame_file_complete(path, width, height)) {
+            skipped++;
+            prog.done++;
+            progress_update(&prog, n, "skipped (complete)");
+            continue;
+        }
+        double t0 = now_seconds();
+        tl_scene scene;
+        rc = tl_render_timeline_frame(render, &tl, n, &settings, &frame, &scene, &err);
+        if (rc)
+            break;
+        if (stop_signal)
+            break; /* discard the frame in flight */
+        if (o.pattern)
+            rc = write_frame_files(&o, &tl, n, &scene, &frame, path, &err);
+        if (!rc && movie) {
+            display_to_rgb8(&frame, rgb);
+            rc = tl_movie_write(movie, rgb, &err);
+        }
+        if (rc)
+            break;
+        written++;
+        prog.done++;
+        prog.rendered++;
+        prog.busy += now_seconds() - t0;
+        progress_update(&prog, n, o.pattern ? path : "encoded");
+    }
+    if (prog.tty && !o.quiet && prog.done)
+        fputc('\n', stderr);
+
+    int interrupted = stop_signal != 0 && !rc;
+    if (movie) {
+        if (!rc && !interrupted)
+            rc = tl_movie_finish(movie, &err);
+        else
+            tl_movie_abort(movie); /* a movie missing frames is not kept */
+        movie = NULL;
+    }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+
+    double total = now_seconds() - prog.start;
+    char took[32];
+    format_duration(total, took, sizeof took);
+    if (rc)
+        tl_cli_print_error("render", &err);
+    fprintf(stderr, "tideline render: %s: %zu frame%s written, %zu skipped, %zu of %zu done in %s",
+            interrupted ? "interrupted"
+            : rc        ? "failed"
+                        : "done",
+            written, written == 1 ? "" : "s", skipped, written + skipped, frames.count, took);
+    if (prog.rendered)
+        fprintf(stderr, " (%.0f ms/frame)", prog.busy / (double)prog.rendered * 1e3);
+    fprintf(stderr, "\n");
+    if (!rc && !interrupted && o.movie)
+        fprintf(stderr, "tideline render: wrote %s\n", o.movie);
+
+    free(rgb);
+    tl_frame_free(&frame);
+    tl_render_close(render);
+    tl_frame_list_free(&frames);
+    tl_timeline_free(&tl);
+    if (interrupted)
+        return EXIT_INTERRUPTED;
+    return rc ? 1 : 0;
+}

@@ -1,0 +1,1 @@
+set(TL_JOB_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_job.c)

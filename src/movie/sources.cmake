@@ -1,0 +1,1 @@
+set(TL_MOVIE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_movie.c)
