@@ -160,9 +160,9 @@ int tl_curve_validate(const tl_curve *c, size_t *bad_key, tl_error *err)
             if (bad_key)
                 *bad_key = i;
             return tl_error_set(err, TL_ERR_RUNTIME,
-                                "key %zu: same time %.9g as key %zu (allowed only for a cut or "
-                                "after a constant key)",
-                                i, k->t, i - 1);
+                                "key %zu: same time %.9g as the previous key (allowed only for a "
+                                "cut or after a constant key)",
+                                i, k->t);
         }
     }
     return 0;

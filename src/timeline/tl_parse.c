@@ -19,10 +19,14 @@ typedef struct token {
     int len;
 } token;
 
-typedef enum block_kind { BLOCK_NONE, BLOCK_KEY, BLOCK_PATH } block_kind;
+/* BLOCK_SKIP: a `key` or `path` line that was rejected; its indented lines
+ * are skipped silently rather than reported as strays. */
+typedef enum block_kind { BLOCK_NONE, BLOCK_KEY, BLOCK_PATH, BLOCK_SKIP } block_kind;
 
 typedef struct parser {
     const char *name;
+    const char *source; /* the whole text, for excerpts of earlier lines */
+    size_t source_len;
     tl_timeline *tl;
     tl_diags *diags;
     int line_no;
@@ -71,8 +75,7 @@ static void diag_add(parser *p, int col, int len, const char *hint, const char *
 {
     tl_diags *d = p->diags;
     if (d->count >= TL_PARSE_MAX_ERRORS) {
-        d->more++;
-        p->stopped = 1;
+        d->more++; /* counted, not kept: parsing goes on (it is linear) */
         return;
     }
     tl_diag *g = &d->items[d->count++];
@@ -87,9 +90,41 @@ static void diag_add(parser *p, int col, int len, const char *hint, const char *
     if (hint)
         snprintf(g->hint, sizeof g->hint, "did you mean '%s'?", hint);
     size_t n = p->line_len < sizeof g->text - 1 ? p->line_len : sizeof g->text - 1;
-    if (p->line_text)
-        memcpy(g->text, p->line_text, n);
+    if (!p->line_text)
+        n = 0;
+    /* The excerpt is shown on a terminal: control and non-ASCII bytes
+     * become '?' (tabs stay, so the caret lines up). */
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)p->line_text[i];
+        g->text[i] = (c == '\t' || (c >= 0x20 && c < 0x7f)) ? (char)c : '?';
+    }
+    while (n > 0 && g->text[n - 1] == '\r')
+        n--;
     g->text[n] = '\0';
+}
+
+/* The text of line `line` (1-based) and its first word's column; a scan
+ * from the start, which is fine for the few errors found after parsing. */
+static int find_line(const parser *p, int line, struct key_source *out)
+{
+    if (!p->source || line < 1)
+        return 0;
+    const char *s = p->source, *end = p->source + p->source_len;
+    for (int n = 1; n < line; n++) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        if (!nl)
+            return 0;
+        s = nl + 1;
+    }
+    const char *nl = memchr(s, '\n', (size_t)(end - s));
+    size_t len = nl ? (size_t)(nl - s) : (size_t)(end - s);
+    if (len > TL_PARSE_MAX_LINE)
+        return 0;
+    int col = 1;
+    while ((size_t)(col - 1) < len && (s[col - 1] == ' ' || s[col - 1] == '\t'))
+        col++;
+    *out = (struct key_source){line, s, len, col};
+    return 1;
 }
 
 /* A diagnostic about an earlier line (a key found bad when its block
@@ -101,6 +136,9 @@ static void diag_at_line(parser *p, int line, const struct key_source *src, cons
     int saved_line = p->line_no;
     const char *saved_text = p->line_text;
     size_t saved_len = p->line_len;
+    struct key_source found = {line, NULL, 0, 1};
+    if (!src && find_line(p, line, &found))
+        src = &found;
     p->line_no = line;
     p->line_text = src ? src->text : NULL;
     p->line_len = src ? src->len : 0;
@@ -145,8 +183,14 @@ static int parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
         ERR_AT(t, "expected a number, got '%s'", t->s);
         return 1;
     }
-    if (!isfinite(v) || errno == ERANGE) {
-        ERR_AT(t, "'%s' is not a finite number", t->s);
+    if (word[0] == '0' && (word[1] == 'x' || word[1] == 'X')) {
+        ERR_AT(t, "'%s': numbers are decimal", t->s);
+        return 1;
+    }
+    /* ERANGE on a tiny number is underflow: the value rounds to (almost) 0,
+     * which is fine. On a large one it is overflow. */
+    if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0)) {
+        ERR_AT(t, "'%s' is too large", t->s);
         return 1;
     }
     const char *suffix = end;
@@ -411,6 +455,12 @@ static void key_line(parser *p, token *tok, int n)
             ERR_AT(&tok[i], "'cut' goes right after the key's time");
             p->block_failed = 1;
             return;
+        } else if (isdigit((unsigned char)tok[i].s[0]) || tok[i].s[0] == '-' ||
+                   tok[i].s[0] == '+' || tok[i].s[0] == '.') {
+            ERR_AT(&tok[i], "%s takes %d value%s per key; '%s' is one too many", ch->name,
+                   ch->components, ch->components > 1 ? "s" : "", tok[i].s);
+            p->block_failed = 1;
+            return;
         } else {
             diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, key_words),
                      "unknown key option '%s'", tok[i].s);
@@ -526,7 +576,7 @@ static tl_track *claim_track(parser *p, const tl_channel *ch, const token *t)
 
 static void dir_set(parser *p, token *tok, int n)
 {
-    if (expect_args(p, tok, n, 2, 4, "a channel and its value"))
+    if (expect_args(p, tok, n, 2, MAX_TOKENS, "a channel and its value"))
         return;
     const tl_channel *ch = lookup_channel(p, &tok[1]);
     if (!ch)
@@ -693,9 +743,15 @@ static int parse_target(parser *p, token *tok, int n, int first, int dims, int a
         return 1;
     }
     int axis2[2] = {0, 2};
-    for (int c = 0; c < dims; c++)
-        if (parse_quantity(p, &tok[i + c], TL_UNIT_LENGTH, &dst[dims == 2 ? axis2[c] : c]))
+    for (int c = 0; c < dims; c++) {
+        double *v = &dst[dims == 2 ? axis2[c] : c];
+        if (parse_quantity(p, &tok[i + c], TL_UNIT_LENGTH, v))
             return 1;
+        if (fabs(*v) > 1e9) {
+            ERR_AT(&tok[i + c], "'%s' is out of range (|x| <= 1e9 m)", tok[i + c].s);
+            return 1;
+        }
+    }
     return 0;
 }
 
@@ -759,12 +815,12 @@ static void dir_header(parser *p, token *tok, int n)
             ERR_AT(&tok[0], "'tideline' appears twice");
             return;
         }
+        p->saw_header = 1; /* even with a wrong version: report that alone */
         if (strcmp(tok[1].s, "1") != 0) {
             ERR_AT(&tok[1], "unsupported timeline version '%s' (this tideline reads version 1)",
                    tok[1].s);
             return;
         }
-        p->saw_header = 1;
     } else if (strcmp(d, "fps") == 0) {
         double fps;
         if (expect_args(p, tok, n, 1, 1, "frames per second") ||
@@ -894,9 +950,10 @@ static void parse_line(parser *p, const char *text, size_t len)
     p->line_text = text;
     p->line_len = len;
     if (len > TL_PARSE_MAX_LINE) {
+        p->line_text = NULL; /* no excerpt: the caret would sit past its end */
+        p->line_len = 0;
         diag_add(p, TL_PARSE_MAX_LINE + 1, 1, NULL, "line is longer than %d characters",
                  TL_PARSE_MAX_LINE);
-        p->line_len = 120;
         return;
     }
     memcpy(buf, text, len);
@@ -906,6 +963,8 @@ static void parse_line(parser *p, const char *text, size_t len)
         return;
     int indented = text[0] == ' ' || text[0] == '\t';
     if (indented) {
+        if (p->block == BLOCK_SKIP)
+            return;
         if (p->block == BLOCK_KEY)
             key_line(p, tok, n);
         else if (p->block == BLOCK_PATH)
@@ -915,18 +974,21 @@ static void parse_line(parser *p, const char *text, size_t len)
         return;
     }
     finish_block(p);
+    /* A rejected key/path line still owns the indented lines below it. */
+    if (strcmp(tok[0].s, "key") == 0 || strcmp(tok[0].s, "path") == 0)
+        p->block = BLOCK_SKIP;
     directive(p, tok, n);
 }
 
-/* Conflicts between what drives the camera and the boat links. */
+/* Conflicts between what drives the camera and the boat links, found once
+ * the whole file is read; each is reported at the later of its lines. */
 static void check_links(parser *p)
 {
     tl_timeline *tl = p->tl;
     const tl_track *pos = &tl->tracks[tl_channel_index(tl_channel_find("camera.position"))];
     const tl_track *yaw = &tl->tracks[tl_channel_index(tl_channel_find("camera.yaw"))];
     const tl_track *pitch = &tl->tracks[tl_channel_index(tl_channel_find("camera.pitch"))];
-    p->line_text = NULL;
-    p->line_len = 0;
+    char msg[256];
     struct {
         int line, active;
         const char *what;
@@ -939,29 +1001,28 @@ static void check_links(parser *p)
             if (drivers[i].active && drivers[j].active) {
                 int later = drivers[i].line > drivers[j].line ? i : j;
                 int earlier = later == i ? j : i;
-                p->line_no = drivers[later].line;
-                diag_add(p, 0, 1, NULL, "the camera position comes from both %s (line %d) and %s",
+                snprintf(msg, sizeof msg, "the camera position comes from both %s (line %d) and %s",
                          drivers[earlier].what, drivers[earlier].line, drivers[later].what);
+                diag_at_line(p, drivers[later].line, NULL, "%s", msg);
             }
     if (tl->camera_look.target != TL_TARGET_NONE) {
         const tl_track *aim[2] = {yaw, pitch};
         const char *names[2] = {"camera.yaw", "camera.pitch"};
         for (int i = 0; i < 2; i++)
             if (aim[i]->state != TL_TRACK_DEFAULT) {
-                p->line_no = aim[i]->line > tl->camera_look.line ? aim[i]->line
-                                                                 : tl->camera_look.line;
-                diag_add(p, 0, 1, NULL, "the camera looks at a target (line %d), so %s "
-                         "(line %d) cannot be set or keyed", tl->camera_look.line, names[i],
-                         aim[i]->line);
+                int line = aim[i]->line > tl->camera_look.line ? aim[i]->line : tl->camera_look.line;
+                snprintf(msg, sizeof msg,
+                         "the camera looks at a target (line %d), so %s (line %d) cannot be set "
+                         "or keyed",
+                         tl->camera_look.line, names[i], aim[i]->line);
+                diag_at_line(p, line, NULL, "%s", msg);
             }
     }
     const tl_link *needs_boat[3] = {&tl->camera_look, &tl->camera_follow, &tl->giant_follow};
     for (int i = 0; i < 3; i++)
-        if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present) {
-            p->line_no = needs_boat[i]->line;
-            diag_add(p, 0, 1, NULL, "this refers to the boat, but the timeline has no "
-                                    "'path boat'");
-        }
+        if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present)
+            diag_at_line(p, needs_boat[i]->line, NULL, "%s",
+                         "this refers to the boat, but the timeline has no 'path boat'");
 }
 
 int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl_timeline *out,
@@ -974,6 +1035,8 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
     snprintf(out->file, sizeof out->file, "%s", name);
     parser p = {0}; /* ~4 KiB: the line buffer */
     p.name = name;
+    p.source = text;
+    p.source_len = length;
     p.tl = out;
     p.diags = diags;
     size_t pos = 0;

@@ -113,6 +113,18 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
         s->giant.center[0] = s->boat.position[0] + tl->giant_follow.offset[0];
         s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
     }
+    /* Paths (a Catmull-Rom curve may overshoot its points) and links (boat +
+     * offset) can leave a channel's range: hold every channel inside it. */
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_channel *ch = tl_channel_at(i);
+        if (ch->kind != TL_CH_REAL)
+            continue;
+        double v[3];
+        tl_channel_get(ch, s, v);
+        for (int c = 0; c < ch->components; c++)
+            v[c] = clampd(v[c], ch->min, ch->max);
+        tl_channel_set(ch, s, v);
+    }
     if (tl->camera_look.target != TL_TARGET_NONE) {
         double target[3];
         if (tl->camera_look.target == TL_TARGET_BOAT)
