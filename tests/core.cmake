@@ -12,3 +12,10 @@ add_test(NAME example_render_frame
 set_tests_properties(example_render_frame PROPERTIES PASS_REGULAR_EXPRESSION "frame 12 \\(t = 0.5000 s\\) -> example.png\nEXAMPLE_OK")
 tl_add_test(test_render_cmd SOURCES test_render_cmd.c LIBS tideline_gl
   ARGS $<TARGET_FILE:tideline>)
+# Every bundled timeline is valid.
+add_test(NAME check_bundled_timelines
+  COMMAND sh -c "for f in ${PROJECT_SOURCE_DIR}/timelines/*.tl; do $<TARGET_FILE:tideline> check \"$f\" >/dev/null || exit 1; done")
+# The farm example splits a shot over 3 processes; together they write every frame.
+add_test(NAME example_farm_xargs
+  COMMAND sh -c "rm -rf farm && TIDELINE=$<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/examples/farm/xargs.sh ${PROJECT_SOURCE_DIR}/timelines/calm.tl farm 3 --frames 0-239:24 --size 32x18 --quality draft && test $(ls farm | wc -l) -eq 10 && ls farm/calm_0216.exr && rm -rf farm"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
