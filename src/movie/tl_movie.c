@@ -1,5 +1,7 @@
 #include "movie/tl_movie.h"
 
+#include "core/tl_math.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -139,16 +141,6 @@ int tl_movie_check(const char *path, int width, int height, tl_error *err)
     return tl_movie_find_ffmpeg(NULL, 0, err);
 }
 
-static long gcd(long a, long b)
-{
-    while (b) {
-        long t = a % b;
-        a = b;
-        b = t;
-    }
-    return a;
-}
-
 int tl_movie_frame_rate(double fps, long *num, long *den)
 {
     if (!(fps >= 0.001 && fps <= 10000.0))
@@ -166,7 +158,7 @@ int tl_movie_frame_rate(double fps, long *num, long *den)
         *den = 1001;
         return 0;
     }
-    long n = (long)round(fps * 1000.0), g = gcd(n, 1000);
+    long n = (long)round(fps * 1000.0), g = tl_gcd(n, 1000);
     *num = n / g;
     *den = 1000 / g;
     return 0;

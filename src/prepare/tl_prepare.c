@@ -1,17 +1,9 @@
 #include "tl_prepare.h"
 
+#include "core/tl_math.h"
+
 #include <math.h>
 #include <string.h>
-
-static int gcd(int a, int b)
-{
-    while (b) {
-        int t = a % b;
-        a = b;
-        b = t;
-    }
-    return a;
-}
 
 /* The y-stratum step for N-rooks sampling: near N times the golden ratio's
  * fractional part (well spread), and coprime with N so that every y
@@ -21,7 +13,7 @@ static int rooks_step(int n)
     int step = (int)lround(0.6180339887 * n);
     if (step < 1)
         step = 1;
-    while (gcd(step, n) != 1)
+    while (tl_gcd(step, n) != 1)
         step++;
     return step;
 }
