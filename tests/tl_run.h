@@ -71,8 +71,9 @@ static inline int tl_run(const tl_run_opts *opts, ...)
     return tl_run_argv(opts, args);
 }
 
-/* Entries in a folder other than . and .. (-1 if it cannot be opened). */
-static inline int tl_dir_entries(const char *path)
+/* Entries in a folder other than . and .. (-1 if it cannot be opened);
+ * only hidden ones (temporaries) when hidden_only is set. */
+static inline int tl_dir_count(const char *path, int hidden_only)
 {
     DIR *d = opendir(path);
     if (!d)
@@ -80,25 +81,21 @@ static inline int tl_dir_entries(const char *path)
     int count = 0;
     struct dirent *e;
     while ((e = readdir(d)) != NULL)
-        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
+        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0 &&
+            (!hidden_only || e->d_name[0] == '.'))
             count++;
     closedir(d);
     return count;
 }
 
-/* Entries whose name starts with '.' (temporaries), other than . and .. */
+static inline int tl_dir_entries(const char *path)
+{
+    return tl_dir_count(path, 0);
+}
+
 static inline int tl_dir_hidden_entries(const char *path)
 {
-    DIR *d = opendir(path);
-    if (!d)
-        return -1;
-    int count = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL)
-        if (e->d_name[0] == '.' && strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
-            count++;
-    closedir(d);
-    return count;
+    return tl_dir_count(path, 1);
 }
 
 #endif
