@@ -304,8 +304,10 @@ static void test_interrupt_and_resume(void)
     in_dir(ref, sizeof ref, "ref");
     char long_tl[256];
     in_dir(long_tl, sizeof long_tl, "long.tl");
-    write_text(long_tl, "tideline 1\nfps 24\nduration 40f\nsize 96x54\nquality preview\n"
-                        "key camera.yaw linear\n  0s 0\n  40f 40\n");
+    /* Long enough (several seconds) that the run cannot finish before the
+     * signal lands, even on a loaded machine. */
+    write_text(long_tl, "tideline 1\nfps 24\nduration 80f\nsize 128x72\nquality preview\n"
+                        "key camera.yaw linear\n  0s 0\n  80f 40\n");
     snprintf(pattern, sizeof pattern, "%s/f_####.exr", out);
     snprintf(first, sizeof first, "%s/f_0000.exr", out);
     pid_t pid = fork();
@@ -323,16 +325,16 @@ static void test_interrupt_and_resume(void)
     CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 130);
     int done = tl_dir_entries(out);
     printf("interrupted after %d frames\n", done);
-    CHECK(done >= 1 && done < 40);
+    CHECK(done >= 1 && done < 80);
     CHECK(tl_dir_hidden_entries(out) == 0); /* nothing partial */
 
     CHECK(tl_run(NULL, "render", long_tl, "-o", pattern, "--skip-existing", NULL) == 0);
     CHECK_STR_CONTAINS(tl_run_output, "skipped (complete)");
-    CHECK(tl_dir_entries(out) == 40);
+    CHECK(tl_dir_entries(out) == 80);
     snprintf(pattern, sizeof pattern, "%s/f_####.exr", ref);
     CHECK(tl_run(NULL, "render", long_tl, "-o", pattern, "-q", NULL) == 0);
     int identical = 1;
-    for (int i = 0; i < 40; i++) {
+    for (int i = 0; i < 80; i++) {
         char a[700], b[700];
         snprintf(a, sizeof a, "%s/f_%04d.exr", out, i);
         snprintf(b, sizeof b, "%s/f_%04d.exr", ref, i);
