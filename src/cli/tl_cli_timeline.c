@@ -8,6 +8,8 @@
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
 #include "timeline/tl_parse.h"
+#include "waves/tl_giant.h"
+#include "waves/tl_waves.h"
 
 #define DEG (M_PI / 180.0)
 
@@ -25,13 +27,17 @@ static const char eval_usage[] =
     "Usage: tideline eval FILE.tl (--at T | --frames A-B) [--json]\n"
     "\n"
     "Print every channel's evaluated value. Angles are printed in degrees,\n"
-    "lengths in metres, as the language writes them.\n"
+    "lengths in metres, as the language writes them. Then the giant wave's\n"
+    "state (crest position, distance to its centre, speed, steepness and curl\n"
+    "after the height-field clamp) and the water height under the camera and\n"
+    "under the crest.\n"
     "\n"
     "Options:\n"
     "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps)\n"
     "  --frames A-B   every frame from A to B inclusive (frame time = frame / fps)\n"
     "  --json         one JSON object: {\"file\", \"fps\", \"samples\": [{\"time\",\n"
-    "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\"}]}\n"
+    "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\",\n"
+    "                 \"giant\", \"water\"}]}\n"
     "  -h, --help     show this help\n";
 
 /* Loads a timeline, printing its diagnostics; returns the exit status. */
@@ -127,6 +133,90 @@ static double shown(const tl_channel *ch, double v)
     return ch->unit == TL_UNIT_ANGLE ? v / DEG : v;
 }
 
+static const char *unit_suffix(tl_unit unit)
+{
+    return unit == TL_UNIT_ANGLE    ? " deg"
+           : unit == TL_UNIT_LENGTH ? " m"
+           : unit == TL_UNIT_TIME   ? " s"
+                                    : "";
+}
+
+/* What the surface does at this moment: the giant wave's state after its
+ * clamps, and the water height (ocean + giant wave, the march's octaves)
+ * under the camera and under the crest. */
+typedef struct surface_report {
+    tl_giant giant;
+    double crest[2];     /* world x, z of the crest's top on the centre line */
+    double crest_height; /* water height there */
+    double to_center;    /* crest's signed distance past the centre, metres */
+    double under_camera; /* water height under the camera */
+} surface_report;
+
+static void surface_report_of(const tl_scene *s, surface_report *r)
+{
+    tl_waves waves;
+    tl_waves_init(&waves, &s->ocean);
+    tl_giant *g = &r->giant;
+    tl_giant_prepare(g, &s->giant, s->time);
+    const int oct = s->quality.march_octaves, it = s->quality.giant_iterations;
+    r->under_camera = tl_waves_surface_height(&waves, g, s->camera.position[0],
+                                              s->camera.position[2], s->time, oct, it);
+    if (!g->active)
+        return;
+    double y, dy, d, dd;
+    tl_giant_profile(g, 0.0, &y, &dy, &d, &dd);
+    double dmask, top = g->fade * tl_giant_width_mask(g, 0.0, &dmask) * d;
+    r->crest[0] = g->origin[0] + g->dir[0] * top;
+    r->crest[1] = g->origin[1] + g->dir[1] * top;
+    r->crest_height =
+        tl_waves_surface_height(&waves, g, r->crest[0], r->crest[1], s->time, oct, it);
+    r->to_center = g->dir[0] * (g->origin[0] - s->giant.center[0]) +
+                   g->dir[1] * (g->origin[1] - s->giant.center[1]);
+}
+
+static void print_report_text(const tl_scene *s)
+{
+    surface_report r;
+    surface_report_of(s, &r);
+    const tl_giant *g = &r.giant;
+    if (g->active) {
+        printf("  %-26s crest at %.6g %.6g m, %.6g m %s the centre", "giant wave", r.crest[0],
+               r.crest[1], fabs(r.to_center), r.to_center < 0.0 ? "before" : "past");
+        if (g->speed > 0.0 && r.to_center < 0.0)
+            printf(" (arrives in %.6g s)", -r.to_center / g->speed);
+        printf(", %.6g m/s\n", g->speed);
+        printf("  %-26s steepness %.6g, curve strength %.6g (after the height-field clamp), "
+               "min jacobian %.4g, slope <= %.4g\n",
+               "giant wave shape", g->steepness, g->curl, g->min_jacobian, g->max_slope);
+        printf("  %-26s %.6g m\n", "water under crest", r.crest_height);
+    } else {
+        printf("  %-26s off\n", "giant wave");
+    }
+    printf("  %-26s %.6g m (camera %.6g m above it)\n", "water under camera", r.under_camera,
+           s->camera.position[1] - r.under_camera);
+}
+
+static void print_report_json(const tl_scene *s)
+{
+    surface_report r;
+    surface_report_of(s, &r);
+    const tl_giant *g = &r.giant;
+    printf(", \"giant\": ");
+    if (g->active)
+        printf("{\"crest\": [%.17g, %.17g], \"past_center\": %.17g, \"speed\": %.17g, "
+               "\"steepness\": %.17g, \"curve_strength\": %.17g, \"min_jacobian\": %.17g, "
+               "\"max_slope\": %.17g}",
+               r.crest[0], r.crest[1], r.to_center, g->speed, g->steepness, g->curl,
+               g->min_jacobian, g->max_slope);
+    else
+        printf("null");
+    printf(", \"water\": {\"under_camera\": %.17g, \"under_crest\": ", r.under_camera);
+    if (g->active)
+        printf("%.17g}", r.crest_height);
+    else
+        printf("null}");
+}
+
 static void print_sample_text(const tl_timeline *tl, double t, long frame)
 {
     tl_scene s;
@@ -147,11 +237,12 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame)
         else
             for (int c = 0; c < ch->components; c++)
                 printf(" %.9g", shown(ch, v[c]));
-        printf("%s\n", ch->unit == TL_UNIT_ANGLE ? " deg" : ch->unit == TL_UNIT_LENGTH ? " m" : "");
+        printf("%s\n", unit_suffix(ch->unit));
     }
     if (s.boat.enabled)
         printf("  %-26s %.9g %.9g %.9g m\n", "boat.position", s.boat.position[0],
                s.boat.position[1], s.boat.position[2]);
+    print_report_text(&s);
 }
 
 static void print_sample_json(const tl_timeline *tl, double t, long frame, int first)
@@ -188,6 +279,7 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
                s.boat.position[1], s.boat.position[2], s.boat.heading / DEG);
     else
         printf("null");
+    print_report_json(&s);
     printf("}");
 }
 

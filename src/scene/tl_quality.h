@@ -19,6 +19,7 @@ typedef struct tl_quality {
     double hit_epsilon;    /* metres above the surface that count as a hit */
     double normal_epsilon; /* finite-difference step for normals, metres */
     int spp;               /* stratified samples per pixel */
+    int giant_iterations;  /* Newton steps inverting the giant wave's horizontal map */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

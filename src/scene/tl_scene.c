@@ -49,7 +49,7 @@ void tl_scene_defaults(tl_scene *s)
     s->water.absorption[0] = 0.34; /* Pope & Fry 1997: 650, 550, 450 nm */
     s->water.absorption[1] = 0.057;
     s->water.absorption[2] = 0.009;
-    s->water.foam = 0.0;
+    s->water.foam = 1.0; /* scales every foam term (today: the giant wave's) */
 
     s->sky.brightness = 0.5;
 
@@ -66,9 +66,19 @@ void tl_scene_defaults(tl_scene *s)
     s->giant.angle = 0.0;
     s->giant.falloff = 30.0;
     s->giant.phase = 0.0;
+    s->giant.arrival = 0.0;
+    s->giant.speed = 1.0;
     s->giant.steepness = 0.6;
     s->giant.curve_strength = 0.3;
     s->giant.fade = 1.0;
+    s->giant.foam_compression = 0.6;
+    s->giant.foam_trail = 40.0;
+    s->giant.scatter = 1.0;
+    s->giant.scatter_forward = 0.6;
+    s->giant.scatter_back = 0.3;
+    s->giant.scatter_color[0] = 0.1; /* sea green: red is absorbed in the crest */
+    s->giant.scatter_color[1] = 0.5;
+    s->giant.scatter_color[2] = 0.45;
 
     s->boat.enabled = false;
     s->boat.size = 8.0;

@@ -41,7 +41,7 @@ typedef struct tl_ocean {
 
 typedef struct tl_water {
     double absorption[3];      /* per metre, R G B (pure water: 0.34, 0.057, 0.009) */
-    double foam;               /* foam amount on crests, 0..1 */
+    double foam;               /* scale of every foam term, 0..1 (1) */
     double fresnel_f0;         /* Schlick F0 (0.04) */
     double scatter_color[3];   /* linear RGB (0.0293, 0.0698, 0.1717) */
     double scatter_strength;   /* (0.1) */
@@ -72,19 +72,29 @@ typedef struct tl_underwater {
 } tl_underwater;
 
 /* The scripted giant wave (seed 003, "North Star"): one Gerstner crest
- * with width and falloff masks, faded in and out by the timeline. */
+ * with width and falloff masks, faded in and out by the timeline. The
+ * model, its clamps and its cost are in docs/rendering.md; the CPU mirror
+ * is src/waves/tl_giant.c. */
 typedef struct tl_giant_wave {
     bool enabled;
-    double height;         /* crest amplitude, metres */
-    double width;          /* extent across the travel direction, metres */
-    double wavelength;     /* metres */
-    double angle;          /* travel direction, compass radians */
-    double center[2];      /* world x, z of the crest centre */
-    double falloff;        /* softness of the width/crest masks, metres */
-    double phase;          /* radians along the travel direction */
-    double steepness;      /* Gerstner steepness in [0, 1] */
-    double curve_strength; /* crest curl along the travel direction, [0, 1] */
-    double fade;           /* 0 invisible .. 1 full strength */
+    double height;           /* crest amplitude, metres */
+    double width;            /* extent across the travel direction, metres */
+    double wavelength;       /* metres */
+    double angle;            /* travel direction, compass radians */
+    double center[2];        /* world x, z of the point the crest travels toward */
+    double falloff;          /* softness of the width/crest masks, metres */
+    double phase;            /* radians along the travel direction, added to the travel */
+    double arrival;          /* seconds: when the crest reaches the centre (phase 0) */
+    double speed;            /* multiple of the deep-water phase speed sqrt(g / k) */
+    double steepness;        /* Gerstner steepness q·k·A in [0, 1] */
+    double curve_strength;   /* crest curl toward the travel direction, [0, 1] */
+    double fade;             /* 0 invisible .. 1 full strength */
+    double foam_compression; /* Jacobian below which the surface foams, (0, 1] */
+    double foam_trail;       /* metres over which foam fades behind the crest */
+    double scatter;          /* strength of the light through the crest */
+    double scatter_forward;  /* forward lobe g of the two-lobe phase function */
+    double scatter_back;     /* backward lobe g (the lobe is mirrored) */
+    double scatter_color[3]; /* linear RGB of that light */
 } tl_giant_wave;
 
 typedef struct tl_boat {

@@ -90,16 +90,13 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
         tl_channel_set(ch, s, v);
     }
 
-    /* The boat rides the path and floats on the waves. */
+    /* The boat rides the path; the giant wave may follow it. */
     if (tl->boat_path.present) {
         double p[3], tangent[3];
         tl_path_eval(&tl->boat_path.path, t, p, tangent);
-        tl_waves waves;
-        tl_waves_init(&waves, &s->ocean);
         s->boat.enabled = true;
         s->boat.position[0] = p[0];
         s->boat.position[2] = p[2];
-        s->boat.position[1] = tl_waves_height(&waves, p[0], p[2], t, s->quality.march_octaves);
         const tl_track *heading = track_of(tl, "boat.heading");
         if (heading->state == TL_TRACK_DEFAULT && (tangent[0] != 0.0 || tangent[2] != 0.0))
             s->boat.heading = atan2(tangent[0], tangent[2]);
@@ -107,12 +104,22 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
 
     if (tl->camera_path.present)
         tl_path_eval(&tl->camera_path.path, t, s->camera.position, NULL);
-    if (tl->camera_follow.target == TL_TARGET_BOAT)
-        add3(s->camera.position, s->boat.position, tl->camera_follow.offset);
     if (tl->giant_follow.target == TL_TARGET_BOAT) {
         s->giant.center[0] = s->boat.position[0] + tl->giant_follow.offset[0];
         s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
     }
+    /* ... and floats on the waves, the giant one included. */
+    if (s->boat.enabled) {
+        tl_waves waves;
+        tl_waves_init(&waves, &s->ocean);
+        tl_giant giant;
+        tl_giant_prepare(&giant, &s->giant, t);
+        s->boat.position[1] =
+            tl_waves_surface_height(&waves, &giant, s->boat.position[0], s->boat.position[2], t,
+                                    s->quality.march_octaves, s->quality.giant_iterations);
+    }
+    if (tl->camera_follow.target == TL_TARGET_BOAT)
+        add3(s->camera.position, s->boat.position, tl->camera_follow.offset);
     /* Paths (a Catmull-Rom curve may overshoot its points) and links (boat +
      * offset) can leave a channel's range: hold every channel inside it. */
     for (int i = 0; i < tl_channel_count(); i++) {

@@ -52,6 +52,13 @@ double tl_waves_height(const tl_waves *w, double x, double z, double t, int octa
     return (tl_waves_value(w, x, z, t, octaves) - 1.0) * w->depth;
 }
 
+double tl_waves_surface_height(const tl_waves *w, const tl_giant *g, double x, double z, double t,
+                               int octaves, int giant_iterations)
+{
+    double h = tl_waves_height(w, x, z, t, octaves);
+    return g && g->active ? h + tl_giant_height(g, x, z, giant_iterations) : h;
+}
+
 void tl_waves_phases(const tl_waves *w, double ref_x, double ref_z, double t, int octaves,
                      double *phase_out)
 {

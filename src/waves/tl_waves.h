@@ -10,6 +10,7 @@
 
 #include "scene/tl_quality.h"
 #include "scene/tl_scene.h"
+#include "waves/tl_giant.h"
 
 typedef struct tl_wave_octave {
     double dir_x, dir_z; /* unit travel direction in the xz plane */
@@ -33,6 +34,11 @@ double tl_waves_value(const tl_waves *w, double x, double z, double t, int octav
 
 /* World height of the surface: (value - 1) * depth, in [-depth, 0]. */
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves);
+
+/* Height of the whole surface: the ocean plus the giant wave `g` (which
+ * adds nothing when inactive), its map inverted with `giant_iterations`. */
+double tl_waves_surface_height(const tl_waves *w, const tl_giant *g, double x, double z, double t,
+                               int octaves, int giant_iterations);
 
 /* Per-octave phase offsets for a GPU frame centred on (ref_x, ref_z):
  * fmod(f·dot(d, ref) + speed·t + radial·|ref|, 2π), so the shader adds only

@@ -1,0 +1,96 @@
+/* tl_giant: the scripted giant wave on the CPU, in double.
+ *
+ * One Gerstner crest (seed 003) travelling along a compass direction
+ * toward a centre, cut to a single crest by a mask along its travel and to
+ * a finite width by a mask across it. Its horizontal displacement (the
+ * Gerstner pinch plus a forward curl of the crest) is clamped so that the
+ * displaced surface stays a height field, and inverted per point with a
+ * safeguarded Newton iteration, exactly as shaders/giant.glsl does. This is
+ * the accuracy reference for the shader, floats the boat, and gives the
+ * renderer the bounds it marches with. docs/rendering.md has the model.
+ *
+ * Coordinates: `s` runs along the travel direction, relative to the crest
+ * (positive = ahead of it, toward the centre and beyond); `w` runs across,
+ * relative to the centre line. `s0` is the undisplaced ("Lagrangian")
+ * position along: the surface point that started at s0 sits at
+ * s = s0 + lambda(w)·D(s0) at height lambda(w)·Y(s0), with lambda the
+ * fade times the width mask. */
+#ifndef TL_GIANT_H
+#define TL_GIANT_H
+
+#include <stdbool.h>
+
+#include "scene/tl_scene.h"
+
+#define TL_GIANT_GRAVITY 9.81
+/* Smallest Jacobian of the horizontal map the clamps allow: the surface is
+ * compressed at most ten times, so slopes stay finite. */
+#define TL_GIANT_MIN_JACOBIAN 0.1
+/* The crest mask fades over at least a quarter and at most four
+ * wavelengths; the width mask over at least a quarter wavelength. */
+#define TL_GIANT_MIN_FALLOFF_WAVELENGTHS 0.25
+#define TL_GIANT_MAX_FALLOFF_WAVELENGTHS 4.0
+/* The Newton bracket is this many times the largest displacement. */
+#define TL_GIANT_BRACKET 1.25
+/* Samples of the along-profile scanned for the clamps and bounds. */
+#define TL_GIANT_PROFILE_SAMPLES 2048
+/* The slope bound is kept per bin of s across the reach, so the march
+ * takes small steps only near the steep faces. */
+#define TL_GIANT_SLOPE_BINS 32
+
+/* The wave at one moment, ready to evaluate. All lengths in metres. */
+typedef struct tl_giant {
+    bool active;             /* enabled, fade > 0 and height > 0 */
+    double dir[2];           /* unit travel direction (x, z) */
+    double across[2];        /* unit perpendicular (x, z): dir turned 90 deg clockwise */
+    double origin[2];        /* world x, z of the crest on the centre line */
+    double k;                /* wavenumber 2π / wavelength */
+    double speed;            /* crest speed, m/s (deep-water speed times giant.speed) */
+    double amplitude;        /* giant.height */
+    double fade;             /* giant.fade */
+    double steepness;        /* Gerstner q·k·A after the height-field clamp */
+    double curl;             /* curve strength after the clamp */
+    double half_length;      /* wavelength / 2: the crest mask is 1 inside |s0| <= this */
+    double falloff_along;    /* the crest mask reaches 0 at half_length + this */
+    double half_width;       /* width / 2: the width mask is 0 beyond |w| >= this */
+    double falloff_across;   /* the width mask is 1 inside |w| <= half_width - this */
+    double max_displacement; /* max |D(s0)| over the profile */
+    double reach_along;      /* |s| beyond this: no wave (mask support + displacement) */
+    double min_jacobian;     /* smallest Jacobian of the map at this fade */
+    double max_slope;        /* bound on |grad height| of the wave (marching) */
+    /* slope_bin[i] bounds |grad height| for s in [-reach_along + i·bin,
+     * -reach_along + (i + 1)·bin), bin = 2·reach_along / TL_GIANT_SLOPE_BINS. */
+    double slope_bin[TL_GIANT_SLOPE_BINS];
+} tl_giant;
+
+/* The wave of `p` at time t (seconds). Inactive waves evaluate to zero. */
+void tl_giant_prepare(tl_giant *g, const tl_giant_wave *p, double t);
+
+/* Profile along the travel direction at full strength (lambda = 1):
+ * height Y, displacement D and their derivatives with respect to s0. */
+void tl_giant_profile(const tl_giant *g, double s0, double *y, double *dy, double *d, double *dd);
+
+/* Width mask in [0, 1] and its derivative with respect to w. */
+double tl_giant_width_mask(const tl_giant *g, double w, double *dmask);
+
+/* Solves s = s0 + lambda·D(s0) for s0 with `iterations` safeguarded Newton
+ * steps (the shader's algorithm). */
+double tl_giant_invert(const tl_giant *g, double s, double lambda, int iterations);
+
+/* Everything the shading needs at a world point. */
+typedef struct tl_giant_sample {
+    double height;       /* metres added to the ocean */
+    double grad[2];      /* d height / d (x, z) */
+    double s, w, s0;     /* wave coordinates (see above) */
+    double lambda;       /* fade × width mask */
+    double jacobian;     /* 1 + lambda·D'(s0) */
+    double displacement; /* lambda·D(s0): how far the point moved along */
+} tl_giant_sample;
+
+void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations,
+                        tl_giant_sample *out);
+
+/* Height of the wave alone at world (x, z); 0 outside its reach. */
+double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
+
+#endif

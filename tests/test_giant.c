@@ -1,0 +1,276 @@
+/* The giant wave's CPU model (src/waves/tl_giant.c): geometry, the
+ * height-field clamps, the inversion of the horizontal map, slope bounds
+ * and travel. No GPU. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "scene/tl_scene.h"
+#include "tl_test.h"
+#include "waves/tl_giant.h"
+#include "waves/tl_waves.h"
+
+static tl_giant_wave wave(double height, double steep, double curl)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    tl_giant_wave p = s.giant;
+    p.enabled = true;
+    p.height = height;
+    p.steepness = steep;
+    p.curve_strength = curl;
+    return p;
+}
+
+/* The horizontal map (s0, w) -> (s0 + λ(w)·D(s0), w) is one-to-one with a
+ * positive Jacobian on a dense grid, for every combination the issue names
+ * and then some, up to the channel's maximum height. */
+static void test_jacobian_positive(void)
+{
+    const double knobs[] = {0.0, 0.5, 1.0};
+    const double heights[] = {0.5, 12.0, 40.0, 200.0, 1000.0};
+    const double falloffs[] = {0.0, 30.0, 1e5};
+    const double fades[] = {0.25, 1.0};
+    double worst = INFINITY, least_curl = 1.0;
+    int monotone = 1, cases = 0;
+    for (size_t a = 0; a < 3; a++)
+        for (size_t b = 0; b < 3; b++)
+            for (size_t h = 0; h < 5; h++)
+                for (size_t f = 0; f < 3; f++)
+                    for (size_t fd = 0; fd < 2; fd++) {
+                        tl_giant_wave p = wave(heights[h], knobs[a], knobs[b]);
+                        p.falloff = falloffs[f];
+                        p.fade = fades[fd];
+                        tl_giant g;
+                        tl_giant_prepare(&g, &p, 0.0);
+                        cases++;
+                        double reach = g.half_length + g.falloff_along;
+                        /* 21 rows across the width mask, 4001 samples along. */
+                        for (int j = 0; j <= 20; j++) {
+                            double w = -g.half_width + g.half_width * j / 10.0, dm;
+                            double lambda = g.fade * tl_giant_width_mask(&g, w, &dm);
+                            double prev = -INFINITY;
+                            for (int i = 0; i <= 4000; i++) {
+                                double s0 = -reach + 2.0 * reach * i / 4000.0, y, dy, d, dd;
+                                tl_giant_profile(&g, s0, &y, &dy, &d, &dd);
+                                double jac = 1.0 + lambda * dd;
+                                if (jac < worst)
+                                    worst = jac;
+                                double s = s0 + lambda * d;
+                                monotone &= s > prev;
+                                prev = s;
+                            }
+                        }
+                        if (knobs[b] > 0.0 && g.curl / knobs[b] < least_curl)
+                            least_curl = g.curl / knobs[b];
+                        CHECK(g.min_jacobian >= TL_GIANT_MIN_JACOBIAN - 1e-9);
+                        CHECK(g.steepness <= knobs[a] + 1e-15 && g.curl <= knobs[b] + 1e-15);
+                    }
+    printf("jacobian: %d cases, min over dense grids %.4f (clamp target %.2f); knobs kept "
+           ">= %.4f of the asked strength\n",
+           cases, worst, TL_GIANT_MIN_JACOBIAN, least_curl);
+    CHECK(worst > 0.09);
+    CHECK(monotone);
+}
+
+/* Gentle waves keep the knobs the author asked for; steep ones are clamped
+ * no more than needed (the minimum Jacobian sits on the target). */
+static void test_clamps(void)
+{
+    tl_giant g;
+    tl_giant_wave p = wave(12.0, 0.6, 0.3);
+    tl_giant_prepare(&g, &p, 0.0);
+    printf("default wave: steepness %.3f curl %.3f min J %.3f max slope %.2f max |D| %.2f m\n",
+           g.steepness, g.curl, g.min_jacobian, g.max_slope, g.max_displacement);
+    CHECK(g.steepness == 0.6);
+    CHECK(g.curl == 0.3);
+    CHECK(g.min_jacobian > TL_GIANT_MIN_JACOBIAN);
+
+    p = wave(40.0, 1.0, 1.0);
+    tl_giant_prepare(&g, &p, 0.0);
+    printf("40 m, steepness 1, curl 1: kept steepness %.3f curl %.3f, min J %.4f, slope %.2f\n",
+           g.steepness, g.curl, g.min_jacobian, g.max_slope);
+    /* One factor scales both knobs. */
+    CHECK(g.steepness < 1.0 && g.steepness > 0.3);
+    CHECK_NEAR(g.curl, g.steepness, 1e-15);
+    CHECK_NEAR(g.min_jacobian, TL_GIANT_MIN_JACOBIAN, 1e-3);
+
+    /* Half faded, the same wave needs less clamping. */
+    p.fade = 0.5;
+    tl_giant h;
+    tl_giant_prepare(&h, &p, 0.0);
+    CHECK(h.curl > g.curl);
+}
+
+/* The crest sits on the origin, the masks cut along and across the true
+ * perpendicular of the travel direction at every angle. */
+static void test_geometry(void)
+{
+    const double angles[] = {0.0, 0.3, M_PI / 4, 1.3, M_PI, 4.7, -2.2};
+    for (size_t i = 0; i < sizeof angles / sizeof angles[0]; i++) {
+        tl_giant_wave p = wave(10.0, 0.0, 0.0);
+        p.angle = angles[i];
+        p.center[0] = 130.0;
+        p.center[1] = -40.0;
+        p.arrival = 5.0;
+        tl_giant g;
+        tl_giant_prepare(&g, &p, 5.0);
+        CHECK_NEAR(g.dir[0] * g.across[0] + g.dir[1] * g.across[1], 0.0, 1e-15);
+        CHECK_NEAR(g.origin[0], 130.0, 1e-9);
+        CHECK_NEAR(g.origin[1], -40.0, 1e-9);
+        double ox = g.origin[0], oz = g.origin[1];
+        CHECK_NEAR(tl_giant_height(&g, ox, oz, 8), 10.0, 1e-9);
+        /* One wavelength's troughs, a flat sea beyond the crest mask. */
+        double half = g.half_length, beyond = g.half_length + g.falloff_along + 0.01;
+        CHECK_NEAR(tl_giant_height(&g, ox + g.dir[0] * half, oz + g.dir[1] * half, 8), -10.0, 1e-9);
+        CHECK_NEAR(tl_giant_height(&g, ox - g.dir[0] * beyond, oz - g.dir[1] * beyond, 8), 0.0,
+                   0.0);
+        /* Across: full inside the width, zero past it, symmetric. */
+        double in = g.half_width - g.falloff_across - 1.0, out = g.half_width + 0.01;
+        CHECK_NEAR(tl_giant_height(&g, ox + g.across[0] * in, oz + g.across[1] * in, 8), 10.0,
+                   1e-9);
+        CHECK_NEAR(tl_giant_height(&g, ox + g.across[0] * out, oz + g.across[1] * out, 8), 0.0,
+                   0.0);
+        double mid = g.half_width - 0.5 * g.falloff_across;
+        double hp = tl_giant_height(&g, ox + g.across[0] * mid, oz + g.across[1] * mid, 8);
+        double hm = tl_giant_height(&g, ox - g.across[0] * mid, oz - g.across[1] * mid, 8);
+        CHECK_NEAR(hp, hm, 1e-9);
+        CHECK_NEAR(hp, 5.0, 1e-9);
+    }
+}
+
+/* fade 0 and enabled off are the ocean exactly. */
+static void test_off(void)
+{
+    tl_giant_wave p = wave(40.0, 0.5, 0.5);
+    p.fade = 0.0;
+    tl_giant g;
+    tl_giant_prepare(&g, &p, 3.0);
+    CHECK(!g.active);
+    p.fade = 1.0;
+    p.enabled = false;
+    tl_giant h;
+    tl_giant_prepare(&h, &p, 3.0);
+    CHECK(!h.active);
+    int zero = 1;
+    for (int i = -50; i <= 50; i++)
+        zero &= tl_giant_height(&g, i * 3.0, i * -1.7, 8) == 0.0 &&
+                tl_giant_height(&h, i * 3.0, 0.0, 8) == 0.0;
+    CHECK(zero);
+}
+
+/* The crest moves at the deep-water speed sqrt(g / k) times giant.speed
+ * and reaches the centre at giant.arrival; the phase shifts it by
+ * phase / k. */
+static void test_travel(void)
+{
+    tl_giant_wave p = wave(10.0, 0.5, 0.3);
+    p.angle = M_PI / 2; /* toward +X */
+    p.arrival = 100.0;
+    tl_giant g;
+    tl_giant_prepare(&g, &p, 90.0);
+    double c = sqrt(9.81 * p.wavelength / (2.0 * M_PI));
+    CHECK_NEAR(g.speed, c, 1e-12);
+    CHECK_NEAR(g.origin[0], -10.0 * c, 1e-9);
+    CHECK_NEAR(g.origin[1], 0.0, 1e-9);
+    p.phase = M_PI; /* half a wavelength further */
+    p.speed = 0.5;
+    tl_giant_prepare(&g, &p, 90.0);
+    CHECK_NEAR(g.origin[0], -5.0 * c + 0.5 * p.wavelength, 1e-9);
+    /* Far in time and space, still exact in double. */
+    p = wave(10.0, 0.0, 0.0);
+    p.arrival = 1e5;
+    p.center[0] = 1e4;
+    p.center[1] = -3e3;
+    tl_giant_prepare(&g, &p, 1e5);
+    CHECK_NEAR(g.origin[0], 1e4, 1e-9);
+    CHECK_NEAR(tl_giant_height(&g, 1e4, -3e3, 8), g.fade * 10.0, 1e-6);
+}
+
+/* Inversion: the residual of s = s0 + λD(s0) after n Newton steps, and the
+ * finite-difference gradient against the analytic one and the bound. */
+static void test_inversion_and_slope(void)
+{
+    tl_giant_wave p = wave(40.0, 1.0, 1.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &p, 0.0);
+    const int counts[] = {2, 3, 4, 6, 8, 12};
+    double res6 = 0.0;
+    printf("inversion residual (40 m, steepness 1, curl 1), max over 20001 points:");
+    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        double worst = 0.0;
+        for (int i = 0; i <= 20000; i++) {
+            double s = -g.reach_along + 2.0 * g.reach_along * i / 20000.0, y, dy, d, dd;
+            double s0 = tl_giant_invert(&g, s, g.fade, counts[c]);
+            tl_giant_profile(&g, s0, &y, &dy, &d, &dd);
+            /* Height error: the residual times the local slope. */
+            double err = fabs(s0 + g.fade * d - s) * fabs(dy) / (1.0 + g.fade * dd);
+            if (err > worst)
+                worst = err;
+        }
+        printf(" %d: %.2g m", counts[c], worst);
+        if (counts[c] == 6)
+            res6 = worst;
+    }
+    printf("\n");
+    CHECK(res6 < 1e-6);
+
+    /* Slope: finite differences against the analytic gradient, and against
+     * the bound of the bin the point falls in (what the march relies on). */
+    double worst_slope = 0.0, worst_grad = 0.0, worst_ratio = 0.0;
+    const double e = 1e-4, bin = 2.0 * g.reach_along / TL_GIANT_SLOPE_BINS;
+    for (int j = 0; j <= 60; j++)
+        for (int i = 0; i <= 1200; i++) {
+            double s = -g.reach_along + 2.0 * g.reach_along * i / 1200.0;
+            double w = -g.half_width * 1.02 + 2.04 * g.half_width * j / 60.0;
+            double x = g.origin[0] + g.dir[0] * s + g.across[0] * w;
+            double z = g.origin[1] + g.dir[1] * s + g.across[1] * w;
+            tl_giant_sample smp;
+            tl_giant_sample_at(&g, x, z, 30, &smp);
+            double gx =
+                (tl_giant_height(&g, x + e, z, 30) - tl_giant_height(&g, x - e, z, 30)) / (2 * e);
+            double gz =
+                (tl_giant_height(&g, x, z + e, 30) - tl_giant_height(&g, x, z - e, 30)) / (2 * e);
+            double slope = hypot(gx, gz);
+            worst_slope = fmax(worst_slope, slope);
+            double rel = hypot(gx - smp.grad[0], gz - smp.grad[1]) / fmax(1.0, slope);
+            worst_grad = fmax(worst_grad, rel);
+            int b = (int)floor((s + g.reach_along) / bin);
+            b = b < 0 ? 0 : b >= TL_GIANT_SLOPE_BINS ? TL_GIANT_SLOPE_BINS - 1 : b;
+            worst_ratio = fmax(worst_ratio, slope / fmax(g.slope_bin[b], 1e-12));
+        }
+    printf("slope: max %.3f, bound %.3f, worst slope / its bin's bound %.3f; analytic gradient vs "
+           "finite differences: %.2g\n",
+           worst_slope, g.max_slope, worst_ratio, worst_grad);
+    CHECK(worst_slope <= g.max_slope);
+    CHECK(worst_ratio <= 1.0);
+    CHECK(worst_grad < 1e-4);
+}
+
+/* The surface the boat floats on and the tests compare with is the ocean
+ * plus the wave. */
+static void test_surface(void)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.giant = wave(12.0, 0.5, 0.3);
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, 0.0);
+    double ocean = tl_waves_height(&w, 3.0, 4.0, 0.0, 12);
+    double both = tl_waves_surface_height(&w, &g, 3.0, 4.0, 0.0, 12, 8);
+    CHECK_NEAR(both - ocean, tl_giant_height(&g, 3.0, 4.0, 8), 1e-12);
+    CHECK(both > ocean + 5.0);
+}
+
+int main(void)
+{
+    test_jacobian_positive();
+    test_clamps();
+    test_geometry();
+    test_off();
+    test_travel();
+    test_inversion_and_slope();
+    test_surface();
+    TEST_END();
+}
