@@ -1,31 +1,77 @@
-// Bounded height-field march (seed 002): the surface lies between the
-// crest plane y = 0 and the trough plane y = -depth, so the ray is only
-// marched between its hits with those planes, with the adaptive step
-// "height above the surface" (it cannot overshoot the surface below it).
+// Bounded height-field march (seed 002): the ocean lies between the crest
+// plane y = 0 and the trough plane y = -depth, so the ray is only marched
+// between its hits with those planes, with the adaptive step "height above
+// the surface" (it cannot overshoot the surface below it).
 // Positions are camera-relative in xz; y is absolute.
+//
+// With the giant wave the band grows only inside the wave's bounding box:
+// the ray also marches the part of it inside the box, where each step is
+// divided by (1 + K × horizontal part of the ray), K bounding the wave's
+// slope wherever the step could reach, so that even its steepest face
+// cannot be stepped through.
 
 // Distance along `ray` to the surface, or a negative value for a miss.
 float march_water(vec3 ray)
 {
-    if (ray.y >= 0.0 && u_cam_height >= 0.0)
+    vec2 box = vec2(TL_FAR, -1.0); // the giant wave's part of the ray (none)
+#ifdef TL_FEATURE_GIANT_WAVE
+    box = giant_ray_interval(ray);
+    float ray_along = abs(dot(u_giant_frame.xy, ray.xz)), ray_flat = length(ray.xz);
+#endif
+    bool has_box = box.x <= box.y;
+    if (ray.y >= 0.0 && u_cam_height >= 0.0 && !has_box)
         return -1.0;
     float t_high = ray.y < 0.0 ? max((0.0 - u_cam_height) / ray.y, 0.0) : 0.0;
     // Rays that graze the horizon meet the trough plane very far away; the
     // limit keeps the distance finite (the normal is fully smoothed there).
     float t_low = ray.y < 0.0 ? min((-u_depth - u_cam_height) / ray.y, TL_FAR) : TL_FAR;
-    float t = t_high;
+    float t = has_box ? min(t_high, box.x) : t_high;
+    // Over-relaxation inside the box (enhanced sphere tracing): a step of
+    // TL_MARCH_RELAX radii stands when the free interval around the point it
+    // reaches overlaps the last point's; otherwise the march goes back to
+    // one radius past the last point, which is always safe.
+    float t_prev = 0.0, r_prev = 0.0;
+    bool relaxed = false; // the step that led to t was over-relaxed
     for (int i = 0; i < u_march_steps; i++) {
+        bool in_box = t >= box.x && t <= box.y;
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float h = waves_height(pos.xz, u_march_octaves);
-        // Rays leaving the wave band upward see the sky (camera in the band).
-        if (ray.y >= 0.0 && pos.y > 0.0)
-            return -1.0;
-        float above = pos.y - h;
+        // Rays leaving the ocean band upward see the sky (camera in the
+        // band), unless the wave's box still lies ahead of them.
+        if (ray.y >= 0.0 && pos.y > 0.0 && !in_box) {
+            if (t > box.y)
+                return -1.0;
+            t = box.x;
+            continue;
+        }
+        float above = pos.y - surface_height(pos.xz, u_march_octaves);
+        float radius = above; // how far along the ray is surely free
+#ifdef TL_FEATURE_GIANT_WAVE
+        // A step no longer than `above` moves at most above·ray_along in s.
+        if (in_box)
+            radius /= 1.0 + ray_flat * giant_slope_near(giant_coords(pos.xz).x, above * ray_along);
+        if (relaxed && t - radius > t_prev + r_prev) {
+            t = t_prev + r_prev;
+            relaxed = false;
+            continue;
+        }
+#endif
         if (above < u_hit_epsilon)
             return t;
-        t += above;
-        if (t > t_low)
-            return t_low;
+        float next = t + radius;
+        relaxed = false;
+        if (in_box) {
+            // Over-relax only while the step stays inside the box.
+            t_prev = t;
+            r_prev = radius;
+            next = t + max(radius, min(TL_MARCH_RELAX * radius, box.y - t));
+            relaxed = next > t + radius;
+        }
+        if (t < box.x && next > box.x)
+            next = box.x; // enter the box, then step with the slope bound
+        t = next;
+        // Below the trough plane outside the box: the surface was crossed.
+        if (t > t_low && (t < box.x || t > box.y))
+            return t < box.x ? t_low : max(t_low, box.y);
     }
     // Out of steps: the last position is the best estimate of the hit (the
     // reference returns the start point instead, which brightens grazing

@@ -4,6 +4,10 @@
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
+#ifdef TL_FEATURE_GIANT_WAVE
+#include "giant.glsl"
+#endif
+#include "surface.glsl"
 #include "march.glsl"
 #include "water.glsl"
 

@@ -1,9 +1,13 @@
 // Water shading: normal from the many-octave height field, distance
-// smoothing, Schlick Fresnel reflection of the sky, depth scattering.
+// smoothing, Schlick Fresnel reflection of the sky, depth scattering; with
+// the giant wave, its slope, light through its crest and its foam.
 
-vec3 water_normal(vec2 p, float e)
+// Ocean normal at p by finite differences; *value is the ocean's wave value
+// in (0, 1] at p (1 on the crests).
+vec3 water_normal(vec2 p, float e, out float value)
 {
-    float h = waves_value(p, u_normal_octaves) * u_depth;
+    value = waves_value(p, u_normal_octaves);
+    float h = value * u_depth;
     float hx = waves_value(p - vec2(e, 0.0), u_normal_octaves) * u_depth;
     float hz = waves_value(p + vec2(0.0, e), u_normal_octaves) * u_depth;
     vec3 a = vec3(p.x, h, p.y);
@@ -12,12 +16,22 @@ vec3 water_normal(vec2 p, float e)
 
 vec3 water_color(vec3 ray, vec3 hit, float dist)
 {
-    vec3 n = water_normal(hit.xz, u_normal_epsilon);
+    float value;
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, value);
     // Far away the normal's detail is below a pixel; blending toward "up"
     // removes the shimmer the reference also suppresses this way.
     float smoothing = u_normal_smooth_max *
                       min(1.0, sqrt(dist * u_normal_smooth_rate) * u_normal_smooth_gain);
     n = normalize(mix(n, vec3(0.0, 1.0, 0.0), smoothing));
+    float ocean_y = hit.y; // height of the ocean's own waves at the hit
+#ifdef TL_FEATURE_GIANT_WAVE
+    // The giant wave is large against a pixel: its slope is added unsmoothed
+    // (slopes of summed height fields add).
+    GiantSample giant = giant_sample(hit.xz);
+    vec2 slope = -n.xz / n.y + giant.grad;
+    n = normalize(vec3(-slope.x, 1.0, -slope.y));
+    ocean_y -= giant.height;
+#endif
 
     float fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
     vec3 r = normalize(reflect(ray, n));
@@ -25,6 +39,10 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     vec3 reflection = sky_color(r);
     // Thicker water in the troughs scatters more blue-green light.
     vec3 scattering = u_scatter_color * u_scatter_strength *
-                      (u_scatter_base + (hit.y + u_depth) / u_depth);
-    return fresnel * reflection + scattering;
+                      (u_scatter_base + (ocean_y + u_depth) / u_depth);
+    vec3 color = fresnel * reflection + scattering;
+#ifdef TL_FEATURE_GIANT_WAVE
+    color = giant_shade(color, ray, n, giant, value);
+#endif
+    return color;
 }

@@ -4,55 +4,15 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "gl/tl_gl_context.h"
-#include "gl/tl_renderer.h"
-#include "prepare/tl_prepare.h"
-#include "scene/tl_scene.h"
-#include "tl_test.h"
-#include "waves/tl_waves.h"
-
-/* Max |GPU - CPU| over a grid of points around the camera. */
-static double probe_error(tl_renderer *r, tl_scene *s, int octaves, double half_extent)
-{
-    enum { N = 24 };
-    tl_waves w;
-    tl_waves_init(&w, &s->ocean);
-    tl_frame_uniforms u;
-    tl_prepare_frame(s, &w, &u);
-    static float xz[N * N * 2];
-    static float gpu[N * N];
-    for (int j = 0; j < N; j++)
-        for (int i = 0; i < N; i++) {
-            xz[(j * N + i) * 2 + 0] = (float)(-half_extent + 2.0 * half_extent * i / (N - 1));
-            xz[(j * N + i) * 2 + 1] = (float)(-half_extent + 2.0 * half_extent * j / (N - 1));
-        }
-    tl_error err;
-    tl_error_clear(&err);
-    if (tl_renderer_probe_heights(r, &u, xz, N * N, octaves, gpu, &err)) {
-        fprintf(stderr, "probe failed: %s\n", err.message);
-        return INFINITY;
-    }
-    double worst = 0.0;
-    for (int k = 0; k < N * N; k++) {
-        /* The CPU mirror takes absolute positions: the camera's plus the
-         * (exactly representable) float offset the GPU saw. */
-        double x = s->camera.position[0] + (double)xz[k * 2];
-        double z = s->camera.position[2] + (double)xz[k * 2 + 1];
-        double cpu = tl_waves_height(&w, x, z, s->time, octaves);
-        double d = fabs(cpu - (double)gpu[k]);
-        if (!(d <= worst))
-            worst = d;
-    }
-    return worst;
-}
+#include "tl_gl_test.h"
 
 static void test_probe(tl_renderer *r)
 {
     tl_scene s;
     tl_scene_defaults(&s);
     s.time = 10.0;
-    double e12 = probe_error(r, &s, 12, 20.0);
-    double e36 = probe_error(r, &s, 36, 20.0);
+    double e12 = probe_error(r, &s, 12, 20.0, 24);
+    double e36 = probe_error(r, &s, 36, 20.0, 24);
     printf("probe t=10 near origin: max |gpu-cpu| = %.3g (12 oct), %.3g (36 oct)\n", e12, e36);
     CHECK(e12 <= 1e-4);
     CHECK(e36 <= 1e-4);
@@ -62,35 +22,11 @@ static void test_probe(tl_renderer *r)
     s.time = 1.0e6;
     s.camera.position[0] = 1.0e6;
     s.camera.position[2] = -7.3e5;
-    double far12 = probe_error(r, &s, 12, 20.0);
-    double far36 = probe_error(r, &s, 36, 20.0);
+    double far12 = probe_error(r, &s, 12, 20.0, 24);
+    double far36 = probe_error(r, &s, 36, 20.0, 24);
     printf("probe t=1e6 at (1e6, -7.3e5): max |gpu-cpu| = %.3g (12), %.3g (36)\n", far12, far36);
     CHECK(far12 <= 1e-4);
     CHECK(far36 <= 1e-4);
-}
-
-static double luminance(const float *rgb)
-{
-    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
-}
-
-static int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
-{
-    tl_scene s = *scene;
-    tl_waves w;
-    tl_waves_init(&w, &s.ocean);
-    tl_frame_uniforms u;
-    tl_prepare_frame(&s, &w, &u);
-    tl_error err;
-    tl_error_clear(&err);
-    CHECK(tl_frame_alloc(f, s.width, s.height, &err) == 0);
-    int rc = tl_renderer_render(r, &u, f, &err);
-    CHECK(rc == 0);
-    if (rc) {
-        fprintf(stderr, "render failed: %s\n", err.message);
-        tl_frame_free(f);
-    }
-    return rc;
 }
 
 static void small_scene(tl_scene *s)
@@ -197,21 +133,10 @@ static void test_sun_disc(tl_renderer *r)
 
 int main(void)
 {
-    tl_error err;
-    tl_error_clear(&err);
     tl_gl_context *ctx = NULL;
-    if (tl_gl_context_create_headless(&ctx, &err)) {
-        fprintf(stderr, "no GL context: %s\n", err.message);
+    tl_renderer *r = gl_test_open(&ctx);
+    if (!r)
         return 1;
-    }
-    printf("%s\n", tl_gl_context_describe(ctx));
-    tl_shader_lib lib;
-    tl_shader_lib_embedded(&lib);
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&r, &lib, &err)) {
-        fprintf(stderr, "renderer: %s\n", err.message);
-        return 1;
-    }
     test_probe(r);
     test_sky_and_water(r);
     test_sun_disc(r);

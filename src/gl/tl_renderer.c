@@ -26,7 +26,7 @@ struct tl_renderer {
     cached_program programs[MAX_PROGRAMS];
     int program_count;
     GLuint present_program;
-    GLuint probe_program;
+    GLuint probe_program[2]; /* without and with the giant wave */
     target scene;   /* colour RGBA32F + depth R32F */
     target display; /* tonemapped RGBA32F */
 };
@@ -104,10 +104,13 @@ static void make_defines(unsigned features, char *out, size_t size)
     int n = snprintf(out, size,
                      "#define TL_MAX_OCTAVES %d\n"
                      "#define TL_SKY_DEPTH %.1f\n"
-                     "#define TL_FAR 1.0e7\n",
-                     TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH);
-    if (n > 0 && (size_t)n < size && (features & TL_FEATURE_SUN_DISC))
-        snprintf(out + n, size - (size_t)n, "#define TL_FEATURE_SUN_DISC 1\n");
+                     "#define TL_FAR 1.0e7\n"
+                     "#define TL_GIANT_SLOPE_BINS %d\n"
+                     "#define TL_MARCH_RELAX 1.6\n",
+                     TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS);
+    for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
+        if (features & (1u << i))
+            n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
 }
 
 static GLuint ocean_program(tl_renderer *r, unsigned features, tl_error *err)
@@ -200,8 +203,9 @@ void tl_renderer_destroy(tl_renderer *r)
         glDeleteProgram(r->programs[i].program);
     if (r->present_program)
         glDeleteProgram(r->present_program);
-    if (r->probe_program)
-        glDeleteProgram(r->probe_program);
+    for (int i = 0; i < 2; i++)
+        if (r->probe_program[i])
+            glDeleteProgram(r->probe_program[i]);
     target_free(&r->scene);
     target_free(&r->display);
     glDeleteVertexArrays(1, &r->vao);
@@ -249,6 +253,17 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1i(loc(p, "u_spp"), u->spp);
     glUniform1i(loc(p, "u_spp_step"), u->spp_step);
     glUniform1ui(loc(p, "u_seed"), u->seed);
+    if (u->features & TL_FEATURE_GIANT_WAVE) {
+        glUniform4fv(loc(p, "u_giant_frame"), 1, u->giant_frame);
+        glUniform4fv(loc(p, "u_giant_shape"), 1, u->giant_shape);
+        glUniform4fv(loc(p, "u_giant_mask"), 1, u->giant_mask);
+        glUniform4fv(loc(p, "u_giant_bounds"), 1, u->giant_bounds);
+        glUniform4fv(loc(p, "u_giant_foam"), 1, u->giant_foam);
+        glUniform4fv(loc(p, "u_giant_scatter"), 1, u->giant_scatter);
+        glUniform3fv(loc(p, "u_giant_scatter_color"), 1, u->giant_scatter_color);
+        glUniform1i(loc(p, "u_giant_iterations"), u->giant_iterations);
+        glUniform1fv(loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
+    }
 }
 
 /* Reads attachment `index` of the bound framebuffer in one transfer, then
@@ -356,11 +371,14 @@ int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const 
 {
     if (count < 1 || octaves < 1 || octaves > u->octaves)
         return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad point or octave count");
-    if (!r->probe_program) {
+    /* Only the giant wave changes the surface's height. */
+    unsigned features = u->features & TL_FEATURE_GIANT_WAVE;
+    GLuint *program = &r->probe_program[features ? 1 : 0];
+    if (!*program) {
         char defines[512];
-        make_defines(0, defines, sizeof defines);
-        r->probe_program = build_program(r, "fullscreen.vert", "probe.frag", defines, err);
-        if (!r->probe_program)
+        make_defines(features, defines, sizeof defines);
+        *program = build_program(r, "fullscreen.vert", "probe.frag", defines, err);
+        if (!*program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
     }
     int width = count < 1024 ? count : 1024;
@@ -390,13 +408,13 @@ int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const 
     if (!rc) {
         glBindVertexArray(r->vao);
         glViewport(0, 0, width, height);
-        glUseProgram(r->probe_program);
-        upload_uniforms(r->probe_program, u);
+        glUseProgram(*program);
+        upload_uniforms(*program, u);
         /* target_ensure bound its own texture to unit 0: bind the points again. */
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, points);
-        glUniform1i(loc(r->probe_program, "u_points"), 0);
-        glUniform1i(loc(r->probe_program, "u_probe_octaves"), octaves);
+        glUniform1i(loc(*program, "u_points"), 0);
+        glUniform1i(loc(*program, "u_probe_octaves"), octaves);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);

@@ -3,7 +3,32 @@
 #include "core/tl_math.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+
+#include "waves/tl_giant.h"
+
+static const char *const feature_defines[TL_FEATURE_COUNT] = {"TL_FEATURE_SUN_DISC",
+                                                              "TL_FEATURE_GIANT_WAVE"};
+static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc", "giant wave"};
+
+const char *tl_feature_define(int index)
+{
+    return index >= 0 && index < TL_FEATURE_COUNT ? feature_defines[index] : NULL;
+}
+
+const char *tl_feature_label(int index)
+{
+    return index >= 0 && index < TL_FEATURE_COUNT ? feature_labels[index] : NULL;
+}
+
+void tl_feature_describe(unsigned features, char *out, size_t size)
+{
+    size_t n = (size_t)snprintf(out, size, "ocean");
+    for (int i = 0; i < TL_FEATURE_COUNT && n < size; i++)
+        if (features & (1u << i))
+            n += (size_t)snprintf(out + n, size - n, ", %s", feature_labels[i]);
+}
 
 /* The y-stratum step for N-rooks sampling: near N times the golden ratio's
  * fractional part (well spread), and coprime with N so that every y
@@ -22,6 +47,55 @@ static void to_float3(const double in[3], float out[3])
 {
     for (int i = 0; i < 3; i++)
         out[i] = (float)in[i];
+}
+
+/* How much the crest breaks, for the foam trail: 0 while the surface is
+ * never compressed past the foam threshold, 1 at the clamp's limit. */
+static double breaking(double threshold, double min_jacobian)
+{
+    if (threshold <= TL_GIANT_MIN_JACOBIAN)
+        return 0.0;
+    double b = (threshold - min_jacobian) / (threshold - TL_GIANT_MIN_JACOBIAN);
+    return b < 0.0 ? 0.0 : b > 1.0 ? 1.0 : b;
+}
+
+/* The giant wave relative to the camera: only the camera's offset from the
+ * crest (small when the wave is in view) reaches the GPU. */
+static void prepare_giant(const tl_scene *s, tl_frame_uniforms *u)
+{
+    tl_giant g;
+    tl_giant_prepare(&g, &s->giant, s->time);
+    if (!g.active)
+        return;
+    u->features |= TL_FEATURE_GIANT_WAVE;
+    double rx = s->camera.position[0] - g.origin[0], rz = s->camera.position[2] - g.origin[1];
+    u->giant_frame[0] = (float)g.dir[0];
+    u->giant_frame[1] = (float)g.dir[1];
+    u->giant_frame[2] = (float)(g.dir[0] * rx + g.dir[1] * rz);
+    u->giant_frame[3] = (float)(g.across[0] * rx + g.across[1] * rz);
+    u->giant_shape[0] = (float)g.k;
+    u->giant_shape[1] = (float)g.amplitude;
+    u->giant_shape[2] = (float)g.steepness;
+    u->giant_shape[3] = (float)g.curl;
+    u->giant_mask[0] = (float)g.half_length;
+    u->giant_mask[1] = (float)g.falloff_along;
+    u->giant_mask[2] = (float)g.half_width;
+    u->giant_mask[3] = (float)g.falloff_across;
+    u->giant_bounds[0] = (float)g.reach_along;
+    u->giant_bounds[1] = (float)(TL_GIANT_BRACKET * g.max_displacement);
+    u->giant_bounds[2] = (float)g.max_slope;
+    u->giant_bounds[3] = (float)g.fade;
+    u->giant_foam[0] = (float)s->giant.foam_compression;
+    u->giant_foam[1] = (float)s->giant.foam_trail;
+    u->giant_foam[2] = (float)s->water.foam;
+    u->giant_foam[3] = (float)breaking(s->giant.foam_compression, g.min_jacobian);
+    u->giant_scatter[0] = (float)s->giant.scatter;
+    u->giant_scatter[1] = (float)s->giant.scatter_forward;
+    u->giant_scatter[2] = (float)s->giant.scatter_back;
+    to_float3(s->giant.scatter_color, u->giant_scatter_color);
+    u->giant_iterations = s->quality.giant_iterations;
+    for (int i = 0; i < TL_GIANT_SLOPE_BINS; i++)
+        u->giant_slope[i] = (float)g.slope_bin[i];
 }
 
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
@@ -91,4 +165,5 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normal_smooth_rate = (float)s->water.normal_smooth_rate;
     u->normal_smooth_gain = (float)s->water.normal_smooth_gain;
     u->exposure = (float)s->exposure;
+    prepare_giant(s, u);
 }

@@ -9,14 +9,26 @@
 #ifndef TL_PREPARE_H
 #define TL_PREPARE_H
 
+#include <stddef.h>
+
 #include "scene/tl_scene.h"
 #include "waves/tl_waves.h"
 
 /* Shader features a frame may need; each is a #define in the program.
  * A frame compiles only the code its scene uses. */
 typedef enum tl_feature {
-    TL_FEATURE_SUN_DISC = 1u << 0, /* the sun is above the horizon */
+    TL_FEATURE_SUN_DISC = 1u << 0,   /* the sun is above the horizon */
+    TL_FEATURE_GIANT_WAVE = 1u << 1, /* the giant wave is enabled and not faded out */
 } tl_feature;
+
+#define TL_FEATURE_COUNT 2
+
+/* The #define name of feature bit `index` ("TL_FEATURE_SUN_DISC"), and the
+ * words `still -v` and `render -v` print for it ("sun disc"). */
+const char *tl_feature_define(int index);
+const char *tl_feature_label(int index);
+/* "ocean, sun disc, giant wave": every feature of `features`, for logs. */
+void tl_feature_describe(unsigned features, char *out, size_t size);
 
 typedef struct tl_frame_uniforms {
     unsigned features;
@@ -51,6 +63,18 @@ typedef struct tl_frame_uniforms {
     float fresnel_f0, scatter_color[3], scatter_strength, scatter_base;
     float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
     float exposure;
+
+    /* The giant wave (TL_FEATURE_GIANT_WAVE), see shaders/giant.glsl:
+     * frame = (dir.x, dir.z, s, w of the camera relative to the crest),
+     * shape = (k, height, steepness, curl) after the clamps,
+     * mask = (half length, falloff along, half width, falloff across),
+     * bounds = (reach along, Newton bracket half width, slope bound, fade),
+     * foam = (Jacobian where foam starts, trail length, amount, breaking),
+     * scatter = (strength, forward g, backward g, unused). */
+    float giant_frame[4], giant_shape[4], giant_mask[4], giant_bounds[4];
+    float giant_foam[4], giant_scatter[4], giant_scatter_color[3];
+    float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
+    int giant_iterations;
 } tl_frame_uniforms;
 
 /* Fills `u` from `scene` (validated by the caller). `waves` must have been

@@ -1,0 +1,209 @@
+// The scripted giant wave (seed 003): one Gerstner crest with a
+// single-crest mask along its travel and a width mask across it, its
+// horizontal displacement inverted per point with safeguarded Newton steps.
+// src/waves/tl_giant.c is the same model in double (and explains it);
+// keep the two in step. Compiled only with TL_FEATURE_GIANT_WAVE.
+//
+// (s, w): along and across the travel direction, relative to the crest on
+// the centre line; s0: the undisplaced position along, which the surface
+// point at s = s0 + lambda(w)·D(s0) started from.
+
+uniform vec4 u_giant_frame;  // (dir.x, dir.z, camera s, camera w)
+uniform vec4 u_giant_shape;  // (k, height, steepness, curl), clamped on the CPU
+uniform vec4 u_giant_mask;   // (half length, falloff along, half width, falloff across)
+uniform vec4 u_giant_bounds; // (reach along, Newton bracket, slope bound, fade)
+uniform vec4 u_giant_foam;   // (Jacobian where foam starts, trail metres, amount, breaking)
+uniform vec4 u_giant_scatter;     // (strength, forward g, backward g, unused)
+uniform vec3 u_giant_scatter_color;
+uniform int u_giant_iterations;
+uniform float u_giant_slope[TL_GIANT_SLOPE_BINS]; // slope bound per bin of s
+
+struct GiantSample {
+    float height;       // metres added to the ocean
+    vec2 grad;          // d height / d (x, z)
+    float s0;           // undisplaced position along (0 = the crest)
+    float lambda;       // fade × width mask
+    float jacobian;     // 1 + lambda·D'(s0): below 1 the surface is compressed
+    float displacement; // lambda·D(s0), metres along the travel direction
+};
+
+float giant_smooth(float x, out float dx)
+{
+    x = clamp(x, 0.0, 1.0);
+    dx = 6.0 * x * (1.0 - x);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+// (Y, Y', D, D') at full strength: Y = A·m·cos θ, D = (-S·m·sin θ + C·m·u⁴)/k
+// with θ = k·s0, u = (1 + cos θ)/2 and m the single-crest mask.
+vec4 giant_profile(float s0)
+{
+    float k = u_giant_shape.x, A = u_giant_shape.y, S = u_giant_shape.z, C = u_giant_shape.w;
+    float ds;
+    float m = 1.0 - giant_smooth((abs(s0) - u_giant_mask.x) / u_giant_mask.y, ds);
+    float dm = -ds / u_giant_mask.y * (s0 < 0.0 ? -1.0 : 1.0);
+    float c = cos(k * s0), sn = sin(k * s0);
+    float u = 0.5 * (1.0 + c), u3 = u * u * u, du = -0.5 * k * sn;
+    float y = A * m * c;
+    float dy = A * (dm * c - k * m * sn);
+    float d = (-S * m * sn + C * m * u3 * u) / k;
+    float dd = (-S * (dm * sn + k * m * c) + C * (dm * u3 * u + m * 4.0 * u3 * du)) / k;
+    return vec4(y, dy, d, dd);
+}
+
+// Solves s = s0 + lambda·D(s0); the map is increasing, so a bracket holds
+// the root and a Newton step that leaves it bisects instead.
+float giant_invert(float s, float lambda)
+{
+    if (lambda <= 0.0 || abs(s) >= u_giant_bounds.x)
+        return s;
+    float reach = u_giant_bounds.y * lambda;
+    float lo = s - reach, hi = s + reach;
+    float s0 = clamp(s - lambda * giant_profile(s).z, lo, hi);
+    for (int i = 0; i < u_giant_iterations; i++) {
+        vec4 p = giant_profile(s0);
+        float f = s0 + lambda * p.z - s;
+        if (f < 0.0)
+            lo = s0;
+        else
+            hi = s0;
+        float next = s0 - f / (1.0 + lambda * p.w);
+        s0 = next >= lo && next <= hi ? next : 0.5 * (lo + hi);
+    }
+    return s0;
+}
+
+// Wave coordinates (s, w) of camera-relative p.
+vec2 giant_coords(vec2 p)
+{
+    vec2 d = u_giant_frame.xy;
+    return u_giant_frame.zw + vec2(dot(d, p), dot(vec2(d.y, -d.x), p));
+}
+
+GiantSample giant_sample(vec2 p)
+{
+    GiantSample g = GiantSample(0.0, vec2(0.0), 0.0, 0.0, 1.0, 0.0);
+    vec2 sw = giant_coords(p);
+    g.s0 = sw.x;
+    if (abs(sw.x) >= u_giant_bounds.x || abs(sw.y) >= u_giant_mask.z)
+        return g;
+    float ds;
+    float fw = u_giant_mask.w;
+    float mask = 1.0 - giant_smooth((abs(sw.y) - (u_giant_mask.z - fw)) / fw, ds);
+    float lambda = u_giant_bounds.w * mask;
+    float dlambda = -u_giant_bounds.w * ds / fw * (sw.y < 0.0 ? -1.0 : 1.0);
+    float s0 = giant_invert(sw.x, lambda);
+    vec4 pr = giant_profile(s0);
+    // Guard: the CPU's clamps keep J >= 0.1 on the scanned profile.
+    float j = max(1.0 + lambda * pr.w, 1.0e-3);
+    g.height = lambda * pr.x;
+    g.s0 = s0;
+    g.lambda = lambda;
+    g.jacobian = j;
+    g.displacement = lambda * pr.z;
+    // Implicit differentiation: ds0/ds = 1/J, ds0/dw = -lambda'·D/J.
+    float dh_ds = lambda * pr.y / j;
+    float dh_dw = dlambda * (pr.x - lambda * pr.y * pr.z / j);
+    vec2 d = u_giant_frame.xy;
+    g.grad = dh_ds * d + dh_dw * vec2(d.y, -d.x);
+    return g;
+}
+
+float giant_height(vec2 p)
+{
+    return giant_sample(p).height;
+}
+
+// Bound on the wave's slope for s within `radius` of `s`.
+float giant_slope_near(float s, float radius)
+{
+    float reach = u_giant_bounds.x;
+    float bin = 2.0 * reach / float(TL_GIANT_SLOPE_BINS);
+    int b0 = max(int(floor((s - radius + reach) / bin)), 0);
+    int b1 = min(int(floor((s + radius + reach) / bin)), TL_GIANT_SLOPE_BINS - 1);
+    float k = 0.0;
+    for (int b = b0; b <= b1; b++)
+        k = max(k, u_giant_slope[b]);
+    return k;
+}
+
+// The part of the ray inside the wave's bounding box: s within the reach,
+// |w| within the half width, y between the deepest trough and the highest
+// crest. Returns (t_in, t_out); t_in > t_out when the ray misses it.
+vec2 giant_ray_interval(vec3 ray)
+{
+    vec2 d = u_giant_frame.xy;
+    vec3 o = vec3(u_giant_frame.z, u_cam_height, u_giant_frame.w);
+    vec3 r = vec3(dot(d, ray.xz), ray.y, dot(vec2(d.y, -d.x), ray.xz));
+    float top = u_giant_bounds.w * u_giant_shape.y;
+    vec3 lo = vec3(-u_giant_bounds.x, -u_depth - top, -u_giant_mask.z);
+    vec3 hi = vec3(u_giant_bounds.x, top, u_giant_mask.z);
+    float t0 = 0.0, t1 = TL_FAR;
+    for (int i = 0; i < 3; i++) {
+        if (abs(r[i]) < 1.0e-12) {
+            if (o[i] < lo[i] || o[i] > hi[i])
+                return vec2(1.0, 0.0);
+            continue;
+        }
+        float a = (lo[i] - o[i]) / r[i], b = (hi[i] - o[i]) / r[i];
+        t0 = max(t0, min(a, b));
+        t1 = min(t1, max(a, b));
+    }
+    return vec2(t0, t1);
+}
+
+// Irradiance on a surface facing the sun: the integral of the sun lobe
+// pow(cos, sharpness)·intensity over the hemisphere.
+float giant_sun_irradiance()
+{
+#ifdef TL_FEATURE_SUN_DISC
+    return u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0);
+#else
+    return 0.0;
+#endif
+}
+
+// Foam where the surface is compressed, and a trail behind a breaking
+// crest that fades with distance; broken up by the ocean's own crests
+// (ocean_value in (0, 1]). A function of this frame's wave only.
+float giant_foam(GiantSample g, float ocean_value)
+{
+    float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
+    float behind = max(-g.s0, 0.0);
+    float trail = u_giant_foam.w * g.lambda * exp(-behind / max(u_giant_foam.y, 1.0e-3)) *
+                  smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
+    float foam = clamp((compressed * g.lambda + trail) * u_giant_foam.z, 0.0, 1.0);
+    return foam * smoothstep(0.15, 0.75, ocean_value + 0.5 * compressed);
+}
+
+float giant_hg(float mu, float g)
+{
+    float d = 1.0 + g * g - 2.0 * g * mu;
+    return (1.0 - g * g) / (12.5663706 * d * sqrt(d));
+}
+
+// Light through the thin, displaced crest (seed 003's subsurface term):
+// strongest where the surface moved furthest and stands highest, shaped by
+// a two-lobe phase function of the angle between view and sun.
+vec3 giant_scatter(GiantSample g, vec3 ray)
+{
+    float mu = dot(ray, u_sun_dir);
+    float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
+    float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);
+    float moved = clamp(abs(g.displacement) / reach, 0.0, 1.0);
+    float high = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
+    return u_giant_scatter_color * (u_giant_scatter.x * phase * moved * high * daylight *
+                                    giant_sun_irradiance());
+}
+
+// Foam over the water's colour: a white diffuse layer lit by the sun and
+// the sky above.
+vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value)
+{
+    float foam = giant_foam(g, ocean_value);
+    color += giant_scatter(g, ray) * (1.0 - foam);
+    vec3 light = sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
+                 vec3(giant_sun_irradiance() * max(dot(n, u_sun_dir), 0.0) / 3.1415927);
+    return mix(color, 0.85 * light, foam);
+}

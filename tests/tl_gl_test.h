@@ -1,0 +1,109 @@
+/* Helpers shared by the render tests: a headless renderer, the GPU height
+ * probe against the CPU mirror, one-pass renders. */
+#ifndef TL_GL_TEST_H
+#define TL_GL_TEST_H
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "gl/tl_gl_context.h"
+#include "gl/tl_renderer.h"
+#include "prepare/tl_prepare.h"
+#include "scene/tl_scene.h"
+#include "tl_test.h"
+#include "waves/tl_giant.h"
+#include "waves/tl_waves.h"
+
+/* A headless context and a renderer on the embedded shaders, or NULL. */
+static inline tl_renderer *gl_test_open(tl_gl_context **ctx)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_gl_context_create_headless(ctx, &err)) {
+        fprintf(stderr, "no GL context: %s\n", err.message);
+        return NULL;
+    }
+    printf("%s\n", tl_gl_context_describe(*ctx));
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    tl_renderer *r = NULL;
+    if (tl_renderer_create(&r, &lib, &err)) {
+        fprintf(stderr, "renderer: %s\n", err.message);
+        tl_gl_context_destroy(*ctx);
+        return NULL;
+    }
+    return r;
+}
+
+/* Max |GPU - CPU| of the surface height (ocean plus giant wave) over an
+ * n x n grid of points within half_extent of the camera. */
+static inline double probe_error(tl_renderer *r, const tl_scene *s, int octaves, double half_extent,
+                                 int n)
+{
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    tl_giant g;
+    tl_giant_prepare(&g, &s->giant, s->time);
+    tl_frame_uniforms u;
+    tl_prepare_frame(s, &w, &u);
+    float *xz = malloc(sizeof(float) * 2 * (size_t)(n * n));
+    float *gpu = malloc(sizeof(float) * (size_t)(n * n));
+    if (!xz || !gpu) {
+        free(xz);
+        free(gpu);
+        return INFINITY;
+    }
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            xz[(j * n + i) * 2 + 0] = (float)(-half_extent + 2.0 * half_extent * i / (n - 1));
+            xz[(j * n + i) * 2 + 1] = (float)(-half_extent + 2.0 * half_extent * j / (n - 1));
+        }
+    tl_error err;
+    tl_error_clear(&err);
+    double worst = INFINITY;
+    if (tl_renderer_probe_heights(r, &u, xz, n * n, octaves, gpu, &err)) {
+        fprintf(stderr, "probe failed: %s\n", err.message);
+    } else {
+        worst = 0.0;
+        for (int k = 0; k < n * n; k++) {
+            /* The CPU mirror takes absolute positions: the camera's plus the
+             * (exactly representable) float offset the GPU saw. */
+            double x = s->camera.position[0] + (double)xz[k * 2];
+            double z = s->camera.position[2] + (double)xz[k * 2 + 1];
+            double cpu = tl_waves_surface_height(&w, &g, x, z, s->time, octaves,
+                                                 s->quality.giant_iterations);
+            double d = fabs(cpu - (double)gpu[k]);
+            if (!(d <= worst))
+                worst = d;
+        }
+    }
+    free(xz);
+    free(gpu);
+    return worst;
+}
+
+static inline double luminance(const float *rgb)
+{
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+/* Renders `scene` in one pass into `f` (allocated here). */
+static inline int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
+{
+    tl_waves w;
+    tl_waves_init(&w, &scene->ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(scene, &w, &u);
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_frame_alloc(f, scene->width, scene->height, &err) == 0);
+    int rc = tl_renderer_render(r, &u, f, &err);
+    CHECK(rc == 0);
+    if (rc) {
+        fprintf(stderr, "render failed: %s\n", err.message);
+        tl_frame_free(f);
+    }
+    return rc;
+}
+
+#endif
