@@ -155,6 +155,34 @@ static void test_success(void)
     CHECK(dir_entries(dir) == 2); /* no temporary files left */
     CHECK(run(NULL, "still", "-v", "--size", "16x16", "-o", png, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "OpenGL");
+    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc\n");
+    /* A timeline's giant wave joins the feature set only while it is there. */
+    const char *tl = in_dir(2, "wave.tl");
+    FILE *f = fopen(tl, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs("tideline 1\nset giant.enabled on\nset giant.arrival 1s\nkey giant.fade\n  0s 0\n  "
+              "1s 1\n",
+              f);
+        fclose(f);
+    }
+    CHECK(run(NULL, "still", tl, "-v", "--time", "0", "--size", "16x16", "-o", png, NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc\n");
+    CHECK(run(NULL, "still", tl, "-v", "--time", "0.5", "--size", "16x16", "-o", png, NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, giant wave\n");
+    /* eval reports the wave and the water under the camera and the crest. */
+    CHECK(run(NULL, "eval", tl, "--at", "1s", NULL) == 0);
+    /* The crest reaches the centre at giant.arrival, at the deep-water
+     * speed of an 80 m wave, sqrt(9.81 * 80 / 2pi) = 11.1761 m/s. */
+    CHECK_STR_CONTAINS(out_text, ", 0 m past the centre, 11.1761 m/s\n");
+    const char *crest = strstr(out_text, "water under crest");
+    double height = 0.0;
+    CHECK(crest && sscanf(crest, "water under crest %lf m", &height) == 1);
+    CHECK(height > 11.0 && height < 13.0); /* 12 m crest on a 1 m ocean band */
+    CHECK_STR_CONTAINS(out_text, "water under camera");
+    CHECK(run(NULL, "eval", tl, "--at", "0s", "--json", NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "\"giant\": null, \"water\": {\"under_camera\": ");
+    unlink(tl);
     unlink(png);
     unlink(exr);
 }

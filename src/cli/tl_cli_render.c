@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +22,7 @@
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
 #include "movie/tl_movie.h"
+#include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "timeline/tl_parse.h"
 
@@ -53,7 +55,8 @@ static const char usage[] =
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  -q, --quiet            no progress display\n"
-    "  -v, --verbose          log the GL platform and renderer\n"
+    "  -v, --verbose          log the GL platform and renderer, and each frame's shader\n"
+    "                         features when they change (ocean, sun disc, giant wave)\n"
     "  -h, --help             show this help\n"
     "\n"
     "Exit status: 0 every requested frame exists, 1 failure, 2 usage error,\n"
@@ -254,6 +257,21 @@ static void progress_update(progress *p, long frame, const char *what)
     fflush(stderr);
 }
 
+/* A line of its own among the progress output (-v notes). On a terminal it
+ * clears the bar first; the next update redraws it. */
+static void progress_note(const progress *p, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+static void progress_note(const progress *p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fputs(p->tty ? "\r\033[K" : "", stderr);
+    fputs("tideline render: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+}
+
 /* 8-bit RGB rows for ffmpeg from the display plane (round to nearest). */
 static void display_to_rgb8(const tl_frame *f, uint8_t *rgb)
 {
@@ -377,6 +395,7 @@ int tl_cli_render(int argc, char **argv)
 
     progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, now_seconds(), 0.0, 0};
     size_t written = 0, skipped = 0;
+    unsigned last_features = 0;
     for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
         long n = frames.frames[i];
         if (o.pattern)
@@ -394,6 +413,12 @@ int tl_cli_render(int argc, char **argv)
         rc = tl_render_timeline_frame(render, &tl, n, &settings, &frame, &scene, &err);
         if (rc)
             break;
+        if (o.verbose && (i == 0 || tl_render_last_features(render) != last_features)) {
+            char words[256];
+            last_features = tl_render_last_features(render);
+            tl_feature_describe(last_features, words, sizeof words);
+            progress_note(&prog, "frame %ld: features: %s", n, words);
+        }
         if (stop_signal)
             break; /* discard the frame in flight */
         if (o.pattern)

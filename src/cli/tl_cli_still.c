@@ -8,6 +8,7 @@
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
 #include "image/tl_image_io.h"
+#include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "scene/tl_scene.h"
 #include "timeline/tl_parse.h"
@@ -269,9 +270,13 @@ int tl_cli_still(int argc, char **argv)
     if (!rc)
         rc = tl_render_frame(render, &scene, &frame, &err);
     double t2 = now_seconds();
-    if (!rc && o.verbose)
+    if (!rc && o.verbose) {
+        char features[256];
+        tl_feature_describe(tl_render_last_features(render), features, sizeof features);
         fprintf(stderr, "tideline still: %dx%d in %.1f ms (context and shaders %.1f ms)\n",
                 scene.width, scene.height, (t2 - t1) * 1e3, (t1 - t0) * 1e3);
+        fprintf(stderr, "tideline still: features: %s\n", features);
+    }
 
     const tl_camera *cam = &scene.camera;
     char camera_text[256];

@@ -15,6 +15,7 @@ struct tl_render {
     tl_waves waves;
     tl_ocean waves_ocean; /* the parameters `waves` was built from */
     int waves_valid;
+    unsigned last_features; /* of the last frame, over all its passes */
 };
 
 int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
@@ -41,6 +42,11 @@ void tl_render_close(tl_render *r)
     tl_renderer_destroy(r->renderer);
     tl_gl_context_destroy(r->context);
     free(r);
+}
+
+unsigned tl_render_last_features(const tl_render *r)
+{
+    return r->last_features;
 }
 
 const char *tl_render_describe(const tl_render *r)
@@ -77,6 +83,7 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
         return rc;
     tl_frame_uniforms u;
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
+    r->last_features = u.features;
     return tl_renderer_render(r->renderer, &u, frame, err);
 }
 
@@ -150,6 +157,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
      * of the shutter interval; depth comes from the one nearest t. */
     int depth_sample = 0;
     double best = INFINITY;
+    r->last_features = 0;
     for (int k = 0; k < samples; k++) {
         double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
         if (fabs(tk - t) < best) {
@@ -170,6 +178,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         tl_frame_uniforms u;
         tl_prepare_frame(&sub, waves_for(r, &sub.ocean), &u);
         u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
+        r->last_features |= u.features;
         rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
     if (!rc)

@@ -24,6 +24,10 @@ void tl_render_close(tl_render *r);
 /* "EGL surfaceless: llvmpipe (...), OpenGL 4.5 (Core Profile) ..." */
 const char *tl_render_describe(const tl_render *r);
 
+/* The shader features (tl_feature bits) of the last frame rendered: the
+ * union over its passes. tl_feature_describe turns them into words. */
+unsigned tl_render_last_features(const tl_render *r);
+
 /* Renders `scene` into `frame`, (re)allocating it to the scene's size. */
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err);
 
