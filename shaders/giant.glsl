@@ -16,12 +16,14 @@ uniform vec4 u_giant_foam;   // (Jacobian where foam starts, trail metres, amoun
 uniform vec4 u_giant_scatter;     // (strength, forward g, backward g, unused)
 uniform vec3 u_giant_scatter_color;
 uniform int u_giant_iterations;
+uniform vec2 u_giant_world; // the crest's world (s, w), wrapped every 65536 m
 uniform float u_giant_slope[TL_GIANT_SLOPE_BINS]; // slope bound per bin of s
 
 struct GiantSample {
     float height;       // metres added to the ocean
     vec2 grad;          // d height / d (x, z)
     float s0;           // undisplaced position along (0 = the crest)
+    float w;            // position across, from the centre line
     float lambda;       // fade × width mask
     float jacobian;     // 1 + lambda·D'(s0): below 1 the surface is compressed
     float displacement; // lambda·D(s0), metres along the travel direction
@@ -82,9 +84,10 @@ vec2 giant_coords(vec2 p)
 
 GiantSample giant_sample(vec2 p)
 {
-    GiantSample g = GiantSample(0.0, vec2(0.0), 0.0, 0.0, 1.0, 0.0);
+    GiantSample g = GiantSample(0.0, vec2(0.0), 0.0, 0.0, 0.0, 1.0, 0.0);
     vec2 sw = giant_coords(p);
     g.s0 = sw.x;
+    g.w = sw.y;
     if (abs(sw.x) >= u_giant_bounds.x || abs(sw.y) >= u_giant_mask.z)
         return g;
     float ds;
@@ -163,17 +166,71 @@ float giant_sun_irradiance()
 #endif
 }
 
-// Foam where the surface is compressed, and a trail behind a breaking
-// crest that fades with distance; broken up by the ocean's own crests
-// (ocean_value in (0, 1]). A function of this frame's wave only.
-float giant_foam(GiantSample g, float ocean_value)
+// Smooth value noise in [0, 1] from an integer hash (the same on every
+// GPU, unlike sin-based hashes).
+float giant_hash(ivec2 c)
 {
+    uint h = uint(c.x) * 0x8da6b343u ^ uint(c.y) * 0xd8163841u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    return float(h & 0xffffu) / 65535.0;
+}
+
+float giant_noise(vec2 p)
+{
+    vec2 i = floor(p), f = p - i;
+    f = f * f * (3.0 - 2.0 * f);
+    ivec2 c = ivec2(i);
+    float a = giant_hash(c), b = giant_hash(c + ivec2(1, 0));
+    float d = giant_hash(c + ivec2(0, 1)), e = giant_hash(c + ivec2(1, 1));
+    return mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
+}
+
+// Four octaves of value noise, each turned and shifted so no grid shows;
+// p in metres, the coarsest cell 4 m.
+float giant_lace(vec2 p)
+{
+    const mat2 turn = mat2(0.8, 0.6, -0.6, 0.8);
+    float sum = 0.0, amp = 0.5;
+    p *= 0.25;
+    for (int i = 0; i < 4; i++) {
+        sum += amp * giant_noise(p);
+        p = turn * p * 2.03 + vec2(11.7, 3.1);
+        amp *= 0.5;
+    }
+    return sum / 0.9375;
+}
+
+// Foam of a breaking crest, a function of this frame's wave only. Where
+// foam can be (its coverage): whitewater capping the crest and where the
+// surface compresses, streaks running down the face, and a trail behind
+// the crest that fades with distance; u_giant_foam.w (how far the crest
+// breaks) scales all but compression. A lacy texture then keeps the part
+// of it that its coverage allows. The cap and streaks ride with the crest;
+// the trail's texture stays where the crest left it (world coordinates,
+// wrapped every 65536 m on the CPU).
+float giant_foam(GiantSample g, float ocean_value, out float thickness)
+{
+    float breaking = u_giant_foam.w;
+    float top = g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3);
     float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
+    float cap = smoothstep(0.9, 1.0, top) * breaking;
+    float streaks = giant_noise(vec2(g.w / 2.0, g.s0 / 16.0));
+    float face = smoothstep(0.5, 0.8, streaks) * smoothstep(0.3, 0.7, top) *
+                 smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x) * breaking;
     float behind = max(-g.s0, 0.0);
-    float trail = u_giant_foam.w * g.lambda * exp(-behind / max(u_giant_foam.y, 1.0e-3)) *
+    float trail = breaking * exp(-behind / max(u_giant_foam.y, 1.0e-3)) *
                   smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
-    float foam = clamp((compressed * g.lambda + trail) * u_giant_foam.z, 0.0, 1.0);
-    return foam * smoothstep(0.15, 0.75, ocean_value + 0.5 * compressed);
+    float coverage = max(max(compressed, cap), face) * g.lambda;
+    vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));
+    float lace = 0.75 * giant_lace(at) + 0.25 * ocean_value;
+    thickness = lace;
+    float texture_trail = smoothstep(0.55, 0.75, lace);
+    coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
+    // Even full coverage leaves holes where the lace is thinnest.
+    float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
+    return max(foam, texture_trail * trail * g.lambda * u_giant_foam.z);
 }
 
 float giant_hg(float mu, float g)
@@ -183,27 +240,37 @@ float giant_hg(float mu, float g)
 }
 
 // Light through the thin, displaced crest (seed 003's subsurface term):
-// strongest where the surface moved furthest and stands highest, shaped by
-// a two-lobe phase function of the angle between view and sun.
+// strongest in the upper part of the wave where the surface moved
+// furthest, shaped by a two-lobe phase function of the angle between view
+// and sun.
 vec3 giant_scatter(GiantSample g, vec3 ray)
 {
     float mu = dot(ray, u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);
-    float moved = clamp(abs(g.displacement) / reach, 0.0, 1.0);
-    float high = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    float moved = sqrt(clamp(abs(g.displacement) / reach, 0.0, 1.0));
+    float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    float thin = smoothstep(0.35, 0.95, top);
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
-    return u_giant_scatter_color * (u_giant_scatter.x * phase * moved * high * daylight *
-                                    giant_sun_irradiance());
+    return u_giant_scatter_color *
+           (u_giant_scatter.x * phase * moved * thin * daylight * giant_sun_irradiance());
 }
 
-// Foam over the water's colour: a white diffuse layer lit by the sun and
-// the sky above.
+// Foam over the water's colour: a white diffuse layer lit by the sky (the
+// mean of the zenith and three directions 15 deg up) and the sun, with a
+// wrapped term for light through the foam. The sky terms are the cheap
+// atmosphere's; a physical sky will give its irradiance here.
 vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value)
 {
-    float foam = giant_foam(g, ocean_value);
+    float thickness;
+    float foam = giant_foam(g, ocean_value, thickness);
     color += giant_scatter(g, ray) * (1.0 - foam);
-    vec3 light = sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
-                 vec3(giant_sun_irradiance() * max(dot(n, u_sun_dir), 0.0) / 3.1415927);
-    return mix(color, 0.85 * light, foam);
+    vec3 sky = sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
+               sky_atmosphere(vec3(0.0, 0.259, 0.966), u_sun_dir) +
+               sky_atmosphere(vec3(0.837, 0.259, -0.483), u_sun_dir) +
+               sky_atmosphere(vec3(-0.837, 0.259, -0.483), u_sun_dir);
+    float sun = giant_sun_irradiance() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
+    // Thin foam lets the water through and looks greyer than thick foam.
+    float albedo = 0.85 * (0.55 + 0.45 * thickness);
+    return mix(color, albedo * (0.25 * sky + vec3(sun)), foam);
 }

@@ -263,6 +263,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform3fv(loc(p, "u_giant_scatter_color"), 1, u->giant_scatter_color);
         glUniform1i(loc(p, "u_giant_iterations"), u->giant_iterations);
         glUniform1fv(loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
+        glUniform2fv(loc(p, "u_giant_world"), 1, u->giant_world);
     }
 }
 

@@ -96,6 +96,12 @@ static void prepare_giant(const tl_scene *s, tl_frame_uniforms *u)
     u->giant_iterations = s->quality.giant_iterations;
     for (int i = 0; i < TL_GIANT_SLOPE_BINS; i++)
         u->giant_slope[i] = (float)g.slope_bin[i];
+    /* World-fixed texture coordinates for foam left behind, reduced in
+     * double so the GPU sees small numbers wherever the wave is. */
+    double along = g.dir[0] * g.origin[0] + g.dir[1] * g.origin[1];
+    double across = g.across[0] * g.origin[0] + g.across[1] * g.origin[1];
+    u->giant_world[0] = (float)(along - 65536.0 * floor(along / 65536.0));
+    u->giant_world[1] = (float)(across - 65536.0 * floor(across / 65536.0));
 }
 
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)

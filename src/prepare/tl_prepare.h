@@ -74,6 +74,7 @@ typedef struct tl_frame_uniforms {
     float giant_frame[4], giant_shape[4], giant_mask[4], giant_bounds[4];
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
+    float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */
     int giant_iterations;
 } tl_frame_uniforms;
 

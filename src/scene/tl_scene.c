@@ -71,7 +71,7 @@ void tl_scene_defaults(tl_scene *s)
     s->giant.steepness = 0.6;
     s->giant.curve_strength = 0.3;
     s->giant.fade = 1.0;
-    s->giant.foam_compression = 0.6;
+    s->giant.foam_compression = 0.35;
     s->giant.foam_trail = 40.0;
     s->giant.scatter = 1.0;
     s->giant.scatter_forward = 0.6;
