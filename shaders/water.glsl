@@ -37,9 +37,12 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
     vec3 reflection = sky_color(r);
-    // Thicker water in the troughs scatters more blue-green light.
+    // Thicker water in the troughs scatters more blue-green light. Clamp:
+    // the depth fraction is held in [0, 1], so a march that stopped off the
+    // surface (out of steps, or a camera under the water) cannot make the
+    // term negative.
     vec3 scattering = u_scatter_color * u_scatter_strength *
-                      (u_scatter_base + (ocean_y + u_depth) / u_depth);
+                      (u_scatter_base + clamp((ocean_y + u_depth) / u_depth, 0.0, 1.0));
     vec3 color = fresnel * reflection + scattering;
 #ifdef TL_FEATURE_GIANT_WAVE
     color = giant_shade(color, ray, n, giant, value);

@@ -250,6 +250,42 @@ static void test_hits_on_surface(tl_renderer *r)
     }
 }
 
+/* Every extreme the channels allow renders finite, non-negative pixels in
+ * bounded time (the march's step budget holds whatever the slope). */
+static void test_extremes(tl_renderer *r)
+{
+    const double cases[][6] = {
+        /* height, wavelength, width, falloff, steepness, curl */
+        {1000.0, 80.0, 120.0, 30.0, 1.0, 1.0},   {1000.0, 0.01, 0.01, 0.0, 1.0, 1.0},
+        {0.001, 1e5, 1e5, 1e5, 1.0, 1.0},        {40.0, 10.0, 1e5, 0.0, 1.0, 1.0},
+        {12.0, 1e5, 0.01, 1e5, 0.0, 0.0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        tl_scene s;
+        facing_scene(&s);
+        s.width = 64;
+        s.height = 40;
+        s.giant.height = cases[i][0];
+        s.giant.wavelength = cases[i][1];
+        s.giant.width = cases[i][2];
+        s.giant.falloff = cases[i][3];
+        s.giant.steepness = cases[i][4];
+        s.giant.curve_strength = cases[i][5];
+        tl_frame f;
+        if (render(r, &s, &f))
+            return;
+        int ok = 1;
+        for (size_t k = 0; k < (size_t)s.width * s.height * 4; k++)
+            ok &= isfinite(f.color[k]) && f.color[k] >= 0.0f;
+        for (size_t k = 0; k < (size_t)s.width * s.height; k++)
+            ok &= isfinite(f.depth[k]) && f.depth[k] >= 0.0f;
+        if (!ok)
+            printf("extreme case %zu: non-finite or negative pixels\n", i);
+        CHECK(ok);
+        tl_frame_free(&f);
+    }
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -260,6 +296,7 @@ int main(void)
     test_fade_zero(r);
     test_wave_in_view(r);
     test_hits_on_surface(r);
+    test_extremes(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();
