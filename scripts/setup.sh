@@ -14,6 +14,7 @@ packages=(
   libopenexr-dev                   # OpenEXR 3 C API (OpenEXRCore)
   libpng-dev                       # PNG output
   libglfw3-dev                     # windows (the live preview)
+  libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
 )
 

@@ -1,0 +1,1 @@
+set(TL_MESH_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_mesh.c ${CMAKE_CURRENT_LIST_DIR}/tl_mesh_boat.c)

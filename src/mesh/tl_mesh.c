@@ -1,0 +1,204 @@
+#include "tl_mesh.h"
+
+#include <assimp/cimport.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+static int grow(void **array, size_t *capacity, size_t needed, size_t item)
+{
+    if (needed <= *capacity)
+        return 1;
+    size_t cap = *capacity ? *capacity : 256;
+    while (cap < needed)
+        cap *= 2;
+    void *p = realloc(*array, cap * item);
+    if (!p)
+        return 0;
+    *array = p;
+    *capacity = cap;
+    return 1;
+}
+
+uint32_t tl_mesh_add_vertex(tl_mesh_builder *b, const float p[3], const float n[3],
+                            const float rgb[3])
+{
+    tl_mesh *m = &b->mesh;
+    size_t need = m->vertex_count + 1, cap = b->vertex_capacity;
+    if (b->failed || m->vertex_count >= UINT32_MAX ||
+        !grow((void **)&m->positions, &cap, need, 3 * sizeof(float))) {
+        b->failed = 1;
+        return 0;
+    }
+    cap = b->vertex_capacity;
+    if (!grow((void **)&m->normals, &cap, need, 3 * sizeof(float))) {
+        b->failed = 1;
+        return 0;
+    }
+    cap = b->vertex_capacity;
+    if (!grow((void **)&m->colors, &cap, need, 3 * sizeof(float))) {
+        b->failed = 1;
+        return 0;
+    }
+    b->vertex_capacity = cap;
+    memcpy(m->positions + 3 * m->vertex_count, p, 3 * sizeof(float));
+    memcpy(m->normals + 3 * m->vertex_count, n, 3 * sizeof(float));
+    memcpy(m->colors + 3 * m->vertex_count, rgb, 3 * sizeof(float));
+    return (uint32_t)m->vertex_count++;
+}
+
+void tl_mesh_add_triangle(tl_mesh_builder *b, uint32_t i0, uint32_t i1, uint32_t i2)
+{
+    tl_mesh *m = &b->mesh;
+    if (b->failed ||
+        !grow((void **)&m->indices, &b->index_capacity, m->index_count + 3, sizeof(uint32_t))) {
+        b->failed = 1;
+        return;
+    }
+    m->indices[m->index_count++] = i0;
+    m->indices[m->index_count++] = i1;
+    m->indices[m->index_count++] = i2;
+}
+
+int tl_mesh_builder_finish(tl_mesh_builder *b, tl_mesh *out, tl_error *err)
+{
+    tl_mesh *m = &b->mesh;
+    if (b->failed) {
+        tl_mesh_free(m);
+        memset(b, 0, sizeof *b);
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory building a mesh");
+    }
+    for (int c = 0; c < 3; c++) {
+        m->bounds_min[c] = FLT_MAX;
+        m->bounds_max[c] = -FLT_MAX;
+    }
+    for (size_t i = 0; i < m->vertex_count; i++)
+        for (int c = 0; c < 3; c++) {
+            float v = m->positions[3 * i + c];
+            m->bounds_min[c] = v < m->bounds_min[c] ? v : m->bounds_min[c];
+            m->bounds_max[c] = v > m->bounds_max[c] ? v : m->bounds_max[c];
+        }
+    *out = *m;
+    memset(b, 0, sizeof *b);
+    return TL_OK;
+}
+
+void tl_mesh_free(tl_mesh *m)
+{
+    if (!m)
+        return;
+    free(m->positions);
+    free(m->normals);
+    free(m->colors);
+    free(m->indices);
+    memset(m, 0, sizeof *m);
+}
+
+/* The material's base colour: glTF's base colour factor, else the diffuse
+ * colour (OBJ's Kd), else light grey. */
+static void material_color(const struct aiScene *scene, unsigned index, float rgb[3])
+{
+    rgb[0] = rgb[1] = rgb[2] = 0.7f;
+    if (index >= scene->mNumMaterials)
+        return;
+    const struct aiMaterial *mat = scene->mMaterials[index];
+    struct aiColor4D c;
+    if (aiGetMaterialColor(mat, AI_MATKEY_BASE_COLOR, &c) == aiReturn_SUCCESS ||
+        aiGetMaterialColor(mat, AI_MATKEY_COLOR_DIFFUSE, &c) == aiReturn_SUCCESS) {
+        rgb[0] = c.r < 0.0f ? 0.0f : c.r;
+        rgb[1] = c.g < 0.0f ? 0.0f : c.g;
+        rgb[2] = c.b < 0.0f ? 0.0f : c.b;
+    }
+}
+
+static int known_format(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    const char *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return 0;
+    return !strcasecmp(dot, ".glb") || !strcasecmp(dot, ".gltf") || !strcasecmp(dot, ".obj");
+}
+
+int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
+{
+    memset(out, 0, sizeof *out);
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: no such file", path);
+    if (S_ISDIR(st.st_mode))
+        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: is a folder, not a file", path);
+    if (!known_format(path))
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "boat model %s: unknown format (use .glb, .gltf or .obj)", path);
+    if (st.st_size == 0)
+        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: the file is empty", path);
+
+    /* Triangles only (points and lines dropped), one flat list of meshes
+     * with their node transforms applied. */
+    const struct aiScene *scene =
+        aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                               aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
+                               aiProcess_SortByPType | aiProcess_FindInvalidData);
+    if (!scene) {
+        const char *why = aiGetErrorString();
+        /* assimp's messages can run over several lines: keep the first. */
+        char first[256];
+        snprintf(first, sizeof first, "%s", why && *why ? why : "unreadable");
+        first[strcspn(first, "\r\n")] = '\0';
+        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: cannot be read: %s", path, first);
+    }
+    tl_mesh_builder b = {0};
+    for (unsigned i = 0; i < scene->mNumMeshes; i++) {
+        const struct aiMesh *m = scene->mMeshes[i];
+        if (!(m->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !m->mNormals)
+            continue;
+        float rgb[3];
+        material_color(scene, m->mMaterialIndex, rgb);
+        uint32_t base = (uint32_t)b.mesh.vertex_count;
+        for (unsigned v = 0; v < m->mNumVertices; v++) {
+            const float p[3] = {m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z};
+            const float n[3] = {m->mNormals[v].x, m->mNormals[v].y, m->mNormals[v].z};
+            tl_mesh_add_vertex(&b, p, n, rgb);
+        }
+        for (unsigned f = 0; f < m->mNumFaces; f++) {
+            const struct aiFace *face = &m->mFaces[f];
+            if (face->mNumIndices == 3)
+                tl_mesh_add_triangle(&b, base + face->mIndices[0], base + face->mIndices[1],
+                                     base + face->mIndices[2]);
+        }
+    }
+    aiReleaseImport(scene);
+    if (!b.failed && b.mesh.index_count == 0) {
+        tl_mesh_free(&b.mesh);
+        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: has no triangles", path);
+    }
+    int rc = tl_mesh_builder_finish(&b, out, err);
+    if (rc)
+        return rc;
+    for (size_t i = 0; i < out->vertex_count; i++) {
+        float *p = out->positions + 3 * i, *n = out->normals + 3 * i;
+        if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2])) {
+            tl_mesh_free(out);
+            return tl_error_set(err, TL_ERR_USAGE, "boat model %s: has non-finite vertices",
+                                path);
+        }
+        /* Degenerate triangles leave no normal: point it up. */
+        float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (!(len > 1e-12f) || !isfinite(len)) {
+            n[0] = n[2] = 0.0f;
+            n[1] = 1.0f;
+        } else {
+            for (int c = 0; c < 3; c++)
+                n[c] /= len;
+        }
+    }
+    return TL_OK;
+}
