@@ -11,10 +11,14 @@ int tl_cli_render(int argc, char **argv);
 int tl_cli_check(int argc, char **argv);
 int tl_cli_eval(int argc, char **argv);
 
-/* Parses a timeline file, printing every diagnostic; returns the exit
- * status (0, or 1 when the file is invalid or unreadable). */
+/* Parses a timeline file, printing every diagnostic, and loads its boat's
+ * mesh (the timeline's model, or the built-in boat) into *boat, or only
+ * checks it when boat is NULL. Returns the exit status (0, or 1 when the
+ * file or its model is invalid or unreadable; the timeline is then freed). */
 struct tl_timeline;
-int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl);
+struct tl_mesh;
+int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl,
+                         struct tl_mesh *boat);
 
 /* Prints err as one line (with file:line:col when it has one). */
 void tl_cli_print_error(const char *command, const tl_error *err);

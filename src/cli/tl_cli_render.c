@@ -325,7 +325,7 @@ int tl_cli_render(int argc, char **argv)
         return 2;
     }
     tl_timeline tl;
-    if (tl_cli_load_timeline("render", o.timeline, &tl))
+    if (tl_cli_load_timeline("render", o.timeline, &tl, NULL))
         return 1;
 
     tl_render_settings settings = {o.width, o.height,  o.has_quality ? &o.quality : NULL,

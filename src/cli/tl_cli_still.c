@@ -170,7 +170,7 @@ static int build_scene(still_options *o, tl_scene *scene, tl_error *err)
     tl_timeline tl;
     int have_timeline = 0;
     if (o->timeline) {
-        if (tl_cli_load_timeline("still", o->timeline, &tl))
+        if (tl_cli_load_timeline("still", o->timeline, &tl, NULL))
             return -1; /* diagnostics already printed */
         have_timeline = 1;
         fps = tl.fps;

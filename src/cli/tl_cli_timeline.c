@@ -7,6 +7,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "mesh/tl_mesh.h"
 #include "timeline/tl_parse.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
@@ -40,19 +41,42 @@ static const char eval_usage[] =
     "                 \"giant\", \"water\"}]}\n"
     "  -h, --help     show this help\n";
 
-/* Loads a timeline, printing its diagnostics; returns the exit status. */
-int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl)
+/* Loads a timeline, printing its diagnostics, and its boat's mesh; returns
+ * the exit status. */
+int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_mesh *boat)
 {
     tl_diags diags;
     tl_error err;
     tl_error_clear(&err);
-    if (tl_timeline_parse_file(path, tl, &diags, &err) == TL_OK)
+    if (boat)
+        memset(boat, 0, sizeof *boat);
+    if (tl_timeline_parse_file(path, tl, &diags, &err) != TL_OK) {
+        if (diags.count)
+            tl_diags_write(&diags, stderr);
+        else
+            tl_cli_print_error(command, &err);
+        return 1;
+    }
+    if (!tl->boat_path.present)
         return 0;
-    if (diags.count)
-        tl_diags_write(&diags, stderr);
-    else
+    tl_mesh mesh;
+    int rc = tl->boat_model[0] ? tl_mesh_load(tl->boat_model, &mesh, &err)
+                               : tl_mesh_default_boat(&mesh, &err);
+    if (rc) {
+        /* At the line that named the model, the message naming the file. */
+        if (tl->boat_model_line)
+            tl_error_set_at(&err, err.status, path, tl->boat_model_line, tl->boat_model_column,
+                            "%s", err.message);
         tl_cli_print_error(command, &err);
-    return 1;
+        tl_timeline_free(tl);
+        return 1;
+    }
+    tl_timeline_set_boat_bounds(tl, mesh.bounds_min, mesh.bounds_max);
+    if (boat)
+        *boat = mesh;
+    else
+        tl_mesh_free(&mesh);
+    return 0;
 }
 
 static void list_tracks(const tl_timeline *tl, tl_track_state state, const char *label)
@@ -94,7 +118,7 @@ int tl_cli_check(int argc, char **argv)
         return 2;
     }
     tl_timeline tl;
-    int rc = tl_cli_load_timeline("check", file, &tl);
+    int rc = tl_cli_load_timeline("check", file, &tl, NULL);
     if (rc)
         return rc;
     printf("%s: ok\n", file);
@@ -239,9 +263,12 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame)
                 printf(" %.9g", shown(ch, v[c]));
         printf("%s\n", unit_suffix(ch->unit));
     }
-    if (s.boat.enabled)
+    if (s.boat.enabled) {
         printf("  %-26s %.9g %.9g %.9g m\n", "boat.position", s.boat.position[0],
                s.boat.position[1], s.boat.position[2]);
+        printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", "boat pose",
+               s.boat.pitch / DEG, s.boat.roll / DEG, s.boat.length, s.boat.beam);
+    }
     print_report_text(&s);
 }
 
@@ -275,8 +302,10 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
     }
     printf("}, \"boat\": ");
     if (s.boat.enabled)
-        printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g}", s.boat.position[0],
-               s.boat.position[1], s.boat.position[2], s.boat.heading / DEG);
+        printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g, \"pitch\": %.17g, "
+               "\"roll\": %.17g, \"length\": %.17g, \"beam\": %.17g}",
+               s.boat.position[0], s.boat.position[1], s.boat.position[2], s.boat.heading / DEG,
+               s.boat.pitch / DEG, s.boat.roll / DEG, s.boat.length, s.boat.beam);
     else
         printf("null");
     print_report_json(&s);
@@ -341,7 +370,7 @@ int tl_cli_eval(int argc, char **argv)
         return 2;
     }
     tl_timeline tl;
-    rc = tl_cli_load_timeline("eval", file, &tl);
+    rc = tl_cli_load_timeline("eval", file, &tl, NULL);
     if (rc)
         return rc;
     double t = 0.0;

@@ -82,6 +82,17 @@ void tl_scene_defaults(tl_scene *s)
 
     s->boat.enabled = false;
     s->boat.size = 8.0;
+    s->boat.model_yaw = 0.0;
+    s->boat.model_scale = 1.0;
+    s->boat.float_time = 0.3;
+    s->boat.scale = 8.0;
+    const double lo[3] = TL_BOAT_BUILTIN_MIN, hi[3] = TL_BOAT_BUILTIN_MAX;
+    for (int i = 0; i < 3; i++) {
+        s->boat.model_min[i] = lo[i];
+        s->boat.model_max[i] = hi[i];
+    }
+    s->boat.length = 8.0;
+    s->boat.beam = 8.0 * TL_BOAT_BEAM_RATIO;
     s->quality = tl_quality_default();
 }
 

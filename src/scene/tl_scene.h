@@ -97,11 +97,32 @@ typedef struct tl_giant_wave {
     double scatter_color[3]; /* linear RGB of that light */
 } tl_giant_wave;
 
+/* Bounds of the built-in boat in model units (src/mesh/tl_mesh_boat.c;
+ * test_mesh checks them): one unit long, waterline at y = 0. */
+#define TL_BOAT_BUILTIN_MIN                                                                        \
+    {                                                                                              \
+        -0.17, -0.1, -0.5                                                                          \
+    }
+#define TL_BOAT_BUILTIN_MAX                                                                        \
+    {                                                                                              \
+        0.17, 0.5012, 0.5                                                                          \
+    }
+#define TL_BOAT_BEAM_RATIO 0.34
+
+/* The boat's pose and the knobs of its model and floating. */
 typedef struct tl_boat {
-    bool enabled;     /* true when the timeline has a boat path */
-    double position[3]; /* world metres; y follows the water */
-    double heading;   /* compass radians, from the path tangent */
-    double size;      /* hull length, metres */
+    bool enabled;       /* true when the timeline has a boat path */
+    double position[3]; /* world metres; y: the model's waterline, floating */
+    double heading;     /* compass radians, from the path tangent */
+    double pitch, roll; /* radians from floating: bow up, starboard down positive */
+    double size;        /* hull length of the built-in boat, metres */
+    double model_yaw;   /* turns a model whose bow is not along +Z */
+    double model_scale; /* metres per model unit of a loaded model */
+    double float_time;  /* response time of the floating spring, seconds */
+    /* Derived by evaluation from the model: */
+    double scale;                      /* metres per model unit */
+    double model_min[3], model_max[3]; /* the model's bounds, model units */
+    double length, beam;               /* hull length and beam, metres */
 } tl_boat;
 
 typedef struct tl_scene {

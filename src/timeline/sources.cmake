@@ -5,4 +5,5 @@ set(TL_TIMELINE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_path.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_channels.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_timeline.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_float.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse.c)

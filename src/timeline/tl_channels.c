@@ -117,7 +117,13 @@ static const tl_channel channels[] = {
 
     REAL("boat.heading", 1, TL_UNIT_ANGLE, -BIG, BIG, boat.heading,
          "compass heading (from the path tangent unless set or keyed)"),
-    REAL("boat.size", 1, TL_UNIT_LENGTH, 0.1, 1e3, boat.size, "hull length"),
+    REAL("boat.size", 1, TL_UNIT_LENGTH, 0.1, 1e3, boat.size, "hull length of the built-in boat"),
+    REAL("boat.model_yaw", 1, TL_UNIT_ANGLE, -BIG, BIG, boat.model_yaw,
+         "turns a model whose bow does not point along +Z"),
+    REAL("boat.model_scale", 1, TL_UNIT_NONE, 1e-6, 1e6, boat.model_scale,
+         "metres per unit of a loaded model"),
+    REAL("boat.float_time", 1, TL_UNIT_TIME, 0.01, 10.0, boat.float_time,
+         "response time of the floating spring (smaller follows the waves closer)"),
 
     {"quality.march_octaves", TL_CH_INT, 1, TL_UNIT_NONE, 1, TL_MAX_OCTAVES, false,
      offsetof(tl_scene, quality.march_octaves), NULL, "wave octaves while marching"},

@@ -574,10 +574,40 @@ static tl_track *claim_track(parser *p, const tl_channel *ch, const token *t)
     return tr;
 }
 
+/* `set boat.model PATH`: one word, relative to the timeline's folder. The
+ * file is loaded by the commands that need it (check, eval, still,
+ * render), which report its errors at this line. */
+static void set_boat_model(parser *p, token *tok, int n)
+{
+    if (n != 3) {
+        ERR_AT(&tok[n - 1], "boat.model takes one path (no spaces), found %d words", n - 2);
+        return;
+    }
+    tl_timeline *tl = p->tl;
+    if (tl->boat_model_line) {
+        ERR_AT(&tok[1], "boat.model is already set on line %d", tl->boat_model_line);
+        return;
+    }
+    const char *slash = strrchr(p->name, '/');
+    int dir_len = tok[2].s[0] == '/' || !slash ? 0 : (int)(slash - p->name) + 1;
+    int len = snprintf(tl->boat_model, sizeof tl->boat_model, "%.*s%s", dir_len, p->name, tok[2].s);
+    if (len < 0 || (size_t)len >= sizeof tl->boat_model) {
+        tl->boat_model[0] = '\0';
+        ERR_AT(&tok[2], "boat.model: the path is too long");
+        return;
+    }
+    tl->boat_model_line = p->line_no;
+    tl->boat_model_column = tok[2].col;
+}
+
 static void dir_set(parser *p, token *tok, int n)
 {
     if (expect_args(p, tok, n, 2, MAX_TOKENS, "a channel and its value"))
         return;
+    if (strcmp(tok[1].s, "boat.model") == 0) {
+        set_boat_model(p, tok, n);
+        return;
+    }
     const tl_channel *ch = lookup_channel(p, &tok[1]);
     if (!ch)
         return;
@@ -1023,6 +1053,9 @@ static void check_links(parser *p)
         if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present)
             diag_at_line(p, needs_boat[i]->line, NULL, "%s",
                          "this refers to the boat, but the timeline has no 'path boat'");
+    if (tl->boat_model_line && !tl->boat_path.present)
+        diag_at_line(p, tl->boat_model_line, NULL, "%s",
+                     "boat.model names the boat's mesh, but the timeline has no 'path boat'");
 }
 
 int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl_timeline *out,

@@ -4,8 +4,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "waves/tl_waves.h"
-
 int tl_timeline_init(tl_timeline *tl, tl_error *err)
 {
     memset(tl, 0, sizeof *tl);
@@ -67,7 +65,8 @@ static void add3(double out[3], const double a[3], const double b[3])
         out[i] = a[i] + b[i];
 }
 
-void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
+/* The scene at t; floating (the costly part) only when asked. */
+static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_boat)
 {
     tl_scene_defaults(s);
     s->time = t;
@@ -90,15 +89,29 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
         tl_channel_set(ch, s, v);
     }
 
+    /* The hull's size: the model's bounds (the built-in boat's until a
+     * loader says otherwise), in metres. */
+    tl_boat *b = &s->boat;
+    if (tl->boat_bounds_known)
+        for (int i = 0; i < 3; i++) {
+            b->model_min[i] = tl->boat_model_min[i];
+            b->model_max[i] = tl->boat_model_max[i];
+        }
+    b->scale = tl->boat_model[0] ? b->model_scale : b->size;
+    double ex = b->model_max[0] - b->model_min[0], ez = b->model_max[2] - b->model_min[2];
+    double c = fabs(cos(b->model_yaw)), sn = fabs(sin(b->model_yaw));
+    b->length = (c * ez + sn * ex) * b->scale; /* model_yaw turns the model */
+    b->beam = (c * ex + sn * ez) * b->scale;
+
     /* The boat rides the path; the giant wave may follow it. */
+    bool heading_from_path = track_of(tl, "boat.heading")->state == TL_TRACK_DEFAULT;
     if (tl->boat_path.present) {
         double p[3], tangent[3];
         tl_path_eval(&tl->boat_path.path, t, p, tangent);
         s->boat.enabled = true;
         s->boat.position[0] = p[0];
         s->boat.position[2] = p[2];
-        const tl_track *heading = track_of(tl, "boat.heading");
-        if (heading->state == TL_TRACK_DEFAULT && (tangent[0] != 0.0 || tangent[2] != 0.0))
+        if (heading_from_path && (tangent[0] != 0.0 || tangent[2] != 0.0))
             s->boat.heading = atan2(tangent[0], tangent[2]);
     }
 
@@ -109,15 +122,8 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
         s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
     }
     /* ... and floats on the waves, the giant one included. */
-    if (s->boat.enabled) {
-        tl_waves waves;
-        tl_waves_init(&waves, &s->ocean);
-        tl_giant giant;
-        tl_giant_prepare(&giant, &s->giant, t);
-        s->boat.position[1] =
-            tl_waves_surface_height(&waves, &giant, s->boat.position[0], s->boat.position[2], t,
-                                    s->quality.march_octaves, s->quality.giant_iterations);
-    }
+    if (s->boat.enabled && float_boat)
+        tl_timeline_float_boat(tl, t, heading_from_path, s);
     if (tl->camera_follow.target == TL_TARGET_BOAT)
         add3(s->camera.position, s->boat.position, tl->camera_follow.offset);
     /* Paths (a Catmull-Rom curve may overshoot its points) and links (boat +
@@ -141,6 +147,11 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
         /* A target on the camera keeps the previous orientation (no flip). */
         tl_scene_camera_look_at(&s->camera, target, NULL);
     }
+}
+
+void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
+{
+    eval_scene(tl, t, s, true);
 }
 
 bool tl_timeline_has_cut_between(const tl_timeline *tl, double t0, double t1)
@@ -169,7 +180,7 @@ void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *f)
         double t = samples == frames ? tl_timeline_frame_time(tl, i)
                                      : tl->duration * (double)i / (double)(samples - 1);
         tl_scene s;
-        tl_timeline_eval(tl, t, &s);
+        eval_scene(tl, t, &s, false); /* the features do not depend on the boat's pose */
         f->boat |= s.boat.enabled;
         f->giant_wave |= s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
         f->fog |= s.fog.density > 0.0;

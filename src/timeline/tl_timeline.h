@@ -53,7 +53,24 @@ typedef struct tl_timeline {
     tl_link camera_look;
     tl_link camera_follow;
     tl_link giant_follow;
+    /* `set boat.model PATH`: the file, resolved against the timeline's
+     * folder ("" = the built-in boat), and where it was named. */
+    char boat_model[1024];
+    int boat_model_line, boat_model_column;
+    /* The loaded model's bounds in model units, set by whoever loads it
+     * (tl_timeline_set_boat_bounds); until then the built-in boat's. */
+    bool boat_bounds_known;
+    double boat_model_min[3], boat_model_max[3];
 } tl_timeline;
+
+/* Floating (tl_float.c): sets s->boat's height, pitch and roll at time t
+ * from the scene's boat position, heading, length and beam. */
+void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s);
+
+/* Records the loaded boat model's bounds: its hull length and beam (which
+ * floating samples) and its extent on screen. */
+void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],
+                                 const float bounds_max[3]);
 
 /* A timeline with no keys: render defaults (24 fps, 10 s, 1280x720, final). */
 int tl_timeline_init(tl_timeline *tl, tl_error *err);

@@ -1,0 +1,135 @@
+/* Floating: the boat's height, pitch and roll on the water.
+ *
+ * The hull samples the surface at five points (centre, bow and stern at
+ * ±0.4 length, both beams at ±0.5 beam): their mean is the height, their
+ * differences pitch and roll. The ocean's part goes through a critically
+ * damped spring (response time boat.float_time), so short chop does not
+ * shake the boat; the giant wave's part, hundreds of times longer than the
+ * hull, is followed directly, as a real hull follows a long swell (a
+ * spring would lag metres behind its face).
+ *
+ * The spring is a closed form: its output is the target convolved with
+ * the impulse response w² τ e^(−wτ), integrated by Simpson's rule over
+ * wτ in [0, 12] at the boat's past positions. It depends on t alone, so
+ * frame N rendered by itself equals frame N of a whole run. */
+#include <math.h>
+#include <string.h>
+
+#include "timeline/tl_timeline.h"
+#include "waves/tl_giant.h"
+#include "waves/tl_waves.h"
+
+#define FLOAT_NODES 36 /* Simpson intervals (even) */
+#define FLOAT_SPAN 12.0 /* in units of the response time */
+
+typedef struct hull_pose {
+    double height, pitch, roll;
+} hull_pose;
+
+/* The surface under the five hull points of a boat at (x, z) heading h. */
+static hull_pose sample_hull(const tl_boat *b, double x, double z, double heading,
+                             double (*height)(const void *, double, double), const void *ctx)
+{
+    double fx = sin(heading), fz = cos(heading); /* toward the bow */
+    double rx = fz, rz = -fx;                    /* toward starboard */
+    double a = 0.4 * b->length, c = 0.5 * b->beam;
+    double centre = height(ctx, x, z);
+    double bow = height(ctx, x + fx * a, z + fz * a), stern = height(ctx, x - fx * a, z - fz * a);
+    double star = height(ctx, x + rx * c, z + rz * c), port = height(ctx, x - rx * c, z - rz * c);
+    hull_pose p;
+    p.height = (centre + bow + stern + star + port) / 5.0;
+    p.pitch = atan2(bow - stern, 2.0 * a);
+    p.roll = atan2(port - star, 2.0 * c);
+    return p;
+}
+
+typedef struct ocean_ctx {
+    const tl_waves *waves;
+    double t;
+    int octaves;
+} ocean_ctx;
+
+static double ocean_height(const void *ctx, double x, double z)
+{
+    const ocean_ctx *o = ctx;
+    return tl_waves_height(o->waves, x, z, o->t, o->octaves);
+}
+
+typedef struct giant_ctx {
+    const tl_giant *giant;
+    int iterations;
+} giant_ctx;
+
+static double giant_height(const void *ctx, double x, double z)
+{
+    const giant_ctx *g = ctx;
+    return tl_giant_height(g->giant, x, z, g->iterations);
+}
+
+/* The boat's position and heading at time t (the heading channel, when it
+ * is set or keyed, is taken at the frame's time). */
+static void boat_at(const tl_timeline *tl, double t, const tl_scene *s, int heading_from_path,
+                    double *x, double *z, double *heading)
+{
+    double p[3], tangent[3];
+    tl_path_eval(&tl->boat_path.path, t, p, tangent);
+    *x = p[0];
+    *z = p[2];
+    *heading = s->boat.heading;
+    if (heading_from_path && (tangent[0] != 0.0 || tangent[2] != 0.0))
+        *heading = atan2(tangent[0], tangent[2]);
+}
+
+void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s)
+{
+    tl_boat *b = &s->boat;
+    tl_waves waves;
+    tl_waves_init(&waves, &s->ocean);
+    ocean_ctx oc = {&waves, t, s->quality.march_octaves};
+
+    /* The spring over the ocean's part, at the boat's past poses. */
+    const double w = 1.0 / b->float_time, h = FLOAT_SPAN / FLOAT_NODES;
+    hull_pose sum = {0.0, 0.0, 0.0};
+    double weights = 0.0;
+    for (int i = 0; i <= FLOAT_NODES; i++) {
+        double x = i * h; /* w·τ */
+        double simpson = (i == 0 || i == FLOAT_NODES) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+        double weight = simpson * x * exp(-x);
+        if (weight == 0.0)
+            continue;
+        double past = t - x / w, px, pz, heading;
+        boat_at(tl, past, s, heading_from_path, &px, &pz, &heading);
+        oc.t = past;
+        hull_pose p = sample_hull(b, px, pz, heading, ocean_height, &oc);
+        sum.height += weight * p.height;
+        sum.pitch += weight * p.pitch;
+        sum.roll += weight * p.roll;
+        weights += weight;
+    }
+    /* Normalised: a still target comes out exactly (the tail beyond 12
+     * response times holds 8e-5 of the weight). */
+    b->position[1] = sum.height / weights;
+    b->pitch = sum.pitch / weights;
+    b->roll = sum.roll / weights;
+
+    /* The giant wave's part, followed directly. */
+    tl_giant giant;
+    tl_giant_prepare(&giant, &s->giant, t);
+    if (giant.active) {
+        giant_ctx gc = {&giant, s->quality.giant_iterations};
+        hull_pose g = sample_hull(b, b->position[0], b->position[2], b->heading, giant_height, &gc);
+        b->position[1] += g.height;
+        b->pitch += g.pitch;
+        b->roll += g.roll;
+    }
+}
+
+void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],
+                                 const float bounds_max[3])
+{
+    for (int i = 0; i < 3; i++) {
+        tl->boat_model_min[i] = bounds_min[i];
+        tl->boat_model_max[i] = bounds_max[i];
+    }
+    tl->boat_bounds_known = true;
+}
