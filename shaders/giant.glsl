@@ -155,17 +155,6 @@ vec2 giant_ray_interval(vec3 ray)
     return vec2(t0, t1);
 }
 
-// Irradiance on a surface facing the sun: the integral of the sun lobe
-// pow(cos, sharpness)·intensity over the hemisphere.
-float giant_sun_irradiance()
-{
-#ifdef TL_FEATURE_SUN_DISC
-    return u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0);
-#else
-    return 0.0;
-#endif
-}
-
 // Smooth value noise in [0, 1] from an integer hash (the same on every
 // GPU, unlike sin-based hashes).
 float giant_hash(ivec2 c)
@@ -253,24 +242,18 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
     float thin = smoothstep(0.35, 0.95, top);
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     return u_giant_scatter_color *
-           (u_giant_scatter.x * phase * moved * thin * daylight * giant_sun_irradiance());
+           (u_giant_scatter.x * phase * moved * thin * daylight * sky_sun_irradiance());
 }
 
-// Foam over the water's colour: a white diffuse layer lit by the sky (the
-// mean of the zenith and three directions 15 deg up) and the sun, with a
-// wrapped term for light through the foam. The sky terms are the cheap
-// atmosphere's; a physical sky will give its irradiance here.
+// Foam over the water's colour: a white diffuse layer lit by the sky's
+// hemisphere and the sun, with a wrapped term for light through the foam.
 vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value)
 {
     float thickness;
     float foam = giant_foam(g, ocean_value, thickness);
     color += giant_scatter(g, ray) * (1.0 - foam);
-    vec3 sky = sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
-               sky_atmosphere(vec3(0.0, 0.259, 0.966), u_sun_dir) +
-               sky_atmosphere(vec3(0.837, 0.259, -0.483), u_sun_dir) +
-               sky_atmosphere(vec3(-0.837, 0.259, -0.483), u_sun_dir);
-    float sun = giant_sun_irradiance() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
+    float sun = sky_sun_irradiance() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
     // Thin foam lets the water through and looks greyer than thick foam.
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
-    return mix(color, albedo * (0.25 * sky + vec3(sun)), foam);
+    return mix(color, albedo * (sky_ambient() + vec3(sun)), foam);
 }

@@ -8,6 +8,9 @@
 #include "giant.glsl"
 #endif
 #include "surface.glsl"
+#ifdef TL_FEATURE_BOAT
+#include "boat.glsl"
+#endif
 #include "march.glsl"
 #include "water.glsl"
 
@@ -55,7 +58,7 @@ vec3 camera_ray(vec2 pixel)
 }
 
 // Radiance along one ray; *dist is the hit distance or TL_SKY_DEPTH.
-vec3 trace(vec3 ray, out float dist)
+vec3 trace_water(vec3 ray, out float dist)
 {
     float t = march_water(ray);
     if (t < 0.0) {
@@ -65,6 +68,16 @@ vec3 trace(vec3 ray, out float dist)
     dist = t;
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     return water_color(ray, hit, t);
+}
+
+// The water and sky along one ray, and whatever mesh stands in front.
+vec3 trace(vec3 ray, out float dist)
+{
+    vec3 color = trace_water(ray, dist);
+#ifdef TL_FEATURE_BOAT
+    color = boat_composite(color, ray, dist);
+#endif
+    return color;
 }
 
 void main()

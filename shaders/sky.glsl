@@ -30,3 +30,24 @@ vec3 sky_color(vec3 dir)
 {
     return sky_atmosphere(dir, u_sun_dir) + vec3(sky_sun(dir));
 }
+
+// Irradiance on a surface facing the sun: the integral of the sun lobe
+// pow(cos, sharpness)·intensity over the hemisphere.
+float sky_sun_irradiance()
+{
+#ifdef TL_FEATURE_SUN_DISC
+    return u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0);
+#else
+    return 0.0;
+#endif
+}
+
+// Mean sky radiance over the upper hemisphere, for diffuse surfaces (foam,
+// the hull): the zenith and three directions 15 deg up.
+vec3 sky_ambient()
+{
+    return 0.25 * (sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
+                   sky_atmosphere(vec3(0.0, 0.259, 0.966), u_sun_dir) +
+                   sky_atmosphere(vec3(0.837, 0.259, -0.483), u_sun_dir) +
+                   sky_atmosphere(vec3(-0.837, 0.259, -0.483), u_sun_dir));
+}

@@ -325,7 +325,8 @@ int tl_cli_render(int argc, char **argv)
         return 2;
     }
     tl_timeline tl;
-    if (tl_cli_load_timeline("render", o.timeline, &tl, NULL))
+    tl_mesh boat;
+    if (tl_cli_load_timeline("render", o.timeline, &tl, &boat))
         return 1;
 
     tl_render_settings settings = {o.width, o.height,  o.has_quality ? &o.quality : NULL,
@@ -369,6 +370,7 @@ int tl_cli_render(int argc, char **argv)
         tl_cli_print_error("render", &err);
         tl_frame_list_free(&frames);
         tl_timeline_free(&tl);
+        tl_mesh_free(&boat);
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
@@ -377,6 +379,8 @@ int tl_cli_render(int argc, char **argv)
     tl_frame frame = {0};
     uint8_t *rgb = NULL;
     rc = tl_render_open(&render, &lib, &err);
+    if (!rc && boat.index_count)
+        rc = tl_render_set_boat(render, &boat, &err);
     if (!rc && o.verbose)
         fprintf(stderr, "tideline render: %s\n", tl_render_describe(render));
     if (!rc && o.movie) {
@@ -468,6 +472,7 @@ int tl_cli_render(int argc, char **argv)
     free(rgb);
     tl_frame_free(&frame);
     tl_render_close(render);
+    tl_mesh_free(&boat);
     tl_frame_list_free(&frames);
     tl_timeline_free(&tl);
     if (interrupted)

@@ -1,6 +1,7 @@
 #include "tl_renderer.h"
 
 #include <epoxy/gl.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,13 +13,21 @@ typedef struct cached_program {
     GLuint program;
 } cached_program;
 
-/* A framebuffer with float colour attachments of one size. */
+/* A framebuffer with float colour attachments of one size, and a depth
+ * buffer when it is asked for. */
 typedef struct target {
     GLuint fbo;
     GLuint tex[2];
+    GLuint depth; /* renderbuffer, 0 when none */
     int attachments;
     int width, height;
 } target;
+
+/* The boat's mesh on the GPU: interleaved position, normal, colour. */
+typedef struct gpu_mesh {
+    GLuint vao, vbo, ibo;
+    GLsizei indices;
+} gpu_mesh;
 
 struct tl_renderer {
     tl_shader_lib lib;
@@ -29,6 +38,9 @@ struct tl_renderer {
     GLuint probe_program[2]; /* without and with the giant wave */
     target scene;   /* colour RGBA32F + depth R32F */
     target display; /* tonemapped RGBA32F */
+    target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
+    GLuint mesh_program[2]; /* without and with the sun disc */
+    gpu_mesh mesh;
 };
 
 static int gl_check(const char *what, tl_error *err)
@@ -138,12 +150,24 @@ static void target_free(target *t)
         glDeleteFramebuffers(1, &t->fbo);
     if (t->attachments)
         glDeleteTextures(t->attachments, t->tex);
+    if (t->depth)
+        glDeleteRenderbuffers(1, &t->depth);
     memset(t, 0, sizeof *t);
 }
 
-/* (Re)creates `t` at the size with the given internal formats. */
+/* (Re)creates `t` at the size with the given internal formats, with a
+ * 32-bit float depth buffer when `depth` is set. */
+static int target_ensure_depth(target *t, int width, int height, int attachments,
+                               const GLenum *formats, int depth, tl_error *err);
+
 static int target_ensure(target *t, int width, int height, int attachments, const GLenum *formats,
                          tl_error *err)
+{
+    return target_ensure_depth(t, width, height, attachments, formats, 0, err);
+}
+
+static int target_ensure_depth(target *t, int width, int height, int attachments,
+                               const GLenum *formats, int depth, tl_error *err)
 {
     if (t->fbo && t->width == width && t->height == height)
         return TL_OK;
@@ -164,6 +188,12 @@ static int target_ensure(target *t, int width, int height, int attachments, cons
         draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
     }
     glDrawBuffers(attachments, draw);
+    if (depth) {
+        glGenRenderbuffers(1, &t->depth);
+        glBindRenderbuffer(GL_RENDERBUFFER, t->depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->depth);
+    }
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         target_free(t);
@@ -208,6 +238,11 @@ void tl_renderer_destroy(tl_renderer *r)
             glDeleteProgram(r->probe_program[i]);
     target_free(&r->scene);
     target_free(&r->display);
+    target_free(&r->boat);
+    tl_renderer_set_mesh(r, NULL, NULL);
+    for (int i = 0; i < 2; i++)
+        if (r->mesh_program[i])
+            glDeleteProgram(r->mesh_program[i]);
     glDeleteVertexArrays(1, &r->vao);
     free(r);
 }
@@ -302,12 +337,103 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err)
     return gl_check("frame setup", err);
 }
 
+int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
+{
+    gpu_mesh *g = &r->mesh;
+    if (g->vao) {
+        glDeleteVertexArrays(1, &g->vao);
+        glDeleteBuffers(1, &g->vbo);
+        glDeleteBuffers(1, &g->ibo);
+    }
+    memset(g, 0, sizeof *g);
+    if (!mesh || mesh->index_count == 0)
+        return TL_OK;
+    if (mesh->index_count > 0x7fffffff)
+        return tl_error_set(err, TL_ERR_RUNTIME, "the boat mesh has too many triangles");
+    size_t n = mesh->vertex_count;
+    float *interleaved = malloc(n * 9 * sizeof(float));
+    if (!interleaved)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (size_t i = 0; i < n; i++) {
+        memcpy(interleaved + 9 * i, mesh->positions + 3 * i, 3 * sizeof(float));
+        memcpy(interleaved + 9 * i + 3, mesh->normals + 3 * i, 3 * sizeof(float));
+        memcpy(interleaved + 9 * i + 6, mesh->colors + 3 * i, 3 * sizeof(float));
+    }
+    glGenVertexArrays(1, &g->vao);
+    glBindVertexArray(g->vao);
+    glGenBuffers(1, &g->vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, g->vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * 9 * sizeof(float)), interleaved, GL_STATIC_DRAW);
+    free(interleaved);
+    glGenBuffers(1, &g->ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g->ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(mesh->index_count * sizeof(uint32_t)),
+                 mesh->indices, GL_STATIC_DRAW);
+    for (GLuint a = 0; a < 3; a++) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
+                              (const void *)(uintptr_t)(a * 3 * sizeof(float)));
+    }
+    glBindVertexArray(r->vao);
+    g->indices = (GLsizei)mesh->index_count;
+    return gl_check("uploading the boat mesh", err);
+}
+
+/* The boat's pass: the lit hull and its distance into r->boat, for the
+ * ocean pass to composite. */
+static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
+{
+    const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
+    int rc = target_ensure_depth(&r->boat, u->width, u->height, 2, formats, 1, err);
+    if (rc)
+        return rc;
+    /* Only the sun changes how the hull is lit. */
+    unsigned features = u->features & TL_FEATURE_SUN_DISC;
+    GLuint *program = &r->mesh_program[features ? 1 : 0];
+    if (!*program) {
+        char defines[512];
+        make_defines(features, defines, sizeof defines);
+        *program = build_program(r, "mesh.vert", "mesh.frag", defines, err);
+        if (!*program)
+            return err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, r->boat.fbo);
+    glViewport(0, 0, u->width, u->height);
+    const float zero[4] = {0, 0, 0, 0};
+    const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glClearBufferfv(GL_COLOR, 1, sky);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE); /* models may be open or wound either way */
+    glDisable(GL_BLEND);
+    glUseProgram(*program);
+    upload_uniforms(*program, u);
+    glUniformMatrix4fv(loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
+    glUniformMatrix4fv(loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
+    glBindVertexArray(r->mesh.vao);
+    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
+    glBindVertexArray(r->vao);
+    glDisable(GL_DEPTH_TEST);
+    return gl_check("drawing the boat", err);
+}
+
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err)
 {
     if (u->width != r->scene.width || u->height != r->scene.height)
         return tl_error_set(err, TL_ERR_RUNTIME, "pass size does not match the frame");
-    GLuint program = ocean_program(r, u->features, err);
+    /* No mesh, no boat pass (a library user may not have given one). */
+    unsigned features = u->features;
+    if (!r->mesh.vao)
+        features &= ~(unsigned)TL_FEATURE_BOAT;
+    if (features & TL_FEATURE_BOAT) {
+        int rc = draw_boat(r, u, err);
+        if (rc)
+            return rc;
+    }
+    GLuint program = ocean_program(r, features, err);
     if (!program)
         return err ? (int)err->status : TL_ERR_RUNTIME;
     glBindVertexArray(r->vao);
@@ -323,6 +449,18 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     glUseProgram(program);
     upload_uniforms(program, u);
     glUniform1f(loc(program, "u_sample_weight"), weight);
+    if (features & TL_FEATURE_BOAT) {
+        for (int i = 0; i < 2; i++) {
+            glActiveTexture(GL_TEXTURE1 + (GLenum)i);
+            glBindTexture(GL_TEXTURE_2D, r->boat.tex[i]);
+        }
+        glActiveTexture(GL_TEXTURE0);
+        glUniform1i(loc(program, "u_boat_color"), 1);
+        glUniform1i(loc(program, "u_boat_distance"), 2);
+        glUniformMatrix4fv(loc(program, "u_boat_to_model"), 1, GL_FALSE, u->boat_to_model);
+        glUniform4fv(loc(program, "u_boat_hull"), 1, u->boat_hull);
+        glUniform1f(loc(program, "u_boat_top"), u->boat_top);
+    }
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisablei(GL_BLEND, 0);

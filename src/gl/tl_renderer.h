@@ -10,6 +10,7 @@
 
 #include "core/tl_error.h"
 #include "image/tl_frame.h"
+#include "mesh/tl_mesh.h"
 #include "prepare/tl_prepare.h"
 #include "shader/tl_shader_lib.h"
 
@@ -17,6 +18,10 @@ typedef struct tl_renderer tl_renderer;
 
 int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err);
 void tl_renderer_destroy(tl_renderer *r);
+
+/* Uploads the boat's mesh (replacing any before it; NULL removes it). Frames
+ * whose uniforms carry TL_FEATURE_BOAT draw it; without a mesh they do not. */
+int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err);
 
 /* Renders one frame of u->width x u->height into `frame` (allocated by the
  * caller with the same size). Rows come back top row first. The same as

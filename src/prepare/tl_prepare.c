@@ -6,11 +6,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <cglm/cglm.h>
+
 #include "waves/tl_giant.h"
 
-static const char *const feature_defines[TL_FEATURE_COUNT] = {"TL_FEATURE_SUN_DISC",
-                                                              "TL_FEATURE_GIANT_WAVE"};
-static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc", "giant wave"};
+static const char *const feature_defines[TL_FEATURE_COUNT] = {
+    "TL_FEATURE_SUN_DISC", "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT"};
+static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc", "giant wave", "boat"};
 
 const char *tl_feature_define(int index)
 {
@@ -104,6 +106,76 @@ static void prepare_giant(const tl_scene *s, tl_frame_uniforms *u)
     u->giant_world[1] = (float)(across - 65536.0 * floor(across / 65536.0));
 }
 
+/* Whether a sphere (camera-relative centre c, radius r) can show in the
+ * view: in front of the camera and within the four side planes. */
+static int sphere_in_view(const tl_scene *s, const double c[3], double r)
+{
+    double right[3], up[3], fwd[3];
+    tl_scene_camera_basis(&s->camera, right, up, fwd);
+    double x = c[0] * right[0] + c[1] * right[1] + c[2] * right[2];
+    double y = c[0] * up[0] + c[1] * up[1] + c[2] * up[2];
+    double z = c[0] * fwd[0] + c[1] * fwd[1] + c[2] * fwd[2];
+    double ty = tan(0.5 * s->camera.vfov), tx = ty * s->width / s->height;
+    return z + r > TL_BOAT_NEAR && fabs(x) <= z * tx + r * sqrt(1.0 + tx * tx) &&
+           fabs(y) <= z * ty + r * sqrt(1.0 + ty * ty);
+}
+
+/* The boat's matrices in camera-relative space, and its feature bit when
+ * its bounding sphere is in view. */
+static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
+{
+    const tl_boat *b = &s->boat;
+    if (!b->enabled)
+        return;
+    double rel[3];
+    for (int i = 0; i < 3; i++)
+        rel[i] = b->position[i] - s->camera.position[i];
+    mat4 model;
+    glm_translate_make(model, (vec3){(float)rel[0], (float)rel[1], (float)rel[2]});
+    glm_rotate_y(model, (float)b->heading, model);
+    glm_rotate_x(model, (float)-b->pitch, model); /* bow up */
+    glm_rotate_z(model, (float)-b->roll, model);  /* starboard down */
+    glm_rotate_y(model, (float)b->model_yaw, model);
+    glm_scale_uni(model, (float)b->scale);
+
+    double centre[3], half = 0.0;
+    for (int i = 0; i < 3; i++) {
+        double mid = 0.5 * (b->model_min[i] + b->model_max[i]);
+        double ext = 0.5 * (b->model_max[i] - b->model_min[i]);
+        centre[i] = mid;
+        half += ext * ext;
+    }
+    vec4 c = {(float)centre[0], (float)centre[1], (float)centre[2], 1.0f}, cw;
+    glm_mat4_mulv(model, c, cw);
+    double world[3] = {cw[0], cw[1], cw[2]};
+    if (!sphere_in_view(s, world, sqrt(half) * b->scale))
+        return;
+    u->features |= TL_FEATURE_BOAT;
+
+    double right[3], up[3], fwd[3];
+    tl_scene_camera_basis(&s->camera, right, up, fwd);
+    mat4 view = GLM_MAT4_IDENTITY_INIT, proj, view_proj;
+    for (int i = 0; i < 3; i++) { /* rows: right, up, -forward */
+        view[i][0] = (float)right[i];
+        view[i][1] = (float)up[i];
+        view[i][2] = (float)-fwd[i];
+    }
+    glm_perspective((float)s->camera.vfov, (float)s->width / (float)s->height, (float)TL_BOAT_NEAR,
+                    (float)TL_BOAT_FAR, proj);
+    glm_mat4_mul(proj, view, view_proj);
+    mat4 inverse;
+    glm_mat4_inv(model, inverse);
+    memcpy(u->view_proj, view_proj, sizeof u->view_proj);
+    memcpy(u->boat_model, model, sizeof u->boat_model);
+    memcpy(u->boat_to_model, inverse, sizeof u->boat_to_model);
+    /* The water is hidden inside this ellipse, just within the bounds. */
+    u->boat_hull[0] = (float)(0.5 * (b->model_min[0] + b->model_max[0]));
+    u->boat_hull[1] = (float)(0.5 * (b->model_min[2] + b->model_max[2]));
+    u->boat_hull[2] = (float)(0.47 * (b->model_max[0] - b->model_min[0]));
+    u->boat_hull[3] = (float)(0.47 * (b->model_max[2] - b->model_min[2]));
+    u->boat_top = (float)b->model_max[1];
+}
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
@@ -172,4 +244,5 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normal_smooth_gain = (float)s->water.normal_smooth_gain;
     u->exposure = (float)s->exposure;
     prepare_giant(s, u);
+    prepare_boat(s, u);
 }

@@ -19,9 +19,10 @@
 typedef enum tl_feature {
     TL_FEATURE_SUN_DISC = 1u << 0,   /* the sun is above the horizon */
     TL_FEATURE_GIANT_WAVE = 1u << 1, /* the giant wave is enabled and not faded out */
+    TL_FEATURE_BOAT = 1u << 2,       /* the boat is in view */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 2
+#define TL_FEATURE_COUNT 3
 
 /* The #define name of feature bit `index` ("TL_FEATURE_SUN_DISC"), and the
  * words `still -v` and `render -v` print for it ("sun disc"). */
@@ -76,7 +77,19 @@ typedef struct tl_frame_uniforms {
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */
     int giant_iterations;
+
+    /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
+     * camera-relative metres (the camera at the origin, y too). */
+    float view_proj[16];     /* camera-relative world -> clip */
+    float boat_model[16];    /* model -> camera-relative world */
+    float boat_to_model[16]; /* its inverse */
+    float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
+    float boat_top;          /* model y of the hull's top */
 } tl_frame_uniforms;
+
+/* Near and far planes of the boat's rasterised pass, metres. */
+#define TL_BOAT_NEAR 0.05
+#define TL_BOAT_FAR  1.0e5
 
 /* Fills `u` from `scene` (validated by the caller). `waves` must have been
  * built from scene->ocean; it is passed in so callers reuse it per shot. */

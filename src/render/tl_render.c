@@ -44,6 +44,11 @@ void tl_render_close(tl_render *r)
     free(r);
 }
 
+int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err)
+{
+    return tl_renderer_set_mesh(r->renderer, mesh, err);
+}
+
 unsigned tl_render_last_features(const tl_render *r)
 {
     return r->last_features;

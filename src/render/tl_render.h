@@ -12,6 +12,7 @@
 
 #include "core/tl_error.h"
 #include "image/tl_frame.h"
+#include "mesh/tl_mesh.h"
 #include "scene/tl_scene.h"
 #include "shader/tl_shader_lib.h"
 #include "timeline/tl_timeline.h"
@@ -23,6 +24,10 @@ void tl_render_close(tl_render *r);
 
 /* "EGL surfaceless: llvmpipe (...), OpenGL 4.5 (Core Profile) ..." */
 const char *tl_render_describe(const tl_render *r);
+
+/* The boat's mesh (the timeline's model or the built-in boat), uploaded
+ * once; frames with a boat in view draw it. NULL removes it. */
+int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err);
 
 /* The shader features (tl_feature bits) of the last frame rendered: the
  * union over its passes. tl_feature_describe turns them into words. */

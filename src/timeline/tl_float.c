@@ -2,11 +2,13 @@
  *
  * The hull samples the surface at five points (centre, bow and stern at
  * ±0.4 length, both beams at ±0.5 beam): their mean is the height, their
- * differences pitch and roll. The ocean's part goes through a critically
- * damped spring (response time boat.float_time), so short chop does not
- * shake the boat; the giant wave's part, hundreds of times longer than the
- * hull, is followed directly, as a real hull follows a long swell (a
- * spring would lag metres behind its face).
+ * differences pitch and roll. Pitch and roll, and the ocean's part of the
+ * height, go through a critically damped spring (response time
+ * boat.float_time), so chop does not shake the boat and a sharp crest
+ * passing under it turns it smoothly. The giant wave's part of the height,
+ * hundreds of times longer than the hull, is followed directly, as a hull
+ * follows a long swell: a spring would lag metres behind its face and sink
+ * the boat into it.
  *
  * The spring is a closed form: its output is the target convolved with
  * the impulse response w² τ e^(−wτ), integrated by Simpson's rule over
@@ -86,8 +88,13 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     tl_waves waves;
     tl_waves_init(&waves, &s->ocean);
     ocean_ctx oc = {&waves, t, s->quality.march_octaves};
+    tl_giant giant;
+    tl_giant_prepare(&giant, &s->giant, t);
+    const int follows = tl->giant_follow.target == TL_TARGET_BOAT;
 
-    /* The spring over the ocean's part, at the boat's past poses. */
+    /* The spring, at the boat's past poses. The giant wave of a past
+     * moment is this one moved back along its travel (and with the boat,
+     * when its centre follows the boat). */
     const double w = 1.0 / b->float_time, h = FLOAT_SPAN / FLOAT_NODES;
     hull_pose sum = {0.0, 0.0, 0.0};
     double weights = 0.0;
@@ -101,6 +108,20 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
         boat_at(tl, past, s, heading_from_path, &px, &pz, &heading);
         oc.t = past;
         hull_pose p = sample_hull(b, px, pz, heading, ocean_height, &oc);
+        if (giant.active) {
+            tl_giant then = giant;
+            double back = giant.speed * (t - past);
+            then.origin[0] -= giant.dir[0] * back;
+            then.origin[1] -= giant.dir[1] * back;
+            if (follows) {
+                then.origin[0] += px - b->position[0];
+                then.origin[1] += pz - b->position[2];
+            }
+            giant_ctx gc = {&then, s->quality.giant_iterations};
+            hull_pose g = sample_hull(b, px, pz, heading, giant_height, &gc);
+            p.pitch += g.pitch;
+            p.roll += g.roll;
+        }
         sum.height += weight * p.height;
         sum.pitch += weight * p.pitch;
         sum.roll += weight * p.roll;
@@ -112,15 +133,11 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     b->pitch = sum.pitch / weights;
     b->roll = sum.roll / weights;
 
-    /* The giant wave's part, followed directly. */
-    tl_giant giant;
-    tl_giant_prepare(&giant, &s->giant, t);
+    /* The giant wave's height, followed directly. */
     if (giant.active) {
         giant_ctx gc = {&giant, s->quality.giant_iterations};
         hull_pose g = sample_hull(b, b->position[0], b->position[2], b->heading, giant_height, &gc);
         b->position[1] += g.height;
-        b->pitch += g.pitch;
-        b->roll += g.roll;
     }
 }
 

@@ -1,0 +1,36 @@
+// The boat in the ocean pass: the mesh pass rendered the lit hull and its
+// distance into textures; here they are composited with the water per
+// sample. The hull wins where it is nearer; water that lies inside the
+// hull's waterplane (an ellipse just within the model's bounds) under a
+// pixel the hull covers is hidden too, so no water shows on deck or
+// through the hull however the boat floats.
+
+uniform sampler2D u_boat_color;    // lit hull, alpha = covered
+uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
+uniform mat4 u_boat_to_model;      // camera-relative world -> model
+uniform vec4 u_boat_hull;          // ellipse centre x z, semi-axes x z (model units)
+uniform float u_boat_top;          // model y of the hull's top
+
+// Whether the water point (camera-relative x z, absolute y) is inside the hull.
+bool boat_contains(vec3 p)
+{
+    vec3 m = (u_boat_to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
+    vec2 e = (m.xz - u_boat_hull.xy) / u_boat_hull.zw;
+    return dot(e, e) < 1.0 && m.y < u_boat_top;
+}
+
+// The sample's radiance and distance after the hull: `water` at `dist`
+// (TL_SKY_DEPTH for the sky) along `ray`.
+vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
+{
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    float hull = texelFetch(u_boat_distance, px, 0).r;
+    if (hull >= TL_SKY_DEPTH)
+        return water;
+    bool inside = dist < TL_SKY_DEPTH && boat_contains(vec3(0.0, u_cam_height, 0.0) + ray * dist);
+    if (hull < dist || inside) {
+        dist = hull;
+        return texelFetch(u_boat_color, px, 0).rgb;
+    }
+    return water;
+}

@@ -1,0 +1,34 @@
+// The boat's hull, lit by the same sun and sky as the water: diffuse from
+// the sky's hemisphere and the sun, and a modest specular highlight.
+// Writes linear radiance and the distance along the view ray, like the
+// ocean, for the ocean pass to composite (shaders/boat.glsl).
+#include "uniforms.glsl"
+#include "sky.glsl"
+
+in vec3 v_world;
+in vec3 v_normal;
+in vec3 v_color;
+
+layout(location = 0) out vec4 out_color;
+layout(location = 1) out float out_depth;
+
+void main()
+{
+    vec3 view = normalize(v_world); // from the camera
+    vec3 n = normalize(v_normal);
+    // Two-sided: models may be open or wound either way.
+    if (dot(n, view) > 0.0)
+        n = -n;
+    float sun = sky_sun_irradiance();
+    float lambert = max(dot(n, u_sun_dir), 0.0);
+    // The sky lights what faces up more than what faces down.
+    vec3 ambient = sky_ambient() * (0.6 + 0.4 * n.y);
+    vec3 diffuse = v_color * (ambient + vec3(sun * lambert / 3.1415927));
+    vec3 h = normalize(u_sun_dir - view);
+    float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.04 * sun * lambert;
+    vec3 color = diffuse + vec3(spec);
+    if (any(isnan(color)) || any(isinf(color)))
+        color = vec3(0.0);
+    out_color = vec4(max(color, vec3(0.0)), 1.0);
+    out_depth = length(v_world);
+}

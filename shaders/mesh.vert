@@ -1,0 +1,23 @@
+// The boat's mesh: model -> camera-relative world -> clip. The world
+// position and normal go to the fragment shader for lighting and the
+// distance along the view ray.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+
+uniform mat4 u_view_proj;
+uniform mat4 u_boat_model;
+
+out vec3 v_world; // camera-relative metres
+out vec3 v_normal;
+out vec3 v_color;
+
+void main()
+{
+    vec4 world = u_boat_model * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    // Uniform scale: the model matrix's rotation turns normals too.
+    v_normal = mat3(u_boat_model) * a_normal;
+    v_color = a_color;
+    gl_Position = u_view_proj * world;
+}
