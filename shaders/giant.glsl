@@ -155,42 +155,6 @@ vec2 giant_ray_interval(vec3 ray)
     return vec2(t0, t1);
 }
 
-// Smooth value noise in [0, 1] from an integer hash (the same on every
-// GPU, unlike sin-based hashes).
-float giant_hash(ivec2 c)
-{
-    uint h = uint(c.x) * 0x8da6b343u ^ uint(c.y) * 0xd8163841u;
-    h ^= h >> 15;
-    h *= 0x2c1b3c6du;
-    h ^= h >> 12;
-    return float(h & 0xffffu) / 65535.0;
-}
-
-float giant_noise(vec2 p)
-{
-    vec2 i = floor(p), f = p - i;
-    f = f * f * (3.0 - 2.0 * f);
-    ivec2 c = ivec2(i);
-    float a = giant_hash(c), b = giant_hash(c + ivec2(1, 0));
-    float d = giant_hash(c + ivec2(0, 1)), e = giant_hash(c + ivec2(1, 1));
-    return mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
-}
-
-// Four octaves of value noise, each turned and shifted so no grid shows;
-// p in metres, the coarsest cell 4 m.
-float giant_lace(vec2 p)
-{
-    const mat2 turn = mat2(0.8, 0.6, -0.6, 0.8);
-    float sum = 0.0, amp = 0.5;
-    p *= 0.25;
-    for (int i = 0; i < 4; i++) {
-        sum += amp * giant_noise(p);
-        p = turn * p * 2.03 + vec2(11.7, 3.1);
-        amp *= 0.5;
-    }
-    return sum / 0.9375;
-}
-
 // Foam of a breaking crest, a function of this frame's wave only. Where
 // foam can be (its coverage): whitewater capping the crest and where the
 // surface compresses, streaks running down the face, and a trail behind
@@ -205,7 +169,7 @@ float giant_foam(GiantSample g, float ocean_value, out float thickness)
     float top = g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3);
     float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
     float cap = smoothstep(0.9, 1.0, top) * breaking;
-    float streaks = giant_noise(vec2(g.w / 2.0, g.s0 / 16.0));
+    float streaks = foam_noise(vec2(g.w / 2.0, g.s0 / 16.0));
     float face = smoothstep(0.5, 0.8, streaks) * smoothstep(0.3, 0.7, top) *
                  smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x) * breaking;
     float behind = max(-g.s0, 0.0);
@@ -213,7 +177,7 @@ float giant_foam(GiantSample g, float ocean_value, out float thickness)
                   smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
     float coverage = max(max(compressed, cap), face) * g.lambda;
     vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));
-    float lace = 0.75 * giant_lace(at) + 0.25 * ocean_value;
+    float lace = 0.75 * foam_lace(at) + 0.25 * ocean_value;
     thickness = lace;
     float texture_trail = smoothstep(0.55, 0.75, lace);
     coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
@@ -245,15 +209,11 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
            (u_giant_scatter.x * phase * moved * thin * daylight * sky_sun_irradiance());
 }
 
-// Foam over the water's colour: a white diffuse layer lit by the sky's
-// hemisphere and the sun, with a wrapped term for light through the foam.
+// Foam and light through the crest over the water's colour.
 vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value)
 {
     float thickness;
     float foam = giant_foam(g, ocean_value, thickness);
     color += giant_scatter(g, ray) * (1.0 - foam);
-    float sun = sky_sun_irradiance() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
-    // Thin foam lets the water through and looks greyer than thick foam.
-    float albedo = 0.85 * (0.55 + 0.45 * thickness);
-    return mix(color, albedo * (sky_ambient() + vec3(sun)), foam);
+    return foam_shade(color, n, foam, thickness);
 }

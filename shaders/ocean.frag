@@ -4,6 +4,7 @@
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
+#include "foam.glsl"
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif
@@ -12,6 +13,9 @@
 #include "boat.glsl"
 #endif
 #include "march.glsl"
+#ifdef TL_FEATURE_WAKE
+#include "wake.glsl"
+#endif
 #include "water.glsl"
 
 // Supersampling: u_spp stratified samples per pixel (N-rooks: sample s

@@ -5,6 +5,7 @@
 #include "waves.glsl"
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "sky.glsl"
+#include "foam.glsl"
 #include "giant.glsl"
 #endif
 #include "surface.glsl"

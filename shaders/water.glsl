@@ -1,6 +1,7 @@
 // Water shading: normal from the many-octave height field, distance
 // smoothing, Schlick Fresnel reflection of the sky, depth scattering; with
-// the giant wave, its slope, light through its crest and its foam.
+// the giant wave, its slope, light through its crest and its foam; with the
+// boat, its wake.
 
 // Ocean normal at p by finite differences; *value is the ocean's wave value
 // in (0, 1] at p (1 on the crests).
@@ -46,6 +47,11 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     vec3 color = fresnel * reflection + scattering;
 #ifdef TL_FEATURE_GIANT_WAVE
     color = giant_shade(color, ray, n, giant, value);
+#endif
+#ifdef TL_FEATURE_WAKE
+    float thickness;
+    float wake = wake_foam(hit.xz, value, thickness);
+    color = foam_shade(color, n, wake, thickness);
 #endif
     return color;
 }

@@ -113,13 +113,15 @@ static GLuint build_program(tl_renderer *r, const char *vs, const char *fs, cons
 /* The #defines every program shares, plus one per feature bit. */
 static void make_defines(unsigned features, char *out, size_t size)
 {
-    int n = snprintf(out, size,
-                     "#define TL_MAX_OCTAVES %d\n"
-                     "#define TL_SKY_DEPTH %.1f\n"
-                     "#define TL_FAR 1.0e7\n"
-                     "#define TL_GIANT_SLOPE_BINS %d\n"
-                     "#define TL_MARCH_RELAX 1.6\n",
-                     TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS);
+    int n =
+        snprintf(out, size,
+                 "#define TL_MAX_OCTAVES %d\n"
+                 "#define TL_SKY_DEPTH %.1f\n"
+                 "#define TL_FAR 1.0e7\n"
+                 "#define TL_GIANT_SLOPE_BINS %d\n"
+                 "#define TL_WAKE_POINTS %d\n"
+                 "#define TL_MARCH_RELAX 1.6\n",
+                 TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_WAKE_POINTS);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -299,6 +301,11 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform1i(loc(p, "u_giant_iterations"), u->giant_iterations);
         glUniform1fv(loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
         glUniform2fv(loc(p, "u_giant_world"), 1, u->giant_world);
+    }
+    if (u->features & TL_FEATURE_WAKE) {
+        glUniform4fv(loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
+        glUniform4fv(loc(p, "u_wake_params"), 1, u->wake_params);
+        glUniform2fv(loc(p, "u_world_offset"), 1, u->world_offset);
     }
 }
 

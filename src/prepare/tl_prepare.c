@@ -11,8 +11,9 @@
 #include "waves/tl_giant.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
-    "TL_FEATURE_SUN_DISC", "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT"};
-static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc", "giant wave", "boat"};
+    "TL_FEATURE_SUN_DISC", "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT", "TL_FEATURE_WAKE"};
+static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc", "giant wave", "boat",
+                                                             "wake"};
 
 const char *tl_feature_define(int index)
 {
@@ -49,6 +50,13 @@ static void to_float3(const double in[3], float out[3])
 {
     for (int i = 0; i < 3; i++)
         out[i] = (float)in[i];
+}
+
+/* v reduced to [0, 65536): world texture coordinates that stay precise as
+ * floats (8 mm steps) however far the scene is from the origin. */
+static double wrap65536(double v)
+{
+    return v - 65536.0 * floor(v / 65536.0);
 }
 
 /* How much the crest breaks, for the foam trail: 0 while the surface is
@@ -102,8 +110,8 @@ static void prepare_giant(const tl_scene *s, tl_frame_uniforms *u)
      * double so the GPU sees small numbers wherever the wave is. */
     double along = g.dir[0] * g.origin[0] + g.dir[1] * g.origin[1];
     double across = g.across[0] * g.origin[0] + g.across[1] * g.origin[1];
-    u->giant_world[0] = (float)(along - 65536.0 * floor(along / 65536.0));
-    u->giant_world[1] = (float)(across - 65536.0 * floor(across / 65536.0));
+    u->giant_world[0] = (float)wrap65536(along);
+    u->giant_world[1] = (float)wrap65536(across);
 }
 
 /* Whether a sphere (camera-relative centre c, radius r) can show in the
@@ -176,6 +184,45 @@ static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
     u->boat_top = (float)b->model_max[1];
 }
 
+/* The wake's past positions relative to the camera, and its feature bit
+ * when the boat has moved and the wedge can be in view. */
+static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
+{
+    const tl_boat *b = &s->boat;
+    if (!b->enabled || !(b->wake > 0.0))
+        return;
+    const double *cam = s->camera.position;
+    double behind = 0.0, lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        double x = b->wake_path[k][0], z = b->wake_path[k][1];
+        if (k > 0)
+            behind += hypot(x - b->wake_path[k - 1][0], z - b->wake_path[k - 1][1]);
+        u->wake[k][0] = (float)(x - cam[0]);
+        u->wake[k][1] = (float)(z - cam[2]);
+        u->wake[k][2] = (float)(k * b->wake_step);
+        u->wake[k][3] = (float)behind;
+        lo[0] = fmin(lo[0], x);
+        lo[1] = fmin(lo[1], z);
+        hi[0] = fmax(hi[0], x);
+        hi[1] = fmax(hi[1], z);
+    }
+    if (behind < 0.1) /* a boat at rest leaves no wake */
+        return;
+    /* The wedge's reach: the path's box widened by its widest arm. */
+    double reach = 0.5 * b->beam + behind * 0.35355 * 1.3 + 2.0;
+    double centre[3] = {0.5 * (lo[0] + hi[0]) - cam[0], b->position[1] - cam[1],
+                        0.5 * (lo[1] + hi[1]) - cam[2]};
+    double radius = hypot(0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1])) + reach;
+    if (!sphere_in_view(s, centre, radius))
+        return;
+    u->features |= TL_FEATURE_WAKE;
+    u->wake_params[0] = (float)(0.5 * b->beam);
+    u->wake_params[1] = (float)b->wake_time;
+    u->wake_params[2] = (float)b->wake;
+    u->world_offset[0] = (float)wrap65536(cam[0]);
+    u->world_offset[1] = (float)wrap65536(cam[2]);
+}
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
@@ -245,4 +292,5 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->exposure = (float)s->exposure;
     prepare_giant(s, u);
     prepare_boat(s, u);
+    prepare_wake(s, u);
 }

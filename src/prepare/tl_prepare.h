@@ -20,9 +20,10 @@ typedef enum tl_feature {
     TL_FEATURE_SUN_DISC = 1u << 0,   /* the sun is above the horizon */
     TL_FEATURE_GIANT_WAVE = 1u << 1, /* the giant wave is enabled and not faded out */
     TL_FEATURE_BOAT = 1u << 2,       /* the boat is in view */
+    TL_FEATURE_WAKE = 1u << 3,       /* the moving boat's wake is in view */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 3
+#define TL_FEATURE_COUNT 4
 
 /* The #define name of feature bit `index` ("TL_FEATURE_SUN_DISC"), and the
  * words `still -v` and `render -v` print for it ("sun disc"). */
@@ -85,6 +86,12 @@ typedef struct tl_frame_uniforms {
     float boat_to_model[16]; /* its inverse */
     float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
     float boat_top;          /* model y of the hull's top */
+
+    /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
+     * age in seconds and distance behind the boat along its path. */
+    float wake[TL_WAKE_POINTS][4];
+    float wake_params[4];  /* half beam, fade time, strength, unused */
+    float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
 } tl_frame_uniforms;
 
 /* Near and far planes of the boat's rasterised pass, metres. */

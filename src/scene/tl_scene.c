@@ -85,6 +85,8 @@ void tl_scene_defaults(tl_scene *s)
     s->boat.model_yaw = 0.0;
     s->boat.model_scale = 1.0;
     s->boat.float_time = 0.3;
+    s->boat.wake = 1.0;
+    s->boat.wake_time = 6.0;
     s->boat.scale = 8.0;
     const double lo[3] = TL_BOAT_BUILTIN_MIN, hi[3] = TL_BOAT_BUILTIN_MAX;
     for (int i = 0; i < 3; i++) {

@@ -109,6 +109,9 @@ typedef struct tl_giant_wave {
     }
 #define TL_BOAT_BEAM_RATIO 0.34
 
+/* Past positions of the boat kept for its wake. */
+#define TL_WAKE_POINTS 24
+
 /* The boat's pose and the knobs of its model and floating. */
 typedef struct tl_boat {
     bool enabled;       /* true when the timeline has a boat path */
@@ -119,10 +122,16 @@ typedef struct tl_boat {
     double model_yaw;   /* turns a model whose bow is not along +Z */
     double model_scale; /* metres per model unit of a loaded model */
     double float_time;  /* response time of the floating spring, seconds */
+    double wake;        /* strength of the wake's foam, 0 = none */
+    double wake_time;   /* seconds over which the wake's foam fades (e-fold) */
     /* Derived by evaluation from the model: */
     double scale;                      /* metres per model unit */
     double model_min[3], model_max[3]; /* the model's bounds, model units */
     double length, beam;               /* hull length and beam, metres */
+    /* The wake: where the boat was, every wake_step seconds back from now
+     * (wake_path[0] is the boat itself), world x z. */
+    double wake_path[TL_WAKE_POINTS][2];
+    double wake_step;
 } tl_boat;
 
 typedef struct tl_scene {

@@ -122,6 +122,9 @@ static const tl_channel channels[] = {
          "turns a model whose bow does not point along +Z"),
     REAL("boat.model_scale", 1, TL_UNIT_NONE, 1e-6, 1e6, boat.model_scale,
          "metres per unit of a loaded model"),
+    REAL("boat.wake", 1, TL_UNIT_NONE, 0.0, 1.0, boat.wake, "strength of the wake's foam"),
+    REAL("boat.wake_time", 1, TL_UNIT_TIME, 0.1, 600.0, boat.wake_time,
+         "time over which the wake's foam fades"),
     REAL("boat.float_time", 1, TL_UNIT_TIME, 0.01, 10.0, boat.float_time,
          "response time of the floating spring (smaller follows the waves closer)"),
 

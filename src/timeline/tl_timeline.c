@@ -121,6 +121,16 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
         s->giant.center[0] = s->boat.position[0] + tl->giant_follow.offset[0];
         s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
     }
+    /* Where it was, for its wake: twice the fade time back. */
+    if (s->boat.enabled) {
+        s->boat.wake_step = 2.0 * s->boat.wake_time / (TL_WAKE_POINTS - 1);
+        for (int k = 0; k < TL_WAKE_POINTS; k++) {
+            double p[3];
+            tl_path_eval(&tl->boat_path.path, t - k * s->boat.wake_step, p, NULL);
+            s->boat.wake_path[k][0] = p[0];
+            s->boat.wake_path[k][1] = p[2];
+        }
+    }
     /* ... and floats on the waves, the giant one included. */
     if (s->boat.enabled && float_boat)
         tl_timeline_float_boat(tl, t, heading_from_path, s);

@@ -1,0 +1,48 @@
+// Foam: value noise for its texture, and its shading. Shared by the giant
+// wave and the boat's wake.
+
+// Smooth value noise in [0, 1] from an integer hash (the same on every
+// GPU, unlike sin-based hashes).
+float foam_hash(ivec2 c)
+{
+    uint h = uint(c.x) * 0x8da6b343u ^ uint(c.y) * 0xd8163841u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    return float(h & 0xffffu) / 65535.0;
+}
+
+float foam_noise(vec2 p)
+{
+    vec2 i = floor(p), f = p - i;
+    f = f * f * (3.0 - 2.0 * f);
+    ivec2 c = ivec2(i);
+    float a = foam_hash(c), b = foam_hash(c + ivec2(1, 0));
+    float d = foam_hash(c + ivec2(0, 1)), e = foam_hash(c + ivec2(1, 1));
+    return mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
+}
+
+// Four octaves of value noise, each turned and shifted so no grid shows;
+// p in metres, the coarsest cell 4 m.
+float foam_lace(vec2 p)
+{
+    const mat2 turn = mat2(0.8, 0.6, -0.6, 0.8);
+    float sum = 0.0, amp = 0.5;
+    p *= 0.25;
+    for (int i = 0; i < 4; i++) {
+        sum += amp * foam_noise(p);
+        p = turn * p * 2.03 + vec2(11.7, 3.1);
+        amp *= 0.5;
+    }
+    return sum / 0.9375;
+}
+
+// Foam over the water's colour: a white diffuse layer lit by the sky's
+// hemisphere and the sun, with a wrapped term for light through the foam.
+// Thin foam (thickness near 0) lets the water through and looks greyer.
+vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness)
+{
+    float sun = sky_sun_irradiance() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
+    float albedo = 0.85 * (0.55 + 0.45 * thickness);
+    return mix(color, albedo * (sky_ambient() + vec3(sun)), foam);
+}

@@ -1,0 +1,45 @@
+// The boat's wake (TL_FEATURE_WAKE): foam along where the boat was, from
+// its past positions (u_wake, filled on the CPU from the boat's path, so
+// every frame renders alone): a turbulent band behind the hull that widens
+// slowly, and the two arms of the Kelvin wedge (half-angle 19.47 deg),
+// both fading with age.
+
+uniform vec4 u_wake[TL_WAKE_POINTS]; // camera-relative x z, age (s), distance behind the boat (m)
+uniform vec4 u_wake_params;          // half beam, fade time, strength, unused
+uniform vec2 u_world_offset;         // camera x z wrapped every 65536 m: texture coordinates
+
+float wake_foam(vec2 p, float ocean_value, out float thickness)
+{
+    const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
+    float half_beam = u_wake_params.x, cover = 0.0;
+    for (int k = 0; k + 1 < TL_WAKE_POINTS; k++) {
+        vec2 a = u_wake[k].xy, ab = u_wake[k + 1].xy - a;
+        float len2 = dot(ab, ab);
+        if (len2 < 1.0e-8)
+            continue;
+        float along = dot(p - a, ab) / len2;
+        float u = clamp(along, 0.0, 1.0);
+        float d = length(p - (a + ab * u));
+        float behind = mix(u_wake[k].w, u_wake[k + 1].w, u);
+        float arm = half_beam + behind * tan_kelvin; // the wedge's half width here
+        if (d > arm * 1.3 + 2.0)
+            continue;
+        float age = mix(u_wake[k].z, u_wake[k + 1].z, u);
+        float fade = exp(-age / u_wake_params.y);
+        float band = d / (1.3 * half_beam * (1.0 + 0.06 * behind));
+        float turbulent = exp(-band * band);
+        // The arms are lines beside the path: only where the point lies
+        // beside this segment (not around its ends).
+        float edge = (d - arm) / (0.08 * arm + 0.5);
+        float beside = along >= 0.0 && along <= 1.0 ? 1.0 : 0.0;
+        float arms = 0.6 * beside * exp(-edge * edge) * smoothstep(0.0, 2.0 * half_beam, behind);
+        cover = max(cover, fade * max(turbulent, arms));
+    }
+    float lace = 0.7 * foam_lace((p + u_world_offset) * 1.5) + 0.3 * ocean_value;
+    thickness = lace;
+    cover *= u_wake_params.z;
+    // Where the coverage is full the foam is solid; thinner, only the
+    // lace's thickest parts stay.
+    float c = sqrt(cover);
+    return cover > 0.0 ? smoothstep(1.0 - c, 1.3 - c, lace) : 0.0;
+}
