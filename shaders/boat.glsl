@@ -5,7 +5,8 @@
 // pixel the hull covers is hidden too, so no water shows on deck or
 // through the hull however the boat floats.
 
-uniform sampler2D u_boat_color;    // lit hull, alpha = covered
+uniform sampler2D u_boat_color;      // lit hull, alpha = covered
+uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
 uniform mat4 u_boat_to_model;      // camera-relative world -> model
 uniform vec4 u_boat_hull;          // ellipse centre x z, semi-axes x z (model units)
@@ -33,4 +34,15 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
         return texelFetch(u_boat_color, px, 0).rgb;
     }
     return water;
+}
+
+// The sky's reflection in the water with the hull's mirror image over it,
+// looked up where the pixel is, shifted by the wave's slope (the classic
+// planar reflection, distorted by the normal).
+vec3 boat_reflect(vec3 sky, vec3 n)
+{
+    vec2 size = vec2(textureSize(u_boat_reflection, 0));
+    vec2 at = clamp(gl_FragCoord.xy + n.xz * (0.15 * size.y), vec2(0.0), size - 1.0);
+    vec4 hull = texelFetch(u_boat_reflection, ivec2(at), 0);
+    return mix(sky, hull.rgb, hull.a);
 }

@@ -9,12 +9,14 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_color;
 
+uniform vec3 u_eye; // the camera (the origin), or its mirror image for the reflection
+
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
 
 void main()
 {
-    vec3 view = normalize(v_world); // from the camera
+    vec3 view = normalize(v_world - u_eye); // from the eye
     vec3 n = normalize(v_normal);
     // Two-sided: models may be open or wound either way.
     if (dot(n, view) > 0.0)
@@ -30,5 +32,5 @@ void main()
     if (any(isnan(color)) || any(isinf(color)))
         color = vec3(0.0);
     out_color = vec4(max(color, vec3(0.0)), 1.0);
-    out_depth = length(v_world);
+    out_depth = length(v_world - u_eye);
 }

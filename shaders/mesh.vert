@@ -1,14 +1,18 @@
 // The boat's mesh: model -> camera-relative world -> clip. The world
 // position and normal go to the fragment shader for lighting and the
-// distance along the view ray.
+// distance along the view ray. The reflection pass draws the same mesh
+// through u_mirror (a reflection about the water plane y = u_clip_height)
+// from the mirrored eye, clipped to what stands above the water.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
 
 uniform mat4 u_view_proj;
 uniform mat4 u_boat_model;
+uniform mat4 u_mirror;       // identity, or the reflection about the water plane
+uniform float u_clip_height; // camera-relative y of the water plane (reflection pass)
 
-out vec3 v_world; // camera-relative metres
+out vec3 v_world; // camera-relative metres, before any mirror
 out vec3 v_normal;
 out vec3 v_color;
 
@@ -19,5 +23,6 @@ void main()
     // Uniform scale: the model matrix's rotation turns normals too.
     v_normal = mat3(u_boat_model) * a_normal;
     v_color = a_color;
-    gl_Position = u_view_proj * world;
+    gl_ClipDistance[0] = world.y - u_clip_height;
+    gl_Position = u_view_proj * (u_mirror * world);
 }

@@ -9,12 +9,12 @@
 #include "giant.glsl"
 #endif
 #include "surface.glsl"
-#ifdef TL_FEATURE_BOAT
-#include "boat.glsl"
-#endif
 #include "march.glsl"
 #ifdef TL_FEATURE_WAKE
 #include "wake.glsl"
+#endif
+#ifdef TL_FEATURE_BOAT
+#include "boat.glsl"
 #endif
 #include "water.glsl"
 

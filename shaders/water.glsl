@@ -38,6 +38,9 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
     vec3 reflection = sky_color(r);
+#ifdef TL_FEATURE_BOAT
+    reflection = boat_reflect(reflection, n);
+#endif
     // Thicker water in the troughs scatters more blue-green light. Clamp:
     // the depth fraction is held in [0, 1], so a march that stopped off the
     // surface (out of steps, or a camera under the water) cannot make the

@@ -39,6 +39,7 @@ struct tl_renderer {
     target scene;   /* colour RGBA32F + depth R32F */
     target display; /* tonemapped RGBA32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
+    target mirror;  /* the hull reflected in the water RGBA32F + depth */
     GLuint mesh_program[2]; /* without and with the sun disc */
     gpu_mesh mesh;
 };
@@ -241,6 +242,7 @@ void tl_renderer_destroy(tl_renderer *r)
     target_free(&r->scene);
     target_free(&r->display);
     target_free(&r->boat);
+    target_free(&r->mirror);
     tl_renderer_set_mesh(r, NULL, NULL);
     for (int i = 0; i < 2; i++)
         if (r->mesh_program[i])
@@ -386,12 +388,42 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
     return gl_check("uploading the boat mesh", err);
 }
 
-/* The boat's pass: the lit hull and its distance into r->boat, for the
- * ocean pass to composite. */
+/* Draws the mesh into `t` (cleared first): directly, or mirrored in the
+ * water plane and clipped to what stands above it. */
+static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
+                      int mirrored)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+    glViewport(0, 0, u->width, u->height);
+    const float zero[4] = {0, 0, 0, 0};
+    const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    if (t->attachments > 1)
+        glClearBufferfv(GL_COLOR, 1, sky);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    /* Reflection about y = h: y -> 2h - y (column-major). */
+    float h = u->boat_water;
+    const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
+    glUniformMatrix4fv(loc(program, "u_mirror"), 1, GL_FALSE, mirrored ? mirror : identity);
+    glUniform3f(loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
+    glUniform1f(loc(program, "u_clip_height"), h);
+    if (mirrored)
+        glEnable(GL_CLIP_DISTANCE0);
+    glBindVertexArray(r->mesh.vao);
+    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
+    glBindVertexArray(r->vao);
+    glDisable(GL_CLIP_DISTANCE0);
+}
+
+/* The boat's passes: the lit hull and its distance into r->boat, and its
+ * mirror image into r->mirror, for the ocean pass to composite. */
 static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
 {
     const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
     int rc = target_ensure_depth(&r->boat, u->width, u->height, 2, formats, 1, err);
+    if (!rc)
+        rc = target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
     if (rc)
         return rc;
     /* Only the sun changes how the hull is lit. */
@@ -404,13 +436,6 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
         if (!*program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, r->boat.fbo);
-    glViewport(0, 0, u->width, u->height);
-    const float zero[4] = {0, 0, 0, 0};
-    const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
-    glClearBufferfv(GL_COLOR, 0, zero);
-    glClearBufferfv(GL_COLOR, 1, sky);
-    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE); /* models may be open or wound either way */
@@ -419,9 +444,8 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
     upload_uniforms(*program, u);
     glUniformMatrix4fv(loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
     glUniformMatrix4fv(loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
-    glBindVertexArray(r->mesh.vao);
-    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
-    glBindVertexArray(r->vao);
+    draw_mesh(r, *program, &r->boat, u, 0);
+    draw_mesh(r, *program, &r->mirror, u, 1);
     glDisable(GL_DEPTH_TEST);
     return gl_check("drawing the boat", err);
 }
@@ -457,13 +481,15 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     upload_uniforms(program, u);
     glUniform1f(loc(program, "u_sample_weight"), weight);
     if (features & TL_FEATURE_BOAT) {
-        for (int i = 0; i < 2; i++) {
+        const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
+        for (int i = 0; i < 3; i++) {
             glActiveTexture(GL_TEXTURE1 + (GLenum)i);
-            glBindTexture(GL_TEXTURE_2D, r->boat.tex[i]);
+            glBindTexture(GL_TEXTURE_2D, textures[i]);
         }
         glActiveTexture(GL_TEXTURE0);
         glUniform1i(loc(program, "u_boat_color"), 1);
         glUniform1i(loc(program, "u_boat_distance"), 2);
+        glUniform1i(loc(program, "u_boat_reflection"), 3);
         glUniformMatrix4fv(loc(program, "u_boat_to_model"), 1, GL_FALSE, u->boat_to_model);
         glUniform4fv(loc(program, "u_boat_hull"), 1, u->boat_hull);
         glUniform1f(loc(program, "u_boat_top"), u->boat_top);

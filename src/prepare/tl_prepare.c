@@ -155,8 +155,11 @@ static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
     }
     vec4 c = {(float)centre[0], (float)centre[1], (float)centre[2], 1.0f}, cw;
     glm_mat4_mulv(model, c, cw);
+    /* In view itself, or mirrored in the water at its waterline. */
     double world[3] = {cw[0], cw[1], cw[2]};
-    if (!sphere_in_view(s, world, sqrt(half) * b->scale))
+    double mirrored[3] = {cw[0], 2.0 * rel[1] - cw[1], cw[2]};
+    double radius = sqrt(half) * b->scale;
+    if (!sphere_in_view(s, world, radius) && !sphere_in_view(s, mirrored, radius))
         return;
     u->features |= TL_FEATURE_BOAT;
 
@@ -182,6 +185,7 @@ static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
     u->boat_hull[2] = (float)(0.47 * (b->model_max[0] - b->model_min[0]));
     u->boat_hull[3] = (float)(0.47 * (b->model_max[2] - b->model_min[2]));
     u->boat_top = (float)b->model_max[1];
+    u->boat_water = (float)rel[1];
 }
 
 /* The wake's past positions relative to the camera, and its feature bit

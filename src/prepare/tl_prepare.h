@@ -86,6 +86,7 @@ typedef struct tl_frame_uniforms {
     float boat_to_model[16]; /* its inverse */
     float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
     float boat_top;          /* model y of the hull's top */
+    float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */
