@@ -407,7 +407,8 @@ static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_
     const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
     glUniformMatrix4fv(loc(program, "u_mirror"), 1, GL_FALSE, mirrored ? mirror : identity);
     glUniform3f(loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
-    glUniform1f(loc(program, "u_clip_height"), h);
+    /* The direct pass clips nothing, whatever the clip-distance state. */
+    glUniform1f(loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
     if (mirrored)
         glEnable(GL_CLIP_DISTANCE0);
     glBindVertexArray(r->mesh.vao);

@@ -29,14 +29,15 @@ static void lines(double u, double *beam, double *keel, double *sheer)
     *sheer = 0.1 + 0.07 * u * u;
 }
 
-/* Section parameter t in [0, 1] of row r: five rows below the waterline,
- * the waterline twice (red below, white above), four above. */
+/* Section parameter t in [0, 1] of row r: rows 0-5 from the keel to the
+ * waterline, row 6 the waterline again (red below, white above), rows
+ * 7-10 up to the gunwale. */
 static double row_t(int r, double t_water)
 {
     static const double below[6] = {0.0, 0.15, 0.35, 0.6, 0.85, 1.0};
     if (r <= 5)
         return below[r] * t_water;
-    return t_water + (1.0 - t_water) * (r - 5) / 5.0;
+    return t_water + (1.0 - t_water) * (r - 6) / 4.0;
 }
 
 static void hull_point(double u, int r, double p[3])

@@ -1,0 +1,216 @@
+/* The boat on the GPU (llvmpipe on CI): its distance in the frame against
+ * a CPU ray cast into the same mesh, the water it hides, a loaded model in
+ * place of the built-in boat, and no water on deck when the boat sits low.
+ * argv[1] is tests/meshes. */
+#include <string.h>
+
+#include "mesh/tl_mesh.h"
+#include "tl_gl_test.h"
+
+/* A camera 14 m off the boat's starboard quarter, 4 m up, looking at it. */
+static void boat_scene(tl_scene *s)
+{
+    tl_scene_defaults(s);
+    s->width = 160;
+    s->height = 96;
+    s->time = 2.0;
+    s->boat.enabled = true;
+    s->boat.position[0] = 0.0;
+    s->boat.position[1] = -0.4;
+    s->boat.position[2] = 0.0;
+    s->boat.heading = 0.3;
+    s->boat.pitch = 0.02;
+    s->boat.roll = -0.03;
+    s->camera.position[0] = 10.0;
+    s->camera.position[1] = 4.0;
+    s->camera.position[2] = -10.0;
+    const double target[3] = {0.0, 0.5, 0.0};
+    tl_scene_camera_look_at(&s->camera, target, NULL);
+}
+
+/* Möller-Trumbore: distance along the unit ray from o to the triangle. */
+static double ray_triangle(const double o[3], const double d[3], const double a[3],
+                           const double b[3], const double c[3])
+{
+    double e1[3], e2[3], p[3], q[3], t[3];
+    for (int i = 0; i < 3; i++) {
+        e1[i] = b[i] - a[i];
+        e2[i] = c[i] - a[i];
+        t[i] = o[i] - a[i];
+    }
+    p[0] = d[1] * e2[2] - d[2] * e2[1];
+    p[1] = d[2] * e2[0] - d[0] * e2[2];
+    p[2] = d[0] * e2[1] - d[1] * e2[0];
+    double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+    if (fabs(det) < 1e-15)
+        return INFINITY;
+    double u = (t[0] * p[0] + t[1] * p[1] + t[2] * p[2]) / det;
+    q[0] = t[1] * e1[2] - t[2] * e1[1];
+    q[1] = t[2] * e1[0] - t[0] * e1[2];
+    q[2] = t[0] * e1[1] - t[1] * e1[0];
+    double v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
+    double dist = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+    return u >= 0.0 && v >= 0.0 && u + v <= 1.0 && dist > 0.0 ? dist : INFINITY;
+}
+
+/* The nearest hit of the pixel centre's ray with the mesh placed as the
+ * renderer places it (the prepare step's model matrix). */
+static double cast_into_mesh(const tl_scene *s, const tl_mesh *m, int px, int py)
+{
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(s, &w, &u);
+    double right[3], up[3], fwd[3], ray[3];
+    tl_scene_camera_basis(&s->camera, right, up, fwd);
+    double th = tan(0.5 * s->camera.vfov), aspect = (double)s->width / s->height;
+    double nx = (px + 0.5) / s->width * 2.0 - 1.0;
+    double ny = (s->height - 1 - py + 0.5) / s->height * 2.0 - 1.0;
+    double len = 0.0;
+    for (int i = 0; i < 3; i++) {
+        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
+        len += ray[i] * ray[i];
+    }
+    for (int i = 0; i < 3; i++)
+        ray[i] /= sqrt(len);
+    const double origin[3] = {0.0, 0.0, 0.0}; /* camera-relative */
+    double best = INFINITY;
+    for (size_t t = 0; t < m->index_count; t += 3) {
+        double v[3][3];
+        for (int k = 0; k < 3; k++) {
+            const float *p = m->positions + 3 * m->indices[t + k];
+            for (int i = 0; i < 3; i++) /* column-major: row i of M times (p, 1) */
+                v[k][i] = u.boat_model[i] * p[0] + u.boat_model[4 + i] * p[1] +
+                          u.boat_model[8 + i] * p[2] + u.boat_model[12 + i];
+        }
+        best = fmin(best, ray_triangle(origin, ray, v[0], v[1], v[2]));
+    }
+    return best;
+}
+
+/* The boat's distance in the frame matches a CPU ray cast at its centre
+ * and around it, wherever the hull stands above the water (the water hides
+ * what is under it); without the boat the same pixels show water, farther. */
+static void test_depth(tl_renderer *r, const tl_mesh *m, const char *name, tl_scene *s)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_frame with, without;
+    if (render(r, s, &with))
+        return;
+    tl_scene calm = *s;
+    calm.boat.enabled = false;
+    if (render(r, &calm, &without)) {
+        tl_frame_free(&with);
+        return;
+    }
+    /* Where the boat's centre projects. */
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(s, &w, &u);
+    CHECK(u.features & TL_FEATURE_BOAT);
+    float c[4] = {u.boat_model[12], u.boat_model[13], u.boat_model[14], 1.0f}, clip[4] = {0};
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 4; k++)
+            clip[i] += u.view_proj[k * 4 + i] * c[k];
+    int cx = (int)((clip[0] / clip[3] * 0.5 + 0.5) * s->width);
+    int cy = s->height - 1 - (int)((clip[1] / clip[3] * 0.5 + 0.5) * s->height);
+    int checked = 0, close = 1, water_behind = 1, differs = 1;
+    double worst = 0.0;
+    for (int dy = -3; dy <= 3; dy++)
+        for (int dx = -3; dx <= 3; dx++) {
+            int x = cx + dx, y = cy + dy;
+            double want = cast_into_mesh(s, m, x, y);
+            if (!isfinite(want) || want >= without.depth[(size_t)y * s->width + x] - 0.2)
+                continue; /* no hull here, or under the water */
+            float got = with.depth[(size_t)y * s->width + x];
+            size_t at = ((size_t)y * s->width + x) * 4;
+            differs &= memcmp(with.color + at, without.color + at, 3 * sizeof(float)) != 0;
+            worst = fmax(worst, fabs(got - want));
+            close &= fabs(got - want) <= 0.5;
+            water_behind &= without.depth[(size_t)y * s->width + x] > got;
+            checked++;
+        }
+    printf("%s: %d pixels round its centre (%d, %d): max |Z - ray cast| = %.3g m\n", name, checked,
+           cx, cy, worst);
+    CHECK(checked >= 10);
+    CHECK(close);
+    CHECK(water_behind);
+    /* The frames differ where the boat is, and only finite, non-negative
+     * light reaches a pixel. */
+    CHECK(differs);
+    int finite = 1;
+    for (size_t i = 0; i < (size_t)s->width * s->height * 4; i++)
+        finite &= isfinite(with.color[i]) && with.color[i] >= 0.0f;
+    CHECK(finite);
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+}
+
+/* A boat floating low, its deck below the water around it: looking down
+ * into it shows the deck, never water inside the hull. */
+static void test_no_water_on_deck(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_scene(&s);
+    s.boat.position[1] = -1.2; /* deck about 0.55 m under the mean water */
+    s.boat.heading = 0.0;
+    s.boat.pitch = s.boat.roll = 0.0;
+    s.camera.position[0] = 0.0;
+    s.camera.position[1] = 12.0;
+    s.camera.position[2] = -2.0;
+    s.camera.yaw = 0.0;
+    s.camera.pitch = -80.0 * M_PI / 180.0;
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    int cx = s.width / 2, cy = s.height / 2;
+    double want = cast_into_mesh(&s, m, cx, cy);
+    float got = f.depth[(size_t)cy * s.width + cx];
+    printf("low boat: deck at %.3f m, frame Z %.3f m\n", want, got);
+    CHECK(isfinite(want));
+    CHECK(fabs(got - want) <= 0.5);
+    tl_frame_free(&f);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2)
+        return 1;
+    tl_gl_context *ctx = NULL;
+    tl_renderer *r = gl_test_open(&ctx);
+    if (!r)
+        return 1;
+    tl_error err;
+    tl_error_clear(&err);
+    tl_mesh builtin, skiff;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/skiff.gltf", argv[1]);
+    CHECK(tl_mesh_default_boat(&builtin, &err) == 0);
+    CHECK(tl_mesh_load(path, &skiff, &err) == 0);
+
+    tl_scene s;
+    boat_scene(&s);
+    test_depth(r, &builtin, "built-in boat", &s);
+    /* A loaded model replaces it: the skiff (4 m long, 2 m wide, its top 1 m
+     * above its origin) at 1 m per unit, its bounds given to the scene. */
+    boat_scene(&s);
+    s.boat.scale = 1.0;
+    for (int i = 0; i < 3; i++) {
+        s.boat.model_min[i] = skiff.bounds_min[i];
+        s.boat.model_max[i] = skiff.bounds_max[i];
+    }
+    test_depth(r, &skiff, "skiff.gltf", &s);
+    test_no_water_on_deck(r, &builtin);
+
+    tl_mesh_free(&builtin);
+    tl_mesh_free(&skiff);
+    tl_renderer_destroy(r);
+    tl_gl_context_destroy(ctx);
+    TEST_END();
+}
