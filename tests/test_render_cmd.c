@@ -52,31 +52,6 @@ static int write_text(const char *path, const char *text)
     return fclose(f);
 }
 
-static int read_file(const char *path, char **data, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return 1;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    *data = malloc((size_t)n + 1);
-    *len = fread(*data, 1, (size_t)n, f);
-    fclose(f);
-    return *len != (size_t)n;
-}
-
-static int same_bytes(const char *a, const char *b)
-{
-    char *x = NULL, *y = NULL;
-    size_t nx = 0, ny = 0;
-    int same =
-        !read_file(a, &x, &nx) && !read_file(b, &y, &ny) && nx == ny && memcmp(x, y, nx) == 0;
-    free(x);
-    free(y);
-    return same;
-}
-
 static int exists(const char *path)
 {
     return access(path, F_OK) == 0;
@@ -138,7 +113,7 @@ static void test_six_frames(void)
     for (int i = 0; i < 6; i++) {
         snprintf(a, sizeof a, "%s/shot_%04d.exr", out, i);
         snprintf(b, sizeof b, "%s/shot_%04d.exr", again, i);
-        CHECK(same_bytes(a, b));
+        CHECK(tl_same_bytes(a, b));
     }
     snprintf(pattern, sizeof pattern, "%s/png/f_##.png", out);
     CHECK(tl_run(NULL, "render", six_path, "-o", pattern, "--frames", "4", "--png-bits", "16", "-q",
@@ -338,7 +313,7 @@ static void test_interrupt_and_resume(void)
         char a[700], b[700];
         snprintf(a, sizeof a, "%s/f_%04d.exr", out, i);
         snprintf(b, sizeof b, "%s/f_%04d.exr", ref, i);
-        identical &= same_bytes(a, b);
+        identical &= tl_same_bytes(a, b);
     }
     CHECK(identical);
     rm_rf(out);
@@ -360,7 +335,7 @@ static void test_full_disk(void)
     CHECK(tl_run(&(tl_run_opts){NULL, 4096}, "render", six_path, "-o", pattern, "--frames", "1-2",
                  "--size", "200x120", "-q", NULL) == 1);
     CHECK_STR_CONTAINS(tl_run_output, "File too large");
-    CHECK(same_bytes(good, saved)); /* the good frame 1 is untouched */
+    CHECK(tl_same_bytes(good, saved)); /* the good frame 1 is untouched */
     snprintf(good, sizeof good, "%s/d_0002.exr", out);
     CHECK(!exists(good));
     CHECK(tl_dir_hidden_entries(out) == 0);

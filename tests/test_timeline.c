@@ -680,6 +680,41 @@ static void test_frames(void)
     tl_timeline_free(&tl);
 }
 
+/* set boat.model: relative to the timeline's folder, absolute as given;
+ * the model's bounds set the hull's length and beam (model_yaw turns it,
+ * model_scale sizes it). */
+static void test_boat_model(void)
+{
+    const char *text =
+        "tideline 1\npath boat\n  0s 0 0\n  5s 0 20\nset boat.model boats/skiff.glb\n"
+        "set boat.model_scale 2\nset boat.model_yaw 90deg\n";
+    tl_diags diags;
+    tl_error err;
+    tl_error_clear(&err);
+    tl_timeline tl;
+    CHECK(tl_timeline_parse_text("shots/sea/a.tl", text, strlen(text), &tl, &diags, &err) == 0);
+    CHECK(strcmp(tl.boat_model, "shots/sea/boats/skiff.glb") == 0);
+    CHECK(tl.boat_model_line == 5 && tl.boat_model_column == 16);
+    const float lo[3] = {-1.0f, 0.0f, -3.0f}, hi[3] = {1.0f, 2.0f, 3.0f};
+    tl_timeline_set_boat_bounds(&tl, lo, hi);
+    tl_scene s;
+    tl_timeline_eval(&tl, 1.0, &s);
+    CHECK_NEAR(s.boat.scale, 2.0, 0.0);
+    CHECK_NEAR(s.boat.length, 4.0, 1e-12); /* turned 90 deg: its 2-unit width lies along */
+    CHECK_NEAR(s.boat.beam, 12.0, 1e-12);
+    tl_timeline_free(&tl);
+    const char *abs_text = "tideline 1\npath boat\n  0s 0 0\n  5s 0 20\nset boat.model /m/x.obj\n";
+    CHECK(parse_ok(abs_text, &tl));
+    CHECK(strcmp(tl.boat_model, "/m/x.obj") == 0);
+    tl_timeline_free(&tl);
+    /* Without a model: the built-in boat, boat.size long. */
+    CHECK(parse_ok("tideline 1\npath boat\n  0s 0 0\n  5s 0 20\nset boat.size 12\n", &tl));
+    tl_timeline_eval(&tl, 1.0, &s);
+    CHECK_NEAR(s.boat.length, 12.0, 1e-12);
+    CHECK_NEAR(s.boat.beam, 12.0 * TL_BOAT_BEAM_RATIO, 1e-9);
+    tl_timeline_free(&tl);
+}
+
 int main(void)
 {
     test_time_units();
@@ -696,5 +731,6 @@ int main(void)
     test_large_times();
     test_features();
     test_frames();
+    test_boat_model();
     TEST_END();
 }

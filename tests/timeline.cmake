@@ -6,3 +6,6 @@ tl_add_test(test_timeline SOURCES test_timeline.c LIBS tideline_core)
 tl_add_test(test_timeline_errors SOURCES test_timeline_errors.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/tests/timelines_bad)
 tl_add_test(test_timeline_fuzz SOURCES test_timeline_fuzz.c LIBS tideline_core)
+# The hero cutscene: floating, frames rendered alone, broken boat models.
+tl_add_test(test_cutscene SOURCES test_cutscene.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/timelines ${PROJECT_SOURCE_DIR}/tests/meshes)

@@ -98,4 +98,22 @@ static inline int tl_dir_hidden_entries(const char *path)
     return tl_dir_count(path, 1);
 }
 
+/* Whether two files hold the same bytes (both must be readable). */
+static inline int tl_same_bytes(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    int same = fa && fb;
+    while (same) {
+        int ca = fgetc(fa), cb = fgetc(fb);
+        same = ca == cb;
+        if (ca == EOF || cb == EOF)
+            break;
+    }
+    if (fa)
+        fclose(fa);
+    if (fb)
+        fclose(fb);
+    return same;
+}
+
 #endif

@@ -64,9 +64,12 @@ int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl,
                                : tl_mesh_default_boat(&mesh, &err);
     if (rc) {
         /* At the line that named the model, the message naming the file. */
-        if (tl->boat_model_line)
+        if (tl->boat_model_line) {
+            char message[sizeof err.message];
+            snprintf(message, sizeof message, "%s", err.message);
             tl_error_set_at(&err, err.status, path, tl->boat_model_line, tl->boat_model_column,
-                            "%s", err.message);
+                            "%s", message);
+        }
         tl_cli_print_error(command, &err);
         tl_timeline_free(tl);
         return 1;
@@ -174,6 +177,7 @@ typedef struct surface_report {
     double crest_height; /* water height there */
     double to_center;    /* crest's signed distance past the centre, metres */
     double under_camera; /* water height under the camera */
+    double under_boat;   /* water height under the boat's centre (when there is one) */
 } surface_report;
 
 static void surface_report_of(const tl_scene *s, surface_report *r)
@@ -185,6 +189,8 @@ static void surface_report_of(const tl_scene *s, surface_report *r)
     const int oct = s->quality.march_octaves, it = s->quality.giant_iterations;
     r->under_camera = tl_waves_surface_height(&waves, g, s->camera.position[0],
                                               s->camera.position[2], s->time, oct, it);
+    r->under_boat = tl_waves_surface_height(&waves, g, s->boat.position[0], s->boat.position[2],
+                                            s->time, oct, it);
     if (!g->active)
         return;
     double y, dy, d, dd;
@@ -218,6 +224,9 @@ static void print_report_text(const tl_scene *s)
     }
     printf("  %-26s %.6g m (camera %.6g m above it)\n", "water under camera", r.under_camera,
            s->camera.position[1] - r.under_camera);
+    if (s->boat.enabled)
+        printf("  %-26s %.6g m (the boat's waterline %.6g m above it)\n", "water under boat",
+               r.under_boat, s->boat.position[1] - r.under_boat);
 }
 
 static void print_report_json(const tl_scene *s)
@@ -236,7 +245,12 @@ static void print_report_json(const tl_scene *s)
         printf("null");
     printf(", \"water\": {\"under_camera\": %.17g, \"under_crest\": ", r.under_camera);
     if (g->active)
-        printf("%.17g}", r.crest_height);
+        printf("%.17g", r.crest_height);
+    else
+        printf("null");
+    printf(", \"under_boat\": ");
+    if (s->boat.enabled)
+        printf("%.17g}", r.under_boat);
     else
         printf("null}");
 }

@@ -134,11 +134,19 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     b->roll = sum.roll / weights;
 
     /* The giant wave's height, followed directly. */
+    double centre = tl_waves_height(&waves, b->position[0], b->position[2], t, oc.octaves);
     if (giant.active) {
         giant_ctx gc = {&giant, s->quality.giant_iterations};
         hull_pose g = sample_hull(b, b->position[0], b->position[2], b->heading, giant_height, &gc);
         b->position[1] += g.height;
+        centre += tl_giant_height(&giant, b->position[0], b->position[2], gc.iterations);
     }
+    /* Clamp: a hull bridging a sharp crest would sink its middle under the
+     * water by the crest's curvature; the waterline stays at most 5% of the
+     * hull's length below the water at its centre, so the deck stays dry. */
+    double lowest = centre - TL_FLOAT_MAX_SINK * b->length;
+    if (b->position[1] < lowest)
+        b->position[1] = lowest;
 }
 
 void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],

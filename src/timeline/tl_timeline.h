@@ -64,7 +64,10 @@ typedef struct tl_timeline {
 } tl_timeline;
 
 /* Floating (tl_float.c): sets s->boat's height, pitch and roll at time t
- * from the scene's boat position, heading, length and beam. */
+ * from the scene's boat position, heading, length and beam. The waterline
+ * never sits more than TL_FLOAT_MAX_SINK × length below the water at the
+ * boat's centre. */
+#define TL_FLOAT_MAX_SINK 0.05
 void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s);
 
 /* Records the loaded boat model's bounds: its hull length and beam (which
