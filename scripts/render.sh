@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # The main job: set up, build, and render headless into out/:
-#   - the bundled cutscene timelines/calm.tl: every frame as PNG (out/calm/)
-#     and an H.264 movie (out/calm.mp4);
+#   - the hero cutscene timelines/giant_wave.tl (15 s, 360 frames) at
+#     854x480: every frame as PNG (out/giant_wave/) and an H.264 movie
+#     (out/giant_wave.mp4), about six minutes on 2 cores without a GPU;
 #   - a still of the default ocean as PNG and linear EXR (out/ocean.*).
-# Extra flags go to the cutscene render, e.g. scripts/render.sh --quality draft
+# Extra flags go to the cutscene render and win over the defaults here, e.g.
+# scripts/render.sh --size 1280x720 (the timeline's full size) or
+# scripts/render.sh --quality draft
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 mkdir -p out
 build/tideline still -o out/ocean.png -o out/ocean.exr
-build/tideline render timelines/calm.tl -o out/calm/calm_####.png --movie out/calm.mp4 "$@"
+build/tideline render timelines/giant_wave.tl -o out/giant_wave/giant_wave_####.png \
+  --movie out/giant_wave.mp4 --size 854x480 "$@"

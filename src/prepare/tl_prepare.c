@@ -133,7 +133,7 @@ static int sphere_in_view(const tl_scene *s, const double c[3], double r)
 static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
 {
     const tl_boat *b = &s->boat;
-    if (!b->enabled)
+    if (!b->enabled || !b->visible)
         return;
     double rel[3];
     for (int i = 0; i < 3; i++)
@@ -193,7 +193,7 @@ static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
 static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
 {
     const tl_boat *b = &s->boat;
-    if (!b->enabled || !(b->wake > 0.0))
+    if (!b->enabled || !b->visible || !(b->wake > 0.0))
         return;
     const double *cam = s->camera.position;
     double behind = 0.0, lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};

@@ -81,6 +81,7 @@ void tl_scene_defaults(tl_scene *s)
     s->giant.scatter_color[2] = 0.45;
 
     s->boat.enabled = false;
+    s->boat.visible = true;
     s->boat.size = 8.0;
     s->boat.model_yaw = 0.0;
     s->boat.model_scale = 1.0;

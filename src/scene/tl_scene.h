@@ -115,6 +115,7 @@ typedef struct tl_giant_wave {
 /* The boat's pose and the knobs of its model and floating. */
 typedef struct tl_boat {
     bool enabled;       /* true when the timeline has a boat path */
+    bool visible;       /* drawn (hull, reflection, wake); off renders the water plate */
     double position[3]; /* world metres; y: the model's waterline, floating */
     double heading;     /* compass radians, from the path tangent */
     double pitch, roll; /* radians from floating: bow up, starboard down positive */

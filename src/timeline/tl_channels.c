@@ -115,6 +115,8 @@ static const tl_channel channels[] = {
     REAL("giant.scatter_color", 3, TL_UNIT_NONE, 0.0, 1e3, giant.scatter_color,
          "linear RGB of light through the crest"),
 
+    {"boat.visible", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.visible),
+     NULL, "the boat is drawn (off: the water plate, for compositing; it still floats)"},
     REAL("boat.heading", 1, TL_UNIT_ANGLE, -BIG, BIG, boat.heading,
          "compass heading (from the path tangent unless set or keyed)"),
     REAL("boat.size", 1, TL_UNIT_LENGTH, 0.1, 1e3, boat.size, "hull length of the built-in boat"),
