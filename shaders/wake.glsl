@@ -40,6 +40,6 @@ float wake_foam(vec2 p, float ocean_value, out float thickness)
     cover *= u_wake_params.z;
     // Where the coverage is full the foam is solid; thinner, only the
     // lace's thickest parts stay.
-    float c = sqrt(cover);
+    float c = pow(cover, 0.75);
     return cover > 0.0 ? smoothstep(1.0 - c, 1.3 - c, lace) : 0.0;
 }

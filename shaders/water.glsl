@@ -54,6 +54,10 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #ifdef TL_FEATURE_WAKE
     float thickness;
     float wake = wake_foam(hit.xz, value, thickness);
+#ifdef TL_FEATURE_GIANT_WAVE
+    // The giant wave sweeps the wake away: none on its face.
+    wake *= 1.0 - smoothstep(1.0, 4.0, abs(giant.height));
+#endif
     color = foam_shade(color, n, wake, thickness);
 #endif
     return color;
