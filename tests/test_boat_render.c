@@ -61,18 +61,8 @@ static double cast_into_mesh(const tl_scene *s, const tl_mesh *m, int px, int py
     tl_waves_init(&w, &s->ocean);
     tl_frame_uniforms u;
     tl_prepare_frame(s, &w, &u);
-    double right[3], up[3], fwd[3], ray[3];
-    tl_scene_camera_basis(&s->camera, right, up, fwd);
-    double th = tan(0.5 * s->camera.vfov), aspect = (double)s->width / s->height;
-    double nx = (px + 0.5) / s->width * 2.0 - 1.0;
-    double ny = (s->height - 1 - py + 0.5) / s->height * 2.0 - 1.0;
-    double len = 0.0;
-    for (int i = 0; i < 3; i++) {
-        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
-        len += ray[i] * ray[i];
-    }
-    for (int i = 0; i < 3; i++)
-        ray[i] /= sqrt(len);
+    double ray[3];
+    pixel_ray(s, px, py, ray);
     const double origin[3] = {0.0, 0.0, 0.0}; /* camera-relative */
     double best = INFINITY;
     for (size_t t = 0; t < m->index_count; t += 3) {

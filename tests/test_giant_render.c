@@ -124,23 +124,6 @@ static double project_row(const tl_scene *s, const double p[3])
     return (s->height - 1) - row_up;
 }
 
-/* The view ray through pixel (x, y), top row first. */
-static void pixel_ray(const tl_scene *s, int x, int y, double ray[3])
-{
-    double right[3], up[3], fwd[3];
-    tl_scene_camera_basis(&s->camera, right, up, fwd);
-    double th = tan(0.5 * s->camera.vfov), aspect = (double)s->width / s->height;
-    double nx = (x + 0.5) / s->width * 2.0 - 1.0;
-    double ny = (s->height - 1 - y + 0.5) / s->height * 2.0 - 1.0;
-    double len = 0.0;
-    for (int i = 0; i < 3; i++) {
-        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
-        len += ray[i] * ray[i];
-    }
-    for (int i = 0; i < 3; i++)
-        ray[i] /= sqrt(len);
-}
-
 static void test_wave_in_view(tl_renderer *r)
 {
     tl_scene s, calm;

@@ -82,6 +82,24 @@ static inline double probe_error(tl_renderer *r, const tl_scene *s, int octaves,
     return worst;
 }
 
+/* The unit view ray through the centre of pixel (x, y), top row first, as
+ * the ocean shader and the rasteriser see it. */
+static inline void pixel_ray(const tl_scene *s, int x, int y, double ray[3])
+{
+    double right[3], up[3], fwd[3];
+    tl_scene_camera_basis(&s->camera, right, up, fwd);
+    double th = tan(0.5 * s->camera.vfov), aspect = (double)s->width / s->height;
+    double nx = (x + 0.5) / s->width * 2.0 - 1.0;
+    double ny = (s->height - 1 - y + 0.5) / s->height * 2.0 - 1.0;
+    double len = 0.0;
+    for (int i = 0; i < 3; i++) {
+        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
+        len += ray[i] * ray[i];
+    }
+    for (int i = 0; i < 3; i++)
+        ray[i] /= sqrt(len);
+}
+
 static inline double luminance(const float *rgb)
 {
     return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
