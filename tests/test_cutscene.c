@@ -47,8 +47,8 @@ static void test_floating(void)
         double water = tl_waves_surface_height(&w, &g, b->position[0], b->position[2], t, oct, it);
         sink = fmax(sink, water - b->position[1]);
         highest = fmax(highest, b->position[1]);
-        double under = tl_waves_surface_height(&w, &g, s.camera.position[0], s.camera.position[2],
-                                               t, oct, it);
+        double under =
+            tl_waves_surface_height(&w, &g, s.camera.position[0], s.camera.position[2], t, oct, it);
         camera_clearance = fmin(camera_clearance, s.camera.position[1] - under);
         if (f > 0)
             step = fmax(step, fmax(fabs(b->pitch - prev_pitch), fabs(b->roll - prev_roll)));
@@ -77,8 +77,8 @@ static void test_frame_alone(void)
     char tl[1024], a[1200], b[1200];
     snprintf(tl, sizeof tl, "%s/giant_wave.tl", timelines);
     snprintf(a, sizeof a, "%s/run_####.exr", dir);
-    CHECK(run("render", tl, "-o", a, "--frames", "264-266", "--size", "48x28", "--quality",
-              "draft", "-q", NULL) == 0);
+    CHECK(run("render", tl, "-o", a, "--frames", "264-266", "--size", "48x28", "--quality", "draft",
+              "-q", NULL) == 0);
     snprintf(a, sizeof a, "%s/alone_####.exr", dir);
     CHECK(run("render", tl, "-o", a, "--frames", "265", "--size", "48x28", "--quality", "draft",
               "-q", NULL) == 0);

@@ -38,9 +38,9 @@ static void test_gltf(void)
     tl_error err;
     tl_error_clear(&err);
     CHECK(tl_mesh_load(path_of("skiff.gltf"), &m, &err) == TL_OK);
-    printf("skiff.gltf: %zu vertices, %zu triangles, bounds %g %g %g .. %g %g %g\n",
-           m.vertex_count, m.index_count / 3, m.bounds_min[0], m.bounds_min[1], m.bounds_min[2],
-           m.bounds_max[0], m.bounds_max[1], m.bounds_max[2]);
+    printf("skiff.gltf: %zu vertices, %zu triangles, bounds %g %g %g .. %g %g %g\n", m.vertex_count,
+           m.index_count / 3, m.bounds_min[0], m.bounds_min[1], m.bounds_min[2], m.bounds_max[0],
+           m.bounds_max[1], m.bounds_max[2]);
     CHECK(m.index_count == 8 * 3);
     CHECK(m.vertex_count >= 6 && m.vertex_count <= 24);
     /* The node's scale 2 and translation +1 in y are applied. */

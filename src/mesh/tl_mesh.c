@@ -187,8 +187,7 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
         float *p = out->positions + 3 * i, *n = out->normals + 3 * i;
         if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2])) {
             tl_mesh_free(out);
-            return tl_error_set(err, TL_ERR_USAGE, "boat model %s: has non-finite vertices",
-                                path);
+            return tl_error_set(err, TL_ERR_USAGE, "boat model %s: has non-finite vertices", path);
         }
         /* Degenerate triangles leave no normal: point it up. */
         float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);

@@ -21,8 +21,8 @@
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
 
-#define FLOAT_NODES 36 /* Simpson intervals (even) */
-#define FLOAT_SPAN 12.0 /* in units of the response time */
+#define FLOAT_NODES 36   /* Simpson intervals (even) */
+#define FLOAT_SPAN  12.0 /* in units of the response time */
 
 typedef struct hull_pose {
     double height, pitch, roll;
