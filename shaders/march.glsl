@@ -10,8 +10,9 @@
 // slope wherever the step could reach, so that even its steepest face
 // cannot be stepped through.
 
-// Distance along `ray` to the surface, or a negative value for a miss.
-float march_water(vec3 ray)
+// Distance along `ray` to the surface, or a negative value for a miss;
+// the view starts t_min along the ray.
+float march_water(vec3 ray, float t_min)
 {
     vec2 box = vec2(TL_FAR, -1.0); // the giant wave's part of the ray (none)
 #ifdef TL_FEATURE_GIANT_WAVE
@@ -25,7 +26,7 @@ float march_water(vec3 ray)
     // Rays that graze the horizon meet the trough plane very far away; the
     // limit keeps the distance finite (the normal is fully smoothed there).
     float t_low = ray.y < 0.0 ? min((-u_depth - u_cam_height) / ray.y, TL_FAR) : TL_FAR;
-    float t = has_box ? min(t_high, box.x) : t_high;
+    float t = max(has_box ? min(t_high, box.x) : t_high, t_min);
     // Over-relaxation inside the box (enhanced sphere tracing): a step of
     // TL_MARCH_RELAX radii stands when the free interval around the point it
     // reaches overlaps the last point's; otherwise the march goes back to

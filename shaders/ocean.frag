@@ -4,12 +4,16 @@
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
+#include "optics.glsl"
 #include "foam.glsl"
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif
 #include "surface.glsl"
 #include "march.glsl"
+#ifdef TL_FEATURE_UNDERWATER
+#include "lens.glsl"
+#endif
 #ifdef TL_FEATURE_WAKE
 #include "wake.glsl"
 #endif
@@ -17,6 +21,9 @@
 #include "boat.glsl"
 #endif
 #include "water.glsl"
+#ifdef TL_FEATURE_UNDERWATER
+#include "underwater.glsl"
+#endif
 
 // Supersampling: u_spp stratified samples per pixel (N-rooks: sample s
 // takes x stratum s and y stratum (s * u_spp_step) mod u_spp, jittered
@@ -61,10 +68,12 @@ vec3 camera_ray(vec2 pixel)
     return normalize(d);
 }
 
-// Radiance along one ray; *dist is the hit distance or TL_SKY_DEPTH.
-vec3 trace_water(vec3 ray, out float dist)
+// Radiance along one ray from above the water; *dist is the hit distance
+// or TL_SKY_DEPTH. t_min: where the view starts (the lens plane when the
+// camera is at the surface).
+vec3 trace_water(vec3 ray, float t_min, out float dist)
 {
-    float t = march_water(ray);
+    float t = march_water(ray, t_min);
     if (t < 0.0) {
         dist = TL_SKY_DEPTH;
         return sky_color(ray);
@@ -77,9 +86,37 @@ vec3 trace_water(vec3 ray, out float dist)
 // The water and sky along one ray, and whatever mesh stands in front.
 vec3 trace(vec3 ray, out float dist)
 {
-    vec3 color = trace_water(ray, dist);
+#ifdef TL_FEATURE_UNDERWATER
+    bool under = true;
+    float gap = -1.0;
+#ifdef TL_FEATURE_WATERLINE
+    gap = underwater_lens_gap(ray);
+    under = gap < 0.0;
+#endif
+    if (under) {
+        vec3 below = trace_underwater(ray, dist);
+#ifdef TL_FEATURE_BOAT
+        // The hull under water, seen through the water body.
+        float water_dist = dist;
+        vec3 seen = boat_composite(below, ray, dist);
+        if (dist < water_dist) {
+            vec3 trans = optics_water_transmittance(dist);
+            below = seen * trans + underwater_inscatter(ray) * (1.0 - trans);
+        }
+#endif
+        // A thin dark meniscus where the lens meets the surface.
+        return below * mix(0.35, 1.0, smoothstep(0.0, 0.015, -gap));
+    }
+    vec3 color = trace_water(ray, underwater_start(ray), dist);
+    color *= mix(0.35, 1.0, smoothstep(0.0, 0.015, gap));
+#else
+    vec3 color = trace_water(ray, 0.0, dist);
+#endif
 #ifdef TL_FEATURE_BOAT
     color = boat_composite(color, ray, dist);
+#endif
+#ifdef TL_FEATURE_FOG
+    color = optics_fog(color, ray, dist);
 #endif
     return color;
 }

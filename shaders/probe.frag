@@ -1,14 +1,25 @@
-// Height probe: evaluates the surface height at camera-relative points read
-// from a texture, one per output texel. Tests compare it with the CPU
-// mirror (tl_waves_surface_height).
+// Probe: evaluates one of the shaders' functions at inputs read from a
+// texture, one per output texel, for the tests to compare with the CPU:
+//   mode 0: surface height at camera-relative (x, z)   (tl_waves_surface_height)
+//   mode 1: Fresnel reflectance at cos x from index y into air (tl_optics_fresnel)
+//   mode 2: the water body's transmittance over x metres, R G B
+//   mode 3: the fog's transmittance over x metres along a ray with y = its
+//           vertical component                           (tl_optics_fog_depth)
+//   mode 4: the lens's gap to the surface for the pixel at NDC (x, y)
 #include "uniforms.glsl"
 #include "waves.glsl"
-#ifdef TL_FEATURE_GIANT_WAVE
 #include "sky.glsl"
+#include "optics.glsl"
+#ifdef TL_FEATURE_GIANT_WAVE
 #include "foam.glsl"
 #include "giant.glsl"
 #endif
 #include "surface.glsl"
+#ifdef TL_FEATURE_UNDERWATER
+#include "lens.glsl"
+#endif
+
+uniform int u_probe_mode;
 
 uniform sampler2D u_points; // .xy = camera-relative (x, z)
 uniform int u_probe_octaves;
@@ -18,5 +29,24 @@ layout(location = 0) out vec4 out_height;
 void main()
 {
     vec2 p = texelFetch(u_points, ivec2(gl_FragCoord.xy), 0).xy;
-    out_height = vec4(surface_height(p, u_probe_octaves), 0.0, 0.0, 1.0);
+    vec4 result = vec4(0.0);
+    if (u_probe_mode == 0)
+        result.x = surface_height(p, u_probe_octaves);
+    else if (u_probe_mode == 1)
+        result.x = optics_fresnel(p.x, p.y, 1.0);
+#ifdef TL_FEATURE_UNDERWATER
+    else if (u_probe_mode == 2)
+        result.xyz = optics_water_transmittance(p.x);
+    else if (u_probe_mode == 4) {
+        vec3 ray = normalize(u_cam_forward + (p.x * u_resolution.x / u_resolution.y *
+                                             u_tan_half_vfov) * u_cam_right +
+                             (p.y * u_tan_half_vfov) * u_cam_up);
+        result.x = underwater_lens_gap(ray);
+    }
+#endif
+#ifdef TL_FEATURE_FOG
+    else if (u_probe_mode == 3)
+        result.x = exp(-optics_fog_depth(u_cam_height, p.y, p.x));
+#endif
+    out_height = result;
 }

@@ -161,8 +161,9 @@ static void test_success(void)
     FILE *f = fopen(tl, "w");
     CHECK(f != NULL);
     if (f) {
-        fputs("tideline 1\nset giant.enabled on\nset giant.arrival 1s\nkey giant.fade\n  0s 0\n  "
-              "1s 1\n",
+        /* The camera well above the 12 m crest, 100 m before it. */
+        fputs("tideline 1\nset giant.enabled on\nset giant.arrival 1s\n"
+              "set camera.position 0 30 -100\nkey giant.fade\n  0s 0\n  1s 1\n",
               f);
         fclose(f);
     }

@@ -35,7 +35,8 @@ struct tl_renderer {
     cached_program programs[MAX_PROGRAMS];
     int program_count;
     GLuint present_program;
-    GLuint probe_program[2]; /* without and with the giant wave */
+    cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
+    int probe_count;
     target scene;   /* colour RGBA32F + depth R32F */
     target display; /* tonemapped RGBA32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
@@ -236,9 +237,8 @@ void tl_renderer_destroy(tl_renderer *r)
         glDeleteProgram(r->programs[i].program);
     if (r->present_program)
         glDeleteProgram(r->present_program);
-    for (int i = 0; i < 2; i++)
-        if (r->probe_program[i])
-            glDeleteProgram(r->probe_program[i]);
+    for (int i = 0; i < r->probe_count; i++)
+        glDeleteProgram(r->probes[i].program);
     target_free(&r->scene);
     target_free(&r->display);
     target_free(&r->boat);
@@ -303,6 +303,19 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform1i(loc(p, "u_giant_iterations"), u->giant_iterations);
         glUniform1fv(loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
         glUniform2fv(loc(p, "u_giant_world"), 1, u->giant_world);
+    }
+    if (u->features & TL_FEATURE_UNDERWATER) {
+        glUniform3fv(loc(p, "u_water_sigma"), 1, u->water_sigma);
+        glUniform1f(loc(p, "u_water_scattering"), u->water_scattering);
+        glUniform1f(loc(p, "u_water_ior"), u->water_ior);
+        glUniform1f(loc(p, "u_cam_depth"), u->cam_depth);
+        glUniform1f(loc(p, "u_lens"), u->lens);
+        glUniform3fv(loc(p, "u_sun_water"), 1, u->sun_water);
+        glUniform1f(loc(p, "u_sun_water_trans"), u->sun_water_trans);
+    }
+    if (u->features & TL_FEATURE_FOG) {
+        glUniform2fv(loc(p, "u_fog"), 1, u->fog);
+        glUniform3fv(loc(p, "u_fog_color"), 1, u->fog_color);
     }
     if (u->features & TL_FEATURE_WAKE) {
         glUniform4fv(loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
@@ -539,20 +552,27 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
     return rc;
 }
 
-int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,
-                              int count, int octaves, float *heights, tl_error *err)
+int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
+                      int count, int octaves, float *out4, tl_error *err)
 {
-    if (count < 1 || octaves < 1 || octaves > u->octaves)
-        return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad point or octave count");
-    /* Only the giant wave changes the surface's height. */
-    unsigned features = u->features & TL_FEATURE_GIANT_WAVE;
-    GLuint *program = &r->probe_program[features ? 1 : 0];
-    if (!*program) {
+    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 4)
+        return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad mode, point or octave count");
+    /* The features that change what the probe computes. */
+    unsigned features = u->features & (TL_FEATURE_GIANT_WAVE | TL_FEATURE_UNDERWATER |
+                                       TL_FEATURE_WATERLINE | TL_FEATURE_FOG);
+    GLuint program = 0;
+    for (int i = 0; i < r->probe_count; i++)
+        if (r->probes[i].features == features)
+            program = r->probes[i].program;
+    if (!program) {
+        if (r->probe_count == MAX_PROGRAMS)
+            return tl_error_set(err, TL_ERR_RUNTIME, "probe: too many feature sets");
         char defines[512];
         make_defines(features, defines, sizeof defines);
-        *program = build_program(r, "fullscreen.vert", "probe.frag", defines, err);
-        if (!*program)
+        program = build_program(r, "fullscreen.vert", "probe.frag", defines, err);
+        if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
+        r->probes[r->probe_count++] = (cached_program){features, program};
     }
     int width = count < 1024 ? count : 1024;
     int height = (count + width - 1) / width;
@@ -564,8 +584,8 @@ int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const 
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     }
     for (int i = 0; i < count; i++) {
-        texels[i * 4 + 0] = xz[i * 2 + 0];
-        texels[i * 4 + 1] = xz[i * 2 + 1];
+        texels[i * 4 + 0] = xy[i * 2 + 0];
+        texels[i * 4 + 1] = xy[i * 2 + 1];
     }
     GLuint points;
     glGenTextures(1, &points);
@@ -581,24 +601,37 @@ int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const 
     if (!rc) {
         glBindVertexArray(r->vao);
         glViewport(0, 0, width, height);
-        glUseProgram(*program);
-        upload_uniforms(*program, u);
+        glUseProgram(program);
+        upload_uniforms(program, u);
         /* target_ensure bound its own texture to unit 0: bind the points again. */
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, points);
-        glUniform1i(loc(*program, "u_points"), 0);
-        glUniform1i(loc(*program, "u_probe_octaves"), octaves);
+        glUniform1i(loc(program, "u_points"), 0);
+        glUniform1i(loc(program, "u_probe_octaves"), octaves);
+        glUniform1i(loc(program, "u_probe_mode"), mode);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
-        for (int i = 0; i < count; i++)
-            heights[i] = out[i * 4];
-        rc = gl_check("height probe", err);
+        memcpy(out4, out, (size_t)count * 4 * sizeof(float));
+        rc = gl_check("probe", err);
     }
     target_free(&t);
     glDeleteTextures(1, &points);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     free(texels);
+    free(out);
+    return rc;
+}
+
+int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,
+                              int count, int octaves, float *heights, tl_error *err)
+{
+    float *out = malloc((size_t)(count > 0 ? count : 1) * 4 * sizeof(float));
+    if (!out)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    int rc = tl_renderer_probe(r, u, 0, xz, count, octaves, out, err);
+    for (int i = 0; !rc && i < count; i++)
+        heights[i] = out[i * 4];
     free(out);
     return rc;
 }

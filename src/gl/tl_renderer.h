@@ -37,6 +37,13 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, float exposure, tl_frame *frame, tl_error *err);
 
+/* Evaluates one of the shaders' functions (shaders/probe.frag lists the
+ * modes: surface height, Fresnel, water and fog transmittance, the lens's
+ * gap to the surface) at `count` input pairs, with the frame's uniforms and
+ * features; out4 gets four floats per input. The GPU side of the tests. */
+int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
+                      int count, int octaves, float *out4, tl_error *err);
+
 /* Evaluates the shader's wave height at `count` camera-relative points
  * (x, z pairs) with `octaves` octaves: the GPU side of the accuracy tests. */
 int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,

@@ -8,12 +8,14 @@
 
 #include <cglm/cglm.h>
 
+#include "optics/tl_optics.h"
 #include "waves/tl_giant.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
-    "TL_FEATURE_SUN_DISC", "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT", "TL_FEATURE_WAKE"};
-static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc", "giant wave", "boat",
-                                                             "wake"};
+    "TL_FEATURE_SUN_DISC",   "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT", "TL_FEATURE_WAKE",
+    "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",  "TL_FEATURE_FOG"};
+static const char *const feature_labels[TL_FEATURE_COUNT] = {
+    "sun disc", "giant wave", "boat", "wake", "underwater", "waterline", "fog"};
 
 const char *tl_feature_define(int index)
 {
@@ -71,10 +73,9 @@ static double breaking(double threshold, double min_jacobian)
 
 /* The giant wave relative to the camera: only the camera's offset from the
  * crest (small when the wave is in view) reaches the GPU. */
-static void prepare_giant(const tl_scene *s, tl_frame_uniforms *u)
+static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_uniforms *u)
 {
-    tl_giant g;
-    tl_giant_prepare(&g, &s->giant, s->time);
+    const tl_giant g = *wave;
     if (!g.active)
         return;
     u->features |= TL_FEATURE_GIANT_WAVE;
@@ -227,6 +228,79 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
     u->world_offset[1] = (float)wrap65536(cam[2]);
 }
 
+tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
+                                    double *gap)
+{
+    const double *c = s->camera.position;
+    double h = tl_waves_surface_height(w, giant, c[0], c[2], s->time, s->quality.march_octaves,
+                                       s->quality.giant_iterations);
+    if (gap)
+        *gap = c[1] - h;
+    if (s->underwater.mode == TL_UNDERWATER_ON)
+        return TL_WATER_BELOW;
+    if (s->underwater.mode == TL_UNDERWATER_OFF)
+        return TL_WATER_ABOVE;
+    /* The lens: image-plane points TL_LENS_DISTANCE ahead of the camera,
+     * within `r` of it; the surface under them differs from the camera's
+     * by at most its slope times r (the ocean's slope is taken as 2). */
+    double ty = tan(0.5 * s->camera.vfov), tx = ty * s->width / s->height;
+    double r = TL_LENS_DISTANCE * sqrt(1.0 + tx * tx + ty * ty);
+    double slope = 2.0 + (giant->active ? giant->max_slope : 0.0);
+    double margin = r * (1.0 + slope);
+    if (c[1] - h > margin)
+        return TL_WATER_ABOVE;
+    if (h - c[1] > margin)
+        return TL_WATER_BELOW;
+    return TL_WATER_STRADDLES;
+}
+
+/* Under water: which pixels (feature bits), and the water body's
+ * extinction, scattering and the sun's light in it. */
+static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
+                               tl_frame_uniforms *u)
+{
+    double gap;
+    tl_water_side side = tl_prepare_water_side(s, w, giant, &gap);
+    if (side == TL_WATER_ABOVE)
+        return;
+    u->features |= TL_FEATURE_UNDERWATER;
+    if (side == TL_WATER_STRADDLES)
+        u->features |= TL_FEATURE_WATERLINE;
+    double sigma[3];
+    tl_optics_water_extinction(&s->water, sigma);
+    to_float3(sigma, u->water_sigma);
+    u->water_scattering = (float)s->water.scattering;
+    u->water_ior = (float)s->water.ior;
+    u->cam_depth = (float)fmax(-gap, 0.0);
+    u->lens = (float)TL_LENS_DISTANCE;
+    /* The sun's light below the surface: refracted at a flat surface (a
+     * sun below the horizon sends none). */
+    double sun[3];
+    tl_scene_sun_direction(&s->sun, sun);
+    double n = s->water.ior, cos_i = fmax(sun[1], 0.0);
+    double sin_t = sqrt(fmax(0.0, 1.0 - cos_i * cos_i)) / n;
+    double horizontal = hypot(sun[0], sun[2]);
+    double dir[3] = {0.0, -1.0, 0.0};
+    if (horizontal > 0.0) { /* light travels away from the sun, bent down */
+        dir[0] = -sun[0] / horizontal * sin_t;
+        dir[2] = -sun[2] / horizontal * sin_t;
+        dir[1] = -sqrt(1.0 - sin_t * sin_t);
+    }
+    to_float3(dir, u->sun_water);
+    u->sun_water_trans = sun[1] > 0.0 ? (float)(1.0 - tl_optics_fresnel(cos_i, 1.0, n)) : 0.0f;
+}
+
+/* Fog above the water: its feature only when it is there. */
+static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
+{
+    if (!(s->fog.density > 0.0))
+        return;
+    u->features |= TL_FEATURE_FOG;
+    u->fog[0] = (float)s->fog.density;
+    u->fog[1] = (float)s->fog.height;
+    to_float3(s->fog.color, u->fog_color);
+}
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
@@ -294,7 +368,11 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normal_smooth_rate = (float)s->water.normal_smooth_rate;
     u->normal_smooth_gain = (float)s->water.normal_smooth_gain;
     u->exposure = (float)s->exposure;
-    prepare_giant(s, u);
+    tl_giant giant;
+    tl_giant_prepare(&giant, &s->giant, s->time);
+    prepare_giant(s, &giant, u);
     prepare_boat(s, u);
     prepare_wake(s, u);
+    prepare_water_body(s, w, &giant, u);
+    prepare_fog(s, u);
 }

@@ -21,9 +21,17 @@ typedef enum tl_feature {
     TL_FEATURE_GIANT_WAVE = 1u << 1, /* the giant wave is enabled and not faded out */
     TL_FEATURE_BOAT = 1u << 2,       /* the boat is in view */
     TL_FEATURE_WAKE = 1u << 3,       /* the moving boat's wake is in view */
+    TL_FEATURE_UNDERWATER = 1u << 4, /* some pixels see from under the water */
+    TL_FEATURE_WATERLINE = 1u << 5,  /* the lens crosses the surface: decide per pixel */
+    TL_FEATURE_FOG = 1u << 6,        /* fog above the water */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 4
+#define TL_FEATURE_COUNT 7
+
+/* The lens: each pixel's point on an image plane this far ahead of the
+ * camera decides whether it sees from above or below the water when the
+ * camera is at the surface (TL_FEATURE_WATERLINE), metres. */
+#define TL_LENS_DISTANCE 0.25
 
 /* The #define name of feature bit `index` ("TL_FEATURE_SUN_DISC"), and the
  * words `still -v` and `render -v` print for it ("sun disc"). */
@@ -93,7 +101,33 @@ typedef struct tl_frame_uniforms {
     float wake[TL_WAKE_POINTS][4];
     float wake_params[4];  /* half beam, fade time, strength, unused */
     float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
+
+    /* Under water (TL_FEATURE_UNDERWATER). */
+    float water_sigma[3];   /* extinction per metre, R G B */
+    float water_scattering; /* per metre, grey */
+    float water_ior;
+    float cam_depth;       /* metres below the surface at the camera (0 above) */
+    float lens;            /* TL_LENS_DISTANCE */
+    float sun_water[3];    /* the direction sunlight travels in the water */
+    float sun_water_trans; /* the share of it that crosses a flat surface */
+
+    /* Fog (TL_FEATURE_FOG): density per metre at the water, height scale. */
+    float fog[2];
+    float fog_color[3];
 } tl_frame_uniforms;
+
+/* Where the camera sees from, for underwater.mode auto: above the water,
+ * below it, or with the lens across the surface (decided per pixel). */
+typedef enum tl_water_side {
+    TL_WATER_ABOVE,
+    TL_WATER_BELOW,
+    TL_WATER_STRADDLES,
+} tl_water_side;
+
+/* The frame's side of the water from the double CPU surface (giant wave
+ * included); *gap (may be NULL) gets the camera's height above it. */
+tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
+                                    double *gap);
 
 /* Near and far planes of the boat's rasterised pass, metres. */
 #define TL_BOAT_NEAR 0.05

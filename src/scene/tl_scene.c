@@ -49,6 +49,12 @@ void tl_scene_defaults(tl_scene *s)
     s->water.absorption[0] = 0.34; /* Pope & Fry 1997: 650, 550, 450 nm */
     s->water.absorption[1] = 0.057;
     s->water.absorption[2] = 0.009;
+    s->water.scattering = 0.03;
+    s->water.color_at_distance[0] = 0.3;
+    s->water.color_at_distance[1] = 0.7;
+    s->water.color_at_distance[2] = 0.8;
+    s->water.color_distance = 0.0; /* off: absorption + scattering */
+    s->water.ior = 1.333;
     s->water.foam = 1.0; /* scales every foam term (today: the giant wave's) */
 
     s->sky.brightness = 0.5;
@@ -57,6 +63,7 @@ void tl_scene_defaults(tl_scene *s)
     s->fog.color[0] = 0.55;
     s->fog.color[1] = 0.65;
     s->fog.color[2] = 0.75;
+    s->fog.height = 100.0;
     s->underwater.mode = TL_UNDERWATER_AUTO;
 
     s->giant.enabled = false;

@@ -41,6 +41,10 @@ typedef struct tl_ocean {
 
 typedef struct tl_water {
     double absorption[3];      /* per metre, R G B (pure water: 0.34, 0.057, 0.009) */
+    double scattering;         /* per metre, grey: particles that light the water body */
+    double color_at_distance[3]; /* the colour white light takes after color_distance */
+    double color_distance;       /* metres; > 0 sets the extinction from the colour above */
+    double ior;                  /* refractive index (1.333) */
     double foam;               /* scale of every foam term, 0..1 (1) */
     double fresnel_f0;         /* Schlick F0 (0.04) */
     double scatter_color[3];   /* linear RGB (0.0293, 0.0698, 0.1717) */
@@ -55,10 +59,12 @@ typedef struct tl_sky {
     double brightness; /* scale of the cheap atmosphere (0.5) */
 } tl_sky;
 
-/* Distance fog: extinction plus in-scatter toward `color`. */
+/* Distance fog: extinction plus in-scatter toward `color`, thinning with
+ * height above the water. */
 typedef struct tl_fog {
-    double density;  /* per metre; 0 turns fog off */
+    double density;  /* per metre at the water; 0 turns fog off */
     double color[3]; /* linear RGB */
+    double height;   /* metres over which the density falls by e */
 } tl_fog;
 
 typedef enum tl_underwater_mode {

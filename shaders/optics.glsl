@@ -1,0 +1,66 @@
+// Optics of the water and the air (src/optics/tl_optics.c holds the same
+// formulas in double): the exact Fresnel reflectance, the water body's
+// transmittance, the fog's optical depth.
+
+// Reflectance of unpolarised light arriving in index n1 at cos_i, leaving
+// into n2: (r_s² + r_p²) / 2; 1 under total internal reflection. Schlick's
+// approximation with the water-side cosine is far off near the edge of
+// Snell's window (0.024 instead of 0.43 at 48 deg), so the exact form.
+float optics_fresnel(float cos_i, float n1, float n2)
+{
+    cos_i = min(abs(cos_i), 1.0);
+    float sin_t = n1 / n2 * sqrt(max(0.0, 1.0 - cos_i * cos_i));
+    if (sin_t >= 1.0)
+        return 1.0;
+    float cos_t = sqrt(1.0 - sin_t * sin_t);
+    float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+    float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+#ifdef TL_FEATURE_UNDERWATER
+uniform vec3 u_water_sigma;      // extinction per metre, R G B
+uniform float u_water_scattering; // per metre, grey
+uniform float u_water_ior;
+uniform float u_cam_depth;       // metres below the surface at the camera
+uniform float u_lens;            // the lens plane's distance ahead of the camera
+uniform vec3 u_sun_water;        // the direction sunlight travels in the water
+uniform float u_sun_water_trans; // the share of it that crossed the surface
+
+// Beer-Lambert: the share of light left after `dist` metres of water.
+vec3 optics_water_transmittance(float dist)
+{
+    return exp(-u_water_sigma * dist);
+}
+#endif
+
+#ifdef TL_FEATURE_FOG
+uniform vec2 u_fog;       // density per metre at the water, height over which it thins by e
+uniform vec3 u_fog_color;
+
+// Optical depth along `dist` metres of a ray from height y0 with vertical
+// component ray_y, through fog of density u_fog.x·exp(-y / u_fog.y).
+float optics_fog_depth(float y0, float ray_y, float dist)
+{
+    float at_start = u_fog.x * exp(-max(y0, 0.0) / u_fog.y);
+    float rise = ray_y * dist / u_fog.y;
+    if (abs(rise) < 1.0e-4)
+        return at_start * dist;
+    // Clamp: beyond e^80 the fog is opaque anyway.
+    return at_start * dist * (1.0 - exp(-clamp(rise, -80.0, 80.0))) / rise;
+}
+#endif
+
+#ifdef TL_FEATURE_FOG
+// Fog over `color` seen `dist` metres along `ray` (TL_SKY_DEPTH: the sky):
+// extinction T = exp(-depth) and in-scatter toward the fog's colour,
+// brighter toward the sun while it is up.
+vec3 optics_fog(vec3 color, vec3 ray, float dist)
+{
+    float depth = optics_fog_depth(u_cam_height, ray.y, min(dist, 1.0e7));
+    float t = exp(-depth);
+    float toward_sun = pow(max(dot(ray, u_sun_dir), 0.0), 8.0);
+    vec3 haze = u_fog_color * (1.0 + 1.5 * toward_sun * smoothstep(-0.05, 0.1, u_sun_dir.y));
+    return color * t + haze * (1.0 - t);
+}
+#endif

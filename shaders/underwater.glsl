@@ -1,0 +1,89 @@
+// Seeing from under the water (TL_FEATURE_UNDERWATER): the same surface as
+// from above, marched from below; Snell's window through it (the sky
+// refracted, with the exact Fresnel split, total internal reflection
+// beyond 48.6 deg for water); and the water body between: Beer-Lambert
+// extinction and in-scattered light. With TL_FEATURE_WATERLINE each pixel
+// decides its side from its point on the lens plane.
+
+// Distance along an upward ray from below to the surface, or -1 (rays that
+// look down never meet it). Steps by the depth under the surface, divided
+// inside the giant wave's box by its slope bound, as the march from above.
+float underwater_march(vec3 ray, float t)
+{
+    if (ray.y <= 0.0)
+        return -1.0;
+    float top = 0.0;
+    vec2 box = vec2(TL_FAR, -1.0);
+#ifdef TL_FEATURE_GIANT_WAVE
+    box = giant_ray_interval(ray);
+    top = u_giant_bounds.w * u_giant_shape.y;
+    float ray_along = abs(dot(u_giant_frame.xy, ray.xz)), ray_flat = length(ray.xz);
+#endif
+    for (int i = 0; i < u_march_steps; i++) {
+        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
+        float below = surface_height(pos.xz, u_march_octaves) - pos.y;
+        if (below < u_hit_epsilon)
+            return t;
+        float step = below;
+#ifdef TL_FEATURE_GIANT_WAVE
+        if (t >= box.x && t <= box.y)
+            step /= 1.0 + ray_flat * giant_slope_near(giant_coords(pos.xz).x, below * ray_along);
+#endif
+        t += step;
+        if (pos.y > top + 1.0)
+            return t; // above every crest: the surface was met (a guard)
+    }
+    return t;
+}
+
+// The light a view ray meets in deep water: sunlight and skylight scattered
+// toward the eye, dimmed by the water above the camera; the sun's forward
+// lobe (Henyey-Greenstein, g = 0.75) brightens the view toward it.
+vec3 underwater_inscatter(vec3 ray)
+{
+    vec3 sigma = u_water_sigma;
+    vec3 albedo = min(vec3(u_water_scattering) / sigma, vec3(1.0));
+    float mu = dot(u_sun_water, -ray);
+    const float g = 0.75;
+    float phase = (1.0 - g * g) / (12.5663706 * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
+    vec3 sun = vec3(sky_sun_irradiance() * u_sun_water_trans * phase) *
+               exp(-sigma * u_cam_depth / max(-u_sun_water.y, 0.1));
+    vec3 sky = sky_ambient() * 0.25 * exp(-sigma * u_cam_depth);
+    return albedo * (sun + sky);
+}
+
+// Radiance along a ray seen from under the water; *dist is the distance to
+// the surface, or TL_SKY_DEPTH for the depths.
+vec3 trace_underwater(vec3 ray, out float dist)
+{
+    vec3 deep = underwater_inscatter(ray);
+    float t = underwater_march(ray, underwater_start(ray));
+    if (t < 0.0) {
+        dist = TL_SKY_DEPTH;
+        return deep;
+    }
+    dist = t;
+    vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
+    float value;
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, value);
+#ifdef TL_FEATURE_GIANT_WAVE
+    GiantSample giant = giant_sample(hit.xz);
+    vec2 slope = -n.xz / n.y + giant.grad;
+    n = normalize(vec3(-slope.x, 1.0, -slope.y));
+#endif
+    // Light from above crosses into the water (radiance grows by n²: the
+    // sky's hemisphere is squeezed into the window); what does not cross
+    // comes back down from the depths.
+    float cos_i = max(dot(ray, n), 0.0);
+    float fresnel = optics_fresnel(cos_i, u_water_ior, 1.0);
+    vec3 through = vec3(0.0);
+    if (fresnel < 1.0) {
+        vec3 out_dir = refract(ray, -n, u_water_ior);
+        out_dir.y = max(out_dir.y, 0.0);
+        through = sky_color(normalize(out_dir)) * (u_water_ior * u_water_ior);
+    }
+    vec3 down = reflect(ray, -n);
+    vec3 surface = (1.0 - fresnel) * through + fresnel * underwater_inscatter(down);
+    vec3 trans = optics_water_transmittance(t);
+    return surface * trans + deep * (1.0 - trans);
+}

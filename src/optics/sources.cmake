@@ -1,0 +1,1 @@
+set(TL_OPTICS_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_optics.c)

@@ -1,0 +1,376 @@
+/* Under water and fog on the GPU (llvmpipe on CI): Snell's window in a
+ * frame, the exact Fresnel reflectance from the water side, Beer-Lambert
+ * and fog transmittance against exp(-sigma d), the waterline of a frame
+ * across the surface, the auto mode's flip, and fog 0 as no fog. */
+#include <string.h>
+
+#include "optics/tl_optics.h"
+#include "tl_gl_test.h"
+
+#define DEG (M_PI / 180.0)
+
+static void prepare(const tl_scene *s, tl_frame_uniforms *u)
+{
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    tl_prepare_frame(s, &w, u);
+}
+
+/* Reflectance from the Fresnel equations in their angle form, to check
+ * the cosine form the code uses. */
+static double fresnel_by_angles(double theta_i, double n1, double n2)
+{
+    double s = n1 / n2 * sin(theta_i);
+    if (s >= 1.0)
+        return 1.0;
+    if (theta_i == 0.0) {
+        double r = (n1 - n2) / (n1 + n2);
+        return r * r;
+    }
+    double theta_t = asin(s);
+    double rs = sin(theta_i - theta_t) / sin(theta_i + theta_t);
+    double rp = tan(theta_i - theta_t) / tan(theta_i + theta_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+static void test_fresnel(tl_renderer *r)
+{
+    const double angles[] = {0, 10, 25, 40, 45, 47, 48, 48.5, 48.7, 55, 70, 89};
+    enum { N = sizeof angles / sizeof angles[0] };
+    tl_scene s;
+    tl_scene_defaults(&s);
+    tl_frame_uniforms u;
+    prepare(&s, &u);
+    float in[2 * N], out[4 * N];
+    for (int i = 0; i < N; i++) {
+        in[2 * i] = (float)cos(angles[i] * DEG);
+        in[2 * i + 1] = 1.333f;
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_probe(r, &u, 1, in, N, 1, out, &err) == 0);
+    double worst_gpu = 0.0, worst_cpu = 0.0;
+    for (int i = 0; i < N; i++) {
+        double exact = fresnel_by_angles(angles[i] * DEG, 1.333, 1.0);
+        /* The GPU saw cos rounded to float: compare at that cosine. */
+        double at = acos((double)in[2 * i]);
+        worst_gpu = fmax(worst_gpu, fabs(out[4 * i] - fresnel_by_angles(at, 1.333, 1.0)));
+        worst_cpu = fmax(worst_cpu, fabs(tl_optics_fresnel(cos(angles[i] * DEG), 1.333, 1.0) - exact));
+        if (angles[i] > 48.6) /* total internal reflection */
+            CHECK(out[4 * i] == 1.0f);
+    }
+    double schlick48 = 0.02 + 0.98 * pow(1.0 - cos(48.0 * DEG), 5.0);
+    printf("Fresnel from the water side: |GPU - exact| <= %.2g, |CPU - exact| <= %.2g; at 48 deg "
+           "exact %.3f, Schlick %.3f; window half-angle %.3f deg\n",
+           worst_gpu, worst_cpu, fresnel_by_angles(48.0 * DEG, 1.333, 1.0), schlick48,
+           tl_optics_snell_window(1.333) / DEG);
+    CHECK(worst_gpu <= 1e-4);
+    CHECK(worst_cpu <= 1e-12);
+    CHECK_NEAR(tl_optics_snell_window(1.333) / DEG, 48.6, 0.05);
+}
+
+/* Snell's window: 5 m under a flat sea, looking straight up with a wide
+ * lens; the bright window's edge sits at 48.6 deg from the zenith, and
+ * outside it no pixel carries the sky's light. */
+static void test_snell_window(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = s.height = 241;
+    s.ocean.depth = 0.001;
+    s.camera.position[1] = -5.0;
+    s.camera.pitch = 90.0 * DEG;
+    s.camera.vfov = 130.0 * DEG;
+    s.sun.elevation = 60.0 * DEG;
+    s.sun.azimuth = 0.0;
+    tl_frame_uniforms u;
+    prepare(&s, &u);
+    CHECK((u.features & TL_FEATURE_UNDERWATER) && !(u.features & TL_FEATURE_WATERLINE));
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    int c = s.width / 2;
+    double focal = 0.5 * s.height / tan(0.5 * s.camera.vfov);
+    /* Along the four half-axes from the centre (the sun lies elsewhere). */
+    const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    double worst = 0.0;
+    for (int d = 0; d < 4; d++) {
+        double inside = luminance(f.color + ((size_t)(c + 10 * dirs[d][1]) * s.width +
+                                             (size_t)(c + 10 * dirs[d][0])) *
+                                                4);
+        double outside = luminance(f.color + ((size_t)(c + 115 * dirs[d][1]) * s.width +
+                                              (size_t)(c + 115 * dirs[d][0])) *
+                                                 4);
+        double half = 0.5 * (inside + outside);
+        int k = 10;
+        while (k < 118 &&
+               luminance(f.color + ((size_t)(c + k * dirs[d][1]) * s.width +
+                                    (size_t)(c + k * dirs[d][0])) *
+                                       4) > half)
+            k++;
+        double edge = atan((k - 0.5) / focal) / DEG;
+        printf("Snell's window along (%d, %d): edge at %.2f deg (inside %.3f, outside %.4f)\n",
+               dirs[d][0], dirs[d][1], edge, inside, outside);
+        worst = fmax(worst, fabs(edge - 48.6));
+        CHECK(outside < 0.2 * inside);
+    }
+    CHECK(worst <= 1.0);
+    /* Outside the window (beyond 49.6 deg) no pixel holds sky light (the
+     * reflectance there is exactly 1, test_fresnel): all are the water
+     * body's in-scattered light, dimmer than the window, bluer than red. */
+    double brightest = 0.0;
+    int blue = 1;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            double angle = atan(hypot(x - c, y - c) / focal) / DEG;
+            if (angle < 49.6)
+                continue;
+            const float *p = f.color + ((size_t)y * s.width + x) * 4;
+            brightest = fmax(brightest, luminance(p));
+            blue &= p[2] > p[0];
+        }
+    double window = luminance(f.color + ((size_t)c * s.width + c + 10) * 4);
+    printf("outside the window: brightest %.4f (the window %.3f)\n", brightest, window);
+    CHECK(brightest < 0.5 * window);
+    CHECK(blue);
+    tl_frame_free(&f);
+}
+
+/* Beer-Lambert per channel, and the friendly form: white light after
+ * color_distance metres has the colour asked for. */
+static void test_water_transmittance(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.camera.position[1] = -4.0;
+    for (int friendly = 0; friendly < 2; friendly++) {
+        if (friendly) {
+            s.water.color_distance = 12.0;
+            s.water.color_at_distance[0] = 0.2;
+            s.water.color_at_distance[1] = 0.6;
+            s.water.color_at_distance[2] = 0.7;
+        }
+        tl_frame_uniforms u;
+        prepare(&s, &u);
+        double sigma[3];
+        tl_optics_water_extinction(&s.water, sigma);
+        const float dist[] = {0.0f, 1.0f, 5.0f, 12.0f, 40.0f, 150.0f};
+        enum { N = sizeof dist / sizeof dist[0] };
+        float in[2 * N], out[4 * N];
+        for (int i = 0; i < N; i++) {
+            in[2 * i] = dist[i];
+            in[2 * i + 1] = 0.0f;
+        }
+        tl_error err;
+        tl_error_clear(&err);
+        CHECK(tl_renderer_probe(r, &u, 2, in, N, 1, out, &err) == 0);
+        int monotone = 1;
+        double worst = 0.0;
+        for (int i = 0; i < N; i++)
+            for (int ch = 0; ch < 3; ch++) {
+                double want = exp(-sigma[ch] * dist[i]);
+                worst = fmax(worst, fabs(out[4 * i + ch] - want) / fmax(want, 1e-30));
+                if (i > 0)
+                    monotone &= out[4 * i + ch] <= out[4 * (i - 1) + ch];
+            }
+        printf("water transmittance (%s): max relative error %.2g\n",
+               friendly ? "colour at distance" : "absorption + scattering", worst);
+        CHECK(worst <= 1e-4);
+        CHECK(monotone);
+        if (friendly)
+            for (int ch = 0; ch < 3; ch++)
+                CHECK_NEAR(out[4 * 3 + ch], s.water.color_at_distance[ch], 1e-5);
+    }
+}
+
+static void test_fog_transmittance(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.camera.position[1] = 7.0;
+    s.fog.density = 0.02;
+    s.fog.height = 40.0;
+    tl_frame_uniforms u;
+    prepare(&s, &u);
+    CHECK(u.features & TL_FEATURE_FOG);
+    const float slopes[] = {-0.3f, -0.01f, 0.0f, 0.05f, 0.5f, 1.0f};
+    const float dist[] = {0.0f, 2.0f, 10.0f, 50.0f, 200.0f, 1000.0f, 5000.0f};
+    enum { NS = 6, ND = 7 };
+    float in[2 * NS * ND], out[4 * NS * ND];
+    for (int a = 0; a < NS; a++)
+        for (int b = 0; b < ND; b++) {
+            in[2 * (a * ND + b)] = dist[b];
+            in[2 * (a * ND + b) + 1] = slopes[a];
+        }
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_probe(r, &u, 3, in, NS * ND, 1, out, &err) == 0);
+    double worst = 0.0;
+    int monotone = 1;
+    for (int a = 0; a < NS; a++)
+        for (int b = 0; b < ND; b++) {
+            double want =
+                exp(-tl_optics_fog_depth(0.02, 40.0, 7.0, slopes[a], dist[b]));
+            worst = fmax(worst, fabs(out[4 * (a * ND + b)] - want));
+            if (b > 0)
+                monotone &= out[4 * (a * ND + b)] <= out[4 * (a * ND + b - 1)];
+        }
+    /* A uniform layer (a level ray) is exp(-density · exp(-y/H) · d). */
+    double level = exp(-0.02 * exp(-7.0 / 40.0) * 50.0);
+    printf("fog transmittance: max |GPU - CPU| %.2g; level ray over 50 m %.5f (exp form %.5f)\n",
+           worst, out[4 * (2 * ND + 3)], level);
+    CHECK(worst <= 1e-4);
+    CHECK(monotone);
+    CHECK_NEAR(out[4 * (2 * ND + 3)], level, 1e-5);
+}
+
+/* A camera at the surface: the frame straddles it, every pixel is finite,
+ * and the waterline (the sign change of each pixel's lens gap) is one
+ * connected curve across the frame. */
+static void test_waterline(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = 128;
+    s.height = 72;
+    s.time = 4.0;
+    s.camera.pitch = 0.0;
+    s.camera.roll = 0.05; /* the waterline slightly tilted, across the whole frame */
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    /* The camera level with the surface at the centre pixel's lens point. */
+    s.camera.position[1] = tl_waves_height(&w, 0.0, TL_LENS_DISTANCE, s.time,
+                                           s.quality.march_octaves);
+    tl_frame_uniforms u;
+    prepare(&s, &u);
+    CHECK((u.features & TL_FEATURE_WATERLINE) && (u.features & TL_FEATURE_UNDERWATER));
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    int finite = 1;
+    for (size_t i = 0; i < (size_t)s.width * s.height * 4; i++)
+        finite &= isfinite(f.color[i]) && f.color[i] >= 0.0f;
+    CHECK(finite);
+    tl_frame_free(&f);
+
+    enum { W = 128, H = 72 };
+    static float in[2 * W * H], out[4 * W * H];
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            in[2 * (y * W + x)] = (float)((x + 0.5) / W * 2.0 - 1.0);
+            in[2 * (y * W + x) + 1] = (float)((y + 0.5) / H * 2.0 - 1.0); /* bottom row first */
+        }
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_probe(r, &u, 4, in, W * H, s.quality.march_octaves, out, &err) == 0);
+    int one_change = 1, connected = 1, prev = -1, under = 0;
+    for (int x = 0; x < W; x++) {
+        int changes = 0, row = -1;
+        for (int y = 1; y < H; y++)
+            if ((out[4 * (y * W + x)] < 0.0f) != (out[4 * ((y - 1) * W + x)] < 0.0f)) {
+                changes++;
+                row = y;
+            }
+        under += out[4 * x] < 0.0f; /* bottom row under water */
+        one_change &= changes == 1;
+        if (prev >= 0 && row >= 0)
+            connected &= abs(row - prev) <= 3;
+        prev = row;
+    }
+    printf("waterline: one crossing per column %s, connected %s, %d of %d bottom pixels under\n",
+           one_change ? "yes" : "no", connected ? "yes" : "no", under, W);
+    CHECK(one_change);
+    CHECK(connected);
+    CHECK(under == W);
+}
+
+/* auto: the side flips exactly where the camera crosses the CPU surface;
+ * the lens decides each pixel from the same heights. */
+static void test_auto_flip(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.time = 7.0;
+    s.camera.pitch = 0.0;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_giant none;
+    tl_giant_prepare(&none, &s.giant, s.time);
+    /* The centre pixel's lens point, 0.25 m ahead: where the surface is. */
+    double right[3], up[3], fwd[3];
+    tl_scene_camera_basis(&s.camera, right, up, fwd);
+    double lx = fwd[0] * TL_LENS_DISTANCE, lz = fwd[2] * TL_LENS_DISTANCE;
+    double h = tl_waves_height(&w, lx, lz, s.time, s.quality.march_octaves);
+    const double offsets[2] = {-2e-3, 2e-3};
+    for (int k = 0; k < 2; k++) {
+        s.camera.position[1] = h + offsets[k] - fwd[1] * TL_LENS_DISTANCE;
+        tl_frame_uniforms u;
+        prepare(&s, &u);
+        float in[2] = {0.0f, 0.0f}, out[4];
+        tl_error err;
+        tl_error_clear(&err);
+        CHECK(tl_renderer_probe(r, &u, 4, in, 1, s.quality.march_octaves, out, &err) == 0);
+        printf("lens %+.0f mm from the surface: GPU gap %+.5f m\n", offsets[k] * 1e3, out[0]);
+        CHECK((out[0] < 0.0f) == (offsets[k] < 0.0));
+        CHECK_NEAR(out[0], offsets[k], 2e-4);
+    }
+    /* Far from the surface the whole frame is one side. */
+    double hc = tl_waves_height(&w, 0.0, 0.0, s.time, s.quality.march_octaves);
+    s.camera.position[1] = hc + 3.0;
+    CHECK(tl_prepare_water_side(&s, &w, &none, NULL) == TL_WATER_ABOVE);
+    s.camera.position[1] = hc - 3.0;
+    CHECK(tl_prepare_water_side(&s, &w, &none, NULL) == TL_WATER_BELOW);
+    s.camera.position[1] = hc + 1e-6;
+    CHECK(tl_prepare_water_side(&s, &w, &none, NULL) == TL_WATER_STRADDLES);
+    s.underwater.mode = TL_UNDERWATER_OFF;
+    CHECK(tl_prepare_water_side(&s, &w, &none, NULL) == TL_WATER_ABOVE);
+    s.underwater.mode = TL_UNDERWATER_ON;
+    s.camera.position[1] = hc + 30.0;
+    CHECK(tl_prepare_water_side(&s, &w, &none, NULL) == TL_WATER_BELOW);
+}
+
+/* fog.density 0 compiles no fog: the frame is byte-identical whatever the
+ * other fog knobs say. */
+static void test_no_fog(tl_renderer *r)
+{
+    tl_scene a, b;
+    tl_scene_defaults(&a);
+    a.width = 96;
+    a.height = 54;
+    b = a;
+    b.fog.color[0] = 9.0;
+    b.fog.height = 3.0;
+    tl_frame_uniforms u;
+    prepare(&b, &u);
+    CHECK(!(u.features & TL_FEATURE_FOG));
+    tl_frame fa, fb;
+    if (render(r, &a, &fa))
+        return;
+    if (render(r, &b, &fb)) {
+        tl_frame_free(&fa);
+        return;
+    }
+    size_t n = (size_t)a.width * a.height;
+    CHECK(memcmp(fa.color, fb.color, n * 4 * sizeof(float)) == 0);
+    CHECK(memcmp(fa.depth, fb.depth, n * sizeof(float)) == 0);
+    tl_frame_free(&fa);
+    tl_frame_free(&fb);
+}
+
+int main(void)
+{
+    tl_gl_context *ctx = NULL;
+    tl_renderer *r = gl_test_open(&ctx);
+    if (!r)
+        return 1;
+    test_fresnel(r);
+    test_snell_window(r);
+    test_water_transmittance(r);
+    test_fog_transmittance(r);
+    test_waterline(r);
+    test_auto_flip(r);
+    test_no_fog(r);
+    tl_renderer_destroy(r);
+    tl_gl_context_destroy(ctx);
+    TEST_END();
+}
