@@ -182,7 +182,8 @@ static void test_success(void)
     CHECK(height > 11.0 && height < 13.0); /* 12 m crest on a 1 m ocean band */
     CHECK_STR_CONTAINS(out_text, "water under camera");
     CHECK(run(NULL, "eval", tl, "--at", "0s", "--json", NULL) == 0);
-    CHECK_STR_CONTAINS(out_text, "\"giant\": null, \"water\": {\"under_camera\": ");
+    CHECK_STR_CONTAINS(out_text,
+                       "\"giant\": null, \"underwater\": \"no\", \"water\": {\"under_camera\": ");
     unlink(tl);
     unlink(png);
     unlink(exr);

@@ -625,8 +625,11 @@ static void test_features(void)
     f = features("tideline 1\npath boat\n  0s 0 0\n  10s 0 50\n");
     CHECK(f.boat && !f.giant_wave && !f.fog && !f.underwater);
 
-    f = features("tideline 1\nset giant.enabled on\n");
+    f = features("tideline 1\nset giant.enabled on\nset camera.position 0 20 -200\n");
     CHECK(f.giant_wave && !f.boat && !f.fog && !f.underwater);
+    /* A camera lower than the giant wave's crest may be under it. */
+    f = features("tideline 1\nset giant.enabled on\nset camera.position 0 5 -200\n");
+    CHECK(f.giant_wave && f.underwater);
     /* Enabled but faded out for the whole timeline: nothing to draw. */
     f = features("tideline 1\nset giant.enabled on\nset giant.fade 0\n");
     CHECK(!f.giant_wave);

@@ -8,6 +8,7 @@
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
 #include "mesh/tl_mesh.h"
+#include "prepare/tl_prepare.h"
 #include "timeline/tl_parse.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
@@ -30,15 +31,15 @@ static const char eval_usage[] =
     "Print every channel's evaluated value. Angles are printed in degrees,\n"
     "lengths in metres, as the language writes them. Then the giant wave's\n"
     "state (crest position, distance to its centre, speed, steepness and curl\n"
-    "after the height-field clamp) and the water height under the camera and\n"
-    "under the crest.\n"
+    "after the height-field clamp), the water height under the camera, the\n"
+    "crest and the boat, and whether the camera sees from under the water.\n"
     "\n"
     "Options:\n"
     "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps)\n"
     "  --frames A-B   every frame from A to B inclusive (frame time = frame / fps)\n"
     "  --json         one JSON object: {\"file\", \"fps\", \"samples\": [{\"time\",\n"
     "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\",\n"
-    "                 \"giant\", \"water\"}]}\n"
+    "                 \"giant\", \"underwater\", \"water\"}]}\n"
     "  -h, --help     show this help\n";
 
 /* Loads a timeline, printing its diagnostics, and its boat's mesh; returns
@@ -178,6 +179,7 @@ typedef struct surface_report {
     double to_center;    /* crest's signed distance past the centre, metres */
     double under_camera; /* water height under the camera */
     double under_boat;   /* water height under the boat's centre (when there is one) */
+    tl_water_side side;  /* where the camera sees from (underwater.mode) */
 } surface_report;
 
 static void surface_report_of(const tl_scene *s, surface_report *r)
@@ -191,6 +193,7 @@ static void surface_report_of(const tl_scene *s, surface_report *r)
                                               s->camera.position[2], s->time, oct, it);
     r->under_boat = tl_waves_surface_height(&waves, g, s->boat.position[0], s->boat.position[2],
                                             s->time, oct, it);
+    r->side = tl_prepare_water_side(s, &waves, g, NULL);
     if (!g->active)
         return;
     double y, dy, d, dd;
@@ -202,6 +205,12 @@ static void surface_report_of(const tl_scene *s, surface_report *r)
         tl_waves_surface_height(&waves, g, r->crest[0], r->crest[1], s->time, oct, it);
     r->to_center = g->dir[0] * (g->origin[0] - s->giant.center[0]) +
                    g->dir[1] * (g->origin[1] - s->giant.center[1]);
+}
+
+/* "no", "yes", or "at the surface" (each pixel decides): the frame's side. */
+static const char *side_word(tl_water_side side)
+{
+    return side == TL_WATER_BELOW ? "yes" : side == TL_WATER_ABOVE ? "no" : "at the surface";
 }
 
 static void print_report_text(const tl_scene *s)
@@ -224,6 +233,8 @@ static void print_report_text(const tl_scene *s)
     }
     printf("  %-26s %.6g m (camera %.6g m above it)\n", "water under camera", r.under_camera,
            s->camera.position[1] - r.under_camera);
+    printf("  %-26s %s (%s)\n", "underwater", side_word(r.side),
+           tl_channel_find("underwater.mode")->names[s->underwater.mode]);
     if (s->boat.enabled)
         printf("  %-26s %.6g m (the boat's waterline %.6g m above it)\n", "water under boat",
                r.under_boat, s->boat.position[1] - r.under_boat);
@@ -243,6 +254,7 @@ static void print_report_json(const tl_scene *s)
                g->min_jacobian, g->max_slope);
     else
         printf("null");
+    printf(", \"underwater\": \"%s\"", side_word(r.side));
     printf(", \"water\": {\"under_camera\": %.17g, \"under_crest\": ", r.under_camera);
     if (g->active)
         printf("%.17g", r.crest_height);

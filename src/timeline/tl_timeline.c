@@ -194,9 +194,13 @@ void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *f)
         f->boat |= s.boat.enabled;
         f->giant_wave |= s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
         f->fog |= s.fog.density > 0.0;
-        /* Auto: the camera may be under water once it is below the crest
-         * plane (the exact test against the waves happens per frame). */
-        f->underwater |= s.underwater.mode == TL_UNDERWATER_ON ||
-                         (s.underwater.mode == TL_UNDERWATER_AUTO && s.camera.position[1] < 0.0);
+        /* Auto: the camera may be under water once it is below the highest
+         * crest (the ocean's plane at 0, or the giant wave's top); each
+         * frame decides exactly from the surface. */
+        bool giant = s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
+        double crests = giant ? s.giant.fade * s.giant.height : 0.0;
+        f->underwater |=
+            s.underwater.mode == TL_UNDERWATER_ON ||
+            (s.underwater.mode == TL_UNDERWATER_AUTO && s.camera.position[1] < crests + 0.5);
     }
 }
