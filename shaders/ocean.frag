@@ -116,7 +116,7 @@ vec3 trace(vec3 ray, out float dist)
     color = boat_composite(color, ray, dist);
 #endif
 #ifdef TL_FEATURE_FOG
-    color = optics_fog(color, ray, dist);
+    color = optics_fog(color, u_cam_height, ray, dist);
 #endif
     return color;
 }

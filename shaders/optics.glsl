@@ -52,12 +52,12 @@ float optics_fog_depth(float y0, float ray_y, float dist)
 #endif
 
 #ifdef TL_FEATURE_FOG
-// Fog over `color` seen `dist` metres along `ray` (TL_SKY_DEPTH: the sky):
-// extinction T = exp(-depth) and in-scatter toward the fog's colour,
-// brighter toward the sun while it is up.
-vec3 optics_fog(vec3 color, vec3 ray, float dist)
+// Fog over `color` seen `dist` metres along `ray` from height y0
+// (TL_SKY_DEPTH: the sky): extinction T = exp(-depth) and in-scatter toward
+// the fog's colour, brighter toward the sun while it is up.
+vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist)
 {
-    float depth = optics_fog_depth(u_cam_height, ray.y, min(dist, 1.0e7));
+    float depth = optics_fog_depth(y0, ray.y, min(dist, 1.0e7));
     float t = exp(-depth);
     float toward_sun = pow(max(dot(ray, u_sun_dir), 0.0), 8.0);
     vec3 haze = u_fog_color * (1.0 + 1.5 * toward_sun * smoothstep(-0.05, 0.1, u_sun_dir.y));

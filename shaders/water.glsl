@@ -38,6 +38,10 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
     vec3 reflection = sky_color(r);
+#ifdef TL_FEATURE_FOG
+    // The sky the water mirrors is seen through the fog above it too.
+    reflection = optics_fog(reflection, max(hit.y, 0.0), r, TL_SKY_DEPTH);
+#endif
 #ifdef TL_FEATURE_BOAT
     reflection = boat_reflect(reflection, n);
 #endif
