@@ -42,7 +42,15 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 vec3 boat_reflect(vec3 sky, vec3 n)
 {
     vec2 size = vec2(textureSize(u_boat_reflection, 0));
-    vec2 at = clamp(gl_FragCoord.xy + n.xz * (0.15 * size.y), vec2(0.0), size - 1.0);
-    vec4 hull = texelFetch(u_boat_reflection, ivec2(at), 0);
-    return mix(sky, hull.rgb, hull.a);
+    vec2 at = gl_FragCoord.xy + n.xz * (0.15 * size.y);
+    // Four taps 3 px apart: ripples break a reflection's edges up softly.
+    vec4 hull = vec4(0.0);
+    for (int i = 0; i < 4; i++) {
+        vec2 tap = at + vec2(i & 1, i >> 1) * 3.0 - 1.5;
+        hull += texelFetch(u_boat_reflection, ivec2(clamp(tap, vec2(0.0), size - 1.0)), 0);
+    }
+    hull *= 0.25;
+    // The taps' colours are weighted by their coverage: unpremultiply.
+    vec3 color = hull.a > 0.0 ? hull.rgb / hull.a : vec3(0.0);
+    return mix(sky, color, hull.a);
 }
