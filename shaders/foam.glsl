@@ -42,7 +42,7 @@ float foam_lace(vec2 p)
 // Thin foam (thickness near 0) lets the water through and looks greyer.
 vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness)
 {
-    float sun = sky_sun_irradiance() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
+    vec3 sun = sky_sun_light() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
-    return mix(color, albedo * (sky_ambient() + vec3(sun)), foam);
+    return mix(color, albedo * (sky_ambient() + sun), foam);
 }

@@ -205,8 +205,8 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
     float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
     float thin = smoothstep(0.35, 0.95, top);
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
-    return u_giant_scatter_color *
-           (u_giant_scatter.x * phase * moved * thin * daylight * sky_sun_irradiance());
+    return u_giant_scatter_color * sky_sun_light() *
+           (u_giant_scatter.x * phase * moved * thin * daylight);
 }
 
 // Foam and light through the crest over the water's colour.

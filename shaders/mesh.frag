@@ -21,14 +21,14 @@ void main()
     // Two-sided: models may be open or wound either way.
     if (dot(n, view) > 0.0)
         n = -n;
-    float sun = sky_sun_irradiance();
+    vec3 sun = sky_sun_light();
     float lambert = max(dot(n, u_sun_dir), 0.0);
     // The sky lights what faces up more than what faces down.
     vec3 ambient = sky_ambient() * (0.6 + 0.4 * n.y);
-    vec3 diffuse = v_color * (ambient + vec3(sun * lambert / 3.1415927));
+    vec3 diffuse = v_color * (ambient + sun * (lambert / 3.1415927));
     vec3 h = normalize(u_sun_dir - view);
-    float spec = pow(max(dot(n, h), 0.0), 48.0) * 0.04 * sun * lambert;
-    vec3 color = diffuse + vec3(spec);
+    vec3 spec = sun * (pow(max(dot(n, h), 0.0), 48.0) * 0.04 * lambert);
+    vec3 color = diffuse + spec;
     if (any(isnan(color)) || any(isinf(color)))
         color = vec3(0.0);
     out_color = vec4(max(color, vec3(0.0)), 1.0);

@@ -1,4 +1,79 @@
-// Sky: the reference's "extra cheap atmosphere" plus the sun disc lobe.
+// The sky: one function that the sky pixels, the water's reflection,
+// Snell's window and the fog all call, so they agree.
+//
+// TL_FEATURE_SKY_PHYSICAL: Rayleigh + Mie + ozone with multiple scattering
+// (src/sky/tl_sky.c builds the sky-view table on the CPU; here it is read
+// back), and the sun as a disc of its real size with limb darkening, its
+// colour from the air along its path. Without it: the reference shader's
+// "extra cheap atmosphere" and its sun lobe, exactly as they were.
+
+#ifdef TL_FEATURE_SKY_PHYSICAL
+uniform sampler2D u_sky_view;  // radiance for a sun of illuminance 1: azimuth from the sun, latitude
+uniform float u_sky_scale;     // the sun's illuminance above the air
+uniform vec3 u_sun_light;      // its light at the camera: illuminance × transmittance
+uniform float u_sun_cos_radius; // cos of the disc's angular radius
+uniform vec3 u_sky_ambient;    // mean sky radiance over the upper hemisphere
+
+vec3 sky_atmosphere(vec3 dir, vec3 sun)
+{
+    float lat = asin(clamp(dir.y, -1.0, 1.0));
+    vec2 flat_dir = dir.xz, flat_sun = sun.xz;
+    float lf = length(flat_dir), ls = length(flat_sun);
+    float c = lf > 1.0e-6 && ls > 1.0e-6 ? dot(flat_dir, flat_sun) / (lf * ls) : 1.0;
+    float az = acos(clamp(c, -1.0, 1.0));
+    // The table's latitude mapping crowds rows at the horizon (tl_sky.c).
+    float l = sqrt(abs(lat) / 1.5707963);
+    vec2 uv = vec2(az / 3.1415927, 0.5 + 0.5 * (lat < 0.0 ? -l : l));
+    return texture(u_sky_view, uv).rgb * u_sky_scale;
+}
+
+// The disc seen in direction dir, radius widened to `cos_radius` (the same
+// light spread over more sky): limb-darkened (Neckel & Labs' u = 0.6 form,
+// normalised so the disc's mean radiance is light / solid angle).
+vec3 sky_disc(vec3 dir, float cos_radius)
+{
+#ifdef TL_FEATURE_SUN_DISC
+    float c = dot(dir, u_sun_dir);
+    if (c < cos_radius)
+        return vec3(0.0);
+    float solid = 6.2831853 * (1.0 - cos_radius);
+    float edge = sqrt(max(0.0, 1.0 - (1.0 - c) / (1.0 - cos_radius))); // cos at the limb point
+    float limb = (1.0 - 0.6 * (1.0 - edge)) / 0.8;
+    return u_sun_light / solid * limb;
+#else
+    return vec3(0.0);
+#endif
+}
+
+vec3 sky_color(vec3 dir)
+{
+    return sky_atmosphere(dir, u_sun_dir) + sky_disc(dir, u_sun_cos_radius);
+}
+
+// The sky the water mirrors: the sun's disc widened to 1.5 deg at least, so
+// its glitter on the waves is a few pixels, not single flickering ones (the
+// same light, spread; a documented anti-aliasing clamp).
+vec3 sky_reflected(vec3 dir)
+{
+    return sky_atmosphere(dir, u_sun_dir) + sky_disc(dir, min(u_sun_cos_radius, 0.99966));
+}
+
+// The sun's light on a surface facing it.
+vec3 sky_sun_light()
+{
+#ifdef TL_FEATURE_SUN_DISC
+    return u_sun_light;
+#else
+    return vec3(0.0);
+#endif
+}
+
+vec3 sky_ambient()
+{
+    return u_sky_ambient;
+}
+
+#else
 
 vec3 sky_atmosphere(vec3 dir, vec3 sun)
 {
@@ -31,14 +106,19 @@ vec3 sky_color(vec3 dir)
     return sky_atmosphere(dir, u_sun_dir) + vec3(sky_sun(dir));
 }
 
+vec3 sky_reflected(vec3 dir)
+{
+    return sky_color(dir);
+}
+
 // Irradiance on a surface facing the sun: the integral of the sun lobe
 // pow(cos, sharpness)·intensity over the hemisphere.
-float sky_sun_irradiance()
+vec3 sky_sun_light()
 {
 #ifdef TL_FEATURE_SUN_DISC
-    return u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0);
+    return vec3(u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0));
 #else
-    return 0.0;
+    return vec3(0.0);
 #endif
 }
 
@@ -51,3 +131,4 @@ vec3 sky_ambient()
                    sky_atmosphere(vec3(0.837, 0.259, -0.483), u_sun_dir) +
                    sky_atmosphere(vec3(-0.837, 0.259, -0.483), u_sun_dir));
 }
+#endif

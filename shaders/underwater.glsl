@@ -46,7 +46,7 @@ vec3 underwater_inscatter(vec3 ray)
     float mu = dot(u_sun_water, -ray);
     const float g = 0.75;
     float phase = (1.0 - g * g) / (12.5663706 * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
-    vec3 sun = vec3(sky_sun_irradiance() * u_sun_water_trans * phase) *
+    vec3 sun = sky_sun_light() * (u_sun_water_trans * phase) *
                exp(-sigma * u_cam_depth / max(-u_sun_water.y, 0.1));
     vec3 sky = sky_ambient() * 0.25 * exp(-sigma * u_cam_depth);
     return albedo * (sun + sky);

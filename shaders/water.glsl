@@ -37,7 +37,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     float fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
-    vec3 reflection = sky_color(r);
+    vec3 reflection = sky_reflected(r);
 #ifdef TL_FEATURE_FOG
     // The sky the water mirrors is seen through the fog above it too.
     reflection = optics_fog(reflection, max(hit.y, 0.0), r, TL_SKY_DEPTH);

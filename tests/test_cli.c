@@ -155,7 +155,7 @@ static void test_success(void)
     CHECK(dir_entries(dir) == 2); /* no temporary files left */
     CHECK(run(NULL, "still", "-v", "--size", "16x16", "-o", png, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "OpenGL");
-    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc\n");
+    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky\n");
     /* A timeline's giant wave joins the feature set only while it is there. */
     const char *tl = in_dir(2, "wave.tl");
     FILE *f = fopen(tl, "w");
@@ -168,9 +168,9 @@ static void test_success(void)
         fclose(f);
     }
     CHECK(run(NULL, "still", tl, "-v", "--time", "0", "--size", "16x16", "-o", png, NULL) == 0);
-    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc\n");
+    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky\n");
     CHECK(run(NULL, "still", tl, "-v", "--time", "0.5", "--size", "16x16", "-o", png, NULL) == 0);
-    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, giant wave\n");
+    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, giant wave, physical sky\n");
     /* eval reports the wave and the water under the camera and the crest. */
     CHECK(run(NULL, "eval", tl, "--at", "1s", NULL) == 0);
     /* The crest reaches the centre at giant.arrival, at the deep-water

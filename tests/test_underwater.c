@@ -83,6 +83,9 @@ static void test_snell_window(tl_renderer *r)
     s.camera.vfov = 130.0 * DEG;
     s.sun.elevation = 60.0 * DEG;
     s.sun.azimuth = 0.0;
+    /* The window's optics, not the sky's: the seed sky's dim sun keeps the
+     * water body's glow toward it below the window's light. */
+    s.sky.model = TL_SKY_SEED;
     tl_frame_uniforms u;
     prepare(&s, &u);
     CHECK((u.features & TL_FEATURE_UNDERWATER) && !(u.features & TL_FEATURE_WATERLINE));

@@ -10,6 +10,7 @@
 #include "gl/tl_renderer.h"
 #include "prepare/tl_prepare.h"
 #include "scene/tl_scene.h"
+#include "sky/tl_sky.h"
 #include "tl_test.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
@@ -105,13 +106,23 @@ static inline double luminance(const float *rgb)
     return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
 }
 
+/* Prepares `scene` as tl_render does: uniforms, and the physical sky's
+ * tables uploaded when they changed. */
+static inline void gl_test_prepare(tl_renderer *r, const tl_scene *scene, tl_frame_uniforms *u)
+{
+    static tl_sky_luts luts; /* ~0.5 MB: kept between calls like tl_render's */
+    tl_waves w;
+    tl_waves_init(&w, &scene->ocean);
+    tl_prepare_frame(scene, &w, u);
+    if (tl_prepare_sky_tables(scene, &luts, u))
+        tl_renderer_set_sky_view(r, &luts.view[0][0][0], TL_SKY_VIEW_W, TL_SKY_VIEW_H, NULL);
+}
+
 /* Renders `scene` in one pass into `f` (allocated here). */
 static inline int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
 {
-    tl_waves w;
-    tl_waves_init(&w, &scene->ocean);
     tl_frame_uniforms u;
-    tl_prepare_frame(scene, &w, &u);
+    gl_test_prepare(r, scene, &u);
     tl_error err;
     tl_error_clear(&err);
     CHECK(tl_frame_alloc(f, scene->width, scene->height, &err) == 0);

@@ -41,7 +41,8 @@ struct tl_renderer {
     target display; /* tonemapped RGBA32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
     target mirror;  /* the hull reflected in the water RGBA32F + depth */
-    GLuint mesh_program[2]; /* without and with the sun disc */
+    GLuint mesh_program[4]; /* per sun disc and sky model */
+    GLuint sky_view;        /* the physical sky's sky-view table */
     gpu_mesh mesh;
 };
 
@@ -244,9 +245,11 @@ void tl_renderer_destroy(tl_renderer *r)
     target_free(&r->boat);
     target_free(&r->mirror);
     tl_renderer_set_mesh(r, NULL, NULL);
-    for (int i = 0; i < 2; i++)
+    for (int i = 0; i < 4; i++)
         if (r->mesh_program[i])
             glDeleteProgram(r->mesh_program[i]);
+    if (r->sky_view)
+        glDeleteTextures(1, &r->sky_view);
     glDeleteVertexArrays(1, &r->vao);
     free(r);
 }
@@ -313,6 +316,13 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform3fv(loc(p, "u_sun_water"), 1, u->sun_water);
         glUniform1f(loc(p, "u_sun_water_trans"), u->sun_water_trans);
     }
+    if (u->features & TL_FEATURE_SKY_PHYSICAL) {
+        glUniform1f(loc(p, "u_sky_scale"), u->sky_scale);
+        glUniform3fv(loc(p, "u_sun_light"), 1, u->sun_light);
+        glUniform1f(loc(p, "u_sun_cos_radius"), u->sun_cos_radius);
+        glUniform3fv(loc(p, "u_sky_ambient"), 1, u->sky_ambient);
+        glUniform1i(loc(p, "u_sky_view"), 4); /* bound by tl_renderer_set_sky_view */
+    }
     if (u->features & TL_FEATURE_FOG) {
         glUniform2fv(loc(p, "u_fog"), 1, u->fog);
         glUniform3fv(loc(p, "u_fog_color"), 1, u->fog_color);
@@ -357,6 +367,24 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err)
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, sky);
     return gl_check("frame setup", err);
+}
+
+int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int height, tl_error *err)
+{
+    if (!r->sky_view) {
+        glGenTextures(1, &r->sky_view);
+        glBindTexture(GL_TEXTURE_2D, r->sky_view);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, r->sky_view);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, width, height, 0, GL_RGB, GL_FLOAT, rgb);
+    glActiveTexture(GL_TEXTURE0);
+    return gl_check("uploading the sky", err);
 }
 
 int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
@@ -440,9 +468,10 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
         rc = target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
     if (rc)
         return rc;
-    /* Only the sun changes how the hull is lit. */
-    unsigned features = u->features & TL_FEATURE_SUN_DISC;
-    GLuint *program = &r->mesh_program[features ? 1 : 0];
+    /* Only the sun and the sky change how the hull is lit. */
+    unsigned features = u->features & (TL_FEATURE_SUN_DISC | TL_FEATURE_SKY_PHYSICAL);
+    GLuint *program = &r->mesh_program[(features & TL_FEATURE_SUN_DISC ? 1 : 0) +
+                                       (features & TL_FEATURE_SKY_PHYSICAL ? 2 : 0)];
     if (!*program) {
         char defines[512];
         make_defines(features, defines, sizeof defines);
@@ -514,7 +543,7 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     return gl_check("rendering", err);
 }
 
-int tl_renderer_finish(tl_renderer *r, float exposure, tl_frame *frame, tl_error *err)
+int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err)
 {
     int w = r->scene.width, h = r->scene.height;
     if (frame->width != w || frame->height != h)
@@ -525,8 +554,13 @@ int tl_renderer_finish(tl_renderer *r, float exposure, tl_frame *frame, tl_error
     glUseProgram(r->present_program);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
+    if (bloom > 0.0f) { /* the glare reads the image's mip chain */
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glGenerateMipmap(GL_TEXTURE_2D);
+    }
     glUniform1i(loc(r->present_program, "u_hdr"), 0);
     glUniform1f(loc(r->present_program, "u_exposure"), exposure);
+    glUniform1f(loc(r->present_program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     float *row = malloc((size_t)w * 4 * sizeof(float));
@@ -548,7 +582,7 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
     if (!rc)
         rc = tl_renderer_accumulate(r, u, 1.0f, 1, err);
     if (!rc)
-        rc = tl_renderer_finish(r, u->exposure, frame, err);
+        rc = tl_renderer_finish(r, u->exposure, u->bloom, frame, err);
     return rc;
 }
 

@@ -19,6 +19,12 @@ typedef struct tl_renderer tl_renderer;
 int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err);
 void tl_renderer_destroy(tl_renderer *r);
 
+/* Uploads the physical sky's sky-view table (RGB floats, rows of
+ * increasing latitude, see src/sky/tl_sky.h); it stays bound to texture
+ * unit 4, where frames with TL_FEATURE_SKY_PHYSICAL read it. */
+int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int height,
+                             tl_error *err);
+
 /* Uploads the boat's mesh (replacing any before it; NULL removes it). Frames
  * whose uniforms carry TL_FEATURE_BOAT draw it; without a mesh they do not. */
 int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err);
@@ -31,11 +37,13 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
 /* A frame built from several passes (motion blur sub-frames): begin clears
  * the float target; each accumulate adds weight x its radiance (weights
  * should sum to 1) and, when write_depth is set, stores its depth; finish
- * runs the display pass with `exposure` and reads everything back. */
+ * runs the display pass with `exposure` and `bloom` (the share of light
+ * spread into glare: the display plane only, never the colour plane) and
+ * reads everything back. */
 int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
-int tl_renderer_finish(tl_renderer *r, float exposure, tl_frame *frame, tl_error *err);
+int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err);
 
 /* Evaluates one of the shaders' functions (shaders/probe.frag lists the
  * modes: surface height, Fresnel, water and fog transmittance, the lens's

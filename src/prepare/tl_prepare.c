@@ -9,13 +9,14 @@
 #include <cglm/cglm.h>
 
 #include "optics/tl_optics.h"
+#include "sky/tl_sky.h"
 #include "waves/tl_giant.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_SUN_DISC",   "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT", "TL_FEATURE_WAKE",
-    "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",  "TL_FEATURE_FOG"};
+    "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",  "TL_FEATURE_FOG",  "TL_FEATURE_SKY_PHYSICAL"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
-    "sun disc", "giant wave", "boat", "wake", "underwater", "waterline", "fog"};
+    "sun disc", "giant wave", "boat", "wake", "underwater", "waterline", "fog", "physical sky"};
 
 const char *tl_feature_define(int index)
 {
@@ -290,6 +291,47 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     u->sun_water_trans = sun[1] > 0.0 ? (float)(1.0 - tl_optics_fresnel(cos_i, 1.0, n)) : 0.0f;
 }
 
+double tl_prepare_sky_altitude(const tl_scene *s)
+{
+    return 100.0 * floor(fmax(s->camera.position[1], 0.0) / 100.0);
+}
+
+int tl_prepare_sky_tables(const tl_scene *s, tl_sky_luts *luts, tl_frame_uniforms *u)
+{
+    if (!(u->features & TL_FEATURE_SKY_PHYSICAL))
+        return 0;
+    tl_atmosphere a;
+    tl_sky_atmosphere_of(s, &a);
+    double altitude = tl_prepare_sky_altitude(s);
+    int stale = !luts->view_valid || memcmp(&luts->atmosphere, &a, sizeof a) != 0 ||
+                luts->view_sun_elevation != s->sun.elevation || luts->view_altitude != altitude;
+    tl_sky_luts_update(luts, &a, s->sun.elevation, altitude);
+    for (int c = 0; c < 3; c++)
+        u->sky_ambient[c] = (float)(luts->ambient[c] * s->sky.sun_illuminance);
+    return stale;
+}
+
+/* The physical sky: the sun's light at the camera and its disc. */
+static void prepare_sky(const tl_scene *s, tl_frame_uniforms *u)
+{
+    if (s->sky.model != TL_SKY_PHYSICAL)
+        return;
+    u->features |= TL_FEATURE_SKY_PHYSICAL;
+    tl_atmosphere a;
+    tl_sky_atmosphere_of(s, &a);
+    double light[3];
+    tl_sky_sun_light(&a, s->sun.elevation, tl_prepare_sky_altitude(s), s->sky.sun_illuminance,
+                     light);
+    to_float3(light, u->sun_light);
+    u->sky_scale = (float)s->sky.sun_illuminance;
+    u->sun_cos_radius = (float)cos(0.5 * s->sun.angular_diameter);
+    /* The disc: only while any of its light gets through the air. */
+    if (light[0] + light[1] + light[2] > 0.0)
+        u->features |= TL_FEATURE_SUN_DISC;
+    else
+        u->features &= ~(unsigned)TL_FEATURE_SUN_DISC;
+}
+
 /* Fog above the water: its feature only when it is there. */
 static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
 {
@@ -367,7 +409,8 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normal_smooth_max = (float)s->water.normal_smooth_max;
     u->normal_smooth_rate = (float)s->water.normal_smooth_rate;
     u->normal_smooth_gain = (float)s->water.normal_smooth_gain;
-    u->exposure = (float)s->exposure;
+    u->exposure = (float)(s->exposure * exp2(-s->ev));
+    u->bloom = (float)s->bloom;
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, &giant, u);
@@ -375,4 +418,5 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     prepare_wake(s, u);
     prepare_water_body(s, w, &giant, u);
     prepare_fog(s, u);
+    prepare_sky(s, u);
 }

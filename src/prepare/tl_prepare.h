@@ -17,16 +17,17 @@
 /* Shader features a frame may need; each is a #define in the program.
  * A frame compiles only the code its scene uses. */
 typedef enum tl_feature {
-    TL_FEATURE_SUN_DISC = 1u << 0,   /* the sun is above the horizon */
-    TL_FEATURE_GIANT_WAVE = 1u << 1, /* the giant wave is enabled and not faded out */
-    TL_FEATURE_BOAT = 1u << 2,       /* the boat is in view */
-    TL_FEATURE_WAKE = 1u << 3,       /* the moving boat's wake is in view */
-    TL_FEATURE_UNDERWATER = 1u << 4, /* some pixels see from under the water */
-    TL_FEATURE_WATERLINE = 1u << 5,  /* the lens crosses the surface: decide per pixel */
-    TL_FEATURE_FOG = 1u << 6,        /* fog above the water */
+    TL_FEATURE_SUN_DISC = 1u << 0,     /* the sun is above the horizon */
+    TL_FEATURE_GIANT_WAVE = 1u << 1,   /* the giant wave is enabled and not faded out */
+    TL_FEATURE_BOAT = 1u << 2,         /* the boat is in view */
+    TL_FEATURE_WAKE = 1u << 3,         /* the moving boat's wake is in view */
+    TL_FEATURE_UNDERWATER = 1u << 4,   /* some pixels see from under the water */
+    TL_FEATURE_WATERLINE = 1u << 5,    /* the lens crosses the surface: decide per pixel */
+    TL_FEATURE_FOG = 1u << 6,          /* fog above the water */
+    TL_FEATURE_SKY_PHYSICAL = 1u << 7, /* sky.model physical (else the seed's sky) */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 7
+#define TL_FEATURE_COUNT 8
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -72,7 +73,8 @@ typedef struct tl_frame_uniforms {
     float sun_intensity, sun_sharpness, sky_brightness;
     float fresnel_f0, scatter_color[3], scatter_strength, scatter_base;
     float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
-    float exposure;
+    float exposure; /* render.exposure × 2^-render.ev: the display's scale */
+    float bloom;    /* render.bloom: the display's glare */
 
     /* The giant wave (TL_FEATURE_GIANT_WAVE), see shaders/giant.glsl:
      * frame = (dir.x, dir.z, s, w of the camera relative to the crest),
@@ -114,7 +116,26 @@ typedef struct tl_frame_uniforms {
     /* Fog (TL_FEATURE_FOG): density per metre at the water, height scale. */
     float fog[2];
     float fog_color[3];
+
+    /* The physical sky (TL_FEATURE_SKY_PHYSICAL). The sky-view table and
+     * sky_ambient come from tl_sky_luts (tl_render fills the ambient). */
+    float sky_scale;      /* the sun's illuminance above the air */
+    float sun_light[3];   /* its light at the camera */
+    float sun_cos_radius; /* cos of the disc's angular radius */
+    float sky_ambient[3]; /* mean sky radiance over the upper hemisphere */
 } tl_frame_uniforms;
+
+/* For frames with TL_FEATURE_SKY_PHYSICAL: brings `luts` up to date for
+ * the scene (tables built only when the air, the sun's elevation or the
+ * altitude step changed) and fills u->sky_ambient. Returns 1 when the
+ * sky-view table changed and must be uploaded again, else 0. */
+struct tl_sky_luts;
+int tl_prepare_sky_tables(const tl_scene *s, struct tl_sky_luts *luts, tl_frame_uniforms *u);
+
+/* The altitude the sky-view table is built for: the camera's, in steps of
+ * 100 m (the sky changes little below that), so every frame of a shot can
+ * share one table and a frame rendered alone gets the same one. */
+double tl_prepare_sky_altitude(const tl_scene *s);
 
 /* Where the camera sees from, for underwater.mode auto: above the water,
  * below it, or with the lens across the surface (decided per pixel). */

@@ -7,6 +7,7 @@
 #include "gl/tl_gl_context.h"
 #include "gl/tl_renderer.h"
 #include "prepare/tl_prepare.h"
+#include "sky/tl_sky.h"
 #include "waves/tl_waves.h"
 
 struct tl_render {
@@ -16,6 +17,7 @@ struct tl_render {
     tl_ocean waves_ocean; /* the parameters `waves` was built from */
     int waves_valid;
     unsigned last_features; /* of the last frame, over all its passes */
+    tl_sky_luts *sky;       /* the physical sky's tables, rebuilt when they change */
 };
 
 int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
@@ -24,6 +26,11 @@ int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
     tl_render *r = calloc(1, sizeof *r);
     if (!r)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    r->sky = calloc(1, sizeof *r->sky);
+    if (!r->sky) {
+        free(r);
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    }
     int rc = tl_gl_context_create_headless(&r->context, err);
     if (!rc)
         rc = tl_renderer_create(&r->renderer, lib, err);
@@ -41,6 +48,7 @@ void tl_render_close(tl_render *r)
         return;
     tl_renderer_destroy(r->renderer);
     tl_gl_context_destroy(r->context);
+    free(r->sky);
     free(r);
 }
 
@@ -71,6 +79,15 @@ static const tl_waves *waves_for(tl_render *r, const tl_ocean *ocean)
     return &r->waves;
 }
 
+/* The physical sky's tables for this scene, uploaded when they changed. */
+static int prepare_sky(tl_render *r, const tl_scene *scene, tl_frame_uniforms *u, tl_error *err)
+{
+    if (!tl_prepare_sky_tables(scene, r->sky, u))
+        return TL_OK;
+    return tl_renderer_set_sky_view(r->renderer, &r->sky->view[0][0][0], TL_SKY_VIEW_W,
+                                    TL_SKY_VIEW_H, err);
+}
+
 static int ensure_frame(tl_frame *frame, int width, int height, tl_error *err)
 {
     if (frame->width == width && frame->height == height && frame->color)
@@ -89,7 +106,8 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     tl_frame_uniforms u;
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
-    return tl_renderer_render(r->renderer, &u, frame, err);
+    rc = prepare_sky(r, scene, &u, err);
+    return rc ? rc : tl_renderer_render(r->renderer, &u, frame, err);
 }
 
 void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_settings *settings,
@@ -182,12 +200,16 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
             break;
         tl_frame_uniforms u;
         tl_prepare_frame(&sub, waves_for(r, &sub.ocean), &u);
+        rc = prepare_sky(r, &sub, &u, err);
+        if (rc)
+            break;
         u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
         r->last_features |= u.features;
         rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
     if (!rc)
-        rc = tl_renderer_finish(r->renderer, (float)scene.exposure, out, err);
+        rc = tl_renderer_finish(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
+                                (float)scene.bloom, out, err);
     if (!rc && scene_out)
         *scene_out = scene;
     return rc;

@@ -11,6 +11,8 @@ void tl_scene_defaults(tl_scene *s)
     s->width = 1280;
     s->height = 720;
     s->exposure = 2.0;
+    s->ev = 0.0;
+    s->bloom = 0.04;
 
     s->camera.position[0] = 0.0;
     s->camera.position[1] = 1.5;
@@ -25,6 +27,7 @@ void tl_scene_defaults(tl_scene *s)
     s->sun.azimuth = -7.6 * TL_DEG;
     s->sun.intensity = 210.0;
     s->sun.sharpness = 720.0;
+    s->sun.angular_diameter = 0.53 * TL_DEG;
 
     s->ocean.depth = 1.0;
     s->ocean.drag = 0.38;
@@ -57,7 +60,14 @@ void tl_scene_defaults(tl_scene *s)
     s->water.ior = 1.333;
     s->water.foam = 1.0; /* scales every foam term (today: the giant wave's) */
 
+    s->sky.model = TL_SKY_PHYSICAL;
     s->sky.brightness = 0.5;
+    s->sky.sun_illuminance = 8.0;
+    s->sky.turbidity = 1.0;
+    s->sky.ozone = 1.0;
+    s->sky.ground_albedo = 0.1;
+    s->sky.planet_radius = 6360.0;
+    s->sky.atmosphere_height = 100.0;
 
     s->fog.density = 0.0;
     s->fog.color[0] = 0.55;

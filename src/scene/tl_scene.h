@@ -24,6 +24,7 @@ typedef struct tl_sun {
     double elevation, azimuth; /* radians */
     double intensity;          /* peak radiance of the disc (reference: 210) */
     double sharpness;          /* exponent of the disc lobe (reference: 720) */
+    double angular_diameter;   /* physical sky: the disc, radians (0.53 deg) */
 } tl_sun;
 
 /* The exp(sin) wave model with derivative drag (seed 002). */
@@ -55,8 +56,20 @@ typedef struct tl_water {
     double normal_smooth_gain; /* (1.1) */
 } tl_water;
 
+typedef enum tl_sky_model {
+    TL_SKY_PHYSICAL = 0, /* Rayleigh + Mie + ozone, multiple scattering (src/sky/) */
+    TL_SKY_SEED,         /* the reference shader's cheap atmosphere, as it was */
+} tl_sky_model;
+
 typedef struct tl_sky {
-    double brightness; /* scale of the cheap atmosphere (0.5) */
+    tl_sky_model model;
+    double brightness;        /* seed: scale of the cheap atmosphere (0.5) */
+    double sun_illuminance;   /* physical: the sun's illuminance above the air */
+    double turbidity;         /* physical: aerosols (Mie) relative to a clear day (1) */
+    double ozone;             /* physical: ozone relative to the standard layer (1) */
+    double ground_albedo;     /* physical: the planet's surface below (0.1: sea) */
+    double planet_radius;     /* km (6360) */
+    double atmosphere_height; /* km (100) */
 } tl_sky;
 
 /* Distance fog: extinction plus in-scatter toward `color`, thinning with
@@ -145,6 +158,8 @@ typedef struct tl_scene {
     double time; /* seconds since the start of the timeline */
     int width, height;
     double exposure; /* linear multiplier before tonemapping (2.0) */
+    double ev;       /* exposure value in stops: each +1 halves the light (0) */
+    double bloom;    /* share of the light spread into glare in the display image */
     tl_camera camera;
     tl_sun sun;
     tl_ocean ocean;

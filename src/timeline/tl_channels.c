@@ -8,6 +8,11 @@
 #define BIG 1.0e9 /* positions and sizes: far beyond any scene, still finite */
 
 static const char *const underwater_names[] = {"auto", "on", "off", NULL};
+static const char *const sky_model_names[] = {"physical", "seed", NULL};
+
+/* Enum channels are read and written as int. */
+_Static_assert(sizeof(tl_underwater_mode) == sizeof(int), "enum channels are int-sized");
+_Static_assert(sizeof(tl_sky_model) == sizeof(int), "enum channels are int-sized");
 
 #define REAL(n, comps, unit, lo, hi, field, doc)                                                   \
     {                                                                                              \
@@ -17,6 +22,10 @@ static const char *const underwater_names[] = {"auto", "on", "off", NULL};
 static const tl_channel channels[] = {
     REAL("render.exposure", 1, TL_UNIT_NONE, 0.0, 1e6, exposure,
          "linear exposure before tonemapping"),
+    REAL("render.ev", 1, TL_UNIT_NONE, -20.0, 20.0, ev,
+         "exposure value in stops: +1 halves the light, -3 for dusk"),
+    REAL("render.bloom", 1, TL_UNIT_NONE, 0.0, 1.0, bloom,
+         "share of the light spread into glare in the display image (not EXR)"),
 
     REAL("camera.position", 3, TL_UNIT_LENGTH, -BIG, BIG, camera.position,
          "camera position x y z (metres; +Y up, +Z north)"),
@@ -31,10 +40,27 @@ static const tl_channel channels[] = {
     REAL("sun.elevation", 1, TL_UNIT_ANGLE, -90 * DEG, 90 * DEG, sun.elevation,
          "sun above the horizon"),
     REAL("sun.azimuth", 1, TL_UNIT_ANGLE, -BIG, BIG, sun.azimuth, "sun compass direction"),
-    REAL("sun.intensity", 1, TL_UNIT_NONE, 0.0, 1e6, sun.intensity, "peak radiance of the disc"),
+    REAL("sun.intensity", 1, TL_UNIT_NONE, 0.0, 1e6, sun.intensity,
+         "peak radiance of the seed sky's sun lobe"),
     REAL("sun.sharpness", 1, TL_UNIT_NONE, 1.0, 1e6, sun.sharpness,
-         "exponent of the disc lobe (larger = smaller sun)"),
-    REAL("sky.brightness", 1, TL_UNIT_NONE, 0.0, 1e3, sky.brightness, "scale of the atmosphere"),
+         "exponent of the seed sky's sun lobe (larger = smaller sun)"),
+    REAL("sun.angular_diameter", 1, TL_UNIT_ANGLE, 0.01 * DEG, 20 * DEG, sun.angular_diameter,
+         "the sun's disc (physical sky)"),
+    {"sky.model", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, sky.model),
+     sky_model_names, "physical: Rayleigh, Mie, ozone, multiple scattering; seed: the cheap one"},
+    REAL("sky.brightness", 1, TL_UNIT_NONE, 0.0, 1e3, sky.brightness,
+         "scale of the seed atmosphere"),
+    REAL("sky.sun_illuminance", 1, TL_UNIT_NONE, 0.0, 1e6, sky.sun_illuminance,
+         "the sun's illuminance above the air (physical sky)"),
+    REAL("sky.turbidity", 1, TL_UNIT_NONE, 0.0, 50.0, sky.turbidity,
+         "aerosols (Mie scattering) relative to a clear day"),
+    REAL("sky.ozone", 1, TL_UNIT_NONE, 0.0, 10.0, sky.ozone,
+         "ozone relative to the standard layer (the blue hour's blue)"),
+    REAL("sky.ground_albedo", 1, TL_UNIT_NONE, 0.0, 1.0, sky.ground_albedo,
+         "the planet's surface below, lighting the air from below"),
+    REAL("sky.planet_radius", 1, TL_UNIT_NONE, 100.0, 1e5, sky.planet_radius, "kilometres"),
+    REAL("sky.atmosphere_height", 1, TL_UNIT_NONE, 1.0, 1000.0, sky.atmosphere_height,
+         "kilometres of air above the ground"),
 
     REAL("ocean.depth", 1, TL_UNIT_LENGTH, 0.001, 1e3, ocean.depth,
          "crest-to-trough height band of the waves"),
@@ -189,7 +215,7 @@ void tl_channel_get(const tl_channel *ch, const tl_scene *scene, double out[3])
     switch (ch->kind) {
     case TL_CH_REAL: memcpy(out, base, sizeof(double) * (size_t)ch->components); break;
     case TL_CH_BOOL: out[0] = *(const bool *)base ? 1.0 : 0.0; break;
-    case TL_CH_ENUM: out[0] = (double)*(const tl_underwater_mode *)base; break;
+    case TL_CH_ENUM: out[0] = (double)*(const int *)base; break; /* enums are int-sized */
     case TL_CH_INT: out[0] = (double)*(const int *)base; break;
     }
 }
@@ -200,7 +226,7 @@ void tl_channel_set(const tl_channel *ch, tl_scene *scene, const double in[3])
     switch (ch->kind) {
     case TL_CH_REAL: memcpy(base, in, sizeof(double) * (size_t)ch->components); break;
     case TL_CH_BOOL: *(bool *)base = in[0] >= 0.5; break;
-    case TL_CH_ENUM: *(tl_underwater_mode *)base = (tl_underwater_mode)lround(in[0]); break;
+    case TL_CH_ENUM: *(int *)base = (int)lround(in[0]); break;
     case TL_CH_INT: *(int *)base = (int)lround(in[0]); break;
     }
 }

@@ -16,7 +16,7 @@
 typedef enum tl_channel_kind {
     TL_CH_REAL, /* double[components] */
     TL_CH_BOOL, /* bool: on/off, true/false, 1/0; keys step */
-    TL_CH_ENUM, /* int (a C enum) named by `names`; keys step */
+    TL_CH_ENUM, /* a C enum (int-sized) named by `names`; keys step */
     TL_CH_INT,  /* int; set only */
 } tl_channel_kind;
 

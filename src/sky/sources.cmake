@@ -1,0 +1,1 @@
+set(TL_SKY_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_sky.c)
