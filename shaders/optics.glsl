@@ -60,7 +60,14 @@ vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist)
     float depth = optics_fog_depth(y0, ray.y, min(dist, 1.0e7));
     float t = exp(-depth);
     float toward_sun = pow(max(dot(ray, u_sun_dir), 0.0), 8.0);
+#ifdef TL_FEATURE_SKY_PHYSICAL
+    // The haze is lit by the same sky and sun: fog.color tints their light
+    // (a grey fog of albedo 1 scatters the hemisphere's mean and the sun's
+    // light with a lobe toward it), so it darkens as the sun sets.
+    vec3 haze = u_fog_color * (sky_ambient() + sky_sun_light() * (0.05 + 0.5 * toward_sun));
+#else
     vec3 haze = u_fog_color * (1.0 + 1.5 * toward_sun * smoothstep(-0.05, 0.1, u_sun_dir.y));
+#endif
     return color * t + haze * (1.0 - t);
 }
 #endif

@@ -6,6 +6,8 @@
 //   mode 3: the fog's transmittance over x metres along a ray with y = its
 //           vertical component                           (tl_optics_fog_depth)
 //   mode 4: the lens's gap to the surface for the pixel at NDC (x, y)
+//   mode 5: the sky's radiance (no sun disc) at elevation x, azimuth y from
+//           the sun's, radians                           (tl_sky_reference)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -44,6 +46,12 @@ void main()
         result.x = underwater_lens_gap(ray);
     }
 #endif
+    else if (u_probe_mode == 5) {
+        vec3 dir = vec3(cos(p.x) * sin(p.y), sin(p.x), cos(p.x) * cos(p.y));
+        float a = atan(u_sun_dir.x, u_sun_dir.z); // turn azimuth 0 to the sun's
+        dir.xz = mat2(cos(a), -sin(a), sin(a), cos(a)) * dir.xz;
+        result.xyz = sky_atmosphere(dir, u_sun_dir);
+    }
 #ifdef TL_FEATURE_FOG
     else if (u_probe_mode == 3)
         result.x = exp(-optics_fog_depth(u_cam_height, p.y, p.x));

@@ -25,3 +25,4 @@ tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOUR
 tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
   ARGS ${PROJECT_SOURCE_DIR}/tests/meshes)
 tl_add_test(test_underwater SOURCES test_underwater.c LIBS tideline_gl)
+tl_add_test(test_sky SOURCES test_sky.c LIBS tideline_gl ARGS ${PROJECT_SOURCE_DIR}/tests/references)

@@ -72,7 +72,8 @@ int main(void)
     int png_ok = 1;
     for (size_t i = 0; p.display && i < n; i++)
         for (int c = 0; c < 3; c++) {
-            float want = roundf(f.display[i * 4 + c] * 255.0f) / 255.0f;
+            /* The writer's rounding: floor(v·255 + 0.5) in double. */
+            float want = (float)(floor((double)f.display[i * 4 + c] * 255.0 + 0.5) / 255.0);
             png_ok &= fabsf(p.display[i * 4 + c] - want) < 1e-6f;
         }
     CHECK(png_ok);

@@ -12,7 +12,7 @@ void tl_scene_defaults(tl_scene *s)
     s->height = 720;
     s->exposure = 2.0;
     s->ev = 0.0;
-    s->bloom = 0.04;
+    s->bloom = 0.02;
 
     s->camera.position[0] = 0.0;
     s->camera.position[1] = 1.5;

@@ -108,7 +108,8 @@ static const tl_channel channels[] = {
          "normal smoothing gain"),
 
     REAL("fog.density", 1, TL_UNIT_NONE, 0.0, 10.0, fog.density, "extinction per metre; 0 = off"),
-    REAL("fog.color", 3, TL_UNIT_NONE, 0.0, 1e3, fog.color, "linear RGB of the fog"),
+    REAL("fog.color", 3, TL_UNIT_NONE, 0.0, 1e3, fog.color,
+         "the fog's tint of the sky's light (physical sky), its radiance (seed)"),
     REAL("fog.height", 1, TL_UNIT_LENGTH, 0.1, 1e5, fog.height,
          "height over which the fog thins by e (denser near the water)"),
     {"underwater.mode", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, 2, true,
