@@ -147,6 +147,20 @@ static void table_transmittance(const void *ctx, double r, double mu, double out
     lut_transmittance(ctx, r, mu, out);
 }
 
+/* Light off the Lambertian ground where a ray from radius r along dir
+ * meets it after d metres, through the optical depth gathered on the way. */
+static void add_ground(const tl_atmosphere *a, transmittance_fn tr, const void *ctx,
+                       const double dir[3], double r, double d, const double sun[3],
+                       const double depth[3], double L[3])
+{
+    double g[3] = {dir[0] * d, r + dir[1] * d, dir[2] * d};
+    double rg = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    double mu_g = (g[0] * sun[0] + g[1] * sun[1] + g[2] * sun[2]) / rg, ts[3];
+    tr(ctx, rg, mu_g, ts);
+    for (int c = 0; c < 3; c++)
+        L[c] += exp(-depth[c]) * ts[c] * fmax(mu_g, 0.0) * a->ground_albedo / PI;
+}
+
 /* psi_ms at radius r with the sun at cos-zenith mu_s: the second order of
  * scattering with an isotropic phase, over a sphere of directions, divided
  * by (1 - f_ms) for all orders beyond (a geometric series). */
@@ -182,14 +196,8 @@ static void psi_ms(const tl_atmosphere *a, double r, double mu_s, transmittance_
                 depth[c] += ext[c] * dt;
             }
         }
-        if (ground >= 0.0) { /* light off the ground, Lambertian */
-            double g[3] = {dir[0] * d, r + dir[1] * d, dir[2] * d};
-            double rg = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-            double mu_g = (g[0] * sun[0] + g[1] * sun[1] + g[2] * sun[2]) / rg, ts[3];
-            tr(ctx, rg, mu_g, ts);
-            for (int c = 0; c < 3; c++)
-                L[c] += exp(-depth[c]) * ts[c] * fmax(mu_g, 0.0) * a->ground_albedo / PI;
-        }
+        if (ground >= 0.0)
+            add_ground(a, tr, ctx, dir, r, d, sun, depth, L);
     }
     /* Both are means over the sphere of directions; f is the share of
      * light a scattering event passes on (< 1 in any real atmosphere). */
@@ -281,14 +289,8 @@ static void radiance(const tl_atmosphere *a, transmittance_fn tr, ms_fn ms_of, c
             depth[c] += ext[c] * dt;
         }
     }
-    if (ground >= 0.0) {
-        double g[3] = {dir[0] * d, r + dir[1] * d, dir[2] * d};
-        double rg = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        double mu_g = (g[0] * sun[0] + g[1] * sun[1] + g[2] * sun[2]) / rg, ts[3];
-        tr(ctx, rg, mu_g, ts);
-        for (int c = 0; c < 3; c++)
-            L[c] += exp(-depth[c]) * ts[c] * fmax(mu_g, 0.0) * a->ground_albedo / PI;
-    }
+    if (ground >= 0.0)
+        add_ground(a, tr, ctx, dir, r, d, sun, depth, L);
     for (int c = 0; c < 3; c++)
         out[c] = L[c];
 }
