@@ -16,6 +16,7 @@ packages=(
   libglfw3-dev                     # windows (the live preview)
   libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
+  xvfb xauth                       # a virtual display for the preview's tests
 )
 
 missing=()

@@ -12,6 +12,7 @@ static const char usage[] =
     "Commands:\n"
     "  render    render a timeline's frames headless to EXR/PNG files and movies\n"
     "  still     render one frame headless to EXR and/or PNG\n"
+    "  preview   play a timeline in a window and follow the file as it is edited\n"
     "  check     validate a timeline and summarise it\n"
     "  eval      print a timeline's channel values at a time or frames\n"
     "\n"
@@ -45,6 +46,8 @@ int main(int argc, char **argv)
         return tl_cli_render(argc - 1, argv + 1);
     if (strcmp(cmd, "still") == 0)
         return tl_cli_still(argc - 1, argv + 1);
+    if (strcmp(cmd, "preview") == 0)
+        return tl_cli_preview(argc - 1, argv + 1);
     if (strcmp(cmd, "check") == 0)
         return tl_cli_check(argc - 1, argv + 1);
     if (strcmp(cmd, "eval") == 0)

@@ -26,3 +26,8 @@ tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
   ARGS ${PROJECT_SOURCE_DIR}/tests/meshes)
 tl_add_test(test_underwater SOURCES test_underwater.c LIBS tideline_gl)
 tl_add_test(test_sky SOURCES test_sky.c LIBS tideline_gl ARGS ${PROJECT_SOURCE_DIR}/tests/references)
+# The live preview under Xvfb (its own X server): same pixels as still, hot
+# reload, keys, dynamic resolution, no display.
+add_test(NAME test_preview
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_preview.sh $<TARGET_FILE:tideline>
+          ${PROJECT_SOURCE_DIR}/timelines)

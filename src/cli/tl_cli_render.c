@@ -329,8 +329,12 @@ int tl_cli_render(int argc, char **argv)
     if (tl_cli_load_timeline("render", o.timeline, &tl, &boat))
         return 1;
 
-    tl_render_settings settings = {o.width, o.height,  o.has_quality ? &o.quality : NULL,
-                                   o.spp,   o.shutter, o.shutter_samples};
+    tl_render_settings settings = {.width = o.width,
+                                   .height = o.height,
+                                   .quality = o.has_quality ? &o.quality : NULL,
+                                   .spp = o.spp,
+                                   .shutter_deg = o.shutter,
+                                   .shutter_samples = o.shutter_samples};
     tl_scene first_scene;
     tl_render_frame_scene(&tl, 0.0, &settings, &first_scene);
     int width = first_scene.width, height = first_scene.height;

@@ -1,1 +1,2 @@
-set(TL_GL_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_gl_context.c ${CMAKE_CURRENT_LIST_DIR}/tl_renderer.c)
+set(TL_GL_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_gl_context.c ${CMAKE_CURRENT_LIST_DIR}/tl_gl_window.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_renderer.c)

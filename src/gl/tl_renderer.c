@@ -1,6 +1,7 @@
 #include "tl_renderer.h"
 
 #include <epoxy/gl.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -369,6 +370,29 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err)
     return gl_check("frame setup", err);
 }
 
+int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
+{
+    char defines[512];
+    make_defines(0, defines, sizeof defines);
+    GLuint present = build_program(r, "fullscreen.vert", "present.frag", defines, err);
+    if (!present)
+        return err ? (int)err->status : TL_ERR_RUNTIME; /* the old programs stay */
+    glDeleteProgram(r->present_program);
+    r->present_program = present;
+    for (int i = 0; i < r->program_count; i++)
+        glDeleteProgram(r->programs[i].program);
+    r->program_count = 0;
+    for (int i = 0; i < r->probe_count; i++)
+        glDeleteProgram(r->probes[i].program);
+    r->probe_count = 0;
+    for (int i = 0; i < 4; i++)
+        if (r->mesh_program[i]) {
+            glDeleteProgram(r->mesh_program[i]);
+            r->mesh_program[i] = 0;
+        }
+    return gl_check("reloading shaders", err);
+}
+
 int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int height, tl_error *err)
 {
     if (!r->sky_view) {
@@ -543,11 +567,9 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     return gl_check("rendering", err);
 }
 
-int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err)
+int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
 {
     int w = r->scene.width, h = r->scene.height;
-    if (frame->width != w || frame->height != h)
-        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
     glViewport(0, 0, w, h);
@@ -562,7 +584,35 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *fr
     glUniform1f(loc(r->present_program, "u_exposure"), exposure);
     glUniform1f(loc(r->present_program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    return gl_check("the display pass", err);
+}
 
+int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
+{
+    int w = r->display.width, h = r->display.height;
+    /* Letterboxed: the frame keeps its aspect in the window. */
+    double scale = fmin((double)width / w, (double)height / h);
+    int dw = (int)(w * scale + 0.5), dh = (int)(h * scale + 0.5);
+    int x0 = (width - dw) / 2, y0 = (height - dh) / 2;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r->display.fbo);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + dw, y0 + dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return gl_check("presenting", err);
+}
+
+int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err)
+{
+    int w = r->scene.width, h = r->scene.height;
+    if (frame->width != w || frame->height != h)
+        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
+    int rc = tl_renderer_display(r, exposure, bloom, err);
+    if (rc)
+        return rc;
     float *row = malloc((size_t)w * 4 * sizeof(float));
     if (!row)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");

@@ -19,6 +19,11 @@ typedef struct tl_renderer tl_renderer;
 int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err);
 void tl_renderer_destroy(tl_renderer *r);
 
+/* Drops every compiled program so the next frame compiles the shader
+ * files again (the preview's hot reload); the display program is rebuilt
+ * at once and, if it fails, everything is kept as it was. */
+int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err);
+
 /* Uploads the physical sky's sky-view table (RGB floats, rows of
  * increasing latitude, see src/sky/tl_sky.h); it stays bound to texture
  * unit 4, where frames with TL_FEATURE_SKY_PHYSICAL read it. */
@@ -44,6 +49,12 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err);
+
+/* The display pass alone (finish without the readback), then the display
+ * image drawn into the current window's framebuffer of width x height,
+ * letterboxed: the live preview. */
+int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err);
+int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err);
 
 /* Evaluates one of the shaders' functions (shaders/probe.frag lists the
  * modes: surface height, Fresnel, water and fog transmittance, the lens's

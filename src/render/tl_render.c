@@ -5,13 +5,15 @@
 #include <string.h>
 
 #include "gl/tl_gl_context.h"
+#include "gl/tl_gl_window.h"
 #include "gl/tl_renderer.h"
 #include "prepare/tl_prepare.h"
 #include "sky/tl_sky.h"
 #include "waves/tl_waves.h"
 
 struct tl_render {
-    tl_gl_context *context;
+    tl_gl_context *context; /* headless, or */
+    tl_gl_window *window;   /* a desktop window */
     tl_renderer *renderer;
     tl_waves waves;
     tl_ocean waves_ocean; /* the parameters `waves` was built from */
@@ -42,11 +44,54 @@ int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
     return TL_OK;
 }
 
+int tl_render_open_window(tl_render **out, const tl_shader_lib *lib, int width, int height,
+                          const char *title, tl_error *err)
+{
+    *out = NULL;
+    tl_render *r = calloc(1, sizeof *r);
+    if (r)
+        r->sky = calloc(1, sizeof *r->sky);
+    if (!r || !r->sky) {
+        free(r);
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    }
+    int rc = tl_gl_window_open(&r->window, width, height, title, err);
+    if (!rc)
+        rc = tl_renderer_create(&r->renderer, lib, err);
+    if (rc) {
+        tl_render_close(r);
+        return rc;
+    }
+    *out = r;
+    return TL_OK;
+}
+
+tl_gl_window *tl_render_window(tl_render *r)
+{
+    return r->window;
+}
+
+int tl_render_reload_shaders(tl_render *r, tl_error *err)
+{
+    return tl_renderer_reload_shaders(r->renderer, err);
+}
+
+int tl_render_present(tl_render *r, tl_error *err)
+{
+    int w, h;
+    tl_gl_window_size(r->window, &w, &h);
+    int rc = tl_renderer_present(r->renderer, w, h, err);
+    if (!rc)
+        tl_gl_window_swap(r->window);
+    return rc;
+}
+
 void tl_render_close(tl_render *r)
 {
     if (!r)
         return;
     tl_renderer_destroy(r->renderer);
+    tl_gl_window_close(r->window);
     tl_gl_context_destroy(r->context);
     free(r->sky);
     free(r);
@@ -64,7 +109,7 @@ unsigned tl_render_last_features(const tl_render *r)
 
 const char *tl_render_describe(const tl_render *r)
 {
-    return tl_gl_context_describe(r->context);
+    return r->window ? tl_gl_window_describe(r->window) : tl_gl_context_describe(r->context);
 }
 
 /* The octave table depends only on the ocean parameters: rebuild it when
@@ -122,6 +167,8 @@ void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_sett
         scene->quality = *settings->quality;
     if (settings->spp > 0)
         scene->quality.spp = settings->spp;
+    if (settings->camera)
+        scene->camera = *settings->camera;
 }
 
 /* Narrows (lo, hi] around the cut inside it to ~1e-12 relative. */
@@ -164,7 +211,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     tl_scene scene;
     tl_render_frame_scene(tl, t, settings, &scene);
     int rc = tl_scene_validate(&scene, err);
-    if (!rc)
+    if (!rc && out)
         rc = ensure_frame(out, scene.width, scene.height, err);
     if (!rc)
         rc = tl_renderer_begin(r->renderer, scene.width, scene.height, err);
@@ -208,8 +255,10 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
     if (!rc)
-        rc = tl_renderer_finish(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
-                                (float)scene.bloom, out, err);
+        rc = out ? tl_renderer_finish(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
+                                      (float)scene.bloom, out, err)
+                 : tl_renderer_display(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
+                                       (float)scene.bloom, err);
     if (!rc && scene_out)
         *scene_out = scene;
     return rc;

@@ -20,6 +20,16 @@
 typedef struct tl_render tl_render;
 
 int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err);
+/* The same pipeline drawing into a desktop window (GLFW) of the given size:
+ * the live preview. tl_render_close closes the window too. */
+struct tl_gl_window;
+int tl_render_open_window(tl_render **out, const tl_shader_lib *lib, int width, int height,
+                          const char *title, tl_error *err);
+struct tl_gl_window *tl_render_window(tl_render *r);
+/* Compiles the shaders again on the next frame (their files changed). */
+int tl_render_reload_shaders(tl_render *r, tl_error *err);
+/* Shows the last frame rendered (letterboxed) and swaps the window. */
+int tl_render_present(tl_render *r, tl_error *err);
 void tl_render_close(tl_render *r);
 
 /* "EGL surfaceless: llvmpipe (...), OpenGL 4.5 (Core Profile) ..." */
@@ -43,6 +53,7 @@ typedef struct tl_render_settings {
     int spp;                   /* 0: the quality's samples per pixel */
     double shutter_deg;        /* 0: no motion blur; 360 = the whole frame interval */
     int shutter_samples;       /* sub-frames when shutter_deg > 0 (0: 8) */
+    const tl_camera *camera;   /* NULL: the timeline's; else this camera (the preview's) */
 } tl_render_settings;
 
 /* The scene a frame is rendered from: the timeline at frame / fps with the
@@ -60,7 +71,8 @@ void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutte
  * `out`. With a shutter, radiance averages `shutter_samples` sub-frames
  * spread evenly over the shutter interval; depth comes from the sub-frame
  * nearest the frame's time. `scene_out` (may be NULL) receives the scene
- * at the frame's time. */
+ * at the frame's time. With `out` NULL nothing is read back: the frame
+ * stays on the GPU for tl_render_present. */
 int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err);

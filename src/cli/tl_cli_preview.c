@@ -1,0 +1,643 @@
+/* tideline preview: plays a timeline in a window with the same renderer as
+ * the headless path, follows the file as it is edited, and trades
+ * resolution for frame rate while it plays (sharpening to exactly the
+ * `still` frame while paused). */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <dirent.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "cli/tl_args.h"
+#include "cli/tl_cli.h"
+#include "gl/tl_gl_window.h"
+#include "image/tl_image_io.h"
+#include "mesh/tl_mesh.h"
+#include "prepare/tl_prepare.h"
+#include "render/tl_render.h"
+#include "timeline/tl_parse.h"
+
+#define DEG (M_PI / 180.0)
+
+static const char usage[] =
+    "Usage: tideline preview FILE.tl [options]\n"
+    "\n"
+    "Play a timeline in a window and follow the file as it is edited. It renders\n"
+    "with the same renderer and shaders as 'still' and 'render'; while playing it\n"
+    "lowers the resolution to hold the frame rate, and while paused it sharpens to\n"
+    "exactly the frame 'tideline still' renders.\n"
+    "\n"
+    "Options:\n"
+    "  --time T              start at this time (2.5, 2.5s, 60f); default 0\n"
+    "  --paused              start paused\n"
+    "  --quality PRESET      draft, preview (default), final, reference, seed\n"
+    "  --size WxH            frame size (default: the timeline's, at most 1280x720)\n"
+    "  --scale S             fixed render scale in (0, 1] (default: adapt to --target-fps)\n"
+    "  --target-fps F        frame rate to hold while playing (default 24)\n"
+    "  --screenshot PATH     write PATH (PNG or EXR, atomically) each time the displayed\n"
+    "                        frame has fully sharpened\n"
+    "  --exit-after-frames N quit after N displayed frames\n"
+    "  --keys LIST           play keys, one per frame: space,left,right,shift+left,\n"
+    "                        shift+right,home,end,[,],1,2,3,4,c,p,f,r,l,h,esc\n"
+    "  --watch-interval S    seconds between checks of the files (default 0.25)\n"
+    "  --shader-dir DIR      load shaders from DIR and reload them when they change\n"
+    "  -v, --verbose         log the GL renderer and every reload\n"
+    "  -h, --help            show this help\n"
+    "\n"
+    "Keys: space play/pause; left/right one frame; shift+left/right one second;\n"
+    "Home/End; [ ] playback speed; 1-4 quality draft/preview/final/reference;\n"
+    "L loop or hold at the end; C free camera (WASD, Q/E down/up, drag to look;\n"
+    "P prints its pose as timeline keys); F saves the frame at full size and\n"
+    "quality as EXR + PNG next to the timeline; R reloads; H or ? this help;\n"
+    "Esc quits.\n";
+
+typedef struct options {
+    const char *timeline, *screenshot, *keys, *shader_dir, *time_text;
+    int paused, verbose, has_quality, has_size;
+    tl_quality quality;
+    int width, height;
+    double scale, target_fps, watch_interval;
+    long exit_after;
+} options;
+
+static volatile sig_atomic_t stop_signal = 0;
+
+static void on_signal(int sig)
+{
+    stop_signal = sig;
+}
+
+static int parse(int argc, char **argv, options *o, int *help, tl_error *err)
+{
+    tl_args a;
+    tl_args_init(&a, argc, argv);
+    a.index = 1;
+    o->target_fps = 24.0;
+    o->watch_interval = 0.25;
+    o->exit_after = -1;
+    tl_quality_preset("preview", &o->quality, err);
+    while (!tl_args_done(&a)) {
+        const char *pos;
+        int rc = 0;
+        if (tl_args_match(&a, "--help", "-h", false, err)) {
+            *help = 1;
+            return 0;
+        } else if (tl_args_match(&a, "--verbose", "-v", false, err)) {
+            o->verbose = 1;
+        } else if (tl_args_match(&a, "--paused", NULL, false, err)) {
+            o->paused = 1;
+        } else if (tl_args_match(&a, "--time", NULL, true, err)) {
+            o->time_text = a.value;
+            rc = a.value ? 0 : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--quality", NULL, true, err)) {
+            rc = a.value ? tl_quality_preset(a.value, &o->quality, err) : TL_ERR_USAGE;
+            if (rc)
+                tl_error_prefix(err, "--quality");
+            o->has_quality = 1;
+        } else if (tl_args_match(&a, "--size", NULL, true, err)) {
+            rc = a.value ? tl_args_size("--size", a.value, &o->width, &o->height, err)
+                         : TL_ERR_USAGE;
+            o->has_size = 1;
+        } else if (tl_args_match(&a, "--scale", NULL, true, err)) {
+            rc = a.value ? tl_args_double("--scale", a.value, &o->scale, err) : TL_ERR_USAGE;
+            if (!rc && !(o->scale > 0.0 && o->scale <= 1.0))
+                rc = tl_error_set(err, TL_ERR_USAGE, "--scale: '%s' is outside (0, 1]", a.value);
+        } else if (tl_args_match(&a, "--target-fps", NULL, true, err)) {
+            rc = a.value ? tl_args_double("--target-fps", a.value, &o->target_fps, err)
+                         : TL_ERR_USAGE;
+            if (!rc && !(o->target_fps >= 0.1 && o->target_fps <= 1000.0))
+                rc = tl_error_set(err, TL_ERR_USAGE, "--target-fps: '%s' is outside 0.1..1000",
+                                  a.value);
+        } else if (tl_args_match(&a, "--watch-interval", NULL, true, err)) {
+            rc = a.value ? tl_args_double("--watch-interval", a.value, &o->watch_interval, err)
+                         : TL_ERR_USAGE;
+            if (!rc && !(o->watch_interval >= 0.01 && o->watch_interval <= 60.0))
+                rc = tl_error_set(err, TL_ERR_USAGE,
+                                  "--watch-interval: '%s' is outside 0.01..60 s", a.value);
+        } else if (tl_args_match(&a, "--screenshot", NULL, true, err)) {
+            o->screenshot = a.value;
+            rc = a.value ? 0 : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--keys", NULL, true, err)) {
+            o->keys = a.value;
+            rc = a.value ? 0 : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
+            o->shader_dir = a.value;
+            rc = a.value ? 0 : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--exit-after-frames", NULL, true, err)) {
+            double n = 0;
+            rc = a.value ? tl_args_double("--exit-after-frames", a.value, &n, err) : TL_ERR_USAGE;
+            if (!rc && !(n >= 1 && n <= 1e9 && n == floor(n)))
+                rc = tl_error_set(err, TL_ERR_USAGE,
+                                  "--exit-after-frames: '%s' is not a count of frames", a.value);
+            o->exit_after = (long)n;
+        } else if (!o->timeline && tl_args_positional(&a, &pos)) {
+            o->timeline = pos;
+        } else {
+            rc = tl_args_unknown(&a, "preview", err);
+        }
+        if (rc)
+            return rc;
+    }
+    if (!o->timeline)
+        return tl_error_set(err, TL_ERR_USAGE, "no timeline file given");
+    if (o->screenshot && tl_image_check_writable(o->screenshot, err))
+        return TL_ERR_USAGE;
+    return TL_OK;
+}
+
+/* ---- --keys: a script of key names ---- */
+
+static const struct {
+    const char *name;
+    tl_keycode key;
+    bool shift;
+} key_names[] = {
+    {"space", TL_KEY_SPACE, false},      {"left", TL_KEY_LEFT, false},
+    {"right", TL_KEY_RIGHT, false},      {"shift+left", TL_KEY_LEFT, true},
+    {"shift+right", TL_KEY_RIGHT, true}, {"home", TL_KEY_HOME, false},
+    {"end", TL_KEY_END, false},          {"[", TL_KEY_BRACKET_LEFT, false},
+    {"]", TL_KEY_BRACKET_RIGHT, false},  {"1", TL_KEY_1, false},
+    {"2", TL_KEY_2, false},              {"3", TL_KEY_3, false},
+    {"4", TL_KEY_4, false},              {"c", TL_KEY_C, false},
+    {"p", TL_KEY_P, false},              {"f", TL_KEY_F, false},
+    {"r", TL_KEY_R, false},              {"l", TL_KEY_L, false},
+    {"h", TL_KEY_H, false},              {"?", TL_KEY_QUESTION, false},
+    {"esc", TL_KEY_ESCAPE, false},
+};
+
+/* Parses "space,right,F" into presses; returns the count or -1. */
+static int parse_keys(const char *text, tl_key_press *out, int max, tl_error *err)
+{
+    int n = 0;
+    const char *p = text;
+    while (*p) {
+        const char *end = strchr(p, ',');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        char word[32];
+        if (len == 0 || len >= sizeof word) {
+            tl_error_set(err, TL_ERR_USAGE, "--keys: empty or overlong key name in '%s'", text);
+            return -1;
+        }
+        for (size_t i = 0; i < len; i++)
+            word[i] = (char)(p[i] >= 'A' && p[i] <= 'Z' ? p[i] - 'A' + 'a' : p[i]);
+        word[len] = '\0';
+        int found = 0;
+        for (size_t k = 0; k < sizeof key_names / sizeof key_names[0]; k++)
+            if (strcmp(word, key_names[k].name) == 0 && n < max) {
+                out[n++] = (tl_key_press){key_names[k].key, key_names[k].shift};
+                found = 1;
+                break;
+            }
+        if (!found) {
+            tl_error_set(err, TL_ERR_USAGE, "--keys: unknown key '%s' (see 'tideline preview --help')",
+                         word);
+            return -1;
+        }
+        p += len + (end ? 1 : 0);
+    }
+    return n;
+}
+
+/* ---- the watched files ---- */
+
+typedef struct stamp {
+    long long mtime_ns, size, inode;
+    int exists;
+} stamp;
+
+static stamp stamp_of(const char *path)
+{
+    struct stat st;
+    stamp s = {0, 0, 0, 0};
+    if (stat(path, &st) == 0) {
+        s.mtime_ns = (long long)st.st_mtim.tv_sec * 1000000000LL + st.st_mtim.tv_nsec;
+        s.size = (long long)st.st_size;
+        s.inode = (long long)st.st_ino;
+        s.exists = 1;
+    }
+    return s;
+}
+
+/* The newest change among the files of a folder (the shaders). */
+static long long newest_in(const char *dir)
+{
+    DIR *d = opendir(dir);
+    long long newest = 0;
+    if (!d)
+        return 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        char path[2048];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        stamp s = stamp_of(path);
+        if (s.exists && s.mtime_ns + s.size > newest)
+            newest = s.mtime_ns + s.size;
+    }
+    closedir(d);
+    return newest;
+}
+
+/* ---- the preview's state ---- */
+
+typedef struct preview {
+    options *o;
+    tl_render *render;
+    tl_timeline tl;
+    int have_tl;
+    stamp tl_stamp;
+    char problem[512]; /* the last reload's error, for the title; "" when fine */
+    double t;          /* the time shown, seconds */
+    int playing, loop;
+    double speed, anchor_clock, anchor_t;
+    tl_quality quality;
+    double scale;
+    int free_cam;
+    tl_camera cam;
+    long version;       /* bumps on every reload: the screenshot follows it */
+    long shown;         /* frames displayed */
+    double fps;         /* measured */
+    char last_shot[96]; /* the state of the last screenshot */
+    int sharp;          /* the displayed frame is fully sharpened */
+    int broken;         /* rendering failed: wait for a change before trying again */
+} preview;
+
+/* Loads (or reloads) the timeline and its boat; keeps the last good one
+ * on failure, reporting at file:line:col. */
+static int load(preview *p)
+{
+    tl_timeline fresh;
+    tl_mesh boat;
+    if (tl_cli_load_timeline("preview", p->o->timeline, &fresh, &boat)) {
+        snprintf(p->problem, sizeof p->problem, "%s does not load (see the terminal)",
+                 p->o->timeline);
+        return 1;
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    if (boat.index_count && p->render && tl_render_set_boat(p->render, &boat, &err)) {
+        tl_cli_print_error("preview", &err);
+        tl_mesh_free(&boat);
+        tl_timeline_free(&fresh);
+        return 1;
+    }
+    tl_mesh_free(&boat);
+    if (p->have_tl)
+        tl_timeline_free(&p->tl);
+    p->tl = fresh;
+    p->have_tl = 1;
+    p->problem[0] = '\0';
+    p->version++;
+    p->broken = 0;
+    return 0;
+}
+
+static long frame_of(const preview *p)
+{
+    return (long)floor(p->t * p->tl.fps + 1e-6);
+}
+
+static double duration(const preview *p)
+{
+    return tl_timeline_frame_count(&p->tl) / p->tl.fps;
+}
+
+static void set_time(preview *p, double t)
+{
+    double end = (tl_timeline_frame_count(&p->tl) - 1) / p->tl.fps;
+    p->t = t < 0.0 ? 0.0 : t > end ? end : t;
+    p->anchor_t = p->t;
+    p->anchor_clock = tl_gl_window_time();
+}
+
+static void print_pose(const preview *p)
+{
+    const tl_camera *c = &p->cam;
+    printf("key camera.position\n  %.3fs  %.3f %.3f %.3f\n", p->t, c->position[0],
+           c->position[1], c->position[2]);
+    printf("key camera.yaw\n  %.3fs  %.2fdeg\n", p->t, c->yaw / DEG);
+    printf("key camera.pitch\n  %.3fs  %.2fdeg\n", p->t, c->pitch / DEG);
+    fflush(stdout);
+}
+
+/* F: the frame at full size and quality as EXR + PNG next to the timeline,
+ * under a name that is not taken. */
+static void save_frame(preview *p)
+{
+    char base[1024], exr[1100], png[1100];
+    snprintf(base, sizeof base, "%s", p->o->timeline);
+    char *dot = strrchr(base, '.');
+    if (dot && !strchr(dot, '/'))
+        *dot = '\0';
+    long frame = frame_of(p);
+    for (int n = 1; n < 10000; n++) {
+        snprintf(exr, sizeof exr, "%s_frame%04ld_%d.exr", base, frame, n);
+        snprintf(png, sizeof png, "%s_frame%04ld_%d.png", base, frame, n);
+        if (!stamp_of(exr).exists && !stamp_of(png).exists)
+            break;
+    }
+    tl_render_settings settings = {.quality = &p->quality, .camera = p->free_cam ? &p->cam : NULL};
+    if (p->o->has_size) {
+        settings.width = p->o->width;
+        settings.height = p->o->height;
+    }
+    tl_frame f = {0};
+    tl_error err;
+    tl_error_clear(&err);
+    tl_image_options opt = {0};
+    int rc = tl_render_timeline_frame(p->render, &p->tl, frame, &settings, &f, NULL, &err);
+    if (!rc)
+        rc = tl_image_write(exr, &f, &opt, &err);
+    if (!rc)
+        rc = tl_image_write(png, &f, &opt, &err);
+    if (rc)
+        tl_cli_print_error("preview", &err);
+    else
+        printf("tideline preview: saved %s and %s\n", exr, png);
+    fflush(stdout);
+    tl_frame_free(&f);
+}
+
+static void handle_key(preview *p, tl_key_press k, int *quit)
+{
+    double step = 1.0 / p->tl.fps;
+    switch (k.key) {
+    case TL_KEY_SPACE:
+        p->playing = !p->playing;
+        set_time(p, p->t);
+        break;
+    case TL_KEY_LEFT:
+    case TL_KEY_RIGHT: {
+        double dir = k.key == TL_KEY_LEFT ? -1.0 : 1.0;
+        p->playing = 0;
+        if (k.shift)
+            set_time(p, p->t + dir);
+        else
+            set_time(p, (frame_of(p) + dir) / p->tl.fps);
+        break;
+    }
+    case TL_KEY_HOME: set_time(p, 0.0); break;
+    case TL_KEY_END: set_time(p, duration(p) - step); break;
+    case TL_KEY_BRACKET_LEFT:
+    case TL_KEY_BRACKET_RIGHT:
+        set_time(p, p->t);
+        p->speed *= k.key == TL_KEY_BRACKET_LEFT ? 0.5 : 2.0;
+        p->speed = p->speed < 1.0 / 64 ? 1.0 / 64 : p->speed > 64 ? 64 : p->speed;
+        break;
+    case TL_KEY_1:
+    case TL_KEY_2:
+    case TL_KEY_3:
+    case TL_KEY_4: {
+        static const char *const names[4] = {"draft", "preview", "final", "reference"};
+        tl_quality_preset(names[k.key - TL_KEY_1], &p->quality, NULL);
+        break;
+    }
+    case TL_KEY_C:
+        p->free_cam = !p->free_cam;
+        if (p->free_cam) { /* start from where the timeline's camera is */
+            tl_scene s;
+            tl_timeline_eval(&p->tl, p->t, &s);
+            p->cam = s.camera;
+        }
+        break;
+    case TL_KEY_P: print_pose(p); break;
+    case TL_KEY_F: save_frame(p); break;
+    case TL_KEY_R: load(p); break;
+    case TL_KEY_L: p->loop = !p->loop; break;
+    case TL_KEY_H:
+    case TL_KEY_QUESTION: fputs(usage, stdout); break;
+    case TL_KEY_ESCAPE: *quit = 1; break;
+    default: break;
+    }
+}
+
+/* WASD/QE and dragging move the free camera, in metres per second. */
+static void fly(preview *p, tl_gl_window *w, double dt)
+{
+    double dx, dy;
+    tl_gl_window_drag(w, &dx, &dy);
+    if (!p->free_cam)
+        return;
+    p->cam.yaw += dx * 0.003;
+    p->cam.pitch = fmax(-89.0 * DEG, fmin(89.0 * DEG, p->cam.pitch - dy * 0.003));
+    double speed = 6.0 * dt, fx = sin(p->cam.yaw), fz = cos(p->cam.yaw);
+    double move[3] = {0, 0, 0};
+    if (tl_gl_window_key_held(w, TL_KEY_W))
+        move[0] += fx, move[2] += fz;
+    if (tl_gl_window_key_held(w, TL_KEY_S))
+        move[0] -= fx, move[2] -= fz;
+    if (tl_gl_window_key_held(w, TL_KEY_D))
+        move[0] += fz, move[2] -= fx;
+    if (tl_gl_window_key_held(w, TL_KEY_A))
+        move[0] -= fz, move[2] += fx;
+    if (tl_gl_window_key_held(w, TL_KEY_E))
+        move[1] += 1.0;
+    if (tl_gl_window_key_held(w, TL_KEY_Q))
+        move[1] -= 1.0;
+    for (int i = 0; i < 3; i++)
+        p->cam.position[i] += move[i] * speed;
+}
+
+static void update_title(preview *p, tl_gl_window *w)
+{
+    char title[1024];
+    long frame = frame_of(p);
+    snprintf(title, sizeof title,
+             "tideline preview - %s  t %.3f s  frame %ld/%ld  %.1f fps  scale %.2f  %s%s%s%s%s",
+             p->o->timeline, p->t, frame, tl_timeline_frame_count(&p->tl), p->fps, p->scale,
+             p->quality.name, p->playing ? "" : "  [paused]", p->free_cam ? "  [free camera]" : "",
+             p->problem[0] ? "  ERROR: " : "", p->problem);
+    tl_gl_window_set_title(w, title);
+}
+
+int tl_cli_preview(int argc, char **argv)
+{
+    options o = {0};
+    tl_error err;
+    tl_error_clear(&err);
+    int help = 0;
+    int rc = parse(argc, argv, &o, &help, &err);
+    if (help) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    enum { MAX_SCRIPT = 4096 };
+    static tl_key_press script[MAX_SCRIPT];
+    int script_len = 0;
+    if (!rc && o.keys && (script_len = parse_keys(o.keys, script, MAX_SCRIPT, &err)) < 0)
+        rc = TL_ERR_USAGE;
+    if (rc) {
+        tl_cli_print_error("preview", &err);
+        return 2;
+    }
+    preview p = {0};
+    p.o = &o;
+    p.speed = 1.0;
+    p.loop = 1;
+    p.quality = o.quality;
+    if (load(&p))
+        return 1;
+    double t0 = 0.0;
+    if (o.time_text && tl_parse_time_text(o.time_text, p.tl.fps, &t0, &err)) {
+        tl_error_prefix(&err, "--time");
+        tl_cli_print_error("preview", &err);
+        tl_timeline_free(&p.tl);
+        return 2;
+    }
+    int width = o.has_size ? o.width : p.tl.width, height = o.has_size ? o.height : p.tl.height;
+    if (!o.has_size && (width > 1280 || height > 720)) {
+        double fit = fmin(1280.0 / width, 720.0 / height);
+        width = (int)(width * fit);
+        height = (int)(height * fit);
+    }
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    if (o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err)) {
+        tl_cli_print_error("preview", &err);
+        tl_timeline_free(&p.tl);
+        return 2;
+    }
+    if (tl_render_open_window(&p.render, &lib, width, height, "tideline preview", &err)) {
+        tl_cli_print_error("preview", &err);
+        tl_timeline_free(&p.tl);
+        return 1;
+    }
+    load(&p); /* again, now that the boat can be uploaded */
+    if (o.verbose)
+        fprintf(stderr, "tideline preview: %s\n", tl_render_describe(p.render));
+    tl_gl_window *win = tl_render_window(p.render);
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+
+    p.playing = !o.paused;
+    p.scale = o.scale > 0.0 ? o.scale : 1.0;
+    set_time(&p, t0);
+    p.tl_stamp = stamp_of(o.timeline);
+    long long shaders_seen = o.shader_dir ? newest_in(o.shader_dir) : 0;
+    double next_watch = tl_gl_window_time() + o.watch_interval, last = tl_gl_window_time();
+    int quit = 0, script_pos = 0;
+    char shown_state[96] = "";
+    tl_frame shot = {0};
+    while (!quit && !stop_signal && !tl_gl_window_should_close(win)) {
+        tl_key_press keys[64];
+        int n = tl_gl_window_poll(win, keys, 64);
+        for (int i = 0; i < n && !quit; i++)
+            handle_key(&p, keys[i], &quit);
+        if (script_pos < script_len)
+            handle_key(&p, script[script_pos++], &quit);
+        double now = tl_gl_window_time();
+        fly(&p, win, now - last);
+        if (now >= next_watch) { /* follow the file (editors that save by rename too) */
+            next_watch = now + o.watch_interval;
+            stamp s = stamp_of(o.timeline);
+            if (s.exists && memcmp(&s, &p.tl_stamp, sizeof s) != 0) {
+                p.tl_stamp = s;
+                if (!load(&p) && o.verbose)
+                    fprintf(stderr, "tideline preview: reloaded %s\n", o.timeline);
+            }
+            long long shaders = o.shader_dir ? newest_in(o.shader_dir) : 0;
+            if (shaders != shaders_seen) {
+                shaders_seen = shaders;
+                if (tl_render_reload_shaders(p.render, &err)) {
+                    tl_cli_print_error("preview", &err);
+                    snprintf(p.problem, sizeof p.problem, "a shader does not compile");
+                } else {
+                    p.broken = 0;
+                    p.problem[0] = '\0';
+                    p.version++;
+                    if (o.verbose)
+                        fprintf(stderr, "tideline preview: reloaded the shaders\n");
+                }
+            }
+        }
+        if (p.playing) {
+            double t = p.anchor_t + (now - p.anchor_clock) * p.speed;
+            double end = (tl_timeline_frame_count(&p.tl) - 1) / p.tl.fps;
+            if (t > end) {
+                if (p.loop) {
+                    set_time(&p, 0.0);
+                    t = 0.0;
+                } else {
+                    p.playing = 0;
+                    set_time(&p, end);
+                    t = end;
+                }
+            }
+            p.t = t;
+        }
+        /* Paused: sharpen toward scale 1; nothing new to show: rest. */
+        char state[96];
+        snprintf(state, sizeof state, "%ld %ld %s %d %.6f %.6f %.6f %.6f %.6f", frame_of(&p),
+                 p.version, p.quality.name, p.free_cam, p.cam.position[0], p.cam.position[1],
+                 p.cam.position[2], p.cam.yaw, p.cam.pitch);
+        if (!p.playing && o.scale <= 0.0 && p.scale < 1.0)
+            p.scale = fmin(1.0, p.scale * 1.6);
+        if (((!p.playing && p.sharp && strcmp(state, shown_state) == 0) || p.broken) &&
+            script_pos >= script_len) {
+            /* The same frame stays on screen: it counts as shown. */
+            struct timespec rest = {0, 10000000};
+            nanosleep(&rest, NULL);
+            last = tl_gl_window_time();
+            if (o.exit_after > 0 && ++p.shown >= o.exit_after)
+                break;
+            continue;
+        }
+        tl_render_settings settings = {.quality = &p.quality,
+                                       .camera = p.free_cam ? &p.cam : NULL};
+        settings.width = (int)fmax(16.0, floor(width * p.scale + 0.5));
+        settings.height = (int)fmax(9.0, floor(height * p.scale + 0.5));
+        int sharp = settings.width == width && settings.height == height;
+        int want_shot = o.screenshot && sharp && strcmp(state, p.last_shot) != 0;
+        tl_error_clear(&err);
+        double start = tl_gl_window_time();
+        rc = tl_render_timeline_frame(p.render, &p.tl, frame_of(&p), &settings,
+                                      want_shot ? &shot : NULL, NULL, &err);
+        if (!rc)
+            rc = tl_render_present(p.render, &err);
+        if (rc) { /* a shader that does not compile: say so, keep the last frame */
+            tl_cli_print_error("preview", &err);
+            snprintf(p.problem, sizeof p.problem, "rendering failed (see the terminal)");
+            p.broken = 1;
+            update_title(&p, win);
+            continue;
+        }
+        if (!rc && want_shot) {
+            tl_image_options opt = {0};
+            if (tl_image_write(o.screenshot, &shot, &opt, &err))
+                tl_cli_print_error("preview", &err);
+            snprintf(p.last_shot, sizeof p.last_shot, "%s", state);
+        }
+        snprintf(shown_state, sizeof shown_state, "%s", state);
+        p.sharp = sharp;
+        p.shown++;
+        double end = tl_gl_window_time(), dt = end - last;
+        last = end;
+        p.fps = p.fps > 0.0 ? 0.8 * p.fps + 0.2 / fmax(dt, 1e-6) : 1.0 / fmax(dt, 1e-6);
+        /* Dynamic resolution: the render's own time against the target. */
+        double took = end - start, budget = 1.0 / o.target_fps;
+        if (p.playing && o.scale <= 0.0) {
+            if (took > 1.1 * budget)
+                p.scale = fmax(0.1, p.scale * 0.8);
+            else if (took < 0.6 * budget)
+                p.scale = fmin(1.0, p.scale * 1.1);
+        }
+        update_title(&p, win);
+        if (o.exit_after > 0 && p.shown >= o.exit_after)
+            break;
+    }
+    printf("tideline preview: stopped at frame %ld (%.6g s); %ld frames shown, %.1f fps, render "
+           "scale %.2f\n",
+           frame_of(&p), p.t, p.shown, p.fps, p.scale);
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    tl_frame_free(&shot);
+    tl_render_close(p.render);
+    tl_timeline_free(&p.tl);
+    return 0;
+}

@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# tideline preview under Xvfb (llvmpipe): a paused, sharpened screenshot
+# equals `tideline still`; the file is followed as it is edited, a broken
+# file keeps the last good frame and prints its error, fixing it recovers;
+# scripted keys move the time exactly and F saves the frame; a high target
+# frame rate lowers the render scale; no display is a one-line error.
+# ARGS: the tideline binary, the timelines folder. Prints "N passed, M failed".
+set -u
+bin=$1
+timelines=$2
+work=$(mktemp -d /tmp/tideline-preview-XXXXXX)
+pid=
+xvfb=
+trap 'kill "$pid" "$xvfb" 2>/dev/null; rm -rf "$work"' EXIT
+# One X server for every case: it picks a free display and writes its
+# number to fd 3.
+Xvfb -displayfd 3 -screen 0 640x480x24 -nolisten tcp 3>"$work/display" 2>/dev/null &
+xvfb=$!
+for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
+export DISPLAY=":$(cat "$work/display")"
+passed=0
+failed=0
+check() { # check "what" command...
+  local what=$1
+  shift
+  if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $what"; fi
+}
+
+md5() { md5sum "$1" 2>/dev/null | cut -d' ' -f1; }
+# wait_for SECONDS COMMAND...: polls the command until it succeeds.
+wait_for() {
+  local limit=$1
+  shift
+  for _ in $(seq $((limit * 10))); do "$@" && return 0; sleep 0.1; done
+  return 1
+}
+
+# 1. The same renderer: paused at 5 s, sharpened, equals `still`.
+"$bin" preview "$timelines/calm.tl" --paused --time 5 --size 320x180 --quality final \
+  --screenshot "$work/preview.png" --exit-after-frames 12 >"$work/out1" 2>&1
+"$bin" still "$timelines/calm.tl" --time 5 --size 320x180 --quality final -o "$work/still.png"
+psnr=$(ffmpeg -hide_banner -i "$work/preview.png" -i "$work/still.png" -lavfi psnr -f null - 2>&1 |
+  sed -nE 's/.*average:([0-9.a-z]+).*/\1/p' | tail -1)
+echo "screenshot against still: PSNR $psnr dB"
+check "screenshot PSNR >= 40 dB" awk -v p="$psnr" 'BEGIN { exit !(p == "inf" || p >= 40) }'
+
+# 2. Hot reload: edit, break, fix.
+cp "$timelines/calm.tl" "$work/edit.tl"
+# Started directly (not through a function) so $! is the preview itself.
+"$bin" preview "$work/edit.tl" --paused --time 2 --size 160x90 --quality draft \
+  --screenshot "$work/shot.png" --watch-interval 0.1 --exit-after-frames 100000 \
+  >"$work/out2" 2>"$work/err2" &
+pid=$!
+check "first screenshot" wait_for 60 test -s "$work/shot.png"
+first=$(md5 "$work/shot.png")
+sed -i 's/^  0s    2deg/  0s    25deg/' "$work/edit.tl"
+check "an edit reloads" wait_for 30 bash -c "[ \"\$(md5sum '$work/shot.png' | cut -d' ' -f1)\" != $first ]"
+edited=$(md5 "$work/shot.png")
+echo "set sun.elevaton 3deg" >>"$work/edit.tl"
+check "a broken file prints its error" wait_for 30 grep -q "edit.tl:[0-9]*:5: error: unknown channel 'sun.elevaton'" "$work/err2"
+sleep 1
+check "the last good frame stays" test "$(md5 "$work/shot.png")" = "$edited"
+sed -i '$d' "$work/edit.tl"
+sed -i 's/^  0s    25deg/  0s    40deg/' "$work/edit.tl"
+check "fixing it recovers" wait_for 30 bash -c "[ \"\$(md5sum '$work/shot.png' | cut -d' ' -f1)\" != $edited ]"
+kill -INT "$pid"
+wait "$pid"
+check "Ctrl-C exits 0" test $? -eq 0
+pid=
+
+# 3. Keys move the time exactly; F writes both files.
+cp "$timelines/calm.tl" "$work/keys.tl"
+"$bin" preview "$work/keys.tl" --paused --time 1s --size 64x36 --quality draft \
+  --keys right,right,shift+right,f --exit-after-frames 8 >"$work/out3" 2>&1
+cat "$work/out3"
+check "right, right, shift+right from 1 s is frame 50" grep -q "stopped at frame 50 " "$work/out3"
+check "F writes EXR and PNG" test -s "$work/keys_frame0050_1.exr" -a -s "$work/keys_frame0050_1.png"
+
+# 4. Dynamic resolution: a target no frame can meet lowers the scale.
+"$bin" preview "$timelines/calm.tl" --size 320x180 --target-fps 500 \
+  --exit-after-frames 15 >"$work/out4" 2>&1
+cat "$work/out4"
+scale=$(sed -nE 's/.*render scale ([0-9.]+).*/\1/p' "$work/out4")
+check "the render scale dropped below 1" awk -v s="$scale" 'BEGIN { exit !(s < 1) }'
+check "the frame rate is reported" grep -Eq "[0-9.]+ fps" "$work/out4"
+
+# 5. No display: one line that names it, status 1.
+env -u DISPLAY -u WAYLAND_DISPLAY "$bin" preview "$timelines/calm.tl" >"$work/out5" 2>&1
+status=$?
+check "no display exits 1" test $status -eq 1
+check "no display names DISPLAY and one line" bash -c "grep -q DISPLAY '$work/out5' && [ \$(wc -l <'$work/out5') -eq 1 ]"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
