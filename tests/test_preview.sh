@@ -76,6 +76,11 @@ cat "$work/out3"
 check "right, right, shift+right from 1 s is frame 50" grep -q "stopped at frame 50 " "$work/out3"
 check "F writes EXR and PNG" test -s "$work/keys_frame0050_1.exr" -a -s "$work/keys_frame0050_1.png"
 
+# The title's shot index: voyage.tl cuts at 6 s.
+"$bin" preview "$timelines/voyage.tl" --paused --time 7 --size 64x36 --quality draft \
+  --exit-after-frames 3 >"$work/out6" 2>&1
+check "7 s of voyage.tl is shot 2 of 2" grep -q "(7 s, shot 2 of 2)" "$work/out6"
+
 # 4. Dynamic resolution: a target no frame can meet lowers the scale.
 "$bin" preview "$timelines/calm.tl" --size 320x180 --target-fps 500 \
   --exit-after-frames 15 >"$work/out4" 2>&1

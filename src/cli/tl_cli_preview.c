@@ -262,7 +262,34 @@ typedef struct preview {
     char last_shot[96]; /* the state of the last screenshot */
     int sharp;          /* the displayed frame is fully sharpened */
     int broken;         /* rendering failed: wait for a change before trying again */
+    long *shot_starts;  /* the first frame of each shot (cuts), for the title */
+    int shots;
 } preview;
+
+/* The shots: a new one starts at every frame a cut falls before. */
+static void find_shots(preview *p)
+{
+    free(p->shot_starts);
+    long frames = tl_timeline_frame_count(&p->tl);
+    p->shot_starts = malloc(sizeof(long) * 64);
+    p->shots = 0;
+    if (!p->shot_starts)
+        return;
+    p->shot_starts[p->shots++] = 0;
+    for (long f = 1; f < frames && p->shots < 64; f++)
+        if (tl_timeline_has_cut_between(&p->tl, tl_timeline_frame_time(&p->tl, f - 1),
+                                        tl_timeline_frame_time(&p->tl, f)))
+            p->shot_starts[p->shots++] = f;
+}
+
+static int shot_of(const preview *p, long frame)
+{
+    int shot = 1;
+    for (int i = 1; i < p->shots; i++)
+        if (frame >= p->shot_starts[i])
+            shot = i + 1;
+    return shot;
+}
 
 /* Loads (or reloads) the timeline and its boat; keeps the last good one
  * on failure, reporting at file:line:col. */
@@ -291,6 +318,7 @@ static int load(preview *p)
     p->problem[0] = '\0';
     p->version++;
     p->broken = 0;
+    find_shots(p);
     return 0;
 }
 
@@ -445,10 +473,11 @@ static void update_title(preview *p, tl_gl_window *w)
     char title[1024];
     long frame = frame_of(p);
     snprintf(title, sizeof title,
-             "tideline preview - %s  t %.3f s  frame %ld/%ld  %.1f fps  scale %.2f  %s%s%s%s%s",
-             p->o->timeline, p->t, frame, tl_timeline_frame_count(&p->tl), p->fps, p->scale,
-             p->quality.name, p->playing ? "" : "  [paused]", p->free_cam ? "  [free camera]" : "",
-             p->problem[0] ? "  ERROR: " : "", p->problem);
+             "tideline preview - %s  t %.3f s  frame %ld/%ld  shot %d/%d  %.1f fps  scale %.2f  "
+             "%s%s%s%s%s",
+             p->o->timeline, p->t, frame, tl_timeline_frame_count(&p->tl), shot_of(p, frame),
+             p->shots, p->fps, p->scale, p->quality.name, p->playing ? "" : "  [paused]",
+             p->free_cam ? "  [free camera]" : "", p->problem[0] ? "  ERROR: " : "", p->problem);
     tl_gl_window_set_title(w, title);
 }
 
@@ -484,6 +513,7 @@ int tl_cli_preview(int argc, char **argv)
         tl_error_prefix(&err, "--time");
         tl_cli_print_error("preview", &err);
         tl_timeline_free(&p.tl);
+        free(p.shot_starts);
         return 2;
     }
     int width = o.has_size ? o.width : p.tl.width, height = o.has_size ? o.height : p.tl.height;
@@ -497,11 +527,13 @@ int tl_cli_preview(int argc, char **argv)
     if (o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err)) {
         tl_cli_print_error("preview", &err);
         tl_timeline_free(&p.tl);
+        free(p.shot_starts);
         return 2;
     }
     if (tl_render_open_window(&p.render, &lib, width, height, "tideline preview", &err)) {
         tl_cli_print_error("preview", &err);
         tl_timeline_free(&p.tl);
+        free(p.shot_starts);
         return 1;
     }
     load(&p); /* again, now that the boat can be uploaded */
@@ -631,13 +663,14 @@ int tl_cli_preview(int argc, char **argv)
         if (o.exit_after > 0 && p.shown >= o.exit_after)
             break;
     }
-    printf("tideline preview: stopped at frame %ld (%.6g s); %ld frames shown, %.1f fps, render "
-           "scale %.2f\n",
-           frame_of(&p), p.t, p.shown, p.fps, p.scale);
+    printf("tideline preview: stopped at frame %ld (%.6g s, shot %d of %d); %ld frames shown, "
+           "%.1f fps, render scale %.2f\n",
+           frame_of(&p), p.t, shot_of(&p, frame_of(&p)), p.shots, p.shown, p.fps, p.scale);
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
     tl_frame_free(&shot);
     tl_render_close(p.render);
     tl_timeline_free(&p.tl);
+    free(p.shot_starts);
     return 0;
 }
