@@ -189,6 +189,10 @@ static int target_ensure_depth(target *t, int width, int height, int attachments
                      formats[i] == GL_R32F ? GL_RED : GL_RGBA, GL_FLOAT, NULL);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        /* Clamped: the glare's wide taps must not wrap the top of the image
+         * (a bright sun) onto its bottom. */
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, GL_TEXTURE_2D,
                                t->tex[i], 0);
         draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
