@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "image/tl_image_io.h"
+#include "scene/tl_quality.h"
 #include "tl_run.h"
 #include "tl_test.h"
 
@@ -89,10 +91,16 @@ static void test_bad_outputs(void)
 {
     const char *jpg = in_dir(0, "x.jpg");
     EXPECT_USAGE(jpg, "still", "-o", jpg);
+    /* A missing folder is made, as render makes it... */
     const char *missing = in_dir(1, "no/such/folder/x.png");
-    EXPECT_USAGE(missing, "still", "-o", missing);
-    /* A good first output does not get written when a later one is bad. */
-    EXPECT_USAGE(missing, "still", "--size", "8x8", "-o", in_dir(2, "good.png"), "-o", missing);
+    CHECK(run(NULL, "still", "--size", "8x8", "-o", missing, NULL) == 0);
+    CHECK(access(missing, R_OK) == 0);
+    char cmd[700];
+    snprintf(cmd, sizeof cmd, "rm -rf %s/no", dir);
+    CHECK(system(cmd) == 0);
+    /* ...but not when another output is bad, and nothing is written. */
+    EXPECT_USAGE(jpg, "still", "--size", "8x8", "-o", in_dir(2, "good.png"), "-o", missing, "-o",
+                 jpg);
     /* A folder that cannot be written to (root may write anywhere). */
     const char *ro = in_dir(3, "ro");
     mkdir(ro, 0555);
@@ -189,6 +197,73 @@ static void test_success(void)
     unlink(exr);
 }
 
+static void write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
+/* check on several files, warnings and --strict; eval's number format;
+ * the quality knobs recorded in an EXR. */
+static void test_papercuts(void)
+{
+    const char *good = in_dir(0, "good.tl");
+    const char *warn = in_dir(1, "warn.tl");
+    const char *bad = in_dir(2, "bad.tl");
+    write_file(good, "tideline 1\nset camera.fov 60\nset camera.position 0 2.5 0\n");
+    write_file(warn, "tideline 1\nduration 2s\nset camera.pitch 0.2\n"
+                     "key camera.yaw\n  0s 0\n  5s 10\n");
+    write_file(bad, "tideline 1\nset camera.fovv 60\n");
+
+    CHECK(run(NULL, "check", good, warn, NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "good.tl: ok\n");
+    CHECK_STR_CONTAINS(out_text, "warn.tl: ok (with warnings)\n");
+    CHECK_STR_CONTAINS(out_text, "warn.tl:3:18: warning: camera.pitch 0.2 is read as degrees");
+    CHECK_STR_CONTAINS(out_text, "radians");
+    CHECK_STR_CONTAINS(out_text, "warn.tl:4:1: warning: camera.yaw has keys past the end of the "
+                                 "timeline (2 s), the last at 5 s");
+    CHECK(run(NULL, "check", "--strict", good, warn, NULL) == 1);
+    CHECK_STR_CONTAINS(out_text, "warn.tl: failed (--strict");
+    CHECK(run(NULL, "check", good, bad, warn, NULL) == 1); /* the worst file wins */
+    CHECK_STR_CONTAINS(out_text, "good.tl: ok\n");
+    CHECK_STR_CONTAINS(out_text, "bad.tl:2:5: error: unknown channel 'camera.fovv'");
+    CHECK_STR_CONTAINS(out_text, "warn.tl: ok (with warnings)\n");
+
+    /* Values as the language writes them: 60 deg, not 59.99999999999999
+     * or 6e+01; 2.5 m, not 2.5000000000000004. */
+    CHECK(run(NULL, "eval", good, "--at", "0", NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "camera.fov                 60 deg\n");
+    CHECK_STR_CONTAINS(out_text, "camera.position            0 2.5 0 m\n");
+
+    const char *exr = in_dir(3, "q.exr");
+    CHECK(run(NULL, "still", good, "--size", "16x16", "--quality", "draft", "-o", exr, NULL) == 0);
+    char name[32] = "";
+    double v = 0.0;
+    tl_error err;
+    CHECK(tl_exr_read_attr_string(exr, "tideline/quality", name, sizeof name, &err) == 0);
+    CHECK(strcmp(name, "draft") == 0);
+    tl_quality q;
+    CHECK(tl_quality_preset("draft", &q, &err) == 0);
+    CHECK(tl_exr_read_attr_double(exr, "tideline/march_octaves", &v, &err) == 0);
+    CHECK(v == q.march_octaves);
+    CHECK(tl_exr_read_attr_double(exr, "tideline/march_steps", &v, &err) == 0);
+    CHECK(v == q.march_steps);
+    CHECK(tl_exr_read_attr_double(exr, "tideline/hit_epsilon", &v, &err) == 0);
+    CHECK(v == q.hit_epsilon);
+    CHECK(tl_exr_read_attr_double(exr, "tideline/spp", &v, &err) == 0);
+    CHECK(v == q.spp);
+    CHECK(tl_exr_read_attr_double(exr, "tideline/giant_iterations", &v, &err) == 0);
+    CHECK(v == q.giant_iterations);
+    unlink(good);
+    unlink(warn);
+    unlink(bad);
+    unlink(exr);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3 || !mkdtemp(dir))
@@ -200,6 +275,7 @@ int main(int argc, char **argv)
     test_bad_outputs();
     test_runtime_failures();
     test_success();
+    test_papercuts();
     rmdir(dir);
     TEST_END();
 }

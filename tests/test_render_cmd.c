@@ -258,6 +258,8 @@ static void test_movie(void)
     snprintf(movie, sizeof movie, "%s/broken.mp4", out);
     CHECK(tl_run(&(tl_run_opts){env, 0}, "render", six_path, "--movie", movie, "-q", NULL) == 1);
     CHECK_STR_CONTAINS(tl_run_output, "disk on fire");
+    CHECK_STR_CONTAINS(tl_run_output,
+                       "broken.mp4 not written: a movie missing frames is discarded");
     CHECK(!exists(movie));
     CHECK(tl_dir_hidden_entries(out) == 0);
 

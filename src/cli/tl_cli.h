@@ -21,6 +21,17 @@ struct tl_mesh;
 int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl,
                          struct tl_mesh *boat);
 
+/* mkdir -p of the folder part of `path` (status 2 when it cannot). */
+int tl_cli_make_parent_dirs(const char *path, tl_error *err);
+
+/* Writes the effective quality knobs (preset name and every value the
+ * preset or the overrides set) as image metadata entries into out[0..7],
+ * so a frame records exactly how it was made. Returns the count (8). */
+struct tl_quality;
+struct tl_meta;
+#define TL_CLI_QUALITY_META 8
+int tl_cli_quality_meta(const struct tl_quality *q, struct tl_meta *out);
+
 /* Prints err as one line (with file:line:col when it has one). */
 void tl_cli_print_error(const char *command, const tl_error *err);
 

@@ -1,5 +1,10 @@
+#include <errno.h>
 #include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
 
+#include "image/tl_image_io.h"
+#include "scene/tl_quality.h"
 #include "tl_cli.h"
 
 void tl_cli_print_error(const char *command, const tl_error *err)
@@ -8,4 +13,44 @@ void tl_cli_print_error(const char *command, const tl_error *err)
         fprintf(stderr, "%s:%d:%d: error: %s\n", err->file, err->line, err->column, err->message);
     else
         fprintf(stderr, "tideline %s: %s\n", command, err->message);
+}
+
+/* mkdir -p of the folder part of `path`. */
+int tl_cli_make_parent_dirs(const char *path, tl_error *err)
+{
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (!slash || slash == dir)
+        return TL_OK;
+    *slash = '\0';
+    for (char *p = dir + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+            return tl_error_set(err, TL_ERR_USAGE, "cannot create folder '%s': %s", dir,
+                                strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+        return tl_error_set(err, TL_ERR_USAGE, "cannot create folder '%s': %s", dir,
+                            strerror(errno));
+    return TL_OK;
+}
+
+int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
+{
+    const tl_meta m[TL_CLI_QUALITY_META] = {
+        {"tideline/quality", TL_META_STRING, q->name, 0, 0},
+        {"tideline/spp", TL_META_INT, NULL, 0, q->spp},
+        {"tideline/march_octaves", TL_META_INT, NULL, 0, q->march_octaves},
+        {"tideline/normal_octaves", TL_META_INT, NULL, 0, q->normal_octaves},
+        {"tideline/march_steps", TL_META_INT, NULL, 0, q->march_steps},
+        {"tideline/hit_epsilon", TL_META_DOUBLE, NULL, q->hit_epsilon, 0},
+        {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
+        {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
+    };
+    memcpy(out, m, sizeof m);
+    return TL_CLI_QUALITY_META;
 }

@@ -60,7 +60,8 @@ static const char usage[] =
     "  -h, --help             show this help\n"
     "\n"
     "Exit status: 0 every requested frame exists, 1 failure, 2 usage error,\n"
-    "130 interrupted (SIGINT/SIGTERM; completed frames are kept, none is partial).\n";
+    "130 interrupted (SIGINT/SIGTERM; completed frames are kept, none is partial;\n"
+    "    a --movie is discarded, never left short).\n";
 
 typedef struct render_options {
     const char *timeline;
@@ -177,30 +178,6 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
     return TL_OK;
 }
 
-/* mkdir -p of the folder part of `path`. */
-static int make_parent_dirs(const char *path, tl_error *err)
-{
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (!slash || slash == dir)
-        return TL_OK;
-    *slash = '\0';
-    for (char *p = dir + 1; *p; p++) {
-        if (*p != '/')
-            continue;
-        *p = '\0';
-        if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-            return tl_error_set(err, TL_ERR_USAGE, "cannot create folder '%s': %s", dir,
-                                strerror(errno));
-        *p = '/';
-    }
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-        return tl_error_set(err, TL_ERR_USAGE, "cannot create folder '%s': %s", dir,
-                            strerror(errno));
-    return TL_OK;
-}
-
 /* True when `path` holds a complete frame of the expected size. */
 static int frame_file_complete(const char *path, int width, int height)
 {
@@ -293,18 +270,17 @@ static int write_frame_files(const render_options *o, const tl_timeline *tl, lon
     snprintf(camera, sizeof camera,
              "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
              c->position[0], c->position[1], c->position[2], c->yaw, c->pitch, c->roll, c->vfov);
-    const tl_meta meta[] = {
+    tl_meta meta[7 + TL_CLI_QUALITY_META] = {
         {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
         {"tideline/timeline", TL_META_STRING, o->timeline, 0, 0},
         {"tideline/frame", TL_META_INT, NULL, 0, (int)frame},
         {"tideline/time", TL_META_DOUBLE, NULL, scene->time, 0},
         {"tideline/fps", TL_META_DOUBLE, NULL, tl->fps, 0},
         {"tideline/camera", TL_META_STRING, camera, 0, 0},
-        {"tideline/quality", TL_META_STRING, scene->quality.name, 0, 0},
-        {"tideline/spp", TL_META_INT, NULL, 0, scene->quality.spp},
         {"tideline/shutter", TL_META_DOUBLE, NULL, o->shutter, 0},
     };
-    tl_image_options opt = {o->png_bits, meta, (int)(sizeof meta / sizeof meta[0])};
+    int n = 7 + tl_cli_quality_meta(&scene->quality, meta + 7);
+    tl_image_options opt = {o->png_bits, meta, n};
     return tl_image_write(path, f, &opt, err);
 }
 
@@ -359,12 +335,12 @@ int tl_cli_render(int argc, char **argv)
             rc = tl_error_set(&err, TL_ERR_USAGE, "-o %s: unknown image format (use .exr or .png)",
                               o.pattern);
         if (!rc)
-            rc = make_parent_dirs(path, &err);
+            rc = tl_cli_make_parent_dirs(path, &err);
         if (!rc && tl_image_check_writable(path, &err))
             rc = TL_ERR_USAGE;
     }
     if (!rc && o.movie) {
-        rc = make_parent_dirs(o.movie, &err);
+        rc = tl_cli_make_parent_dirs(o.movie, &err);
         if (!rc && tl_movie_check(o.movie, width, height, &err))
             rc = TL_ERR_USAGE;
     }
@@ -472,6 +448,9 @@ int tl_cli_render(int argc, char **argv)
     fprintf(stderr, "\n");
     if (!rc && !interrupted && o.movie)
         fprintf(stderr, "tideline render: wrote %s\n", o.movie);
+    else if (o.movie)
+        fprintf(stderr, "tideline render: %s not written: a movie missing frames is discarded%s\n",
+                o.movie, access(o.movie, F_OK) == 0 ? " (the earlier file is untouched)" : "");
 
     free(rgb);
     tl_frame_free(&frame);

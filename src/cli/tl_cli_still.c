@@ -248,9 +248,15 @@ int tl_cli_still(int argc, char **argv)
         if (rc < 0)
             return 1; /* the timeline's diagnostics were printed */
     }
-    /* Check every output before rendering: a bad path costs nothing. */
+    /* Check every output before rendering: a bad path costs nothing. Every
+     * name's format first, then the folders are made (as render does). */
     for (int i = 0; !rc && i < o.output_count; i++)
-        if (tl_image_check_writable(o.outputs[i], &err))
+        if (tl_image_format_from_path(o.outputs[i]) == TL_IMAGE_UNKNOWN &&
+            tl_image_check_writable(o.outputs[i], &err))
+            rc = TL_ERR_USAGE;
+    for (int i = 0; !rc && i < o.output_count; i++)
+        if (tl_cli_make_parent_dirs(o.outputs[i], &err) ||
+            tl_image_check_writable(o.outputs[i], &err))
             rc = TL_ERR_USAGE;
     tl_shader_lib lib;
     tl_shader_lib_embedded(&lib);
@@ -289,14 +295,13 @@ int tl_cli_still(int argc, char **argv)
              "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
              cam->position[0], cam->position[1], cam->position[2], cam->yaw, cam->pitch, cam->roll,
              cam->vfov);
-    const tl_meta meta[] = {
+    tl_meta meta[4 + TL_CLI_QUALITY_META] = {
         {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
         {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0},
         {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0},
         {"tideline/camera", TL_META_STRING, camera_text, 0, 0},
-        {"tideline/quality", TL_META_STRING, scene.quality.name, 0, 0},
     };
-    tl_image_options opt = {0, meta, (int)(sizeof meta / sizeof meta[0])};
+    tl_image_options opt = {0, meta, 4 + tl_cli_quality_meta(&scene.quality, meta + 4)};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_write(o.outputs[i], &frame, &opt, &err);
         if (!rc && o.verbose)

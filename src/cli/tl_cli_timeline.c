@@ -16,13 +16,16 @@
 #define DEG (M_PI / 180.0)
 
 static const char check_usage[] =
-    "Usage: tideline check FILE.tl\n"
+    "Usage: tideline check FILE.tl... [--strict]\n"
     "\n"
-    "Validate a timeline. Prints every error with file:line:column (exit 1), or\n"
-    "a summary: duration, fps, frame count, size, the channels that are set and\n"
-    "keyed, paths, links, and the features the scene requires (exit 0).\n"
+    "Validate timelines. For each file prints every error with file:line:column,\n"
+    "or a summary: duration, fps, frame count, size, the channels that are set\n"
+    "and keyed, paths, links, and the features the scene requires. Warnings\n"
+    "(likely mistakes: a small bare angle meant as radians, keys past the end)\n"
+    "are printed too. Exit status: the worst of the files (0 valid, 1 invalid).\n"
     "\n"
     "Options:\n"
+    "  --strict     warnings count as errors (exit 1)\n"
     "  -h, --help   show this help\n";
 
 static const char eval_usage[] =
@@ -42,6 +45,9 @@ static const char eval_usage[] =
     "                 \"giant\", \"underwater\", \"water\"}]}\n"
     "  -h, --help     show this help\n";
 
+/* The warnings of the last timeline loaded (for check --strict). */
+static int last_warnings;
+
 /* Loads a timeline, printing its diagnostics, and its boat's mesh; returns
  * the exit status. */
 int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_mesh *boat)
@@ -58,6 +64,9 @@ int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl,
             tl_cli_print_error(command, &err);
         return 1;
     }
+    if (diags.count) /* warnings: likely mistakes; the timeline loads */
+        tl_diags_write(&diags, stderr);
+    last_warnings = diags.count;
     if (!tl->boat_path.present)
         return 0;
     tl_mesh mesh;
@@ -96,36 +105,18 @@ static void list_tracks(const tl_timeline *tl, tl_track_state state, const char 
         printf("\n");
 }
 
-int tl_cli_check(int argc, char **argv)
+/* One file of `check`: its summary, or its errors; the exit status. */
+static int check_one(const char *file, int strict)
 {
-    tl_args a;
-    tl_args_init(&a, argc, argv);
-    a.index = 1;
-    tl_error err;
-    tl_error_clear(&err);
-    const char *file = NULL;
-    while (!tl_args_done(&a)) {
-        const char *pos;
-        if (tl_args_match(&a, "--help", "-h", false, &err)) {
-            fputs(check_usage, stdout);
-            return 0;
-        } else if (!file && tl_args_positional(&a, &pos)) {
-            file = pos;
-        } else {
-            tl_args_unknown(&a, "check", &err);
-            tl_cli_print_error("check", &err);
-            return 2;
-        }
-    }
-    if (!file) {
-        fprintf(stderr, "tideline check: no timeline file given (see 'tideline check --help')\n");
-        return 2;
-    }
     tl_timeline tl;
     int rc = tl_cli_load_timeline("check", file, &tl, NULL);
     if (rc)
         return rc;
-    printf("%s: ok\n", file);
+    int warnings = last_warnings;
+    printf("%s: %s\n", file,
+           !warnings ? "ok"
+           : strict  ? "failed (--strict: warnings count as errors)"
+                     : "ok (with warnings)");
     printf("  duration  %.6g s at %.6g fps = %ld frames, %dx%d, quality %s\n", tl.duration, tl.fps,
            tl_timeline_frame_count(&tl), tl.width, tl.height, tl.quality.name);
     list_tracks(&tl, TL_TRACK_KEYED, "  keyed     ");
@@ -153,12 +144,89 @@ int tl_cli_check(int argc, char **argv)
     printf("  features  ocean%s%s%s%s\n", f.giant_wave ? ", giant wave" : "",
            f.boat ? ", boat" : "", f.underwater ? ", underwater" : "", f.fog ? ", fog" : "");
     tl_timeline_free(&tl);
-    return 0;
+    return strict && warnings ? 1 : 0;
 }
 
-static double shown(const tl_channel *ch, double v)
+int tl_cli_check(int argc, char **argv)
 {
-    return ch->unit == TL_UNIT_ANGLE ? v / DEG : v;
+    tl_args a;
+    tl_args_init(&a, argc, argv);
+    a.index = 1;
+    tl_error err;
+    tl_error_clear(&err);
+    const char *files[256];
+    int count = 0, strict = 0;
+    while (!tl_args_done(&a)) {
+        const char *pos;
+        if (tl_args_match(&a, "--help", "-h", false, &err)) {
+            fputs(check_usage, stdout);
+            return 0;
+        } else if (tl_args_match(&a, "--strict", NULL, false, &err)) {
+            strict = 1;
+        } else if (count < 256 && tl_args_positional(&a, &pos)) {
+            files[count++] = pos;
+        } else {
+            if (count == 256)
+                tl_error_set(&err, TL_ERR_USAGE, "at most 256 files at once");
+            else
+                tl_args_unknown(&a, "check", &err);
+            tl_cli_print_error("check", &err);
+            return 2;
+        }
+    }
+    if (!count) {
+        fprintf(stderr, "tideline check: no timeline file given (see 'tideline check --help')\n");
+        return 2;
+    }
+    int worst = 0;
+    for (int i = 0; i < count; i++) {
+        int rc = check_one(files[i], strict);
+        worst = rc > worst ? rc : worst;
+    }
+    return worst;
+}
+
+/* The shortest text that reads back to the same double, with values
+ * within 1e-12 of zero (rounding residue of a unit conversion, such as
+ * -1.7e-15 deg) printed as 0. Eight buffers, used in turn, so one printf
+ * can hold several. */
+static const char *num(double v)
+{
+    static char bufs[8][32];
+    static int next;
+    char *b = bufs[next++ & 7];
+    if (fabs(v) < 1e-12)
+        v = 0.0;
+    for (int p = 1; p <= 17; p++) {
+        snprintf(b, 32, "%.*g", p, v);
+        /* %.1g of 60 is "6e+01": exact, but not how anyone writes it. */
+        int plain = fabs(v) < 1e-4 || fabs(v) >= 1e15 || !strchr(b, 'e');
+        if (plain && strtod(b, NULL) == v)
+            break;
+    }
+    return b;
+}
+
+/* A channel's value as the language writes it: angles in degrees, in the
+ * shortest text that the parser turns back into the same stored radians
+ * (so 60deg prints 60, not 59.99999999999999). */
+static const char *value_text(const tl_channel *ch, double v)
+{
+    if (ch->unit != TL_UNIT_ANGLE)
+        return num(v);
+    static char bufs[8][32];
+    static int next;
+    char *b = bufs[next++ & 7];
+    double deg = fabs(v / DEG) < 1e-12 ? 0.0 : v / DEG;
+    for (int p = 1; p <= 17; p++) {
+        snprintf(b, 32, "%.*g", p, deg);
+        /* %.1g of 59.99999999999999 is "6e+01": reads back, but is not
+         * how anyone writes sixty degrees. */
+        int plain = fabs(deg) < 1e-4 || fabs(deg) >= 1e15 || !strchr(b, 'e');
+        if (plain && (strtod(b, NULL) * DEG == v || deg == 0.0))
+            return b;
+    }
+    return num(deg);
 }
 
 static const char *unit_suffix(tl_unit unit)
@@ -272,9 +340,9 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame)
     tl_scene s;
     tl_timeline_eval(tl, t, &s);
     if (frame >= 0)
-        printf("frame %ld, time %.9g s\n", frame, t);
+        printf("frame %ld, time %s s\n", frame, num(t));
     else
-        printf("time %.9g s\n", t);
+        printf("time %s s\n", num(t));
     for (int i = 0; i < tl_channel_count(); i++) {
         const tl_channel *ch = tl_channel_at(i);
         double v[3];
@@ -286,12 +354,12 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame)
             printf(" %s", ch->names[(int)v[0]]);
         else
             for (int c = 0; c < ch->components; c++)
-                printf(" %.9g", shown(ch, v[c]));
+                printf(" %s", value_text(ch, v[c]));
         printf("%s\n", unit_suffix(ch->unit));
     }
     if (s.boat.enabled) {
-        printf("  %-26s %.9g %.9g %.9g m\n", "boat.position", s.boat.position[0],
-               s.boat.position[1], s.boat.position[2]);
+        printf("  %-26s %s %s %s m\n", "boat.position", num(s.boat.position[0]),
+               num(s.boat.position[1]), num(s.boat.position[2]));
         printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", "boat pose",
                s.boat.pitch / DEG, s.boat.roll / DEG, s.boat.length, s.boat.beam);
     }
@@ -302,7 +370,7 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
 {
     tl_scene s;
     tl_timeline_eval(tl, t, &s);
-    printf("%s{\"time\": %.17g, \"frame\": ", first ? "" : ", ", t);
+    printf("%s{\"time\": %s, \"frame\": ", first ? "" : ", ", num(t));
     if (frame >= 0)
         printf("%ld", frame);
     else
@@ -318,11 +386,11 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
         } else if (ch->kind == TL_CH_ENUM) {
             printf("\"%s\"", ch->names[(int)v[0]]);
         } else if (ch->components == 1) {
-            printf("%.17g", shown(ch, v[0]));
+            printf("%s", value_text(ch, v[0]));
         } else {
             printf("[");
             for (int c = 0; c < ch->components; c++)
-                printf("%s%.17g", c ? ", " : "", shown(ch, v[c]));
+                printf("%s%s", c ? ", " : "", value_text(ch, v[c]));
             printf("]");
         }
     }

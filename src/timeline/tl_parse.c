@@ -29,6 +29,7 @@ typedef struct parser {
     size_t source_len;
     tl_timeline *tl;
     tl_diags *diags;
+    int warning; /* diagnostics added now are warnings */
     int line_no;
     const char *line_text; /* the current line, for diagnostics */
     size_t line_len;
@@ -76,10 +77,13 @@ static void diag_add(parser *p, int col, int len, const char *hint, const char *
     tl_diags *d = p->diags;
     if (d->count >= TL_PARSE_MAX_ERRORS) {
         d->more++; /* counted, not kept: parsing goes on (it is linear) */
+        d->errors += !p->warning;
         return;
     }
     tl_diag *g = &d->items[d->count++];
     memset(g, 0, sizeof *g);
+    g->warning = p->warning;
+    d->errors += !p->warning;
     g->line = p->line_no;
     g->column = col;
     g->length = len > 0 ? len : 1;
@@ -287,6 +291,17 @@ static int parse_channel_value(parser *p, const tl_channel *ch, const token *t, 
     double v;
     if (parse_quantity(p, t, ch->unit, &v))
         return 1;
+    /* A bare angle is degrees; a small one was likely meant as radians. */
+    char last = t->len > 0 ? t->s[t->len - 1] : '\0';
+    int bare = (last >= '0' && last <= '9') || last == '.';
+    double deg = fabs(v) / DEG;
+    int fov = strcmp(ch->name, "camera.fov") == 0;
+    if (ch->unit == TL_UNIT_ANGLE && bare && deg > 0.0 && deg < (fov ? 5.0 : 3.0)) {
+        p->warning = 1;
+        ERR_AT(t, "%s %s is read as degrees (%s deg); write %sdeg to keep it, or %srad for radians",
+               ch->name, t->s, t->s, t->s, t->s);
+        p->warning = 0;
+    }
     if (ch->kind == TL_CH_INT && v != floor(v)) {
         ERR_AT(t, "%s takes a whole number, got '%s'", ch->name, t->s);
         return 1;
@@ -1058,6 +1073,54 @@ static void check_links(parser *p)
                      "boat.model names the boat's mesh, but the timeline has no 'path boat'");
 }
 
+/* Warnings for keys and path points past the end of the timeline (or all
+ * before its start): times written in frames without the `f`, usually. */
+static void check_times(parser *p)
+{
+    tl_timeline *tl = p->tl;
+    const double end = tl->duration * (1.0 + 1e-12);
+    char msg[256];
+    p->warning = 1;
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_track *tr = &tl->tracks[i];
+        if (tr->state != TL_TRACK_KEYED)
+            continue;
+        double lo = INFINITY, hi = -INFINITY;
+        for (int c = 0; c < tl_channel_at(i)->components; c++)
+            if (tr->curve[c].count) {
+                lo = fmin(lo, tr->curve[c].keys[0].t);
+                hi = fmax(hi, tr->curve[c].keys[tr->curve[c].count - 1].t);
+            }
+        if (hi > end && lo > end)
+            snprintf(msg, sizeof msg,
+                     "all keys of %s lie after the end of the timeline (%.6g s), from %.6g s: "
+                     "frames written without 'f'?",
+                     tl_channel_at(i)->name, tl->duration, lo);
+        else if (hi < 0.0)
+            snprintf(msg, sizeof msg, "all keys of %s lie before the timeline's start",
+                     tl_channel_at(i)->name);
+        else if (hi > end)
+            snprintf(msg, sizeof msg,
+                     "%s has keys past the end of the timeline (%.6g s), the last at %.6g s",
+                     tl_channel_at(i)->name, tl->duration, hi);
+        else
+            continue;
+        diag_at_line(p, tr->line, NULL, "%s", msg);
+    }
+    const tl_path_track *paths[2] = {&tl->boat_path, &tl->camera_path};
+    const char *names[2] = {"boat", "camera"};
+    for (int i = 0; i < 2; i++) {
+        const tl_path *path = &paths[i]->path;
+        if (!paths[i]->present || path->count == 0 || path->points[path->count - 1].t <= end)
+            continue;
+        snprintf(msg, sizeof msg,
+                 "path %s has points past the end of the timeline (%.6g s), the last at %.6g s",
+                 names[i], tl->duration, path->points[path->count - 1].t);
+        diag_at_line(p, paths[i]->line, NULL, "%s", msg);
+    }
+    p->warning = 0;
+}
+
 int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl_timeline *out,
                            tl_diags *diags, tl_error *err)
 {
@@ -1089,10 +1152,10 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
             diag_add(&p, 0, 1, NULL, "a timeline starts with the line 'tideline 1'");
         }
         check_links(&p);
+        if (diags->errors == 0)
+            check_times(&p);
     }
     free(p.key_lines);
-    if (diags->count == 0)
-        return TL_OK;
     /* Conflicts are found after the whole file: show everything in line
      * order (insertion sort keeps equal lines in the order found). */
     for (int i = 1; i < diags->count; i++) {
@@ -1104,7 +1167,14 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
         }
         diags->items[j + 1] = d;
     }
+    if (diags->errors == 0)
+        return TL_OK; /* warnings only: the timeline loads */
     const tl_diag *first = &diags->items[0];
+    for (int i = 0; i < diags->count; i++)
+        if (!diags->items[i].warning) {
+            first = &diags->items[i];
+            break;
+        }
     tl_error_set_at(err, TL_ERR_RUNTIME, name, first->line, first->column, "%s", first->message);
     tl_timeline_free(out);
     return TL_ERR_RUNTIME;
@@ -1151,10 +1221,11 @@ void tl_diags_write(const tl_diags *d, FILE *out)
 {
     for (int i = 0; i < d->count; i++) {
         const tl_diag *g = &d->items[i];
+        const char *kind = g->warning ? "warning" : "error";
         if (g->column > 0)
-            fprintf(out, "%s:%d:%d: error: %s\n", d->file, g->line, g->column, g->message);
+            fprintf(out, "%s:%d:%d: %s: %s\n", d->file, g->line, g->column, kind, g->message);
         else
-            fprintf(out, "%s:%d: error: %s\n", d->file, g->line, g->message);
+            fprintf(out, "%s:%d: %s: %s\n", d->file, g->line, kind, g->message);
         if (g->text[0] && g->column > 0) {
             fprintf(out, "%6d | %s\n", g->line, g->text);
             fprintf(out, "       | ");

@@ -24,17 +24,20 @@ typedef struct tl_diag {
     char message[256];
     char hint[160];   /* "did you mean 'x'?" or empty */
     char text[200];   /* the source line (truncated) */
+    int warning;      /* a likely mistake, not an error: the file still loads */
 } tl_diag;
 
 typedef struct tl_diags {
     char file[512];
     tl_diag items[TL_PARSE_MAX_ERRORS];
     int count;
-    int more; /* errors beyond the limit (not kept) */
+    int errors; /* of `count`, the errors (the rest are warnings) */
+    int more;   /* diagnostics beyond the limit (not kept) */
 } tl_diags;
 
-/* Parses a file. Returns 0 when valid; otherwise `diags` holds the errors
- * (err gets the first) and `out` is freed. */
+/* Parses a file. Returns 0 when valid (`diags` may still hold warnings:
+ * likely unit mistakes, keys past the end); otherwise `diags` holds the
+ * errors and warnings (err gets the first error) and `out` is freed. */
 int tl_timeline_parse_file(const char *path, tl_timeline *out, tl_diags *diags, tl_error *err);
 /* Parses text held in memory; `name` labels the diagnostics. */
 int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl_timeline *out,
@@ -44,8 +47,8 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
  * with `fps` for frames. */
 int tl_parse_time_text(const char *text, double fps, double *out, tl_error *err);
 
-/* Writes each diagnostic as "file:line:col: error: message", the line with
- * a caret under the column, and the hint. */
+/* Writes each diagnostic as "file:line:col: error: message" (or
+ * "warning:"), the line with a caret under the column, and the hint. */
 void tl_diags_write(const tl_diags *diags, FILE *out);
 
 #endif
