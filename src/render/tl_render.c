@@ -22,18 +22,20 @@ struct tl_render {
     tl_sky_luts *sky;       /* the physical sky's tables, rebuilt when they change */
 };
 
-int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
+/* The renderer on whichever context `open_context` made current; headless
+ * and windowed differ only in that step. */
+static int open_with(tl_render **out, const tl_shader_lib *lib, tl_error *err,
+                     int (*open_context)(tl_render *r, void *arg, tl_error *err), void *arg)
 {
     *out = NULL;
     tl_render *r = calloc(1, sizeof *r);
-    if (!r)
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    r->sky = calloc(1, sizeof *r->sky);
-    if (!r->sky) {
+    if (r)
+        r->sky = calloc(1, sizeof *r->sky);
+    if (!r || !r->sky) {
         free(r);
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     }
-    int rc = tl_gl_context_create_headless(&r->context, err);
+    int rc = open_context(r, arg, err);
     if (!rc)
         rc = tl_renderer_create(&r->renderer, lib, err);
     if (rc) {
@@ -44,26 +46,33 @@ int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
     return TL_OK;
 }
 
+static int open_headless(tl_render *r, void *arg, tl_error *err)
+{
+    (void)arg;
+    return tl_gl_context_create_headless(&r->context, err);
+}
+
+int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
+{
+    return open_with(out, lib, err, open_headless, NULL);
+}
+
+typedef struct window_args {
+    int width, height;
+    const char *title;
+} window_args;
+
+static int open_window(tl_render *r, void *arg, tl_error *err)
+{
+    const window_args *w = arg;
+    return tl_gl_window_open(&r->window, w->width, w->height, w->title, err);
+}
+
 int tl_render_open_window(tl_render **out, const tl_shader_lib *lib, int width, int height,
                           const char *title, tl_error *err)
 {
-    *out = NULL;
-    tl_render *r = calloc(1, sizeof *r);
-    if (r)
-        r->sky = calloc(1, sizeof *r->sky);
-    if (!r || !r->sky) {
-        free(r);
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    }
-    int rc = tl_gl_window_open(&r->window, width, height, title, err);
-    if (!rc)
-        rc = tl_renderer_create(&r->renderer, lib, err);
-    if (rc) {
-        tl_render_close(r);
-        return rc;
-    }
-    *out = r;
-    return TL_OK;
+    window_args w = {width, height, title};
+    return open_with(out, lib, err, open_window, &w);
 }
 
 tl_gl_window *tl_render_window(tl_render *r)
