@@ -124,17 +124,21 @@ vec3 trace(vec3 ray, out float dist)
 void main()
 {
     vec3 sum = vec3(0.0);
+    int good = 0;
     // Depth of a supersampled pixel: the nearest surface any sample saw.
     float depth = TL_SKY_DEPTH;
     for (int s = 0; s < max(u_spp, 1); s++) {
         float dist;
-        sum += trace(camera_ray(gl_FragCoord.xy + sample_offset(s)), dist);
+        vec3 c = trace(camera_ray(gl_FragCoord.xy + sample_offset(s)), dist);
+        // Last guard: no NaN or Inf may reach a pixel. A bad sample is
+        // dropped alone, so one stray sample cannot blacken a pixel.
+        if (any(isnan(c)) || any(isinf(c)))
+            continue;
+        sum += c;
+        good++;
         depth = min(depth, dist);
     }
-    vec3 color = sum / float(max(u_spp, 1));
-    // Last guard: no NaN or Inf may reach a pixel.
-    if (any(isnan(color)) || any(isinf(color)))
-        color = vec3(0.0);
+    vec3 color = good > 0 ? sum / float(good) : vec3(0.0);
     out_color = vec4(color, 1.0) * u_sample_weight;
     out_depth = depth;
 }

@@ -7,12 +7,20 @@
 // in (0, 1] at p (1 on the crests).
 vec3 water_normal(vec2 p, float e, out float value)
 {
+    // Far out (grazing rays meet the water 1e4 m and more away) a fixed
+    // step is a few float ulps of p: the difference is rounding noise and
+    // the slope it gives can mirror the sun anywhere along the horizon.
+    // Keep the step at least ~80 ulps of the coordinate (1e-5 relative);
+    // that only matters beyond 1 km, where the normal is smoothed anyway.
+    e = max(e, 1e-5 * max(abs(p.x), abs(p.y)));
+    // The offsets the float coordinates really moved by, not e.
+    vec2 px = p - vec2(e, 0.0), pz = p + vec2(0.0, e);
     value = waves_value(p, u_normal_octaves);
     float h = value * u_depth;
-    float hx = waves_value(p - vec2(e, 0.0), u_normal_octaves) * u_depth;
-    float hz = waves_value(p + vec2(0.0, e), u_normal_octaves) * u_depth;
+    float hx = waves_value(px, u_normal_octaves) * u_depth;
+    float hz = waves_value(pz, u_normal_octaves) * u_depth;
     vec3 a = vec3(p.x, h, p.y);
-    return normalize(cross(a - vec3(p.x - e, hx, p.y), a - vec3(p.x, hz, p.y + e)));
+    return normalize(cross(a - vec3(px.x, hx, p.y), a - vec3(p.x, hz, pz.y)));
 }
 
 vec3 water_color(vec3 ray, vec3 hit, float dist)

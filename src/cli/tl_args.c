@@ -82,6 +82,18 @@ int tl_args_double(const char *flag, const char *text, double *out, tl_error *er
     return TL_OK;
 }
 
+int tl_args_int_range(const char *flag, const char *text, int lo, int hi, int *out, tl_error *err)
+{
+    double v;
+    if (tl_args_double(flag, text, &v, err))
+        return TL_ERR_USAGE;
+    if (v != floor(v) || v < lo || v > hi)
+        return tl_error_set(err, TL_ERR_USAGE, "%s: '%s' is not a whole number in %d..%d", flag,
+                            text, lo, hi);
+    *out = (int)v;
+    return TL_OK;
+}
+
 int tl_args_angle(const char *flag, const char *text, double *radians, tl_error *err)
 {
     char buf[128];

@@ -95,19 +95,6 @@ static double now_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-static int parse_int_range(const char *flag, const char *text, int lo, int hi, int *out,
-                           tl_error *err)
-{
-    double v;
-    if (tl_args_double(flag, text, &v, err))
-        return TL_ERR_USAGE;
-    if (v != floor(v) || v < lo || v > hi)
-        return tl_error_set(err, TL_ERR_USAGE, "%s: '%s' is not a whole number in %d..%d", flag,
-                            text, lo, hi);
-    *out = (int)v;
-    return TL_OK;
-}
-
 static int parse(int argc, char **argv, render_options *o, int *help, tl_error *err)
 {
     tl_args a;
@@ -143,16 +130,16 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
                 tl_error_prefix(err, "--quality");
             o->has_quality = 1;
         } else if (tl_args_match(&a, "--spp", NULL, true, err)) {
-            rc = a.value ? parse_int_range(a.flag, a.value, 1, TL_MAX_SPP, &o->spp, err) : 0;
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, TL_MAX_SPP, &o->spp, err) : 0;
         } else if (tl_args_match(&a, "--shutter", NULL, true, err)) {
             rc = a.value ? tl_args_double(a.flag, a.value, &o->shutter, err) : 0;
             if (!rc && a.value && !(o->shutter >= 0.0 && o->shutter <= 360.0))
                 rc = tl_error_set(err, TL_ERR_USAGE, "--shutter: '%s' is outside 0..360 degrees",
                                   a.value);
         } else if (tl_args_match(&a, "--shutter-samples", NULL, true, err)) {
-            rc = a.value ? parse_int_range(a.flag, a.value, 1, 256, &o->shutter_samples, err) : 0;
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 256, &o->shutter_samples, err) : 0;
         } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
-            rc = a.value ? parse_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
             if (!rc && a.value && o->png_bits != 8 && o->png_bits != 16)
                 rc = tl_error_set(err, TL_ERR_USAGE, "--png-bits: '%s' is not 8 or 16", a.value);
         } else if (!o->timeline && tl_args_positional(&a, &pos)) {

@@ -42,6 +42,7 @@ static const char usage[] =
     "  --sun-azimuth DEG      sun compass direction (default -7.6)\n"
     "  --exposure E           linear exposure before tonemapping (default 2)\n"
     "  --quality PRESET       draft, preview, final (default), reference, seed\n"
+    "  --spp N                stratified samples per pixel (1..1024; default: the preset's)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  -v, --verbose          log the GL platform, renderer and timings\n"
     "  -h, --help             show this help\n"
@@ -63,6 +64,7 @@ typedef struct still_options {
     int has_look_at;
     const char *shader_dir;
     int verbose;
+    int spp; /* 0: the preset's */
 } still_options;
 
 static int parse(int argc, char **argv, still_options *o, int *help, tl_error *err)
@@ -142,6 +144,9 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
             if (rc && a.value)
                 tl_error_prefix(err, "--quality");
             o->has_quality = 1;
+        } else if (tl_args_match(&a, "--spp", NULL, true, err)) {
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, TL_MAX_SPP, &o->spp, err)
+                         : TL_ERR_USAGE;
         } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
             o->shader_dir = a.value;
             rc = a.value ? TL_OK : TL_ERR_USAGE;
@@ -217,6 +222,8 @@ static int build_scene(still_options *o, tl_scene *scene, tl_mesh *boat, tl_erro
         scene->exposure = v->exposure;
     if (o->has_quality)
         scene->quality = v->quality;
+    if (o->spp)
+        scene->quality.spp = o->spp;
     if (o->has_look_at)
         rc = tl_scene_camera_look_at(&scene->camera, o->look_at, err);
     return rc ? rc : tl_scene_validate(scene, err);
