@@ -186,47 +186,38 @@ int tl_cli_check(int argc, char **argv)
     return worst;
 }
 
-/* The shortest text that reads back to the same double, with values
- * within 1e-12 of zero (rounding residue of a unit conversion, such as
- * -1.7e-15 deg) printed as 0. Eight buffers, used in turn, so one printf
- * can hold several. */
-static const char *num(double v)
+/* The shortest text of v / scale that reads back (times scale) to exactly
+ * v, so 60deg, stored as radians, prints 60 and not 59.99999999999999.
+ * Values within 1e-12 of zero after the division (rounding residue of a
+ * unit conversion, such as -1.7e-15 deg) print as 0. Eight buffers, used
+ * in turn, so one printf can hold several. */
+static const char *shortest(double v, double scale)
 {
     static char bufs[8][32];
     static int next;
     char *b = bufs[next++ & 7];
-    if (fabs(v) < 1e-12)
-        v = 0.0;
+    double shown = fabs(v / scale) < 1e-12 ? 0.0 : v / scale;
     for (int p = 1; p <= 17; p++) {
-        snprintf(b, 32, "%.*g", p, v);
+        snprintf(b, 32, "%.*g", p, shown);
         /* %.1g of 60 is "6e+01": exact, but not how anyone writes it. */
-        int plain = fabs(v) < 1e-4 || fabs(v) >= 1e15 || !strchr(b, 'e');
-        if (plain && strtod(b, NULL) == v)
-            break;
-    }
-    return b;
-}
-
-/* A channel's value as the language writes it: angles in degrees, in the
- * shortest text that the parser turns back into the same stored radians
- * (so 60deg prints 60, not 59.99999999999999). */
-static const char *value_text(const tl_channel *ch, double v)
-{
-    if (ch->unit != TL_UNIT_ANGLE)
-        return num(v);
-    static char bufs[8][32];
-    static int next;
-    char *b = bufs[next++ & 7];
-    double deg = fabs(v / DEG) < 1e-12 ? 0.0 : v / DEG;
-    for (int p = 1; p <= 17; p++) {
-        snprintf(b, 32, "%.*g", p, deg);
-        /* %.1g of 59.99999999999999 is "6e+01": reads back, but is not
-         * how anyone writes sixty degrees. */
-        int plain = fabs(deg) < 1e-4 || fabs(deg) >= 1e15 || !strchr(b, 'e');
-        if (plain && (strtod(b, NULL) * DEG == v || deg == 0.0))
+        int plain = fabs(shown) < 1e-4 || fabs(shown) >= 1e15 || !strchr(b, 'e');
+        if (plain && (shown == 0.0 || strtod(b, NULL) * scale == v))
             return b;
     }
-    return num(deg);
+    /* No degree text reads back to exactly these radians: the shortest
+     * text of the degrees themselves (at scale 1 the loop always ends). */
+    return shortest(shown, 1.0);
+}
+
+static const char *num(double v)
+{
+    return shortest(v, 1.0);
+}
+
+/* A channel's value as the language writes it: angles in degrees. */
+static const char *value_text(const tl_channel *ch, double v)
+{
+    return shortest(v, ch->unit == TL_UNIT_ANGLE ? DEG : 1.0);
 }
 
 static const char *unit_suffix(tl_unit unit)
