@@ -10,6 +10,30 @@
 // slope wherever the step could reach, so that even its steepest face
 // cannot be stepped through.
 
+// Secant steps from the march's last two points (t0, a0) and (t1, a1),
+// a = height above the surface, toward a = 0: the march stops anywhere
+// within the hit epsilon above the surface, which for a grazing ray is a
+// long way along it. Each step stays within twice the last step's span.
+float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
+{
+    for (int i = 0; i < u_refine_steps; i++) {
+        float slope = a0 - a1;
+        if (!(slope > 0.0))
+            break; // no descent to follow
+        float span = abs(t1 - t0);
+        float t = clamp(t1 + a1 * (t1 - t0) / slope, t1 - 2.0 * span, t1 + 2.0 * span);
+        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
+        float a = pos.y - surface_height(pos.xz, u_march_octaves);
+        t0 = t1;
+        a0 = a1;
+        t1 = t;
+        a1 = a;
+        if (abs(a) < 1e-6 * max(1.0, t))
+            break;
+    }
+    return t1;
+}
+
 // Distance along `ray` to the surface, or a negative value for a miss;
 // the view starts t_min along the ray.
 float march_water(vec3 ray, float t_min)
@@ -27,6 +51,8 @@ float march_water(vec3 ray, float t_min)
     // limit keeps the distance finite (the normal is fully smoothed there).
     float t_low = ray.y < 0.0 ? min((-u_depth - u_cam_height) / ray.y, TL_FAR) : TL_FAR;
     float t = max(has_box ? min(t_high, box.x) : t_high, t_min);
+    float t_start = t;
+    float t_last = t, above_last = -1.0; // the previous point, for refinement
     // Over-relaxation inside the box (enhanced sphere tracing): a step of
     // TL_MARCH_RELAX radii stands when the free interval around the point it
     // reaches overlaps the last point's; otherwise the march goes back to
@@ -42,6 +68,7 @@ float march_water(vec3 ray, float t_min)
             if (t > box.y)
                 return -1.0;
             t = box.x;
+            above_last = -1.0;
             continue;
         }
         float above = pos.y - surface_height(pos.xz, u_march_octaves);
@@ -57,7 +84,9 @@ float march_water(vec3 ray, float t_min)
         }
 #endif
         if (above < u_hit_epsilon)
-            return t;
+            return above_last > 0.0 ? march_refine(ray, t_last, above_last, t, above) : t;
+        t_last = t;
+        above_last = above;
         float next = t + radius;
         relaxed = false;
         if (in_box) {
@@ -76,6 +105,6 @@ float march_water(vec3 ray, float t_min)
     }
     // Out of steps: the last position is the best estimate of the hit (the
     // reference returns the start point instead, which brightens grazing
-    // rays at the horizon).
-    return t;
+    // rays at the horizon; `seed` keeps that).
+    return u_miss_at_start ? t_start : t;
 }

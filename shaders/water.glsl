@@ -31,7 +31,11 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // removes the shimmer the reference also suppresses this way.
     float smoothing = u_normal_smooth_max *
                       min(1.0, sqrt(dist * u_normal_smooth_rate) * u_normal_smooth_gain);
-    n = normalize(mix(n, vec3(0.0, 1.0, 0.0), smoothing));
+    // The reference shader leaves the blend unnormalised (a shorter normal
+    // darkens the Fresnel term a little); `seed` keeps that.
+    n = mix(n, vec3(0.0, 1.0, 0.0), smoothing);
+    if (u_normalize_smoothed)
+        n = normalize(n);
     float ocean_y = hit.y; // height of the ocean's own waves at the hit
 #ifdef TL_FEATURE_GIANT_WAVE
     // The giant wave is large against a pixel: its slope is added unsmoothed

@@ -11,6 +11,7 @@ int tl_cli_render(int argc, char **argv);
 int tl_cli_check(int argc, char **argv);
 int tl_cli_eval(int argc, char **argv);
 int tl_cli_preview(int argc, char **argv);
+int tl_cli_compare(int argc, char **argv);
 
 /* Parses a timeline file, printing every diagnostic, and loads its boat's
  * mesh (the timeline's model, or the built-in boat) into *boat, or only
@@ -25,11 +26,11 @@ int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeli
 int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 
 /* Writes the effective quality knobs (preset name and every value the
- * preset or the overrides set) as image metadata entries into out[0..7],
- * so a frame records exactly how it was made. Returns the count (8). */
+ * preset or the overrides set) as image metadata entries into out[0..10],
+ * so a frame records exactly how it was made. Returns the count (11). */
 struct tl_quality;
 struct tl_meta;
-#define TL_CLI_QUALITY_META 8
+#define TL_CLI_QUALITY_META 11
 int tl_cli_quality_meta(const struct tl_quality *q, struct tl_meta *out);
 
 /* Prints err as one line (with file:line:col when it has one). */

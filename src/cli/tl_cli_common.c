@@ -50,6 +50,9 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/hit_epsilon", TL_META_DOUBLE, NULL, q->hit_epsilon, 0},
         {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
         {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
+        {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
+        {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
+        {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
     };
     memcpy(out, m, sizeof m);
     return TL_CLI_QUALITY_META;

@@ -286,6 +286,9 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1i(loc(p, "u_march_steps"), u->march_steps);
     glUniform1f(loc(p, "u_hit_epsilon"), u->hit_epsilon);
     glUniform1f(loc(p, "u_normal_epsilon"), u->normal_epsilon);
+    glUniform1i(loc(p, "u_refine_steps"), u->refine_steps);
+    glUniform1i(loc(p, "u_miss_at_start"), u->miss_at_start);
+    glUniform1i(loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
     glUniform3fv(loc(p, "u_sun_dir"), 1, u->sun_dir);
     glUniform1f(loc(p, "u_sun_intensity"), u->sun_intensity);
     glUniform1f(loc(p, "u_sun_sharpness"), u->sun_sharpness);

@@ -387,6 +387,9 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->march_steps = q->march_steps;
     u->hit_epsilon = (float)q->hit_epsilon;
     u->normal_epsilon = (float)q->normal_epsilon;
+    u->refine_steps = q->refine_steps;
+    u->miss_at_start = q->miss_at_start;
+    u->normalize_smoothed = q->normalize_smoothed;
     u->spp = q->spp < 1 ? 1 : q->spp;
     u->spp_step = rooks_step(u->spp);
     u->seed = 0;

@@ -65,6 +65,7 @@ typedef struct tl_frame_uniforms {
     /* Quality knobs. */
     int march_octaves, normal_octaves, march_steps;
     float hit_epsilon, normal_epsilon;
+    int refine_steps, miss_at_start, normalize_smoothed;
     int spp, spp_step; /* samples per pixel; y-stratum step, coprime with spp */
     unsigned seed;     /* jitter seed of this pass (sub-frame sample index) */
 

@@ -4,6 +4,8 @@
 #ifndef TL_QUALITY_H
 #define TL_QUALITY_H
 
+#include <stdbool.h>
+
 #include "core/tl_error.h"
 
 /* Upper bound on wave octaves; the uniform arrays are sized by it. */
@@ -20,6 +22,11 @@ typedef struct tl_quality {
     double normal_epsilon; /* finite-difference step for normals, metres */
     int spp;               /* stratified samples per pixel */
     int giant_iterations;  /* Newton steps inverting the giant wave's horizontal map */
+    int refine_steps;      /* secant steps toward the surface after the march hits */
+    /* The reference shader's two behaviours that tideline improves on,
+     * kept for `seed` so it reproduces that shader's image: */
+    bool miss_at_start;      /* a ray out of steps reports where its march began */
+    bool normalize_smoothed; /* renormalise the distance-smoothed normal (false: seed) */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

@@ -181,6 +181,15 @@ static const tl_channel channels[] = {
      offsetof(tl_scene, quality.hit_epsilon), NULL, "distance that counts as a hit"},
     {"quality.normal_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,
      offsetof(tl_scene, quality.normal_epsilon), NULL, "normal finite-difference step"},
+    {"quality.refine_steps", TL_CH_INT, 1, TL_UNIT_NONE, 0, 16, false,
+     offsetof(tl_scene, quality.refine_steps), NULL,
+     "secant steps toward the surface after a hit (0: none)"},
+    {"quality.miss_at_start", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
+     offsetof(tl_scene, quality.miss_at_start), NULL,
+     "a ray out of march steps ends where its march began (the seed shader's way)"},
+    {"quality.normalize_smoothed", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
+     offsetof(tl_scene, quality.normalize_smoothed), NULL,
+     "renormalise the distance-smoothed normal (off: the seed shader's way)"},
 };
 
 #define CHANNEL_COUNT ((int)(sizeof channels / sizeof channels[0]))
