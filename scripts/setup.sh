@@ -17,6 +17,7 @@ packages=(
   libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
   xvfb xauth                       # a virtual display for the preview's tests
+  gnuplot-nox                      # tideline bench --plot
 )
 
 missing=()
@@ -29,7 +30,7 @@ if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}"
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
-    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+    apt-get install -y -qq -o DPkg::Lock::Timeout=300 --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

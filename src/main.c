@@ -16,6 +16,7 @@ static const char usage[] =
     "  check     validate a timeline and summarise it\n"
     "  eval      print a timeline's channel values at a time or frames\n"
     "  compare   how far one image is from another (PSNR, SSIM, pixel error)\n"
+    "  bench     measure each quality preset's time and error against reference\n"
     "\n"
     "Options:\n"
     "  -h, --help       show this help ('tideline COMMAND --help' for a command)\n"
@@ -53,6 +54,8 @@ int main(int argc, char **argv)
         return tl_cli_check(argc - 1, argv + 1);
     if (strcmp(cmd, "eval") == 0)
         return tl_cli_eval(argc - 1, argv + 1);
+    if (strcmp(cmd, "bench") == 0)
+        return tl_cli_bench(argc - 1, argv + 1);
     if (strcmp(cmd, "compare") == 0)
         return tl_cli_compare(argc - 1, argv + 1);
     fprintf(stderr, "tideline: unknown command '%s' (see 'tideline --help')\n", cmd);

@@ -31,3 +31,8 @@ tl_add_test(test_sky SOURCES test_sky.c LIBS tideline_gl ARGS ${PROJECT_SOURCE_D
 add_test(NAME test_preview
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_preview.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
+# The bench in miniature: its table, CSV and plot (timings are not checked).
+add_test(NAME test_bench
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
+          ${PROJECT_SOURCE_DIR}/timelines)
+set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")

@@ -5,4 +5,6 @@ set(TL_CLI_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_timeline.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_render.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_preview.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_compare.c)
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_compare.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench_report.c)

@@ -19,6 +19,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "core/tl_clock.h"
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
 #include "movie/tl_movie.h"
@@ -86,13 +87,6 @@ static volatile sig_atomic_t stop_signal = 0;
 static void on_signal(int sig)
 {
     stop_signal = sig;
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
 static int parse(int argc, char **argv, render_options *o, int *help, tl_error *err)
@@ -364,7 +358,7 @@ int tl_cli_render(int argc, char **argv)
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
 
-    progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, now_seconds(), 0.0, 0};
+    progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, tl_clock_seconds(), 0.0, 0};
     size_t written = 0, skipped = 0;
     unsigned last_features = 0;
     for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
@@ -379,7 +373,7 @@ int tl_cli_render(int argc, char **argv)
             progress_update(&prog, n, "skipped (complete)");
             continue;
         }
-        double t0 = now_seconds();
+        double t0 = tl_clock_seconds();
         tl_scene scene;
         rc = tl_render_timeline_frame(render, &tl, n, &settings, &frame, &scene, &err);
         if (rc)
@@ -403,7 +397,7 @@ int tl_cli_render(int argc, char **argv)
         written++;
         prog.done++;
         prog.rendered++;
-        prog.busy += now_seconds() - t0;
+        prog.busy += tl_clock_seconds() - t0;
         progress_update(&prog, n, o.pattern ? path : "encoded");
     }
     if (prog.tty && !o.quiet && prog.done)
@@ -420,7 +414,7 @@ int tl_cli_render(int argc, char **argv)
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
 
-    double total = now_seconds() - prog.start;
+    double total = tl_clock_seconds() - prog.start;
     char took[32];
     format_duration(total, took, sizeof took);
     if (rc)

@@ -7,6 +7,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "core/tl_clock.h"
 #include "image/tl_image_io.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
@@ -229,13 +230,6 @@ static int build_scene(still_options *o, tl_scene *scene, tl_mesh *boat, tl_erro
     return rc ? rc : tl_scene_validate(scene, err);
 }
 
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
 int tl_cli_still(int argc, char **argv)
 {
     tl_error err;
@@ -275,7 +269,7 @@ int tl_cli_still(int argc, char **argv)
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
-    double t0 = now_seconds();
+    double t0 = tl_clock_seconds();
     tl_render *render = NULL;
     tl_frame frame = {0};
     rc = tl_render_open(&render, &lib, &err);
@@ -284,10 +278,10 @@ int tl_cli_still(int argc, char **argv)
     tl_mesh_free(&boat);
     if (!rc && o.verbose)
         fprintf(stderr, "tideline still: %s\n", tl_render_describe(render));
-    double t1 = now_seconds();
+    double t1 = tl_clock_seconds();
     if (!rc)
         rc = tl_render_frame(render, &scene, &frame, &err);
-    double t2 = now_seconds();
+    double t2 = tl_clock_seconds();
     if (!rc && o.verbose) {
         char features[256];
         tl_feature_describe(tl_render_last_features(render), features, sizeof features);

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/tl_clock.h"
+
 #define MAX_PROGRAMS 16
 
 typedef struct cached_program {
@@ -45,6 +47,7 @@ struct tl_renderer {
     GLuint mesh_program[4]; /* per sun disc and sky model */
     GLuint sky_view;        /* the physical sky's sky-view table */
     gpu_mesh mesh;
+    double readback_seconds; /* of the last tl_renderer_finish */
 };
 
 static int gl_check(const char *what, tl_error *err)
@@ -623,12 +626,17 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *fr
     float *row = malloc((size_t)w * 4 * sizeof(float));
     if (!row)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    /* Wait for the GPU here (the readback would anyway), so the time the
+     * transfers take can be told from the time the drawing took. */
+    glFinish();
+    double t0 = tl_clock_seconds();
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
     read_rows(0, w, h, 4, frame->color, row);
     read_rows(1, w, h, 1, frame->depth, row);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
     read_rows(0, w, h, 4, frame->display, row);
     free(row);
+    r->readback_seconds = tl_clock_seconds() - t0;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return gl_check("reading the frame back", err);
 }
@@ -726,4 +734,9 @@ int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const 
         heights[i] = out[i * 4];
     free(out);
     return rc;
+}
+
+double tl_renderer_last_readback(const tl_renderer *r)
+{
+    return r->readback_seconds;
 }

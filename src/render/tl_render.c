@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/tl_clock.h"
 #include "gl/tl_gl_context.h"
 #include "gl/tl_gl_window.h"
 #include "gl/tl_renderer.h"
@@ -20,6 +21,7 @@ struct tl_render {
     int waves_valid;
     unsigned last_features; /* of the last frame, over all its passes */
     tl_sky_luts *sky;       /* the physical sky's tables, rebuilt when they change */
+    double render_seconds, readback_seconds; /* of the last timeline frame */
 };
 
 /* The renderer on whichever context `open_context` made current; headless
@@ -216,6 +218,8 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err)
 {
+    double t0 = tl_clock_seconds();
+    r->render_seconds = r->readback_seconds = 0.0;
     double t = tl_timeline_frame_time(tl, frame);
     tl_scene scene;
     tl_render_frame_scene(tl, t, settings, &scene);
@@ -270,5 +274,14 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                                        (float)scene.bloom, err);
     if (!rc && scene_out)
         *scene_out = scene;
+    if (!rc && out)
+        r->readback_seconds = tl_renderer_last_readback(r->renderer);
+    r->render_seconds = tl_clock_seconds() - t0 - r->readback_seconds;
     return rc;
+}
+
+void tl_render_last_timing(const tl_render *r, double *render_seconds, double *readback_seconds)
+{
+    *render_seconds = r->render_seconds;
+    *readback_seconds = r->readback_seconds;
 }

@@ -77,4 +77,8 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err);
 
+/* Where the last tl_render_timeline_frame spent its time: preparing and
+ * drawing until the GPU finished (render), and reading the planes back. */
+void tl_render_last_timing(const tl_render *r, double *render_seconds, double *readback_seconds);
+
 #endif

@@ -1,0 +1,430 @@
+/* tideline bench: the speed-accuracy trade, measured. Renders chosen frames
+ * of one or more timelines with each quality preset and with `reference`,
+ * and reports per preset the median time per frame (split into render,
+ * readback and PNG encoding) and the error against `reference` (PSNR,
+ * SSIM, 99th-percentile pixel error, the worst frame). Table on stdout; a
+ * CSV and a gnuplot plot on request (tl_cli_bench_report.c). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli/tl_args.h"
+#include "cli/tl_cli.h"
+#include "cli/tl_cli_bench.h"
+#include "core/tl_clock.h"
+#include "image/tl_image_io.h"
+#include "job/tl_job.h"
+#include "mesh/tl_mesh.h"
+#include "metrics/tl_metrics.h"
+#include "render/tl_render.h"
+#include "timeline/tl_timeline.h"
+
+static const char usage[] =
+    "Usage: tideline bench TIMELINE.tl... [options]\n"
+    "\n"
+    "Measure the speed-accuracy trade: render frames of each timeline with each\n"
+    "preset and with `reference`, then print per preset the median ms per frame\n"
+    "(after a warm-up), split into render (until the GPU finishes), readback and\n"
+    "PNG encoding, and the error against `reference` of the display image: mean\n"
+    "PSNR and SSIM, the worst 99th-percentile pixel error (8-bit levels), and the\n"
+    "worst frame. Presets no other beats in both time and PSNR form the Pareto\n"
+    "front (marked *).\n"
+    "\n"
+    "Options:\n"
+    "  --frames LIST     frames of every timeline, e.g. 0,120,239 or 0-239:60\n"
+    "                    (default: first, middle and last)\n"
+    "  --size WxH        frame size (default 640x360)\n"
+    "  --presets LIST    comma-separated presets (default draft,preview,final,seed)\n"
+    "  --repeat N        timed renders of each frame, 1..100 (default 3)\n"
+    "  --csv FILE        write the table as CSV (one row per preset)\n"
+    "  --plot FILE.png   plot PSNR against ms per frame with the Pareto front\n"
+    "                    (needs gnuplot: Debian package gnuplot-nox)\n"
+    "  -q, --quiet       no progress lines\n"
+    "  -h, --help        show this help\n"
+    "\n"
+    "Timings depend on everything else the machine is doing: compare presets\n"
+    "within one run. Exit status: 0, 1 when a render, the CSV or the plot\n"
+    "fails, 2 usage error.\n";
+
+#define MAX_TIMELINES 16
+
+typedef struct bench_options {
+    const char *timelines[MAX_TIMELINES];
+    int timeline_count;
+    const char *frames, *csv, *plot;
+    char presets[256];
+    int width, height, repeat, quiet;
+} bench_options;
+
+static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *err)
+{
+    tl_args a;
+    tl_args_init(&a, argc, argv);
+    a.index = 1;
+    while (!tl_args_done(&a)) {
+        int rc = TL_OK;
+        const char *pos;
+        if (tl_args_match(&a, "--help", "-h", false, err)) {
+            *help = 1;
+            return TL_OK;
+        } else if (tl_args_match(&a, "--quiet", "-q", false, err)) {
+            o->quiet = 1;
+        } else if (tl_args_match(&a, "--frames", NULL, true, err)) {
+            o->frames = a.value;
+        } else if (tl_args_match(&a, "--size", NULL, true, err)) {
+            rc = a.value ? tl_args_size(a.flag, a.value, &o->width, &o->height, err) : 0;
+        } else if (tl_args_match(&a, "--presets", NULL, true, err)) {
+            if (a.value &&
+                snprintf(o->presets, sizeof o->presets, "%s", a.value) >= (int)sizeof o->presets)
+                rc = tl_error_set(err, TL_ERR_USAGE, "--presets: the list is too long");
+        } else if (tl_args_match(&a, "--repeat", NULL, true, err)) {
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 100, &o->repeat, err) : 0;
+        } else if (tl_args_match(&a, "--csv", NULL, true, err)) {
+            o->csv = a.value;
+        } else if (tl_args_match(&a, "--plot", NULL, true, err)) {
+            o->plot = a.value;
+            if (a.value && tl_image_format_from_path(a.value) != TL_IMAGE_PNG)
+                rc = tl_error_set(err, TL_ERR_USAGE, "--plot: '%s' is not a .png file", a.value);
+        } else if (!err->status && tl_args_positional(&a, &pos)) {
+            if (o->timeline_count == MAX_TIMELINES)
+                rc = tl_error_set(err, TL_ERR_USAGE, "more than %d timelines", MAX_TIMELINES);
+            else
+                o->timelines[o->timeline_count++] = pos;
+        } else if (!err->status) {
+            rc = tl_args_unknown(&a, "bench", err);
+        }
+        if (err->status)
+            return err->status;
+        if (rc)
+            return rc;
+    }
+    if (o->timeline_count == 0)
+        return tl_error_set(err, TL_ERR_USAGE, "no timeline given (see --help)");
+    return TL_OK;
+}
+
+/* Splits the preset list; every name must be known. `reference` may not be
+ * listed (it is what the others are measured against). */
+static int parse_presets(char *list, tl_quality *out, int *count, tl_error *err)
+{
+    *count = 0;
+    for (char *save = NULL, *name = strtok_r(list, ",", &save); name;
+         name = strtok_r(NULL, ",", &save)) {
+        if (*count == TL_BENCH_MAX_PRESETS)
+            return tl_error_set(err, TL_ERR_USAGE, "--presets: more than %d presets",
+                                TL_BENCH_MAX_PRESETS);
+        if (strcmp(name, "reference") == 0)
+            return tl_error_set(err, TL_ERR_USAGE,
+                                "--presets: 'reference' is always rendered (it is the yardstick)");
+        if (tl_quality_preset(name, &out[*count], err)) {
+            tl_error_prefix(err, "--presets");
+            return TL_ERR_USAGE;
+        }
+        (*count)++;
+    }
+    if (*count == 0)
+        return tl_error_set(err, TL_ERR_USAGE, "--presets: no preset named");
+    return TL_OK;
+}
+
+/* One frame to measure: a timeline's frame and its reference image. */
+typedef struct bench_shot {
+    int timeline;
+    long frame;
+    float *reference; /* display plane of the `reference` render */
+} bench_shot;
+
+typedef struct bench_state {
+    bench_options *o;
+    tl_timeline tl[MAX_TIMELINES];
+    tl_mesh boat[MAX_TIMELINES];
+    bench_shot *shots;
+    int shot_count;
+    tl_render *render;
+    int boat_of;      /* the timeline whose boat is uploaded, or -1 */
+    char scratch[64]; /* folder for the encoded PNGs */
+    double last_progress;
+} bench_state;
+
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+static void progress(bench_state *s, const char *preset, int shot, int rep)
+{
+    if (s->o->quiet)
+        return;
+    double now = tl_clock_seconds();
+    if (now - s->last_progress < 0.5 && shot > 0)
+        return;
+    s->last_progress = now;
+    const bench_shot *b = &s->shots[shot];
+    fprintf(stderr, "bench: %-9s %s frame %ld (%d/%d)%s%s", preset,
+            base_name(s->o->timelines[b->timeline]), b->frame, shot + 1, s->shot_count,
+            rep > 0 ? " again" : "", isatty(STDERR_FILENO) ? "        \r" : "\n");
+}
+
+static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *frame,
+                       tl_error *err)
+{
+    const bench_shot *b = &s->shots[shot];
+    int t = b->timeline;
+    int rc = TL_OK;
+    if (s->boat_of != t)
+        rc = tl_render_set_boat(s->render, s->boat[t].index_count ? &s->boat[t] : NULL, err);
+    s->boat_of = rc ? -1 : t;
+    tl_render_settings settings = {.width = s->o->width, .height = s->o->height, .quality = q};
+    if (!rc)
+        rc = tl_render_timeline_frame(s->render, &s->tl[t], b->frame, &settings, frame, NULL, err);
+    if (rc)
+        tl_error_prefix(err, base_name(s->o->timelines[t]));
+    return rc;
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Renders every shot `repeat` times with q, timing each part, and scores
+ * the first render of each shot against the reference. */
+static int measure(bench_state *s, const tl_quality *q, int repeat, tl_bench_row *row,
+                   tl_error *err)
+{
+    int n = s->shot_count * repeat;
+    double *t[4];
+    for (int i = 0; i < 4; i++)
+        t[i] = calloc((size_t)n, sizeof(double));
+    tl_frame frame = {0};
+    int rc = (!t[0] || !t[1] || !t[2] || !t[3]) ? tl_error_set(err, TL_ERR_RUNTIME, "out of memory")
+                                                : TL_OK;
+    double psnr_sum = 0.0, ssim_sum = 0.0;
+    row->worst_psnr = TL_METRICS_PSNR_MAX + 1.0;
+    char png[128];
+    snprintf(png, sizeof png, "%s/frame.png", s->scratch);
+    for (int k = 0, i = 0; !rc && k < s->shot_count; k++) {
+        for (int r = 0; !rc && r < repeat; r++, i++) {
+            progress(s, q->name, k, r);
+            rc = render_shot(s, k, q, &frame, err);
+            double t0 = tl_clock_seconds();
+            if (!rc)
+                rc = tl_png_write(png, &frame, NULL, err);
+            double encode = tl_clock_seconds() - t0, render, readback;
+            tl_render_last_timing(s->render, &render, &readback);
+            t[0][i] = (render + readback + encode) * 1e3;
+            t[1][i] = render * 1e3;
+            t[2][i] = readback * 1e3;
+            t[3][i] = encode * 1e3;
+            if (rc || r > 0)
+                continue;
+            tl_metrics m;
+            if (tl_metrics_compare(frame.display, s->shots[k].reference, frame.width, frame.height,
+                                   &m))
+                rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+            psnr_sum += m.psnr;
+            ssim_sum += m.ssim;
+            row->p99 = m.p99 > row->p99 ? m.p99 : row->p99;
+            if (m.psnr < row->worst_psnr) {
+                row->worst_psnr = m.psnr;
+                snprintf(row->worst_shot, sizeof row->worst_shot, "%s:%ld",
+                         base_name(s->o->timelines[s->shots[k].timeline]), s->shots[k].frame);
+            }
+        }
+    }
+    if (!rc) {
+        row->ms_total = median(t[0], n);
+        row->ms_render = median(t[1], n);
+        row->ms_readback = median(t[2], n);
+        row->ms_encode = median(t[3], n);
+        row->psnr = psnr_sum / s->shot_count;
+        row->ssim = ssim_sum / s->shot_count;
+    }
+    tl_frame_free(&frame);
+    for (int i = 0; i < 4; i++)
+        free(t[i]);
+    return rc;
+}
+
+/* The shots: each timeline's frames from --frames, or its first, middle
+ * and last frame. */
+static int make_shots(bench_state *s, tl_error *err)
+{
+    int rc = TL_OK;
+    for (int t = 0; !rc && t < s->o->timeline_count; t++) {
+        long count = tl_timeline_frame_count(&s->tl[t]);
+        char spec[96];
+        snprintf(spec, sizeof spec, "0,%ld,%ld", count / 2, count - 1);
+        tl_frame_list list = {0};
+        rc = tl_frame_list_parse(s->o->frames ? s->o->frames : spec, count, "--frames", &list, err);
+        if (rc) {
+            tl_error_prefix(err, base_name(s->o->timelines[t]));
+            break;
+        }
+        bench_shot *more =
+            realloc(s->shots, sizeof(bench_shot) * ((size_t)s->shot_count + list.count));
+        if (!more) {
+            tl_frame_list_free(&list);
+            return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+        }
+        s->shots = more;
+        for (size_t i = 0; i < list.count; i++)
+            s->shots[s->shot_count++] = (bench_shot){t, list.frames[i], NULL};
+        tl_frame_list_free(&list);
+    }
+    return rc;
+}
+
+static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
+{
+    tl_quality ref;
+    tl_quality_preset("reference", &ref, err);
+    tl_frame frame = {0};
+    int rc = TL_OK;
+    double *ms = calloc((size_t)s->shot_count, sizeof(double));
+    if (!ms)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (int k = 0; !rc && k < s->shot_count; k++) {
+        progress(s, "reference", k, 0);
+        rc = render_shot(s, k, &ref, &frame, err);
+        size_t bytes = sizeof(float) * 4 * (size_t)frame.width * (size_t)frame.height;
+        if (!rc && !(s->shots[k].reference = malloc(bytes)))
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+        if (!rc)
+            memcpy(s->shots[k].reference, frame.display, bytes);
+        double render, readback;
+        tl_render_last_timing(s->render, &render, &readback);
+        ms[k] = (render + readback) * 1e3;
+    }
+    memset(row, 0, sizeof *row);
+    snprintf(row->preset, sizeof row->preset, "reference");
+    row->is_reference = 1;
+    if (!rc) {
+        row->ms_total = median(ms, s->shot_count);
+        row->ms_render = row->ms_total;
+        row->psnr = TL_METRICS_PSNR_MAX;
+        row->ssim = 1.0;
+    }
+    free(ms);
+    tl_frame_free(&frame);
+    return rc;
+}
+
+static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_quality *presets,
+               int preset_count, tl_error *err)
+{
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    int rc = tl_render_open(&s->render, &lib, err);
+    if (!rc && !mkdtemp(strcpy(s->scratch, "/tmp/tideline-bench-XXXXXX")))
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "cannot create a scratch folder in /tmp");
+    if (!rc && !s->o->quiet)
+        fprintf(stderr, "bench: %d frames at %dx%d on %s\n", s->shot_count, s->o->width,
+                s->o->height, tl_render_describe(s->render));
+    /* Warm-up: every shot once, so each feature set's program is compiled
+     * and every buffer allocated before anything is timed. */
+    tl_frame frame = {0};
+    for (int k = 0; !rc && k < s->shot_count; k++) {
+        progress(s, "warm-up", k, 0);
+        rc = render_shot(s, k, &presets[0], &frame, err);
+    }
+    tl_frame_free(&frame);
+    if (!rc)
+        rc = render_references(s, &rows[0], err);
+    for (int p = 0; !rc && p < preset_count; p++) {
+        tl_bench_row *row = &rows[1 + p];
+        memset(row, 0, sizeof *row);
+        snprintf(row->preset, sizeof row->preset, "%s", presets[p].name);
+        rc = measure(s, &presets[p], s->o->repeat, row, err);
+    }
+    if (!s->o->quiet && isatty(STDERR_FILENO))
+        fprintf(stderr, "%60s\r", "");
+    if (s->scratch[0]) {
+        char png[128];
+        snprintf(png, sizeof png, "%s/frame.png", s->scratch);
+        unlink(png);
+        rmdir(s->scratch);
+    }
+    *row_count = 1 + preset_count;
+    return rc;
+}
+
+int tl_cli_bench(int argc, char **argv)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    bench_options o = {.width = 640, .height = 360, .repeat = 3};
+    snprintf(o.presets, sizeof o.presets, "draft,preview,final,seed");
+    int help = 0;
+    int rc = parse(argc, argv, &o, &help, &err);
+    if (help) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    tl_quality presets[TL_BENCH_MAX_PRESETS];
+    int preset_count = 0;
+    if (!rc)
+        rc = parse_presets(o.presets, presets, &preset_count, &err);
+    if (!rc && o.csv && tl_cli_make_parent_dirs(o.csv, &err))
+        rc = TL_ERR_USAGE;
+    if (!rc && o.plot &&
+        (tl_cli_make_parent_dirs(o.plot, &err) || tl_image_check_writable(o.plot, &err)))
+        rc = TL_ERR_USAGE;
+    if (rc) {
+        tl_cli_print_error("bench", &err);
+        return 2;
+    }
+
+    static bench_state s;
+    memset(&s, 0, sizeof s);
+    s.o = &o;
+    s.boat_of = -1;
+    int loaded = 0;
+    for (; loaded < o.timeline_count; loaded++)
+        if (tl_cli_load_timeline("bench", o.timelines[loaded], &s.tl[loaded], &s.boat[loaded]))
+            break;
+    int status = loaded < o.timeline_count ? 1 : 0;
+    if (!status && make_shots(&s, &err)) {
+        tl_cli_print_error("bench", &err);
+        status = err.status == TL_ERR_USAGE ? 2 : 1;
+    }
+
+    tl_bench_row rows[1 + TL_BENCH_MAX_PRESETS];
+    int row_count = 0;
+    if (!status && run(&s, rows, &row_count, presets, preset_count, &err)) {
+        tl_cli_print_error("bench", &err);
+        status = 1;
+    }
+    if (!status) {
+        tl_bench_mark_front(rows, row_count);
+        tl_bench_print_table(stdout, rows, row_count);
+        if (o.csv && tl_bench_write_csv(o.csv, rows, row_count, o.width, o.height, s.shot_count,
+                                        o.repeat, &err)) {
+            tl_cli_print_error("bench", &err);
+            status = 1;
+        }
+        if (o.plot && tl_bench_write_plot(o.plot, rows, row_count, o.width, o.height, &err)) {
+            tl_cli_print_error("bench", &err);
+            status = 1;
+        }
+    }
+    if (s.render)
+        tl_render_close(s.render);
+    for (int k = 0; k < s.shot_count; k++)
+        free(s.shots[k].reference);
+    free(s.shots);
+    for (int t = 0; t < loaded; t++) {
+        tl_timeline_free(&s.tl[t]);
+        tl_mesh_free(&s.boat[t]);
+    }
+    return status;
+}

@@ -1,0 +1,39 @@
+/* The bench's results and their reports (terminal table, CSV, plot);
+ * tl_cli_bench.c measures, tl_cli_bench_report.c reports. */
+#ifndef TL_CLI_BENCH_H
+#define TL_CLI_BENCH_H
+
+#include <stdio.h>
+
+#include "core/tl_error.h"
+
+#define TL_BENCH_MAX_PRESETS 16
+
+typedef struct tl_bench_row {
+    char preset[32];
+    int is_reference; /* the yardstick row: its own error is zero */
+    /* Medians over every frame and repeat, milliseconds. The parts are
+     * medians too, so they need not add up to the total exactly. */
+    double ms_total, ms_render, ms_readback, ms_encode;
+    double psnr, ssim;    /* means over the frames, against `reference` */
+    double p99;           /* the worst frame's 99th-percentile error, 8-bit levels */
+    double worst_psnr;    /* the lowest PSNR of any frame, */
+    char worst_shot[160]; /* and that frame: "voyage.tl:120" */
+    int on_front;         /* no other preset is both faster and closer */
+} tl_bench_row;
+
+/* Marks the Pareto front among the non-reference rows: a row is on it when
+ * no other row is at least as fast and as accurate (PSNR) and better in
+ * one of the two. */
+void tl_bench_mark_front(tl_bench_row *rows, int count);
+/* A Markdown table (it pastes into docs as it is). */
+void tl_bench_print_table(FILE *to, const tl_bench_row *rows, int count);
+/* One row per preset, with a header; written atomically. */
+int tl_bench_write_csv(const char *path, const tl_bench_row *rows, int count, int width, int height,
+                       int frames, int repeat, tl_error *err);
+/* PSNR against ms per frame, one labelled point per preset, the front as a
+ * line, through gnuplot; an error says so when gnuplot is missing. */
+int tl_bench_write_plot(const char *path, const tl_bench_row *rows, int count, int width,
+                        int height, tl_error *err);
+
+#endif

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# tideline bench in miniature (64x36, 2 frames, 2 presets): the table, the
+# CSV and the plot appear, the CSV has its columns and finite numbers, and
+# bad flags are refused before anything renders.
+set -euo pipefail
+tideline=$1
+timelines=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$tideline" bench "$timelines/calm.tl" --size 64x36 --frames 0,120 --presets draft,final \
+  --repeat 2 --csv "$work/out/bench.csv" --plot "$work/out/bench.png" -q >"$work/table.md"
+cat "$work/table.md"
+grep -q '^| preset | ms/frame | render | readback | encode | PSNR dB | SSIM | p99 |' "$work/table.md" ||
+  fail "table header"
+[ "$(grep -c '^| \(reference\|draft\|final\)' "$work/table.md")" -eq 3 ] || fail "table rows"
+
+csv=$work/out/bench.csv
+head -1 "$csv" | grep -qx 'preset,width,height,frames,repeat,ms_total,ms_render,ms_readback,ms_encode,psnr_db,ssim,p99_levels,worst_psnr_db,worst_frame,pareto' ||
+  fail "CSV header: $(head -1 "$csv")"
+[ "$(wc -l <"$csv")" -eq 4 ] || fail "CSV rows"
+# Every numeric field finite; sizes and counts as asked; errors in range;
+# the reference scores the PSNR cap against itself.
+awk -F, 'NR > 1 {
+  for (i = 2; i <= 13; i++) if ($i !~ /^-?[0-9]+(\.[0-9]+)?$/) { print "field " i ": " $i; bad = 1 }
+  if ($2 != 64 || $3 != 36 || $4 != 2) { print "size/frames: " $0; bad = 1 }
+  if ($6 <= 0) { print "time: " $0; bad = 1 }
+  if ($1 == "reference" && $10 != 200) { print "reference PSNR: " $0; bad = 1 }
+  if ($1 != "reference" && ($10 <= 0 || $10 >= 200 || $11 <= 0 || $11 > 1 || $14 !~ /^calm\.tl:(0|120)$/)) {
+    print "metrics: " $0; bad = 1 }
+} END { exit bad }' "$csv" || fail "CSV values"
+[ "$(awk -F, 'NR > 1 && $1 != "reference" { n += $15 } END { print n }' "$csv")" -ge 1 ] ||
+  fail "no preset on the Pareto front"
+head -c 8 "$work/out/bench.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' || fail "plot is not a PNG"
+ls -A "$work/out" | grep -q '^\.' && fail "a temporary file was left behind"
+
+# Usage errors: status 2, a message naming the flag, nothing written.
+expect_usage() {
+  local want=$1; shift
+  set +e
+  "$tideline" bench "$@" >"$work/o" 2>"$work/e"
+  local rc=$?
+  set -e
+  [ $rc -eq 2 ] || fail "status $rc for: $*"
+  grep -q -- "$want" "$work/e" || fail "message for $*: $(cat "$work/e")"
+}
+expect_usage "--presets" "$timelines/calm.tl" --presets draft,nope
+expect_usage "always rendered" "$timelines/calm.tl" --presets reference
+expect_usage "--repeat" "$timelines/calm.tl" --repeat 0
+expect_usage "not a .png" "$timelines/calm.tl" --plot "$work/p.svg"
+expect_usage "no timeline" --size 64x36
+expect_usage "--frames" "$timelines/calm.tl" --frames 99999 --size 64x36
+[ ! -e "$work/p.svg" ] || fail "wrote a plot on a usage error"
+"$tideline" bench --help | grep -q 'Usage: tideline bench' || fail "--help"
+
+# tideline compare: an image against itself, against another, and refusals.
+"$tideline" still --size 32x18 --quality draft -o "$work/a.png"
+"$tideline" still --size 32x18 --quality draft --time 5 -o "$work/b.png"
+"$tideline" still --size 18x32 --quality draft -o "$work/c.png"
+"$tideline" compare "$work/a.png" "$work/a.png" | grep -q '^PSNR 200.00 dB  SSIM 1.00000  p99 0.0 levels  max 0.0 levels  (32x18)$' ||
+  fail "compare with itself"
+line=$("$tideline" compare "$work/a.png" "$work/b.png" --diff "$work/d.png")
+awk '{ if (!($2 > 5 && $2 < 200 && $5 < 1)) exit 1 }' <<<"$line" || fail "compare: $line"
+[ -s "$work/d.png" ] || fail "no --diff image"
+set +e
+"$tideline" compare "$work/a.png" "$work/b.png" --min-psnr 150 >/dev/null 2>"$work/e"; rc1=$?
+"$tideline" compare "$work/a.png" "$work/c.png" >/dev/null 2>"$work/e2"; rc2=$?
+"$tideline" compare "$work/a.png" >/dev/null 2>"$work/e3"; rc3=$?
+set -e
+[ $rc1 -eq 1 ] && grep -q 'below --min-psnr 150' "$work/e" || fail "--min-psnr: $rc1 $(cat "$work/e")"
+[ $rc2 -eq 1 ] && grep -q 'a.png is 32x18 but .*c.png is 18x32' "$work/e2" || fail "sizes: $(cat "$work/e2")"
+[ $rc3 -eq 2 ] && grep -q 'two images are needed' "$work/e3" || fail "one image: $(cat "$work/e3")"
+echo BENCH_OK
