@@ -28,11 +28,16 @@
 // Supersampling: u_spp stratified samples per pixel (N-rooks: sample s
 // takes x stratum s and y stratum (s * u_spp_step) mod u_spp, jittered
 // inside its cell by a hash of pixel, sample and u_seed, so a frame is the
-// same every time it is rendered). u_sample_weight scales the result for
-// accumulating sub-frame passes (motion blur).
+// same every time it is rendered). One draw takes samples u_sample_first
+// .. u_sample_first + u_sample_count - 1 (the renderer splits a pixel's
+// samples over draws: llvmpipe caps a fragment's loop iterations), and
+// u_sample_weight scales their average by the draw's share of the pixel
+// and of the sub-frame passes (motion blur).
 uniform int u_spp;
 uniform int u_spp_step;
 uniform uint u_seed;
+uniform int u_sample_first;
+uniform int u_sample_count;
 uniform float u_sample_weight;
 
 layout(location = 0) out vec4 out_color;
@@ -127,7 +132,8 @@ void main()
     int good = 0;
     // Depth of a supersampled pixel: the nearest surface any sample saw.
     float depth = TL_SKY_DEPTH;
-    for (int s = 0; s < max(u_spp, 1); s++) {
+    for (int k = 0; k < max(u_sample_count, 1); k++) {
+        int s = u_sample_first + k;
         float dist;
         vec3 c = trace(camera_ray(gl_FragCoord.xy + sample_offset(s)), dist);
         // Last guard: no NaN or Inf may reach a pixel. A bad sample is

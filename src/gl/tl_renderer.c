@@ -527,6 +527,27 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
     return gl_check("drawing the boat", err);
 }
 
+/* Samples per draw. Mesa's llvmpipe ends every loop of a fragment once
+ * that fragment has run 65535 loop iterations in all (one "loop limiter"
+ * per shader invocation, shared by every loop): past it the wave sums are
+ * cut short and supersampled pixels come out wrong without any error. A
+ * pixel's samples are therefore split over several draws, each kept under
+ * the limit by a generous count of the loops one sample can run. On a GPU
+ * this costs a few extra draws. */
+static int samples_per_draw(const tl_frame_uniforms *u)
+{
+    long per_step = u->march_octaves + 1;
+    if (u->features & TL_FEATURE_GIANT_WAVE)
+        per_step += u->giant_iterations + 40; /* its inversion and slope bins */
+    long per_sample = (long)(u->march_steps + u->refine_steps) * per_step +
+                      3L * (u->normal_octaves + 1) + TL_WAKE_POINTS + 256;
+    if (u->features & TL_FEATURE_UNDERWATER)
+        per_sample *= 2; /* the march below the surface, and the lens */
+    long n = 60000 / per_sample;
+    int spp = u->spp < 1 ? 1 : u->spp;
+    return n < 1 ? 1 : (n > spp ? spp : (int)n);
+}
+
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err)
 {
@@ -553,10 +574,8 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     glBlendFunc(GL_ONE, GL_ONE);
     glBlendEquation(GL_FUNC_ADD);
     glDisablei(GL_BLEND, 1);
-    glColorMaski(1, write_depth, write_depth, write_depth, write_depth);
     glUseProgram(program);
     upload_uniforms(program, u);
-    glUniform1f(loc(program, "u_sample_weight"), weight);
     if (features & TL_FEATURE_BOAT) {
         const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
         for (int i = 0; i < 3; i++) {
@@ -571,7 +590,19 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
         glUniform4fv(loc(program, "u_boat_hull"), 1, u->boat_hull);
         glUniform1f(loc(program, "u_boat_top"), u->boat_top);
     }
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    /* The pixel's samples in draws of at most `chunk`; each adds its share
+     * of the average. Depth (the nearest surface any sample saw) comes from
+     * the first draw's samples. */
+    int spp = u->spp < 1 ? 1 : u->spp, chunk = samples_per_draw(u);
+    for (int first = 0; first < spp; first += chunk) {
+        int count = spp - first < chunk ? spp - first : chunk;
+        int depth = write_depth && first == 0;
+        glColorMaski(1, depth, depth, depth, depth);
+        glUniform1i(loc(program, "u_sample_first"), first);
+        glUniform1i(loc(program, "u_sample_count"), count);
+        glUniform1f(loc(program, "u_sample_weight"), weight * (float)count / (float)spp);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisablei(GL_BLEND, 0);
     return gl_check("rendering", err);
