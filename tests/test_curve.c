@@ -107,13 +107,17 @@ static void test_ease(void)
         {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.5, 0.5},
         {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.25, 1.0 / 64},
         {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.75, 63.0 / 64},
-        {TL_EASE_EXPO, TL_EASE_IN, 0.5, 1.0 / 32},
-        {TL_EASE_EXPO, TL_EASE_IN, 0.25, 1.0 / (128 * r2)}, /* 2^-7.5 */
-        {TL_EASE_EXPO, TL_EASE_OUT, 0.5, 31.0 / 32},
-        {TL_EASE_EXPO, TL_EASE_OUT, 0.25, 1 - 1.0 / (4 * r2)}, /* 1 - 2^-2.5 */
+        /* expo, Blender's rescaled form (2^(10(u-1)) - 2^-10) / (1 - 2^-10):
+         * in(1/2) = (2^-5 - 2^-10) / (1 - 2^-10) = 31/1023 (Penner: 1/32). */
+        {TL_EASE_EXPO, TL_EASE_IN, 0.5, 31.0 / 1023},
+        {TL_EASE_EXPO, TL_EASE_IN, 0.25, (4 * r2 - 1) / 1023}, /* 2^-7.5 rescaled */
+        {TL_EASE_EXPO, TL_EASE_OUT, 0.5, 992.0 / 1023},
+        {TL_EASE_EXPO, TL_EASE_OUT, 0.25, 1 - (128 * r2 - 1) / 1023}, /* 2^-2.5 rescaled */
         {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.5, 0.5},
-        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.25, 1.0 / 64},
-        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.75, 63.0 / 64},
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.25, 15.5 / 1023},
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.75, 1 - 15.5 / 1023},
+        /* continuous at the ends: 2^-30 in, not the 2^-10 jump of Penner's */
+        {TL_EASE_EXPO, TL_EASE_IN, 1e-3, (pow(2, -9.99) - 1.0 / 1024) / (1023.0 / 1024)},
         {TL_EASE_CIRC, TL_EASE_IN, 0.5, 1 - r3 / 2},
         {TL_EASE_CIRC, TL_EASE_IN, 0.25, 1 - sqrt(15.0) / 4},
         {TL_EASE_CIRC, TL_EASE_OUT, 0.5, r3 / 2},
@@ -135,8 +139,8 @@ static void test_ease(void)
         {TL_EASE_BOUNCE, TL_EASE_IN_OUT, 0.75, 0.8828125},
         /* elastic, p = 0.3: in(0.5) = -2^-5 sin(-23 pi / 6) = -1/64 */
         {TL_EASE_ELASTIC, TL_EASE_IN, 0.5, -1.0 / 64},
-        {TL_EASE_ELASTIC, TL_EASE_IN, 0.25, -1.0 / (128 * r2)}, /* sin(-11 pi / 2) = 1 */
-        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.5, 1 + 1.0 / 64},      /* sin(17 pi / 6) = 1/2 */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.25, -1.0 / (128 * r2)},   /* sin(-11 pi / 2) = 1 */
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.5, 1 + 1.0 / 64},        /* sin(17 pi / 6) = 1/2 */
         {TL_EASE_ELASTIC, TL_EASE_OUT, 0.25, 1 - 0.5 / (4 * r2)}, /* sin(7 pi / 6) */
         {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.5, 0.5},
         /* p = 0.45: -0.5 * 2^-5 * sin(-49 pi / 18) = sin(50 deg) / 64 */
@@ -170,6 +174,47 @@ static void test_ease(void)
     }
     CHECK(tl_ease_name(TL_EASE_FAMILY_COUNT, TL_EASE_IN) == NULL);
     CHECK_STR_CONTAINS(tl_ease_name(TL_EASE_BOUNCE, TL_EASE_IN), "bounce");
+}
+
+/* Blender's per-key back, amplitude and period. Expected values from
+ * tests/blender_curve_ref.py (Blender 3.4's BLI_easing formulas, run in
+ * frames at 24 fps; the curve engine gets the same segment in seconds). */
+static void test_ease_params(void)
+{
+    const double fps = 24.0;
+    struct {
+        tl_ease_family f;
+        tl_ease_dir d;
+        double u, change, amplitude, period_frames, want;
+    } cases[] = {
+        /* an inserted key's defaults: amplitude 0.8, period 4.1 frames */
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.3, 10, 0.8, 4.1, 9.9961697266309955},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.02, 10, 0.8, 4.1, 6.3262577994864708}, /* blend */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.9, 10, 0.8, 4.1, -0.34382784279488066},
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.45, 10, 0.8, 4.1, -0.17191392139744033},
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.7, 10, 0.8, 4.1, 10.01358918875003},
+        /* amplitude above the change: the asin phase */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.7, 1, 2, 6, 0.24453690018345087},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.4, -1, 2, 6, -0.98693394209154306},
+        /* amplitude 0, period 0 (0.3 of the segment): only the end blend */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.95, 3, 0, 0, 0.35355339059326912},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        tl_ease_params p = {TL_EASE_BACK_OVERSHOOT, cases[i].amplitude,
+                            cases[i].period_frames / fps};
+        double got = tl_ease_segment(cases[i].f, cases[i].d, &p, cases[i].u, cases[i].change, 1.0);
+        CHECK_NEAR(got, cases[i].want, 1e-12);
+    }
+    /* back with its own overshoot; 0 overshoots nothing (a plain cubic). */
+    tl_ease_params b = {3.0, 0.8, 4.1 / fps};
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN, &b, 0.4, 2.0, 1.0), -0.448, 1e-12);
+    b.back = 0.0;
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_OUT, &b, 0.3, 2.0, 1.0), 1.314, 1e-12);
+    b.back = 2.5;
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN_OUT, &b, 0.2, 2.0, 1.0), -0.302, 1e-12);
+    /* The ends are exact, whatever the settings. */
+    CHECK(tl_ease_segment(TL_EASE_ELASTIC, TL_EASE_IN_OUT, &b, 1.0, 7.0, 2.0) == 7.0);
+    CHECK(tl_ease_segment(TL_EASE_ELASTIC, TL_EASE_OUT, &b, 0.0, 7.0, 2.0) == 0.0);
 }
 
 /* ---- simple interpolations ---------------------------------------------- */
@@ -833,6 +878,7 @@ static void test_names(void)
 int main(void)
 {
     test_ease();
+    test_ease_params();
     test_constant_linear_ease();
     test_spline();
     test_handles();
