@@ -702,7 +702,7 @@ static void dir_key(parser *p, token *tok, int n)
         return;
     tr->state = TL_TRACK_KEYED;
     for (int c = 0; c < ch->components; c++)
-        tr->curve[c].extrap = extrap;
+        tl_curve_set_extrap(&tr->curve[c], extrap);
     p->block = BLOCK_KEY;
     p->block_line = p->line_no;
     p->block_ch = ch;
