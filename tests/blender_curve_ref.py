@@ -600,7 +600,20 @@ def smooth_cases():
         print("  value at %g s: %s" % (t, fmt(bezier_value(ks[i], ks[i + 1], t * fps))))
 
 
+def language_cases():
+    section("tests/test_timeline.c (fps 30)")
+    for u in (0.3, 0.5):
+        print("ease-out-elastic amplitude 0.5 period 6f, 0 -> 10 over 30 frames, u=%g: %s"
+              % (u, fmt(elastic("out", u * 30, 0.0, 10.0, 30.0, 0.5, 6.0))))
+    print("ease-in-elastic, an inserted key's defaults, 0 -> 10 over 30 frames, u=0.8: %s"
+          % fmt(elastic("in", 0.8 * 30, 0.0, 10.0, 30.0, 0.8, 4.1)))
+    m = cycles_time((0, 0), (2, 0.5), -3.5, "mirror", "offset", 2, 1)
+    print("before ping-pong 2 at -3.5 s (keys 0 0, 1 1, 2 0.5):",
+          fmt(linear_value([(0, 0), (1, 1), (2, 0.5)], m[0]) + m[1]))
+
+
 if __name__ == "__main__":
+    language_cases()
     easing_cases()
     handle_cases()
     cycle_cases()
