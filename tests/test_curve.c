@@ -107,13 +107,17 @@ static void test_ease(void)
         {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.5, 0.5},
         {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.25, 1.0 / 64},
         {TL_EASE_QUINT, TL_EASE_IN_OUT, 0.75, 63.0 / 64},
-        {TL_EASE_EXPO, TL_EASE_IN, 0.5, 1.0 / 32},
-        {TL_EASE_EXPO, TL_EASE_IN, 0.25, 1.0 / (128 * r2)}, /* 2^-7.5 */
-        {TL_EASE_EXPO, TL_EASE_OUT, 0.5, 31.0 / 32},
-        {TL_EASE_EXPO, TL_EASE_OUT, 0.25, 1 - 1.0 / (4 * r2)}, /* 1 - 2^-2.5 */
+        /* expo, Blender's rescaled form (2^(10(u-1)) - 2^-10) / (1 - 2^-10):
+         * in(1/2) = (2^-5 - 2^-10) / (1 - 2^-10) = 31/1023 (Penner: 1/32). */
+        {TL_EASE_EXPO, TL_EASE_IN, 0.5, 31.0 / 1023},
+        {TL_EASE_EXPO, TL_EASE_IN, 0.25, (4 * r2 - 1) / 1023}, /* 2^-7.5 rescaled */
+        {TL_EASE_EXPO, TL_EASE_OUT, 0.5, 992.0 / 1023},
+        {TL_EASE_EXPO, TL_EASE_OUT, 0.25, 1 - (128 * r2 - 1) / 1023}, /* 2^-2.5 rescaled */
         {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.5, 0.5},
-        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.25, 1.0 / 64},
-        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.75, 63.0 / 64},
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.25, 15.5 / 1023},
+        {TL_EASE_EXPO, TL_EASE_IN_OUT, 0.75, 1 - 15.5 / 1023},
+        /* continuous at the ends: 2^-30 in, not the 2^-10 jump of Penner's */
+        {TL_EASE_EXPO, TL_EASE_IN, 1e-3, (pow(2, -9.99) - 1.0 / 1024) / (1023.0 / 1024)},
         {TL_EASE_CIRC, TL_EASE_IN, 0.5, 1 - r3 / 2},
         {TL_EASE_CIRC, TL_EASE_IN, 0.25, 1 - sqrt(15.0) / 4},
         {TL_EASE_CIRC, TL_EASE_OUT, 0.5, r3 / 2},
@@ -135,8 +139,8 @@ static void test_ease(void)
         {TL_EASE_BOUNCE, TL_EASE_IN_OUT, 0.75, 0.8828125},
         /* elastic, p = 0.3: in(0.5) = -2^-5 sin(-23 pi / 6) = -1/64 */
         {TL_EASE_ELASTIC, TL_EASE_IN, 0.5, -1.0 / 64},
-        {TL_EASE_ELASTIC, TL_EASE_IN, 0.25, -1.0 / (128 * r2)}, /* sin(-11 pi / 2) = 1 */
-        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.5, 1 + 1.0 / 64},      /* sin(17 pi / 6) = 1/2 */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.25, -1.0 / (128 * r2)},   /* sin(-11 pi / 2) = 1 */
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.5, 1 + 1.0 / 64},        /* sin(17 pi / 6) = 1/2 */
         {TL_EASE_ELASTIC, TL_EASE_OUT, 0.25, 1 - 0.5 / (4 * r2)}, /* sin(7 pi / 6) */
         {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.5, 0.5},
         /* p = 0.45: -0.5 * 2^-5 * sin(-49 pi / 18) = sin(50 deg) / 64 */
@@ -170,6 +174,47 @@ static void test_ease(void)
     }
     CHECK(tl_ease_name(TL_EASE_FAMILY_COUNT, TL_EASE_IN) == NULL);
     CHECK_STR_CONTAINS(tl_ease_name(TL_EASE_BOUNCE, TL_EASE_IN), "bounce");
+}
+
+/* Blender's per-key back, amplitude and period. Expected values from
+ * tests/blender_curve_ref.py (Blender 3.4's BLI_easing formulas, run in
+ * frames at 24 fps; the curve engine gets the same segment in seconds). */
+static void test_ease_params(void)
+{
+    const double fps = 24.0;
+    struct {
+        tl_ease_family f;
+        tl_ease_dir d;
+        double u, change, amplitude, period_frames, want;
+    } cases[] = {
+        /* an inserted key's defaults: amplitude 0.8, period 4.1 frames */
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.3, 10, 0.8, 4.1, 9.9961697266309955},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.02, 10, 0.8, 4.1, 6.3262577994864708}, /* blend */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.9, 10, 0.8, 4.1, -0.34382784279488066},
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.45, 10, 0.8, 4.1, -0.17191392139744033},
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.7, 10, 0.8, 4.1, 10.01358918875003},
+        /* amplitude above the change: the asin phase */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.7, 1, 2, 6, 0.24453690018345087},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.4, -1, 2, 6, -0.98693394209154306},
+        /* amplitude 0, period 0 (0.3 of the segment): only the end blend */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.95, 3, 0, 0, 0.35355339059326912},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        tl_ease_params p = {TL_EASE_BACK_OVERSHOOT, cases[i].amplitude,
+                            cases[i].period_frames / fps};
+        double got = tl_ease_segment(cases[i].f, cases[i].d, &p, cases[i].u, cases[i].change, 1.0);
+        CHECK_NEAR(got, cases[i].want, 1e-12);
+    }
+    /* back with its own overshoot; 0 overshoots nothing (a plain cubic). */
+    tl_ease_params b = {3.0, 0.8, 4.1 / fps};
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN, &b, 0.4, 2.0, 1.0), -0.448, 1e-12);
+    b.back = 0.0;
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_OUT, &b, 0.3, 2.0, 1.0), 1.314, 1e-12);
+    b.back = 2.5;
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN_OUT, &b, 0.2, 2.0, 1.0), -0.302, 1e-12);
+    /* The ends are exact, whatever the settings. */
+    CHECK(tl_ease_segment(TL_EASE_ELASTIC, TL_EASE_IN_OUT, &b, 1.0, 7.0, 2.0) == 7.0);
+    CHECK(tl_ease_segment(TL_EASE_ELASTIC, TL_EASE_OUT, &b, 0.0, 7.0, 2.0) == 0.0);
 }
 
 /* ---- simple interpolations ---------------------------------------------- */
@@ -241,7 +286,7 @@ static void test_spline(void)
     for (double t = 0.0; t <= 5.0; t += 0.01)
         CHECK_NEAR(tl_curve_eval(&c, t), quad_f(t), 1e-12);
     /* Linear extrapolation continues with the end derivative 2t - 3. */
-    c.extrap = TL_EXTRAP_LINEAR;
+    tl_curve_set_extrap(&c, TL_EXTRAP_LINEAR);
     CHECK_NEAR(tl_curve_eval(&c, 6.0), quad_f(5.0) + 7.0, 1e-12);
     CHECK_NEAR(tl_curve_eval(&c, -1.0), quad_f(0.0) + 3.0, 1e-12);
     tl_curve_free(&c);
@@ -304,7 +349,7 @@ static void test_handles(void)
     CHECK_NEAR(c.keys[2].left.t, 3 - 2 / F, 1e-12);
     CHECK_NEAR(c.keys[2].left.v, 1.5, 0);
     /* With linear extrapolation the ends point along their chord. */
-    c.extrap = TL_EXTRAP_LINEAR;
+    tl_curve_set_extrap(&c, TL_EXTRAP_LINEAR);
     tl_curve_prepare(&c);
     CHECK_NEAR(c.keys[0].right.v, 1 / F, 1e-12);
     CHECK_NEAR(c.keys[0].left.t, -1 / F, 1e-12);
@@ -338,8 +383,11 @@ static void test_handles(void)
     tl_curve_free(&c);
 
     /* Aligned both sides: the right handle's direction wins, the left keeps
-     * its length (1) pointing the opposite way. */
+     * its length pointing the opposite way. Blender measures that length in
+     * (frame, value) space, so it depends on the fps: at 1 fps frames are
+     * seconds and the left keeps (1, 0) -> length 1 along (-1, -1)/sqrt 2. */
     prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_AUTO_CLAMPED);
+    c.fps = 1.0;
     c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_ALIGNED;
     c.keys[1].left = (tl_curve_point){0.0, 1.0};
     c.keys[1].right = (tl_curve_point){3.0, 3.0};
@@ -348,12 +396,21 @@ static void test_handles(void)
     CHECK_NEAR(c.keys[1].right.v, 3, 1e-12);
     CHECK_NEAR(c.keys[1].left.t, 1 - sqrt(0.5), 1e-12);
     CHECK_NEAR(c.keys[1].left.v, 1 - sqrt(0.5), 1e-12);
-    /* Aligned left with an auto-clamped right (flat at the maximum). */
+    /* At 24 fps (issue 13, point 2; the old expectation above was the
+     * defect at any other rate): the left's 24-frame length lies along the
+     * right's (48 frames, 2). Values from tests/blender_curve_ref.py. */
+    c.fps = 24.0;
+    c.keys[1].left = (tl_curve_point){0.0, 1.0};
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].left.t, 0.00086692690764807645, 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 0.0008669269076480024, 1e-12);
+    /* Aligned left with an auto-clamped right (flat at the maximum): the
+     * left's (12 frames, 0.5) becomes 13 frames long, flat. */
     c.keys[1].right_type = TL_HANDLE_AUTO_CLAMPED;
     c.keys[1].left = (tl_curve_point){0.5, 1.5};
     tl_curve_prepare(&c);
     CHECK_NEAR(c.keys[1].right.v, 1, 0);
-    CHECK_NEAR(c.keys[1].left.t, 1 - sqrt(0.5), 1e-12);
+    CHECK_NEAR(c.keys[1].left.t, 0.49956616043898694, 1e-12);
     CHECK_NEAR(c.keys[1].left.v, 1, 1e-15);
     /* Free stays where it is, except a handle on the wrong side of its key
      * in time, which is clamped to the key's time (Blender). */
@@ -369,7 +426,7 @@ static void test_handles(void)
      * second-to-last key one cycle earlier: (-2, 2) around (0,0) with next
      * (1, 2); slopes -1 and 2, mean 0.5. */
     prepared3(&c, 0, 0, 1, 2, 3, 0, TL_HANDLE_AUTO);
-    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
     CHECK_NEAR(c.keys[0].left.t, -2 / F, 1e-12);
     CHECK_NEAR(c.keys[0].left.v, -1 / F, 1e-12);
@@ -384,6 +441,134 @@ static void test_handles(void)
     prepared3(&c, 0, 0, 1, 1, 11, 2, TL_HANDLE_AUTO);
     tl_curve_prepare(&c);
     CHECK_NEAR(c.keys[1].right.t, 1 + 5 / F, 1e-12);
+    tl_curve_free(&c);
+}
+
+/* Issue 13: Blender's F-curve rules the old engine missed. Expected values
+ * from tests/blender_curve_ref.py (Blender 3.4's formulas in frames at
+ * 24 fps, independent of this code). */
+static void test_blender_handles(void)
+{
+    tl_curve c;
+    /* A missing aligned handle (on its key) gets length 1 in (frame, value)
+     * space, opposite the right (12 frames, 1): ~1 frame back, 0.083 down. */
+    prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_AUTO_CLAMPED);
+    c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_ALIGNED;
+    c.keys[1].right = (tl_curve_point){1.5, 2.0};
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].left.t, 0.95847726007312994, 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 0.91695452014626, 1e-12);
+    tl_curve_free(&c);
+
+    /* An aligned key between vector ends: the curve's value, not only its
+     * handles, follows Blender at 24 fps. */
+    prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_VECTOR);
+    c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_ALIGNED;
+    c.keys[1].left = (tl_curve_point){0.5, 0.2};
+    c.keys[1].right = (tl_curve_point){1.25, 1.5};
+    tl_curve_prepare(&c);
+    CHECK_NEAR(c.keys[1].left.t, 0.50062107538981226, 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, 0.001242150779624418, 1e-12);
+    CHECK_NEAR(tl_curve_eval(&c, 1.5), 0.763849221159555, 1e-9);
+    tl_curve_free(&c);
+
+    /* Both handles on the wrong side of their key: swapped (Blender's
+     * sort_time_fcurve), not both moved onto the key. */
+    prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_VECTOR);
+    c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_FREE;
+    c.keys[1].left = (tl_curve_point){1.5, 3.0};
+    c.keys[1].right = (tl_curve_point){0.5, -1.0};
+    tl_curve_prepare(&c);
+    CHECK(c.keys[1].left.t == 0.5 && c.keys[1].left.v == -1.0);
+    CHECK(c.keys[1].right.t == 1.5 && c.keys[1].right.v == 3.0);
+    CHECK_NEAR(tl_curve_eval(&c, 0.5), -0.1285626189824795, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1.25), 1.679723908894482, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1.5), 1.5476043649707996, 1e-9);
+    tl_curve_free(&c);
+}
+
+/* Continuous Acceleration smoothing. Expected handles and values from
+ * tests/blender_curve_ref.py (BKE_nurb_handle_smooth_fcurve's equations
+ * solved by dense Gaussian elimination). */
+static void check_handles(const tl_curve *c, const double want[][4], size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        CHECK_NEAR(c->keys[i].left.t, want[i][0], 1e-12);
+        CHECK_NEAR(c->keys[i].left.v, want[i][1], 1e-12);
+        CHECK_NEAR(c->keys[i].right.t, want[i][2], 1e-12);
+        CHECK_NEAR(c->keys[i].right.v, want[i][3], 1e-12);
+    }
+}
+
+static void test_smoothing(void)
+{
+    static const double ts[] = {0, 1, 1.5, 3, 4, 6}, vs[] = {0, 2, 2.5, 1, 1.5, -1};
+    static const double at[] = {0.5, 1.2, 2.2, 3.5, 5.0};
+    static const double auto_h[][4] = {
+        {-0.33333333333333331, 0, 0.33333333333333331, 0},
+        {0.66666666666666663, 1.3353825136612021, 1.1666666666666667, 2.3323087431693987},
+        {1.3333333333333333, 2.4969262295081966, 2, 2.5092213114754101},
+        {2.5, 1.0645491803278688, 3.3333333333333335, 0.95696721311475408},
+        {3.6666666666666665, 1.5273224043715847, 4.666666666666667, 1.4453551912568305},
+        {5.333333333333333, -1, 6.666666666666667, -1},
+    };
+    static const double auto_v[] = {0.75076844262295084, 2.3186721311475407, 1.8510528233151182,
+                                    1.2441086065573768, 0.22950819672131151};
+    /* Auto-clamped: the extremes lock flat and split the runs. */
+    static const double clamped_h[][4] = {
+        {-0.33333333333333331, 0, 0.33333333333333331, 0},
+        {0.66666666666666663, 1.3333333333333335, 1.1666666666666667, 2.3333333333333335},
+        {1.3333333333333333, 2.5, 2, 2.5},
+        {2.5, 1, 3.3333333333333335, 1},
+        {3.6666666666666665, 1.5, 4.666666666666667, 1.5},
+        {5.333333333333333, -1, 6.666666666666667, -1},
+    };
+    static const double clamped_v[] = {0.75, 2.3199999999999998, 1.8248888888888886,
+                                       1.2499999999999998, 0.25};
+    for (int pass = 0; pass < 2; pass++) {
+        tl_curve c;
+        tl_curve_init(&c);
+        for (int i = 0; i < 6; i++) {
+            tl_key k = key(ts[i], vs[i], TL_INTERP_BEZIER);
+            k.left_type = k.right_type = pass ? TL_HANDLE_AUTO_CLAMPED : TL_HANDLE_AUTO;
+            add(&c, k);
+        }
+        c.smoothing = TL_SMOOTH_CONTINUOUS;
+        tl_curve_prepare(&c);
+        check_handles(&c, pass ? clamped_h : auto_h, 6);
+        for (int i = 0; i < 5; i++)
+            CHECK_NEAR(tl_curve_eval(&c, at[i]), (pass ? clamped_v : auto_v)[i], 1e-9);
+        /* Without smoothing the same keys give other handles (0.39 of each gap). */
+        c.smoothing = TL_SMOOTH_NONE;
+        tl_curve_prepare(&c);
+        CHECK_NEAR(c.keys[1].right.t, 1 + 0.5 / F, 1e-12);
+        tl_curve_free(&c);
+    }
+
+    /* A full cycle of auto keys solves as one closed system; the first
+     * key's left handle mirrors its right (Blender's endpoint rule). */
+    static const double cyc_t[] = {0, 1, 2.5, 4}, cyc_v[] = {0, 1, -0.5, 0};
+    static const double cyc_h[][4] = {
+        {-0.33333333333333331, -0.41269841269841279, 0.33333333333333331, 0.41269841269841279},
+        {0.66666666666666663, 0.96825396825396826, 1.5, 1.0476190476190477},
+        {2, -0.083333333333333204, 3, -0.91666666666666674},
+        {3.5, -0.61904761904761918, 4.5, 0.61904761904761918},
+    };
+    tl_curve c;
+    tl_curve_init(&c);
+    for (int i = 0; i < 4; i++) {
+        tl_key k = key(cyc_t[i], cyc_v[i], TL_INTERP_BEZIER);
+        k.left_type = k.right_type = TL_HANDLE_AUTO;
+        add(&c, k);
+    }
+    c.smoothing = TL_SMOOTH_CONTINUOUS;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
+    tl_curve_prepare(&c);
+    check_handles(&c, cyc_h, 4);
+    CHECK_NEAR(tl_curve_eval(&c, 0.3), 0.39200000000000013, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1.7), 0.48903703703703727, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 3.6), -0.41921693121693149, 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 3.6 + 4e5), -0.41921693121693149, 1e-8);
     tl_curve_free(&c);
 }
 
@@ -503,11 +688,19 @@ static void test_extrapolation(void)
     tl_curve_prepare(&c);
     CHECK(tl_curve_eval(&c, -5.0) == 1.0);
     CHECK(tl_curve_eval(&c, 1e6) == 3.0);
-    c.extrap = TL_EXTRAP_LINEAR;
+    tl_curve_set_extrap(&c, TL_EXTRAP_LINEAR);
     CHECK_NEAR(tl_curve_eval(&c, 1e6), 1e6 + 1.0, 1e-9);
     CHECK_NEAR(tl_curve_eval(&c, -1e6), 1.0 - 1e6, 1e-9);
-    c.keys[0].interp = TL_INTERP_CONSTANT; /* a step end extrapolates flat */
+    /* Blender follows each END KEY's own interpolation: a constant first
+     * key holds, while the linear last key still continues its chord from
+     * the step (before issue 13 tideline held here: the segment's rule). */
+    c.keys[0].interp = TL_INTERP_CONSTANT;
     CHECK(tl_curve_eval(&c, -3.0) == 1.0);
+    CHECK_NEAR(tl_curve_eval(&c, 5.0), 6.0, 1e-15);
+    /* ... and a constant last key holds after a linear segment. */
+    c.keys[0].interp = TL_INTERP_LINEAR;
+    c.keys[1].interp = TL_INTERP_CONSTANT;
+    CHECK_NEAR(tl_curve_eval(&c, -3.0), -2.0, 1e-15);
     CHECK(tl_curve_eval(&c, 5.0) == 3.0);
     tl_curve_free(&c);
 
@@ -515,7 +708,7 @@ static void test_extrapolation(void)
     tl_curve_init(&c);
     add(&c, key(0.0, 0.0, TL_INTERP_BEZIER));
     add(&c, key(1.0, 2.0, TL_INTERP_BEZIER));
-    c.extrap = TL_EXTRAP_LINEAR;
+    tl_curve_set_extrap(&c, TL_EXTRAP_LINEAR);
     tl_curve_prepare(&c);
     CHECK_NEAR(tl_curve_eval(&c, 1e6), 2.0 + 2.0 * (1e6 - 1.0), 1e-6);
     CHECK_NEAR(tl_curve_eval(&c, -3.0), -6.0, 1e-12);
@@ -530,7 +723,7 @@ static void test_extrapolation(void)
     add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
     add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
     add(&c, key(2.5, 0.0, TL_INTERP_LINEAR));
-    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
     CHECK_NEAR(tl_curve_eval(&c, 3.0), 0.5, 1e-15);
     CHECK_NEAR(tl_curve_eval(&c, 1e6 + 0.5), 0.5, 1e-9);
@@ -544,11 +737,11 @@ static void test_extrapolation(void)
     tl_curve_init(&c);
     add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
     add(&c, key(0.3, 3.0, TL_INTERP_LINEAR));
-    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
     CHECK_NEAR(tl_curve_eval(&c, 1e6), 1.0, 1e-8);
     /* Cycle with offset: each cycle adds 3. */
-    c.extrap = TL_EXTRAP_CYCLE_OFFSET;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE_OFFSET);
     CHECK_NEAR(tl_curve_eval(&c, 1e6), 3333333.0 * 3.0 + 1.0, 1e-6);
     CHECK_NEAR(tl_curve_eval(&c, 0.45), 4.5, 1e-12);
     CHECK_NEAR(tl_curve_eval(&c, -0.15), -1.5, 1e-12);
@@ -557,7 +750,7 @@ static void test_extrapolation(void)
     tl_curve_init(&c);
     add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
     add(&c, key(1.0, 2.0, TL_INTERP_LINEAR));
-    c.extrap = TL_EXTRAP_CYCLE_OFFSET;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE_OFFSET);
     tl_curve_prepare(&c);
     CHECK_NEAR(tl_curve_eval(&c, 1e6 + 0.25), 2e6 + 0.5, 1e-6);
     CHECK_NEAR(tl_curve_eval(&c, -1e6 + 0.25), -2e6 + 0.5, 1e-6);
@@ -567,7 +760,7 @@ static void test_extrapolation(void)
     tl_curve_init(&c);
     add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
     add(&c, key(2.0, 1.0, TL_INTERP_LINEAR));
-    c.extrap = TL_EXTRAP_PINGPONG;
+    tl_curve_set_extrap(&c, TL_EXTRAP_PINGPONG);
     tl_curve_prepare(&c);
     CHECK_NEAR(tl_curve_eval(&c, 3.0), 0.5, 1e-15);
     CHECK_NEAR(tl_curve_eval(&c, 4.5), 0.25, 1e-15);
@@ -580,11 +773,76 @@ static void test_extrapolation(void)
 
     /* Cyclic Bezier curve at 1e6 s: the value one period later matches. */
     prepared3(&c, 0, 0, 0.7, 2, 1.9, 0, TL_HANDLE_AUTO_CLAMPED);
-    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
     double base = tl_curve_eval(&c, 1.1);
     double far = 1.1 + 1.9 * 526316.0; /* ~1e6 */
     CHECK_NEAR(tl_curve_eval(&c, far), base, 1e-8);
+    tl_curve_free(&c);
+}
+
+/* Cycle seams, per-side modes and repeat counts (Blender's Cycles
+ * modifier). Expected values from tests/blender_curve_ref.py. */
+static void test_cycles_modifier(void)
+{
+    /* Issue 13, point 4: the last key's value at the end of every cycle
+     * (t = 1, 2, 3), the first key's at the start of every cycle before the
+     * keys (t = -1, -2): each seam belongs to the copy nearer the keys. */
+    tl_curve c;
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
+    tl_curve_prepare(&c);
+    CHECK(tl_curve_eval(&c, 1.0) == 1.0);
+    CHECK(tl_curve_eval(&c, 2.0) == 1.0); /* 0 before issue 13 */
+    CHECK(tl_curve_eval(&c, 3.0) == 1.0);
+    CHECK(tl_curve_eval(&c, 1e6) == 1.0);
+    CHECK_NEAR(tl_curve_eval(&c, 1.5), 0.5, 1e-15);
+    CHECK(tl_curve_eval(&c, -1.0) == 0.0);
+    CHECK(tl_curve_eval(&c, -2.0) == 0.0);
+    CHECK_NEAR(tl_curve_eval(&c, -0.5), 0.5, 1e-15);
+    tl_curve_free(&c);
+
+    /* Before: ping-pong 3 times; after: cycle-offset twice; then the end
+     * key's value holds (Blender falls back to the curve's constant
+     * extrapolation, so the offset copy jumps back at 6 s). */
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    add(&c, key(2.0, 0.5, TL_INTERP_LINEAR));
+    c.before = TL_EXTRAP_PINGPONG;
+    c.before_cycles = 3;
+    c.after = TL_EXTRAP_CYCLE_OFFSET;
+    c.after_cycles = 2;
+    tl_curve_prepare(&c);
+    const double t[] = {-0.25, -1.5, -2.0, -3.25, -4.5, -7.0, 2.5, 4.0, 4.5, 3.0, 6.5};
+    const double want[] = {0.25, 0.75, 0.5, 0.75, 0.5, 0.0, 1.0, 1.0, 1.5, 1.5, 0.5};
+    for (int i = 0; i < 11; i++) {
+        if (fabs(tl_curve_eval(&c, t[i]) - want[i]) > 1e-12)
+            fprintf(stderr, "  cycles at t=%g\n", t[i]);
+        CHECK_NEAR(tl_curve_eval(&c, t[i]), want[i], 1e-12);
+    }
+    /* Cuts repeat only as far as the cycles reach: keys 0, 1, a cut at 1.5,
+     * 3 (span 3). */
+    tl_curve_free(&c);
+    tl_curve_init(&c);
+    add(&c, key(0.0, 0.0, TL_INTERP_LINEAR));
+    add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
+    tl_key k = key(1.5, 2.0, TL_INTERP_LINEAR);
+    k.cut = true;
+    add(&c, k);
+    add(&c, key(3.0, 0.5, TL_INTERP_LINEAR));
+    c.before = TL_EXTRAP_PINGPONG;
+    c.before_cycles = 3;
+    c.after = TL_EXTRAP_CYCLE_OFFSET;
+    c.after_cycles = 2;
+    tl_curve_prepare(&c);
+    CHECK(tl_curve_has_cut_between(&c, 4.0, 5.0));    /* 1.5 + 3 */
+    CHECK(tl_curve_has_cut_between(&c, 7.0, 8.0));    /* 1.5 + 6 */
+    CHECK(!tl_curve_has_cut_between(&c, 10.0, 11.0)); /* past the two repeats */
+    CHECK(tl_curve_has_cut_between(&c, -2.0, -1.0));  /* ping-pong: 1.5 mirrored */
+    CHECK(!tl_curve_has_cut_between(&c, -20.0, -19.0));
     tl_curve_free(&c);
 }
 
@@ -655,7 +913,7 @@ static void test_cuts(void)
     k.cut = true;
     add(&c, k);
     add(&c, key(2.0, 6.0, TL_INTERP_LINEAR));
-    c.extrap = TL_EXTRAP_CYCLE;
+    tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
     CHECK(tl_curve_has_cut_between(&c, 1e6 + 0.5, 1e6 + 1.0));
     CHECK(!tl_curve_has_cut_between(&c, 1e6 + 1.0, 1e6 + 1.5));
@@ -667,7 +925,7 @@ static void test_cuts(void)
     /* Ping-pong over [0, 3]: the cut at 1 reappears mirrored at 5 (the jump
      * just after 5, played backwards), then at 7. */
     c.keys[3].t = 3.0;
-    c.extrap = TL_EXTRAP_PINGPONG;
+    tl_curve_set_extrap(&c, TL_EXTRAP_PINGPONG);
     tl_curve_prepare(&c);
     CHECK(tl_curve_eval(&c, 5.0) == 5.0 && tl_curve_eval(&c, 5.5) == 0.5);
     CHECK(!tl_curve_has_cut_between(&c, 4.5, 5.0));
@@ -728,7 +986,7 @@ static void test_stability(void)
     /* Non-finite times never give non-finite values. */
     prepared3(&c, 0, 0, 1, 1, 2, 0, TL_HANDLE_AUTO);
     for (int m = 0; m < TL_EXTRAP_COUNT; m++) {
-        c.extrap = (tl_extrap)m;
+        tl_curve_set_extrap(&c, (tl_extrap)m);
         tl_curve_prepare(&c);
         CHECK(isfinite(tl_curve_eval(&c, INFINITY)));
         CHECK(isfinite(tl_curve_eval(&c, -INFINITY)));
@@ -833,11 +1091,15 @@ static void test_names(void)
 int main(void)
 {
     test_ease();
+    test_ease_params();
     test_constant_linear_ease();
     test_spline();
     test_handles();
+    test_blender_handles();
+    test_smoothing();
     test_bezier_segments();
     test_extrapolation();
+    test_cycles_modifier();
     test_cuts();
     test_stability();
     test_validation();

@@ -243,6 +243,58 @@ static void test_extrapolation(void)
     tl_timeline_free(&tl);
 }
 
+/* What Blender authors reach for (issue 13): easing settings, per-side
+ * extrapolation with repeat counts, per-side handle types, smoothing.
+ * Elastic and cycle values from tests/blender_curve_ref.py (Blender 3.4's
+ * formulas at 30 fps). */
+static void test_blender_options(void)
+{
+    tl_timeline tl;
+    if (!parse_ok("tideline 1\nfps 30\n"
+                  "key render.exposure ease-out-elastic amplitude 0.5 period 6f\n"
+                  "  0s 0\n  1s 10\n"
+                  "key ocean.speed ease-in-elastic\n  0s 0\n  1s 10\n"
+                  "key ocean.radial_phase linear before ping-pong 2 after cycle-offset 1\n"
+                  "  0s 0\n  1s 1\n  2s 0.5\n"
+                  "key camera.fov bezier smoothing continuous\n"
+                  "  0s 60deg\n"
+                  "  1s 50deg left vector right free 0.5s 2deg\n"
+                  "  2s 40deg right auto left aligned -0.25s 1deg\n"
+                  "  3s 45deg ease-in-back back 0\n"
+                  "  4s 50deg\n",
+                  &tl))
+        return;
+    CHECK_NEAR(at(&tl, 0.3, "render.exposure", 0), 10.0625, 1e-12);
+    CHECK_NEAR(at(&tl, 0.5, "render.exposure", 0), 10.015625, 1e-12);
+    /* An inserted key's defaults: amplitude 0.8, period 4.1 frames. */
+    CHECK_NEAR(at(&tl, 0.8, "ocean.speed", 0), -0.19473908477555579, 1e-12);
+    const tl_track *fov = &tl.tracks[tl_channel_index(tl_channel_find("camera.fov"))];
+    const tl_curve *c = &fov->curve[0];
+    CHECK(c->smoothing == TL_SMOOTH_CONTINUOUS && c->fps == 30.0);
+    CHECK(c->keys[0].ease.back == TL_EASE_BACK_OVERSHOOT && c->keys[0].ease.period == 4.1);
+    CHECK(c->keys[1].left_type == TL_HANDLE_VECTOR && c->keys[1].right_type == TL_HANDLE_FREE);
+    CHECK_NEAR(c->keys[1].right.t, 1.5, 1e-15);
+    CHECK_NEAR(c->keys[1].right.v, 52.0 * DEG, 1e-15);
+    CHECK(c->keys[2].left_type == TL_HANDLE_ALIGNED && c->keys[2].right_type == TL_HANDLE_AUTO);
+    /* back 0: a plain cubic from 45 to 50 degrees. */
+    CHECK(c->keys[3].interp == TL_INTERP_EASE && c->keys[3].ease.back == 0.0);
+    CHECK_NEAR(at(&tl, 3.5, "camera.fov", 0), (45.0 + 5.0 / 8.0) * DEG, 1e-12);
+    const tl_track *exp = &tl.tracks[tl_channel_index(tl_channel_find("render.exposure"))];
+    CHECK(exp->curve[0].keys[0].ease.amplitude == 0.5);
+    CHECK_NEAR(exp->curve[0].keys[0].ease.period, 6.0, 1e-12); /* frames */
+    /* Ping-pong twice before, one offset cycle after, then the end holds. */
+    CHECK_NEAR(at(&tl, -1.5, "ocean.radial_phase", 0), 0.75, 1e-12);
+    CHECK(at(&tl, -5.0, "ocean.radial_phase", 0) == 0.0);
+    CHECK_NEAR(at(&tl, 3.0, "ocean.radial_phase", 0), 1.5, 1e-12);
+    CHECK(at(&tl, 4.5, "ocean.radial_phase", 0) == 0.5);
+    tl_timeline_free(&tl);
+
+    /* Handles and elastic periods are in frames: fps must come first. */
+    CHECK(parse_fails("tideline 1\nkey render.exposure\n  0s 1\n  1s 2\nfps 30\n"));
+    CHECK(parse_fails("tideline 1\nkey render.exposure after linear 2\n  0s 1\n"));
+    CHECK(parse_fails("tideline 1\nkey render.exposure\n  0s 1 left\n"));
+}
+
 static void test_shortest(void)
 {
     tl_timeline tl;
@@ -724,6 +776,7 @@ int main(void)
     test_angle_and_length_units();
     test_default_set_key();
     test_extrapolation();
+    test_blender_options();
     test_shortest();
     test_cuts();
     test_look_at_boat();

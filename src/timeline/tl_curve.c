@@ -15,6 +15,8 @@ static const char *const extrap_names[TL_EXTRAP_COUNT] = {
     "constant", "linear", "cycle", "cycle-offset", "ping-pong",
 };
 
+static const char *const smoothing_names[TL_SMOOTH_COUNT] = {"none", "continuous"};
+
 static int name_index(const char *const *names, int count, const char *name)
 {
     if (!name)
@@ -64,6 +66,19 @@ bool tl_extrap_from_name(const char *name, tl_extrap *out)
     return i >= 0;
 }
 
+const char *tl_smoothing_name(tl_smoothing smoothing)
+{
+    return (unsigned)smoothing < TL_SMOOTH_COUNT ? smoothing_names[smoothing] : NULL;
+}
+
+bool tl_smoothing_from_name(const char *name, tl_smoothing *out)
+{
+    int i = name_index(smoothing_names, TL_SMOOTH_COUNT, name);
+    if (i >= 0 && out)
+        *out = (tl_smoothing)i;
+    return i >= 0;
+}
+
 /* ---- storage ---------------------------------------------------------- */
 
 tl_key tl_key_make(double t, double v, tl_interp interp)
@@ -78,12 +93,23 @@ tl_key tl_key_make(double t, double v, tl_interp interp)
     k.left_type = k.right_type = TL_HANDLE_AUTO_CLAMPED;
     k.left.t = k.right.t = t;
     k.left.v = k.right.v = v;
+    k.ease.back = TL_EASE_BACK_OVERSHOOT;
+    k.ease.amplitude = TL_EASE_BLENDER_AMPLITUDE;
+    k.ease.period = TL_EASE_BLENDER_PERIOD_FRAMES;
     return k;
 }
 
 void tl_curve_init(tl_curve *c)
 {
     memset(c, 0, sizeof *c);
+    c->fps = 24.0;
+}
+
+void tl_curve_set_extrap(tl_curve *c, tl_extrap mode)
+{
+    c->before = c->after = mode;
+    c->before_cycles = c->after_cycles = 0;
+    c->prepared = false;
 }
 
 void tl_curve_free(tl_curve *c)
@@ -127,8 +153,12 @@ static int key_error(size_t i, size_t *bad_key, tl_error *err, const char *what)
 
 int tl_curve_validate(const tl_curve *c, size_t *bad_key, tl_error *err)
 {
-    if ((unsigned)c->extrap >= TL_EXTRAP_COUNT)
+    if ((unsigned)c->before >= TL_EXTRAP_COUNT || (unsigned)c->after >= TL_EXTRAP_COUNT)
         return key_error(0, bad_key, err, "invalid extrapolation mode");
+    if ((unsigned)c->smoothing >= TL_SMOOTH_COUNT)
+        return key_error(0, bad_key, err, "invalid auto-handle smoothing");
+    if (!(c->fps > 0.0) || !isfinite(c->fps))
+        return key_error(0, bad_key, err, "frames per second must be positive");
     for (size_t i = 0; i < c->count; i++) {
         const tl_key *k = &c->keys[i];
         if (!isfinite(k->t))
@@ -140,6 +170,9 @@ int tl_curve_validate(const tl_curve *c, size_t *bad_key, tl_error *err)
         if (k->interp == TL_INTERP_EASE && ((unsigned)k->ease_family >= TL_EASE_FAMILY_COUNT ||
                                             (unsigned)k->ease_dir >= TL_EASE_DIR_COUNT))
             return key_error(i, bad_key, err, "invalid easing");
+        if (!(k->ease.back >= 0.0 && k->ease.amplitude >= 0.0 && k->ease.period >= 0.0) ||
+            !isfinite(k->ease.back + k->ease.amplitude + k->ease.period))
+            return key_error(i, bad_key, err, "easing settings must be finite and not negative");
         if ((unsigned)k->left_type >= TL_HANDLE_COUNT ||
             (unsigned)k->right_type >= TL_HANDLE_COUNT)
             return key_error(i, bad_key, err, "invalid handle type");
@@ -304,7 +337,7 @@ static double eval_bezier(const tl_key *k0, const tl_key *k1, double t)
 
 /* ---- evaluation --------------------------------------------------------- */
 
-static double eval_segment(const tl_key *k0, const tl_key *k1, double t)
+static double eval_segment(const tl_curve *c, const tl_key *k0, const tl_key *k1, double t)
 {
     double h = k1->t - k0->t;
     double u = (t - k0->t) / h;
@@ -315,8 +348,11 @@ static double eval_segment(const tl_key *k0, const tl_key *k1, double t)
     switch (k0->interp) {
     case TL_INTERP_LINEAR:
         return (1.0 - u) * k0->v + u * k1->v;
-    case TL_INTERP_EASE:
-        return k0->v + (k1->v - k0->v) * tl_ease(k0->ease_family, k0->ease_dir, u);
+    case TL_INTERP_EASE: {
+        tl_ease_params p = k0->ease;
+        p.period /= c->fps; /* frames -> seconds, the segment's unit */
+        return k0->v + tl_ease_segment(k0->ease_family, k0->ease_dir, &p, u, k1->v - k0->v, h);
+    }
     case TL_INTERP_SPLINE: {
         double u2 = u * u, u3 = u2 * u;
         return (2.0 * u3 - 3.0 * u2 + 1.0) * k0->v + (u3 - 2.0 * u2 + u) * h * k0->slope +
@@ -347,60 +383,82 @@ static double eval_inside(const tl_curve *c, double t)
     }
     if (keys[lo + 1].cut)
         return keys[lo].v; /* hold until the jump */
-    return eval_segment(&keys[lo], &keys[lo + 1], t);
+    return eval_segment(c, &keys[lo], &keys[lo + 1], t);
 }
 
-/* dv/dt of the end segment leaving the curve at its first (at_end false)
- * or last key, as Blender extrapolates linearly. */
+/* dv/dt leaving the curve at its first (at_end false) or last key. As in
+ * Blender, it follows the END KEY's own interpolation, even after the last
+ * key, which starts no segment: constant holds, linear continues the chord
+ * from its neighbour, Bezier and ease keys their outer handle; a spline key
+ * (tideline's own) its tangent. */
 static double end_slope(const tl_curve *c, bool at_end)
 {
     size_t n = c->count;
-    size_t i = at_end ? n - 2 : 0; /* segment i -> i + 1 */
-    const tl_key *k0 = &c->keys[i], *k1 = &c->keys[i + 1];
-    double h = k1->t - k0->t;
-    if (k1->cut || !(h > 0.0))
-        return 0.0;
-    switch (k0->interp) {
+    const tl_key *e = at_end ? &c->keys[n - 1] : &c->keys[0];
+    const tl_key *nb = at_end ? &c->keys[n - 2] : &c->keys[1];
+    if (at_end ? e->cut : nb->cut)
+        return 0.0; /* the end key is alone in its section */
+    double dt = 0.0, dv = 0.0;
+    switch (e->interp) {
     case TL_INTERP_CONSTANT:
         return 0.0;
-    case TL_INTERP_BEZIER: {
-        /* Blender uses the outer handle of the end key. */
-        const tl_key *e = at_end ? k1 : k0;
+    case TL_INTERP_LINEAR:
+        dt = e->t - nb->t;
+        dv = e->v - nb->v;
+        break;
+    case TL_INTERP_SPLINE: return e->slope;
+    default: {
         tl_curve_point hd = at_end ? e->right : e->left;
-        double dt = e->t - hd.t;
-        if (dt == 0.0)
-            return 0.0;
-        return (e->v - hd.v) / dt;
+        dt = e->t - hd.t;
+        dv = e->v - hd.v;
+        break;
     }
-    case TL_INTERP_SPLINE:
-        return at_end ? k1->slope : k0->slope;
-    default:
-        return (k1->v - k0->v) / h;
     }
+    return dt != 0.0 ? dv / dt : 0.0;
 }
 
-/* Maps t into [t0, t0 + span] for the cyclic modes; *cycle gets the index of
- * the repetition (for the offset mode). */
-static double wrap_time(tl_extrap mode, double t, double t0, double span, double *cycle)
+static bool is_cyclic(tl_extrap mode)
 {
-    double rel = t - t0;
-    if (mode == TL_EXTRAP_PINGPONG) {
-        double d = fmod(rel, 2.0 * span);
-        if (d < 0.0)
-            d += 2.0 * span;
-        if (d > span)
-            d = 2.0 * span - d;
-        *cycle = 0.0;
-        return t0 + fmax(0.0, fmin(span, d));
+    return mode == TL_EXTRAP_CYCLE || mode == TL_EXTRAP_CYCLE_OFFSET || mode == TL_EXTRAP_PINGPONG;
+}
+
+/* Blender's Cycles modifier (fcm_cycles_time): maps t beyond the keys into
+ * [first, last] and gives the value offset of its cycle. Seams: each repeat
+ * is a closed copy of the keys, and where two meet the one nearer the keys
+ * wins, so after the keys a seam shows the last key's value (the end of a
+ * cycle) and before them the first key's (in ping-pong the copies alternate
+ * direction, so odd seams swap). False where this side does not repeat. */
+static bool cycle_time(const tl_curve *c, bool after, double t, double *mapped, double *offset)
+{
+    tl_extrap mode = after ? c->after : c->before;
+    unsigned count = after ? c->after_cycles : c->before_cycles;
+    const tl_key *first = &c->keys[0], *last = &c->keys[c->count - 1];
+    double span = last->t - first->t;
+    if (!is_cyclic(mode) || !(span > 0.0) || !isfinite(t))
+        return false;
+    double rel = t - (after ? last->t : first->t);
+    if (count > 0 && fabs(rel) > count * span)
+        return false;                            /* past the repeats: the end key holds */
+    double ct = fmod(rel, span);                 /* exact; the sign of rel */
+    double whole = nearbyint((rel - ct) / span); /* signed whole spans, consistent with ct */
+    bool odd = fmod(fabs(whole), 2.0) != 0.0;
+    *offset = 0.0;
+    if (mode == TL_EXTRAP_CYCLE_OFFSET) {
+        double k = after ? whole + (ct > 0.0) : whole - (ct < 0.0);
+        *offset = k * (last->v - first->v);
     }
-    double d = fmod(rel, span); /* exact: fmod never rounds */
-    if (d < 0.0)
-        d += span;
-    if (d >= span)
-        d = 0.0;
-    /* Derive the count from d so the two always agree. */
-    *cycle = nearbyint((rel - d) / span);
-    return t0 + d;
+    if (ct == 0.0) {
+        bool at_last = mode == TL_EXTRAP_PINGPONG && odd ? !after : after;
+        *mapped = at_last ? last->t : first->t;
+    } else if (mode == TL_EXTRAP_PINGPONG && !odd) {
+        *mapped = (after ? last->t : first->t) - ct; /* played backwards */
+    } else {
+        *mapped = first->t + ct;
+        if (*mapped < first->t)
+            *mapped += span;
+    }
+    *mapped = fmax(first->t, fmin(last->t, *mapped));
+    return true;
 }
 
 double tl_curve_eval(const tl_curve *c, double t)
@@ -416,30 +474,15 @@ double tl_curve_eval(const tl_curve *c, double t)
     if (n == 1)
         return first->v;
     bool after = t > last->t;
-    double span = last->t - first->t;
-    switch (c->extrap) {
-    case TL_EXTRAP_LINEAR: {
-        if (!isfinite(t))
-            return after ? last->v : first->v;
-        const tl_key *e = after ? last : first;
+    const tl_key *e = after ? last : first;
+    double mapped, offset;
+    if (cycle_time(c, after, t, &mapped, &offset))
+        return eval_inside(c, mapped) + offset;
+    if ((after ? c->after : c->before) == TL_EXTRAP_LINEAR && isfinite(t)) {
         double v = e->v + end_slope(c, after) * (t - e->t);
         return isfinite(v) ? v : e->v;
     }
-    case TL_EXTRAP_CYCLE:
-    case TL_EXTRAP_CYCLE_OFFSET:
-    case TL_EXTRAP_PINGPONG: {
-        if (!(span > 0.0) || !isfinite(t))
-            break;
-        double cycle;
-        double v = eval_inside(c, wrap_time(c->extrap, t, first->t, span, &cycle));
-        if (c->extrap == TL_EXTRAP_CYCLE_OFFSET)
-            v += cycle * (last->v - first->v);
-        return v;
-    }
-    default:
-        break;
-    }
-    return after ? last->v : first->v;
+    return e->v;
 }
 
 /* ---- cuts --------------------------------------------------------------- */
@@ -463,17 +506,13 @@ static bool window_has_cut(const tl_curve *c, double a, double b)
     return false;
 }
 
-bool tl_curve_has_cut_between(const tl_curve *c, double t0, double t1)
+/* Any image of a cut key in (t0, t1] when the keys repeat forever with
+ * period span (2 span, mirrored, for ping-pong). */
+static bool periodic_has_cut(const tl_curve *c, bool pingpong, double t0, double t1)
 {
     size_t n = c->count;
-    if (n < 2 || !(t1 > t0))
-        return false;
     double first = c->keys[0].t, span = c->keys[n - 1].t - first;
-    bool cyclic = c->extrap == TL_EXTRAP_CYCLE || c->extrap == TL_EXTRAP_CYCLE_OFFSET ||
-                  c->extrap == TL_EXTRAP_PINGPONG;
-    if (!cyclic || !(span > 0.0))
-        return window_has_cut(c, t0, t1);
-    double period = c->extrap == TL_EXTRAP_PINGPONG ? 2.0 * span : span;
+    double period = pingpong ? 2.0 * span : span;
     bool any = window_has_cut(c, first, first + span);
     if (!any || t1 - t0 >= period || !isfinite(t1 - t0))
         return any;
@@ -492,11 +531,37 @@ bool tl_curve_has_cut_between(const tl_curve *c, double t0, double t1)
             return true;
         /* Played backwards the jump comes just after the mirrored time, so
          * the interval is closed at its start there. */
-        if (c->extrap == TL_EXTRAP_PINGPONG) {
+        if (pingpong) {
             double m0 = period - x, m1 = 2.0 * period - x;
             if ((m0 >= a && m0 < b) || (m1 >= a && m1 < b))
                 return true;
         }
+    }
+    return false;
+}
+
+bool tl_curve_has_cut_between(const tl_curve *c, double t0, double t1)
+{
+    size_t n = c->count;
+    if (n < 2 || !(t1 > t0))
+        return false;
+    if (window_has_cut(c, t0, t1))
+        return true;
+    double first = c->keys[0].t, last = c->keys[n - 1].t, span = last - first;
+    if (!(span > 0.0))
+        return false;
+    /* The repeats on each side, as far as their counts reach. */
+    if (is_cyclic(c->before) && t0 < first) {
+        double lo = c->before_cycles ? fmax(t0, first - c->before_cycles * span) : t0;
+        double hi = fmin(t1, first);
+        if (hi > lo && periodic_has_cut(c, c->before == TL_EXTRAP_PINGPONG, lo, hi))
+            return true;
+    }
+    if (is_cyclic(c->after) && t1 > last) {
+        double lo = fmax(t0, last);
+        double hi = c->after_cycles ? fmin(t1, last + c->after_cycles * span) : t1;
+        if (hi > lo && periodic_has_cut(c, c->after == TL_EXTRAP_PINGPONG, lo, hi))
+            return true;
     }
     return false;
 }

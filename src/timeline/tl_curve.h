@@ -44,6 +44,13 @@ typedef enum tl_extrap {
     TL_EXTRAP_COUNT
 } tl_extrap;
 
+/* Auto-handle smoothing (Blender's F-curve setting). */
+typedef enum tl_smoothing {
+    TL_SMOOTH_NONE,       /* each key's handles from its neighbours alone (default) */
+    TL_SMOOTH_CONTINUOUS, /* "Continuous Acceleration": C2 through runs of auto keys */
+    TL_SMOOTH_COUNT
+} tl_smoothing;
+
 /* A 2-D point in (time, value) space: a Bezier handle. */
 typedef struct tl_curve_point {
     double t, v;
@@ -59,21 +66,40 @@ typedef struct tl_key {
      * handles; tl_curve_prepare computes the others (and aligns). */
     tl_curve_point left, right;
     bool cut;                  /* the channel jumps here; nothing interpolates across */
+    /* Back's overshoot, elastic's amplitude (value units) and period in
+     * FRAMES (Blender's unit, converted with the curve's fps; 0: 0.3 of the
+     * segment), for the ease segment after this key. */
+    tl_ease_params ease;
     double slope;              /* computed: spline tangent dv/dt at this key */
+    bool locked;               /* computed: auto handles held flat (an extreme or an eased
+                                  end; Blender's "locked"), which smoothing leaves alone */
 } tl_key;
 
 typedef struct tl_curve {
     tl_key *keys; /* owned, time order */
     size_t count, capacity;
-    tl_extrap extrap;
+    /* Before the first and after the last key (tl_curve_set_extrap sets
+     * both). The cyclic modes repeat `cycles` times, 0 = forever, and then
+     * hold the end key's value (Blender's Cycles modifier). */
+    tl_extrap before, after;
+    unsigned before_cycles, after_cycles;
+    tl_smoothing smoothing;
+    /* Frames per second: Blender measures aligned handle lengths (and the
+     * default length of a missing handle) in (frame, value) space and elastic
+     * periods in frames. tl_curve_init sets 24. */
+    double fps;
     bool prepared; /* cleared by tl_curve_add_key, set by tl_curve_prepare */
 } tl_curve;
 
 /* A key with defaults: auto-clamped handles at the key, ease-in-out-sine
- * for TL_INTERP_EASE, no cut. */
+ * for TL_INTERP_EASE with the settings Blender gives an inserted key (back
+ * 1.70158, amplitude 0.8, period 4.1 frames), no cut. */
 tl_key tl_key_make(double t, double v, tl_interp interp);
 
 void tl_curve_init(tl_curve *c);
+
+/* The same extrapolation on both sides, repeating forever. */
+void tl_curve_set_extrap(tl_curve *c, tl_extrap mode);
 void tl_curve_free(tl_curve *c);
 
 /* Appends a copy of key (order is checked by tl_curve_validate). */
@@ -110,5 +136,8 @@ const char *tl_handle_type_name(tl_handle_type type);
 bool tl_handle_type_from_name(const char *name, tl_handle_type *out);
 const char *tl_extrap_name(tl_extrap extrap);
 bool tl_extrap_from_name(const char *name, tl_extrap *out);
+/* "none" "continuous". */
+const char *tl_smoothing_name(tl_smoothing smoothing);
+bool tl_smoothing_from_name(const char *name, tl_smoothing *out);
 
 #endif

@@ -64,37 +64,66 @@ static double bounce_out(double u)
     return k * u * u + 0.984375;
 }
 
-/* Penner's elastic with amplitude 1 (so s = p/4); x runs over [-1, 0]. */
-static double elastic_wave(double x, double period)
+/* Blender's elastic_blend: with an amplitude below the change the wave is
+ * scaled down by amplitude / |change| (to nothing for 0), blending linearly
+ * back to full size over the last quarter period before the end it eases
+ * into, where x (the shifted normalised time) reaches 0. */
+static double elastic_blend(double x, double change, double duration, double amplitude, double s)
 {
-    double s = period / 4.0;
-    return pow(2.0, 10.0 * x) * sin((x - s) * (2.0 * M_PI) / period);
+    double f = 1.0;
+    if (change != 0.0) {
+        double reach = fabs(s), at = fabs(x * duration);
+        f = amplitude != 0.0 ? amplitude / fabs(change) : 0.0;
+        if (at < reach) {
+            double l = at / reach;
+            f = f * l + (1.0 - l);
+        }
+    }
+    return f;
 }
 
-static double ease_elastic(tl_ease_dir dir, double u)
+/* BLI_easing_elastic_ease_{in,out,in_out} less the start value, in double. */
+static double ease_elastic(tl_ease_dir dir, double u, double change, double duration,
+                           double amplitude, double period)
 {
     if (u <= 0.0)
         return 0.0;
     if (u >= 1.0)
-        return 1.0;
-    switch (dir) {
-    case TL_EASE_IN:
-        return -elastic_wave(u - 1.0, TL_EASE_ELASTIC_PERIOD);
-    case TL_EASE_OUT:
-        /* Point-mirror of ease-in: 1 - in(1 - u). */
-        return 1.0 + elastic_wave(-u, TL_EASE_ELASTIC_PERIOD);
-    default: {
-        double x = 2.0 * u - 1.0;
-        if (x < 0.0)
-            return -0.5 * elastic_wave(x, TL_EASE_ELASTIC_PERIOD_IN_OUT);
-        return 1.0 + 0.5 * elastic_wave(-x, TL_EASE_ELASTIC_PERIOD_IN_OUT);
+        return change;
+    double x; /* Blender's shifted time: 0 where the wave is largest */
+    if (dir == TL_EASE_IN)
+        x = u - 1.0;
+    else if (dir == TL_EASE_OUT)
+        x = -u;
+    else
+        x = 2.0 * u - 1.0;
+    if (period == 0.0)
+        period = duration *
+                 (dir == TL_EASE_IN_OUT ? TL_EASE_ELASTIC_PERIOD_IN_OUT : TL_EASE_ELASTIC_PERIOD);
+    double s, f = 1.0;
+    if (amplitude == 0.0 || amplitude < fabs(change)) {
+        s = period / 4.0;
+        f = elastic_blend(x, change, duration, amplitude, s);
+        amplitude = change;
+    } else {
+        s = period / (2.0 * M_PI) * asin(change / amplitude);
     }
+    /* In (and the first half of in-out) eases out of the start value,
+     * out (and the second half) into the end value. */
+    bool into_end = dir == TL_EASE_OUT || (dir == TL_EASE_IN_OUT && x >= 0.0);
+    if (dir == TL_EASE_IN_OUT) {
+        f *= into_end ? 0.5 : -0.5;
+        x = into_end ? -x : x;
+    } else if (dir == TL_EASE_IN) {
+        f = -f;
     }
+    double wave =
+        f * amplitude * pow(2.0, 10.0 * x) * sin((x * duration - s) * (2.0 * M_PI) / period);
+    return into_end ? wave + change : wave;
 }
 
-static double ease_back(tl_ease_dir dir, double u)
+static double ease_back(tl_ease_dir dir, double u, double s)
 {
-    double s = TL_EASE_BACK_OVERSHOOT;
     switch (dir) {
     case TL_EASE_IN:
         return u * u * ((s + 1.0) * u - s);
@@ -111,23 +140,23 @@ static double ease_back(tl_ease_dir dir, double u)
     }
 }
 
+/* Penner's expo misses 0 and 1 by 2^-10; Blender (2.91 on) rescales it so
+ * the curve starts at 0 and ends at 1 without a jump. */
+static double expo_in(double u)
+{
+    const double lo = 1.0 / 1024.0;
+    return u <= 0.0 ? 0.0 : (pow(2.0, 10.0 * (u - 1.0)) - lo) / (1.0 - lo);
+}
+
 static double ease_expo(tl_ease_dir dir, double u)
 {
-    /* Penner's expo misses 0 and 1 by 2^-10; pin the ends as Blender does. */
-    if (u <= 0.0)
-        return 0.0;
-    if (u >= 1.0)
-        return 1.0;
     switch (dir) {
-    case TL_EASE_IN:
-        return pow(2.0, 10.0 * (u - 1.0));
-    case TL_EASE_OUT:
-        return 1.0 - pow(2.0, -10.0 * u);
+    case TL_EASE_IN: return expo_in(u);
+    case TL_EASE_OUT: return 1.0 - expo_in(1.0 - u);
     default:
-        u *= 2.0;
-        if (u < 1.0)
-            return 0.5 * pow(2.0, 10.0 * (u - 1.0));
-        return 0.5 * (2.0 - pow(2.0, -10.0 * (u - 1.0)));
+        if (u <= 0.5)
+            return 0.5 * expo_in(2.0 * u);
+        return 0.5 + 0.5 * (1.0 - expo_in(2.0 - 2.0 * u));
     }
 }
 
@@ -197,15 +226,29 @@ double tl_ease(tl_ease_family family, tl_ease_dir dir, double u)
         return ease_expo(dir, u);
     case TL_EASE_CIRC:
         return ease_circ(dir, u);
-    case TL_EASE_BACK:
-        return ease_back(dir, u);
+    case TL_EASE_BACK: return ease_back(dir, u, TL_EASE_BACK_OVERSHOOT);
     case TL_EASE_BOUNCE:
         return ease_bounce(dir, u);
-    case TL_EASE_ELASTIC:
-        return ease_elastic(dir, u);
+    case TL_EASE_ELASTIC: return ease_elastic(dir, u, 1.0, 1.0, 1.0, 0.0);
     default:
         return u;
     }
+}
+
+double tl_ease_segment(tl_ease_family family, tl_ease_dir dir, const tl_ease_params *params,
+                       double u, double change, double duration)
+{
+    if (!(u > 0.0))
+        u = 0.0;
+    if (u > 1.0)
+        u = 1.0;
+    if (params && (unsigned)dir < TL_EASE_DIR_COUNT) {
+        if (family == TL_EASE_BACK)
+            return change * ease_back(dir, u, params->back);
+        if (family == TL_EASE_ELASTIC)
+            return ease_elastic(dir, u, change, duration, params->amplitude, params->period);
+    }
+    return change * tl_ease(family, dir, u);
 }
 
 bool tl_ease_from_name(const char *name, tl_ease_family *family, tl_ease_dir *dir)

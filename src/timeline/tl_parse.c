@@ -1,4 +1,5 @@
 #include "tl_parse.h"
+#include "tl_parse_internal.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -9,70 +10,17 @@
 #include <strings.h>
 #include <sys/stat.h>
 
-#define DEG (M_PI / 180.0)
-#define MAX_TOKENS 64
-#define MAX_TIME 1.0e9 /* seconds: ~31 years, far past any cutscene */
-
-typedef struct token {
-    char *s; /* NUL-terminated copy inside the line buffer */
-    int col; /* 1-based */
-    int len;
-} token;
-
-/* BLOCK_SKIP: a `key` or `path` line that was rejected; its indented lines
- * are skipped silently rather than reported as strays. */
-typedef enum block_kind { BLOCK_NONE, BLOCK_KEY, BLOCK_PATH, BLOCK_SKIP } block_kind;
-
-typedef struct parser {
-    const char *name;
-    const char *source; /* the whole text, for excerpts of earlier lines */
-    size_t source_len;
-    tl_timeline *tl;
-    tl_diags *diags;
-    int warning; /* diagnostics added now are warnings */
-    int line_no;
-    const char *line_text; /* the current line, for diagnostics */
-    size_t line_len;
-    int saw_header;
-    int frame_units_line; /* first line that used a time in frames */
-    long keys_total;
-    int stopped;
-
-    /* The open `key` or `path` block. */
-    block_kind block;
-    int block_line;
-    const tl_channel *block_ch;
-    tl_track *block_track;
-    tl_interp block_interp;
-    tl_ease_family block_family;
-    tl_ease_dir block_dir;
-    int block_shortest;
-    tl_path_track *block_path;
-    int block_dims;
-    struct key_source {
-        int line;
-        const char *text;
-        size_t len;
-        int col;
-    } *key_lines; /* where each key/point of the block was written */
-    size_t key_count, key_cap;
-    int block_failed;
-    char buf[TL_PARSE_MAX_LINE + 1]; /* the current line, split into tokens */
-} parser;
-
 static const char *const directives[] = {"tideline", "fps",  "duration", "size",   "quality",
                                          "set",      "key",  "path",     "look",   "follow",
                                          NULL};
 static const char *const key_words[] = {
-    "cut",          "constant",     "step",          "linear",       "bezier",      "spline",
-    "auto-clamped", "auto",         "vector",        "aligned",      "free",        "left",
-    "right",        "ease-in-sine", "ease-out-sine", "ease-in-out-sine", NULL};
+    "cut",           "constant",         "step",    "linear",    "bezier", "spline", "auto-clamped",
+    "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
+    "ease-out-sine", "ease-in-out-sine", "back",    "amplitude", "period", NULL};
 
 /* ---- diagnostics ---- */
 
-static void diag_add(parser *p, int col, int len, const char *hint, const char *fmt, ...)
-    __attribute__((format(printf, 5, 6)));
-static void diag_add(parser *p, int col, int len, const char *hint, const char *fmt, ...)
+void tl_parse_diag(parser *p, int col, int len, const char *hint, const char *fmt, ...)
 {
     tl_diags *d = p->diags;
     if (d->count >= TL_PARSE_MAX_ERRORS) {
@@ -146,13 +94,11 @@ static void diag_at_line(parser *p, int line, const struct key_source *src, cons
     p->line_no = line;
     p->line_text = src ? src->text : NULL;
     p->line_len = src ? src->len : 0;
-    diag_add(p, src ? src->col : 0, 1, NULL, fmt, msg);
+    tl_parse_diag(p, src ? src->col : 0, 1, NULL, fmt, msg);
     p->line_no = saved_line;
     p->line_text = saved_text;
     p->line_len = saved_len;
 }
-
-#define ERR_AT(tok, ...) diag_add(p, (tok)->col, (tok)->len, NULL, __VA_ARGS__)
 
 /* ---- numbers and units ---- */
 
@@ -172,7 +118,7 @@ static const char *display_unit(tl_unit unit)
 }
 
 /* Parses a number with an optional unit suffix; returns 0 on success. */
-static int parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
+int tl_parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
 {
     char *end = NULL;
     errno = 0;
@@ -256,7 +202,7 @@ static int parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
 
 static int parse_time(parser *p, const token *t, double *out)
 {
-    return parse_quantity(p, t, TL_UNIT_TIME, out);
+    return tl_parse_quantity(p, t, TL_UNIT_TIME, out);
 }
 
 /* One component of a channel value, range-checked. */
@@ -284,12 +230,12 @@ static int parse_channel_value(parser *p, const tl_channel *ch, const token *t, 
                 *out = i;
                 return 0;
             }
-        diag_add(p, t->col, t->len, tl_suggest(t->s, ch->names), "%s has no value '%s'",
-                 ch->name, t->s);
+        tl_parse_diag(p, t->col, t->len, tl_suggest(t->s, ch->names), "%s has no value '%s'",
+                      ch->name, t->s);
         return 1;
     }
     double v;
-    if (parse_quantity(p, t, ch->unit, &v))
+    if (tl_parse_quantity(p, t, ch->unit, &v))
         return 1;
     /* A bare angle is degrees; a small one was likely meant as radians. */
     char last = t->len > 0 ? t->s[t->len - 1] : '\0';
@@ -414,9 +360,9 @@ static void key_line(parser *p, token *tok, int n)
     double v[3];
     for (int c = 0; c < ch->components; c++, i++) {
         if (i >= n) {
-            diag_add(p, tok[n - 1].col + tok[n - 1].len, 1, NULL,
-                     "%s needs %d value%s per key, found %d", ch->name, ch->components,
-                     ch->components > 1 ? "s" : "", c);
+            tl_parse_diag(p, tok[n - 1].col + tok[n - 1].len, 1, NULL,
+                          "%s needs %d value%s per key, found %d", ch->name, ch->components,
+                          ch->components > 1 ? "s" : "", c);
             p->block_failed = 1;
             return;
         }
@@ -429,10 +375,12 @@ static void key_line(parser *p, token *tok, int n)
     tl_ease_family family = p->block_family;
     tl_ease_dir dir = p->block_dir;
     tl_handle_type htype = TL_HANDLE_AUTO_CLAMPED;
-    int has_htype = 0, has_left = 0, has_right = 0;
-    double left[4] = {0}, right[4] = {0}; /* dt, then one value per component */
+    int has_htype = 0;
+    tl_handle_side left = {0}, right = {0};
+    tl_ease_params ease = p->block_ease;
     for (; i < n; i++) {
         tl_handle_type h;
+        int got;
         if (tl_interp_from_name(tok[i].s, &interp) || strcmp(tok[i].s, "step") == 0) {
             if (strcmp(tok[i].s, "step") == 0)
                 interp = TL_INTERP_CONSTANT;
@@ -441,31 +389,12 @@ static void key_line(parser *p, token *tok, int n)
         } else if (tl_handle_type_from_name(tok[i].s, &h)) {
             htype = h;
             has_htype = 1;
-        } else if (strcmp(tok[i].s, "left") == 0 || strcmp(tok[i].s, "right") == 0) {
-            double *dst = tok[i].s[0] == 'l' ? left : right;
-            const token *word = &tok[i];
-            if (n - 1 - i < 1 + ch->components) {
-                ERR_AT(word, "'%s' needs a time offset and %d value%s", word->s,
-                       ch->components, ch->components > 1 ? "s" : "");
+        } else if ((got = tl_parse_handle_side(p, ch, tok, n, &i, &left, &right)) != 0 ||
+                   (got = tl_parse_ease_setting(p, ch, tok, n, &i, &ease)) != 0) {
+            if (got < 0) {
                 p->block_failed = 1;
                 return;
             }
-            if (parse_time(p, &tok[++i], &dst[0])) {
-                p->block_failed = 1;
-                return;
-            }
-            for (int c = 0; c < ch->components; c++) {
-                double tmp;
-                if (parse_quantity(p, &tok[++i], ch->unit, &tmp)) {
-                    p->block_failed = 1;
-                    return;
-                }
-                dst[1 + c] = tmp;
-            }
-            if (dst == left)
-                has_left = 1;
-            else
-                has_right = 1;
         } else if (strcmp(tok[i].s, "cut") == 0) {
             ERR_AT(&tok[i], "'cut' goes right after the key's time");
             p->block_failed = 1;
@@ -477,8 +406,8 @@ static void key_line(parser *p, token *tok, int n)
             p->block_failed = 1;
             return;
         } else {
-            diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, key_words),
-                     "unknown key option '%s'", tok[i].s);
+            tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, key_words),
+                          "unknown key option '%s'", tok[i].s);
             p->block_failed = 1;
             return;
         }
@@ -491,7 +420,9 @@ static void key_line(parser *p, token *tok, int n)
         }
         interp = TL_INTERP_CONSTANT;
     }
-    if ((has_left || has_right) && !has_htype)
+    /* An offset without a named type makes the handles free; a type named
+     * for one side overrides the key's type there. */
+    if ((left.has_offset || right.has_offset) && !has_htype)
         htype = TL_HANDLE_FREE;
     if (remember_key_line(p, &tok[0])) {
         ERR_AT(&tok[0], "out of memory");
@@ -502,12 +433,14 @@ static void key_line(parser *p, token *tok, int n)
         tl_key k = tl_key_make(t, v[c], interp);
         k.ease_family = family;
         k.ease_dir = dir;
-        k.left_type = k.right_type = htype;
+        k.left_type = left.has_type ? left.type : htype;
+        k.right_type = right.has_type ? right.type : htype;
         k.cut = cut;
-        if (has_left)
-            k.left = (tl_curve_point){t + left[0], v[c] + left[1 + c]};
-        if (has_right)
-            k.right = (tl_curve_point){t + right[0], v[c] + right[1 + c]};
+        k.ease = ease;
+        if (left.has_offset)
+            k.left = (tl_curve_point){t + left.offset[0], v[c] + left.offset[1 + c]};
+        if (right.has_offset)
+            k.right = (tl_curve_point){t + right.offset[0], v[c] + right.offset[1 + c]};
         tl_error e;
         if (tl_curve_add_key(&p->block_track->curve[c], &k, &e)) {
             ERR_AT(&tok[0], "%s", e.message);
@@ -526,16 +459,18 @@ static void path_line(parser *p, token *tok, int n)
         return;
     }
     if (n - 1 != p->block_dims) {
-        diag_add(p, tok[n - 1].col, tok[n - 1].len, NULL, "a %s path point is TIME %s, found %d "
-                 "value%s", p->block_dims == 2 ? "boat" : "camera",
-                 p->block_dims == 2 ? "X Z" : "X Y Z", n - 1, n - 1 == 1 ? "" : "s");
+        tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL,
+                      "a %s path point is TIME %s, found %d "
+                      "value%s",
+                      p->block_dims == 2 ? "boat" : "camera", p->block_dims == 2 ? "X Z" : "X Y Z",
+                      n - 1, n - 1 == 1 ? "" : "s");
         p->block_failed = 1;
         return;
     }
     int axis[3] = {0, 2, 1}; /* boat: x z; camera: x y z */
     for (int i = 0; i < p->block_dims; i++) {
         int a = p->block_dims == 2 ? axis[i] : i;
-        if (parse_quantity(p, &tok[1 + i], TL_UNIT_LENGTH, &pos[a])) {
+        if (tl_parse_quantity(p, &tok[1 + i], TL_UNIT_LENGTH, &pos[a])) {
             p->block_failed = 1;
             return;
         }
@@ -557,13 +492,13 @@ static void path_line(parser *p, token *tok, int n)
 static int expect_args(parser *p, token *tok, int n, int min, int max, const char *usage)
 {
     if (n - 1 < min) {
-        diag_add(p, tok[n - 1].col + tok[n - 1].len, 1, NULL, "'%s' expects %s", tok[0].s,
-                 usage);
+        tl_parse_diag(p, tok[n - 1].col + tok[n - 1].len, 1, NULL, "'%s' expects %s", tok[0].s,
+                      usage);
         return 1;
     }
     if (n - 1 > max) {
-        diag_add(p, tok[max + 1].col, tok[max + 1].len, NULL,
-                 "unexpected '%s': '%s' expects %s", tok[max + 1].s, tok[0].s, usage);
+        tl_parse_diag(p, tok[max + 1].col, tok[max + 1].len, NULL,
+                      "unexpected '%s': '%s' expects %s", tok[max + 1].s, tok[0].s, usage);
         return 1;
     }
     return 0;
@@ -573,7 +508,7 @@ static const tl_channel *lookup_channel(parser *p, const token *t)
 {
     const tl_channel *ch = tl_channel_find(t->s);
     if (!ch)
-        diag_add(p, t->col, t->len, tl_channel_suggest(t->s), "unknown channel '%s'", t->s);
+        tl_parse_diag(p, t->col, t->len, tl_channel_suggest(t->s), "unknown channel '%s'", t->s);
     return ch;
 }
 
@@ -627,8 +562,8 @@ static void dir_set(parser *p, token *tok, int n)
     if (!ch)
         return;
     if (n - 2 != ch->components) {
-        diag_add(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
-                 ch->name, ch->components, ch->components > 1 ? "s" : "", n - 2);
+        tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
+                      ch->name, ch->components, ch->components > 1 ? "s" : "", n - 2);
         return;
     }
     double v[3] = {0, 0, 0};
@@ -647,7 +582,7 @@ static void dir_set(parser *p, token *tok, int n)
 static void dir_key(parser *p, token *tok, int n)
 {
     if (n < 2) {
-        diag_add(p, tok[0].col + tok[0].len, 1, NULL, "'key' expects a channel name");
+        tl_parse_diag(p, tok[0].col + tok[0].len, 1, NULL, "'key' expects a channel name");
         return;
     }
     const tl_channel *ch = lookup_channel(p, &tok[1]);
@@ -660,27 +595,21 @@ static void dir_key(parser *p, token *tok, int n)
     tl_interp interp = TL_INTERP_BEZIER;
     tl_ease_family family = TL_EASE_SINE;
     tl_ease_dir dir = TL_EASE_IN_OUT;
-    tl_extrap extrap = TL_EXTRAP_CONSTANT;
+    tl_curve shape; /* extrapolation and smoothing for every component */
+    tl_curve_init(&shape);
+    tl_ease_params ease = tl_key_make(0.0, 0.0, TL_INTERP_EASE).ease;
     int shortest = 0;
     for (int i = 2; i < n; i++) {
+        int got;
         if (tl_interp_from_name(tok[i].s, &interp)) {
         } else if (strcmp(tok[i].s, "step") == 0) {
             interp = TL_INTERP_CONSTANT;
         } else if (tl_ease_from_name(tok[i].s, &family, &dir)) {
             interp = TL_INTERP_EASE;
-        } else if (strcmp(tok[i].s, "extrapolate") == 0) {
-            static const char *const modes[] = {"constant", "linear", "cycle", "cycle-offset",
-                                                "ping-pong", NULL};
-            if (i + 1 >= n) {
-                ERR_AT(&tok[i], "'extrapolate' expects constant, linear, cycle, cycle-offset or "
-                                "ping-pong");
+        } else if ((got = tl_parse_curve_option(p, tok, n, &i, &shape)) != 0 ||
+                   (got = tl_parse_ease_setting(p, ch, tok, n, &i, &ease)) != 0) {
+            if (got < 0)
                 return;
-            }
-            if (!tl_extrap_from_name(tok[++i].s, &extrap)) {
-                diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, modes),
-                         "unknown extrapolation '%s'", tok[i].s);
-                return;
-            }
         } else if (strcmp(tok[i].s, "shortest") == 0) {
             if (ch->unit != TL_UNIT_ANGLE) {
                 ERR_AT(&tok[i], "'shortest' applies to angle channels; %s is not one", ch->name);
@@ -688,10 +617,11 @@ static void dir_key(parser *p, token *tok, int n)
             }
             shortest = 1;
         } else {
-            static const char *const opts[] = {"extrapolate", "shortest", "linear", "bezier",
-                                               "spline", "constant", "step", NULL};
-            diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, opts),
-                     "unknown option '%s' for 'key'", tok[i].s);
+            static const char *const opts[] = {
+                "extrapolate", "before",   "after", "smoothing", "shortest",  "linear", "bezier",
+                "spline",      "constant", "step",  "back",      "amplitude", "period", NULL};
+            tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, opts),
+                          "unknown option '%s' for 'key'", tok[i].s);
             return;
         }
     }
@@ -701,8 +631,18 @@ static void dir_key(parser *p, token *tok, int n)
     if (!tr)
         return;
     tr->state = TL_TRACK_KEYED;
-    for (int c = 0; c < ch->components; c++)
-        tr->curve[c].extrap = extrap;
+    for (int c = 0; c < ch->components; c++) {
+        tl_curve *cv = &tr->curve[c];
+        cv->before = shape.before;
+        cv->after = shape.after;
+        cv->before_cycles = shape.before_cycles;
+        cv->after_cycles = shape.after_cycles;
+        cv->smoothing = shape.smoothing;
+        cv->fps = p->tl->fps;
+    }
+    if (!p->first_key_line)
+        p->first_key_line = p->line_no;
+    p->block_ease = ease;
     p->block = BLOCK_KEY;
     p->block_line = p->line_no;
     p->block_ch = ch;
@@ -727,15 +667,15 @@ static void dir_path(parser *p, token *tok, int n)
         dims = 3;
     } else {
         static const char *const names[] = {"boat", "camera", NULL};
-        diag_add(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names),
-                 "paths are for 'boat' or 'camera', not '%s'", tok[1].s);
+        tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names),
+                      "paths are for 'boat' or 'camera', not '%s'", tok[1].s);
         return;
     }
     if (n == 3) {
         if (strcmp(tok[2].s, "constant-speed") != 0) {
             static const char *const opts[] = {"constant-speed", NULL};
-            diag_add(p, tok[2].col, tok[2].len, tl_suggest(tok[2].s, opts),
-                     "unknown path option '%s'", tok[2].s);
+            tl_parse_diag(p, tok[2].col, tok[2].len, tl_suggest(tok[2].s, opts),
+                          "unknown path option '%s'", tok[2].s);
             return;
         }
         pt->path.constant_speed = true;
@@ -757,8 +697,8 @@ static int parse_target(parser *p, token *tok, int n, int first, int dims, int a
                         tl_link *link)
 {
     if (first >= n) {
-        diag_add(p, tok[n - 1].col + tok[n - 1].len, 1, NULL, "expected %s",
-                 allow_point ? "'boat' or a point X Y Z" : "'boat'");
+        tl_parse_diag(p, tok[n - 1].col + tok[n - 1].len, 1, NULL, "expected %s",
+                      allow_point ? "'boat' or a point X Y Z" : "'boat'");
         return 1;
     }
     double *dst;
@@ -778,19 +718,20 @@ static int parse_target(parser *p, token *tok, int n, int first, int dims, int a
         link->target = TL_TARGET_POINT;
         dst = link->point;
     } else {
-        diag_add(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, (const char *const[]){"boat", NULL}),
-                 "only the boat can be followed, not '%s'", tok[i].s);
+        tl_parse_diag(p, tok[i].col, tok[i].len,
+                      tl_suggest(tok[i].s, (const char *const[]){"boat", NULL}),
+                      "only the boat can be followed, not '%s'", tok[i].s);
         return 1;
     }
     if (n - i != dims) {
-        diag_add(p, tok[n - 1].col, tok[n - 1].len, NULL, "expected %d numbers (%s), found %d",
-                 dims, dims == 2 ? "X Z" : "X Y Z", n - i);
+        tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL, "expected %d numbers (%s), found %d",
+                      dims, dims == 2 ? "X Z" : "X Y Z", n - i);
         return 1;
     }
     int axis2[2] = {0, 2};
     for (int c = 0; c < dims; c++) {
         double *v = &dst[dims == 2 ? axis2[c] : c];
-        if (parse_quantity(p, &tok[i + c], TL_UNIT_LENGTH, v))
+        if (tl_parse_quantity(p, &tok[i + c], TL_UNIT_LENGTH, v))
             return 1;
         if (fabs(*v) > 1e9) {
             ERR_AT(&tok[i + c], "'%s' is out of range (|x| <= 1e9 m)", tok[i + c].s);
@@ -822,7 +763,8 @@ static void dir_follow(parser *p, token *tok, int n)
 {
     static const char *const who[] = {"camera", "giant.center", NULL};
     if (n < 2) {
-        diag_add(p, tok[0].col + tok[0].len, 1, NULL, "'follow' expects camera or giant.center");
+        tl_parse_diag(p, tok[0].col + tok[0].len, 1, NULL,
+                      "'follow' expects camera or giant.center");
         return;
     }
     tl_link *link;
@@ -834,8 +776,8 @@ static void dir_follow(parser *p, token *tok, int n)
         link = &p->tl->giant_follow;
         dims = 2;
     } else {
-        diag_add(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, who),
-                 "only camera and giant.center can follow, not '%s'", tok[1].s);
+        tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, who),
+                      "only camera and giant.center can follow, not '%s'", tok[1].s);
         return;
     }
     if (link->target != TL_TARGET_NONE) {
@@ -869,7 +811,7 @@ static void dir_header(parser *p, token *tok, int n)
     } else if (strcmp(d, "fps") == 0) {
         double fps;
         if (expect_args(p, tok, n, 1, 1, "frames per second") ||
-            parse_quantity(p, &tok[1], TL_UNIT_NONE, &fps))
+            tl_parse_quantity(p, &tok[1], TL_UNIT_NONE, &fps))
             return;
         if (!(fps >= 1.0 && fps <= 1000.0)) {
             ERR_AT(&tok[1], "fps %s is outside 1..1000", tok[1].s);
@@ -878,6 +820,13 @@ static void dir_header(parser *p, token *tok, int n)
         if (p->frame_units_line) {
             ERR_AT(&tok[0], "fps must come before line %d, which gives a time in frames",
                    p->frame_units_line);
+            return;
+        }
+        if (p->first_key_line) {
+            ERR_AT(&tok[0],
+                   "fps must come before line %d: keys measure aligned handles and elastic "
+                   "periods in frames",
+                   p->first_key_line);
             return;
         }
         tl->fps = fps;
@@ -916,7 +865,7 @@ static void dir_header(parser *p, token *tok, int n)
         if (tl_quality_preset(tok[1].s, &tl->quality, &e)) {
             static const char *const names[] = {"draft", "preview", "final", "reference",
                                                 "seed", NULL};
-            diag_add(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names), "%s", e.message);
+            tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names), "%s", e.message);
         }
     }
 }
@@ -942,8 +891,8 @@ static void directive(parser *p, token *tok, int n)
     else if (strcmp(d, "follow") == 0)
         dir_follow(p, tok, n);
     else
-        diag_add(p, tok[0].col, tok[0].len, tl_suggest(d, directives), "unknown directive '%s'",
-                 d);
+        tl_parse_diag(p, tok[0].col, tok[0].len, tl_suggest(d, directives),
+                      "unknown directive '%s'", d);
 }
 
 /* ---- lines ---- */
@@ -963,12 +912,12 @@ static int tokenize(parser *p, char *buf, size_t len, token *tok)
             continue;
         }
         if (c < 0x20 || c >= 0x7f) {
-            diag_add(p, (int)i + 1, 1, NULL,
-                     "unexpected byte 0x%02x (outside comments a timeline is plain ASCII)", c);
+            tl_parse_diag(p, (int)i + 1, 1, NULL,
+                          "unexpected byte 0x%02x (outside comments a timeline is plain ASCII)", c);
             return -1;
         }
         if (n == MAX_TOKENS) {
-            diag_add(p, (int)i + 1, 1, NULL, "more than %d words on one line", MAX_TOKENS);
+            tl_parse_diag(p, (int)i + 1, 1, NULL, "more than %d words on one line", MAX_TOKENS);
             return -1;
         }
         tok[n].s = buf + i;
@@ -997,8 +946,8 @@ static void parse_line(parser *p, const char *text, size_t len)
     if (len > TL_PARSE_MAX_LINE) {
         p->line_text = NULL; /* no excerpt: the caret would sit past its end */
         p->line_len = 0;
-        diag_add(p, TL_PARSE_MAX_LINE + 1, 1, NULL, "line is longer than %d characters",
-                 TL_PARSE_MAX_LINE);
+        tl_parse_diag(p, TL_PARSE_MAX_LINE + 1, 1, NULL, "line is longer than %d characters",
+                      TL_PARSE_MAX_LINE);
         return;
     }
     memcpy(buf, text, len);
@@ -1149,7 +1098,7 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
         finish_block(&p);
         if (!p.saw_header) {
             p.line_no = 1;
-            diag_add(&p, 0, 1, NULL, "a timeline starts with the line 'tideline 1'");
+            tl_parse_diag(&p, 0, 1, NULL, "a timeline starts with the line 'tideline 1'");
         }
         check_links(&p);
         if (diags->errors == 0)

@@ -1,0 +1,94 @@
+/* Internal to the timeline parser (tl_parse.c and the files it is split
+ * into): the parser's state, tokens and the helpers they share. */
+#ifndef TL_PARSE_INTERNAL_H
+#define TL_PARSE_INTERNAL_H
+
+#include "timeline/tl_parse.h"
+
+#define DEG        (M_PI / 180.0)
+#define MAX_TOKENS 64
+#define MAX_TIME   1.0e9 /* seconds: ~31 years, far past any cutscene */
+
+typedef struct token {
+    char *s; /* NUL-terminated copy inside the line buffer */
+    int col; /* 1-based */
+    int len;
+} token;
+
+/* BLOCK_SKIP: a `key` or `path` line that was rejected; its indented lines
+ * are skipped silently rather than reported as strays. */
+typedef enum block_kind { BLOCK_NONE, BLOCK_KEY, BLOCK_PATH, BLOCK_SKIP } block_kind;
+
+typedef struct parser {
+    const char *name;
+    const char *source; /* the whole text, for excerpts of earlier lines */
+    size_t source_len;
+    tl_timeline *tl;
+    tl_diags *diags;
+    int warning; /* diagnostics added now are warnings */
+    int line_no;
+    const char *line_text; /* the current line, for diagnostics */
+    size_t line_len;
+    int saw_header;
+    int frame_units_line; /* first line that used a time in frames */
+    long keys_total;
+    int stopped;
+
+    /* The open `key` or `path` block. */
+    block_kind block;
+    int block_line;
+    const tl_channel *block_ch;
+    tl_track *block_track;
+    tl_interp block_interp;
+    tl_ease_family block_family;
+    tl_ease_dir block_dir;
+    int block_shortest;
+    tl_path_track *block_path;
+    int block_dims;
+    struct key_source {
+        int line;
+        const char *text;
+        size_t len;
+        int col;
+    } * key_lines; /* where each key/point of the block was written */
+    size_t key_count, key_cap;
+    int block_failed;
+    int first_key_line;              /* the first `key` block: fps must come before it */
+    tl_ease_params block_ease;       /* back, amplitude, period (frames) from the `key` line */
+    char buf[TL_PARSE_MAX_LINE + 1]; /* the current line, split into tokens */
+} parser;
+
+/* Adds an error (or a warning while p->warning) at the current line. */
+void tl_parse_diag(parser *p, int col, int len, const char *hint, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+#define ERR_AT(tok, ...) tl_parse_diag(p, (tok)->col, (tok)->len, NULL, __VA_ARGS__)
+
+/* A number with an optional unit suffix of the given kind; 0 on success. */
+int tl_parse_quantity(parser *p, const token *t, tl_unit unit, double *out);
+
+/* ---- tl_parse_keys.c: options of `key` blocks ---- */
+
+/* One side's handle on a key line: `left [TYPE] [DT V...]`. */
+typedef struct tl_handle_side {
+    int has_type, has_offset;
+    tl_handle_type type;
+    double offset[4]; /* dt, then one value per component */
+} tl_handle_side;
+
+/* `back S`, `amplitude A`, `period T` at tok[*i] (Blender's easing
+ * settings; the period is stored in frames). Returns 1 when consumed (*i on
+ * its value), 0 when tok[*i] is none of them, -1 after an error. */
+int tl_parse_ease_setting(parser *p, const tl_channel *ch, token *tok, int n, int *i,
+                          tl_ease_params *ease);
+
+/* `left ...` or `right ...` at tok[*i]: an optional handle type, then an
+ * optional offset. Same returns. */
+int tl_parse_handle_side(parser *p, const tl_channel *ch, token *tok, int n, int *i,
+                         tl_handle_side *left, tl_handle_side *right);
+
+/* `extrapolate MODE [N]`, `before MODE [N]`, `after MODE [N]` and
+ * `smoothing none|continuous` on a `key` line, into shape's before, after,
+ * counts and smoothing. Same returns. */
+int tl_parse_curve_option(parser *p, token *tok, int n, int *i, tl_curve *shape);
+
+#endif
