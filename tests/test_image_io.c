@@ -496,6 +496,39 @@ static void test_write_fails_midway(const char *name, int big_size, rlim_t limit
     tl_frame_free(&big);
 }
 
+/* The zlib level changes the file's size, never its pixels; levels outside
+ * 1..9 are refused. */
+static void test_png_compression(void)
+{
+    tl_error err;
+    tl_frame f, back[2] = {{0}, {0}};
+    CHECK(tl_frame_alloc(&f, 64, 48, &err) == 0);
+    fill_synthetic(&f);
+    size_t size[2] = {0, 0};
+    const int levels[2] = {1, 9};
+    for (int i = 0; i < 2; i++) {
+        char path[512];
+        join(path, sizeof path, i ? "level9.png" : "level1.png");
+        tl_image_options opt = {.png_compression = levels[i]};
+        CHECK(tl_png_write(path, &f, &opt, &err) == 0);
+        free(slurp(path, &size[i]));
+        CHECK(tl_png_read(path, &back[i], NULL, &err) == 0);
+        unlink(path);
+    }
+    CHECK(size[1] <= size[0]);
+    CHECK(back[0].display && back[1].display &&
+          memcmp(back[0].display, back[1].display, sizeof(float) * 4 * 64 * 48) == 0);
+    char path[512];
+    join(path, sizeof path, "level10.png");
+    tl_image_options bad = {.png_compression = 10};
+    CHECK(tl_png_write(path, &f, &bad, &err) == TL_ERR_USAGE);
+    CHECK_STR_CONTAINS(err.message, "PNG compression must be 1..9, not 10");
+    CHECK(access(path, F_OK) != 0);
+    tl_frame_free(&back[0]);
+    tl_frame_free(&back[1]);
+    tl_frame_free(&f);
+}
+
 int main(void)
 {
     snprintf(g_dir, sizeof g_dir, "/tmp/tl_image_io_XXXXXX");
@@ -509,6 +542,7 @@ int main(void)
     test_png_round_trip(16);
     test_png_chunks();
     test_png_bad_keyword();
+    test_png_compression();
     CHECK(count_tmp_files(g_dir) == 0);
     test_check_writable();
     test_atomic_file();

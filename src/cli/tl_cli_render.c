@@ -53,6 +53,7 @@ static const char usage[] =
     "  --movie FILE           also encode a movie with ffmpeg: .mp4 (H.264, yuv420p)\n"
     "                         or .mov (ProRes 422 HQ), at the timeline's fps\n"
     "  --png-bits 8|16        PNG bit depth (default 8)\n"
+    "  --png-compression N    zlib level 1 (fast, the default) .. 9 (smallest files)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  -q, --quiet            no progress display\n"
@@ -78,6 +79,7 @@ typedef struct render_options {
     double shutter;
     int shutter_samples;
     int png_bits;
+    int png_compression; /* 0: the writer's default (fast) */
     int skip_existing;
     int quiet, verbose;
 } render_options;
@@ -132,6 +134,8 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
                                   a.value);
         } else if (tl_args_match(&a, "--shutter-samples", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 256, &o->shutter_samples, err) : 0;
+        } else if (tl_args_match(&a, "--png-compression", NULL, true, err)) {
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->png_compression, err) : 0;
         } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
             if (!rc && a.value && o->png_bits != 8 && o->png_bits != 16)
@@ -261,7 +265,10 @@ static int write_frame_files(const render_options *o, const tl_timeline *tl, lon
         {"tideline/shutter", TL_META_DOUBLE, NULL, o->shutter, 0},
     };
     int n = 7 + tl_cli_quality_meta(&scene->quality, meta + 7);
-    tl_image_options opt = {o->png_bits, meta, n};
+    tl_image_options opt = {.png_bits = o->png_bits,
+                            .png_compression = o->png_compression,
+                            .meta = meta,
+                            .meta_count = n};
     return tl_image_write(path, f, &opt, err);
 }
 

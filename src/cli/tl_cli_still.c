@@ -302,7 +302,8 @@ int tl_cli_still(int argc, char **argv)
         {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0},
         {"tideline/camera", TL_META_STRING, camera_text, 0, 0},
     };
-    tl_image_options opt = {0, meta, 4 + tl_cli_quality_meta(&scene.quality, meta + 4)};
+    tl_image_options opt = {.meta = meta,
+                            .meta_count = 4 + tl_cli_quality_meta(&scene.quality, meta + 4)};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_write(o.outputs[i], &frame, &opt, &err);
         if (!rc && o.verbose)

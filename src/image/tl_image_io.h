@@ -35,8 +35,14 @@ typedef struct tl_meta {
     int i;
 } tl_meta;
 
+/* zlib level of PNGs when the options leave it 0: fast. Level 1 encodes
+ * a 640x360 ocean frame several times faster than zlib's default 6, for
+ * files about a tenth larger (docs/quality.md has the measurement). */
+#define TL_PNG_COMPRESSION_DEFAULT 1
+
 typedef struct tl_image_options {
     int png_bits;          /* 8 (default when 0) or 16 */
+    int png_compression;   /* zlib level 1..9; 0: TL_PNG_COMPRESSION_DEFAULT */
     const tl_meta *meta;   /* may be NULL */
     int meta_count;
 } tl_image_options;

@@ -87,8 +87,8 @@ static void pack_row(const tl_frame *frame, int y, int bits, unsigned char *row)
 
 /* Everything between png_create and png_destroy, in its own function so
  * that setjmp's caller has no local changed after the setjmp. */
-static int encode_png(png_job *io, const tl_frame *frame, int bits, png_text *text, int ntext,
-                      unsigned char *row)
+static int encode_png(png_job *io, const tl_frame *frame, int bits, int level, png_text *text,
+                      int ntext, unsigned char *row)
 {
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, io, on_png_error, on_png_warning);
@@ -103,6 +103,7 @@ static int encode_png(png_job *io, const tl_frame *frame, int bits, png_text *te
         return -1;
     }
     png_set_write_fn(png, io, write_cb, flush_cb);
+    png_set_compression_level(png, level);
     png_set_IHDR(png, info, (png_uint_32)frame->width, (png_uint_32)frame->height, bits,
                  PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
@@ -184,6 +185,10 @@ int tl_png_write(const char *path, const tl_frame *frame, const tl_image_options
     if (bits != 8 && bits != 16)
         return tl_error_set(err, TL_ERR_USAGE, "%s: PNG bit depth must be 8 or 16, not %d", path,
                             bits);
+    int level = opt && opt->png_compression ? opt->png_compression : TL_PNG_COMPRESSION_DEFAULT;
+    if (level < 1 || level > 9)
+        return tl_error_set(err, TL_ERR_USAGE, "%s: PNG compression must be 1..9, not %d", path,
+                            level);
     int rc = tl_image_check_meta(path, opt, err);
     if (!rc)
         rc = check_keywords(path, opt, err);
@@ -205,7 +210,7 @@ int tl_png_write(const char *path, const tl_frame *frame, const tl_image_options
     rc = tl_atomic_open(&file, path, err);
     if (!rc) {
         png_job io = {.fp = file.fp};
-        if (encode_png(&io, frame, bits, text, ntext, row) == 0) {
+        if (encode_png(&io, frame, bits, level, text, ntext, row) == 0) {
             rc = tl_atomic_commit(&file, err);
         } else {
             tl_atomic_abort(&file);
