@@ -35,3 +35,7 @@ target_link_libraries(tl_openexr_core INTERFACE ${OPENEXR_CORE_LIB})
 target_include_directories(tl_openexr_core INTERFACE ${OPENEXR_CORE_INCLUDE})
 
 find_library(MATH_LIB m)
+
+# POSIX threads: render writes frame n-1 while frame n renders.
+set(THREADS_PREFER_PTHREAD_FLAG ON)
+find_package(Threads REQUIRED)

@@ -4,6 +4,7 @@ set(TL_CLI_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_still.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_timeline.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_render.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_writer.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_preview.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_compare.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench.c

@@ -176,7 +176,8 @@ static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *
     if (s->boat_of != t)
         rc = tl_render_set_boat(s->render, s->boat[t].index_count ? &s->boat[t] : NULL, err);
     s->boat_of = rc ? -1 : t;
-    tl_render_settings settings = {.width = s->o->width, .height = s->o->height, .quality = q};
+    tl_render_settings settings = {
+        .width = s->o->width, .height = s->o->height, .quality = q, .planes = TL_PLANE_DISPLAY};
     if (!rc)
         rc = tl_render_timeline_frame(s->render, &s->tl[t], b->frame, &settings, frame, NULL, err);
     if (rc)

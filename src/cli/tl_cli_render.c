@@ -19,6 +19,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "cli/tl_cli_writer.h"
 #include "core/tl_clock.h"
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
@@ -272,6 +273,36 @@ static int write_frame_files(const render_options *o, const tl_timeline *tl, lon
     return tl_image_write(path, f, &opt, err);
 }
 
+/* What the writer thread needs to write a frame. */
+typedef struct write_context {
+    const render_options *o;
+    const tl_timeline *tl;
+    tl_movie *movie;
+    uint8_t *rgb;
+} write_context;
+
+static int write_frame(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
+                       const char *path, tl_error *err)
+{
+    const write_context *w = ctx;
+    int rc = w->o->pattern ? write_frame_files(w->o, w->tl, n, scene, f, path, err) : TL_OK;
+    if (!rc && w->movie) {
+        display_to_rgb8(f, w->rgb);
+        rc = tl_movie_write(w->movie, w->rgb, err);
+    }
+    return rc;
+}
+
+/* Counts a frame the writer finished. */
+static void frame_written(progress *prog, size_t *written, long n, const char *path)
+{
+    if (n < 0)
+        return;
+    (*written)++;
+    prog->done++;
+    progress_update(prog, n, path[0] ? path : "encoded");
+}
+
 int tl_cli_render(int argc, char **argv)
 {
     tl_error err;
@@ -342,6 +373,15 @@ int tl_cli_render(int argc, char **argv)
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
+    /* Read back only what the outputs use: EXR holds colour and depth,
+     * PNG and movies the display image. */
+    if (o.pattern)
+        settings.planes |= tl_image_format_from_path(path) == TL_IMAGE_EXR
+                               ? TL_PLANE_COLOR | TL_PLANE_DEPTH
+                               : TL_PLANE_DISPLAY;
+    if (o.movie)
+        settings.planes |= TL_PLANE_DISPLAY;
+
     tl_render *render = NULL;
     tl_movie *movie = NULL;
     tl_frame frame = {0};
@@ -368,6 +408,11 @@ int tl_cli_render(int argc, char **argv)
     progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, tl_clock_seconds(), 0.0, 0};
     size_t written = 0, skipped = 0;
     unsigned last_features = 0;
+    /* Frame n renders while frame n-1 is encoded and written. */
+    write_context wctx = {&o, &tl, movie, rgb};
+    tl_writer writer;
+    tl_writer_init(&writer, write_frame, &wctx);
+    long done_frame;
     for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
         long n = frames.frames[i];
         if (o.pattern)
@@ -375,6 +420,10 @@ int tl_cli_render(int argc, char **argv)
         if (rc)
             break;
         if (o.skip_existing && o.pattern && frame_file_complete(path, width, height)) {
+            rc = tl_writer_wait(&writer, &done_frame, &err);
+            frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+            if (rc)
+                break;
             skipped++;
             prog.done++;
             progress_update(&prog, n, "skipped (complete)");
@@ -392,21 +441,22 @@ int tl_cli_render(int argc, char **argv)
             progress_note(&prog, "frame %ld: features: %s", n, words);
         }
         if (stop_signal)
-            break; /* discard the frame in flight */
-        if (o.pattern)
-            rc = write_frame_files(&o, &tl, n, &scene, &frame, path, &err);
-        if (!rc && movie) {
-            display_to_rgb8(&frame, rgb);
-            rc = tl_movie_write(movie, rgb, &err);
-        }
-        if (rc)
-            break;
-        written++;
-        prog.done++;
-        prog.rendered++;
+            break; /* discard the frame just rendered */
+        rc = tl_writer_submit(&writer, &frame, n, &scene, o.pattern ? path : "", &done_frame, &err);
+        frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+        prog.rendered += !rc;
         prog.busy += tl_clock_seconds() - t0;
-        progress_update(&prog, n, o.pattern ? path : "encoded");
     }
+    /* The last frame submitted is complete: it is always written, even
+     * when interrupted (what was rendered is kept, atomically). */
+    double t_last = tl_clock_seconds();
+    int wrc = tl_writer_wait(&writer, &done_frame, rc ? &(tl_error){0} : &err);
+    if (!rc && wrc)
+        rc = wrc;
+    else
+        frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+    prog.busy += tl_clock_seconds() - t_last;
+    tl_writer_free(&writer);
     if (prog.tty && !o.quiet && prog.done)
         fputc('\n', stderr);
 

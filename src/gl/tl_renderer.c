@@ -646,7 +646,8 @@ int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
     return gl_check("presenting", err);
 }
 
-int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err)
+int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
+                       tl_frame *frame, tl_error *err)
 {
     int w = r->scene.width, h = r->scene.height;
     if (frame->width != w || frame->height != h)
@@ -661,11 +662,15 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *fr
      * transfers take can be told from the time the drawing took. */
     glFinish();
     double t0 = tl_clock_seconds();
+    /* Each plane is a transfer and a row flip: only the ones asked for. */
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
-    read_rows(0, w, h, 4, frame->color, row);
-    read_rows(1, w, h, 1, frame->depth, row);
+    if (planes & TL_PLANE_COLOR)
+        read_rows(0, w, h, 4, frame->color, row);
+    if (planes & TL_PLANE_DEPTH)
+        read_rows(1, w, h, 1, frame->depth, row);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
-    read_rows(0, w, h, 4, frame->display, row);
+    if (planes & TL_PLANE_DISPLAY)
+        read_rows(0, w, h, 4, frame->display, row);
     free(row);
     r->readback_seconds = tl_clock_seconds() - t0;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -678,7 +683,7 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
     if (!rc)
         rc = tl_renderer_accumulate(r, u, 1.0f, 1, err);
     if (!rc)
-        rc = tl_renderer_finish(r, u->exposure, u->bloom, frame, err);
+        rc = tl_renderer_finish(r, u->exposure, u->bloom, TL_PLANES_ALL, frame, err);
     return rc;
 }
 

@@ -48,7 +48,8 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
 int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
-int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, tl_frame *frame, tl_error *err);
+int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
+                       tl_frame *frame, tl_error *err);
 /* Seconds the last tl_renderer_finish spent reading the planes back (after
  * waiting for the GPU to finish drawing). */
 double tl_renderer_last_readback(const tl_renderer *r);

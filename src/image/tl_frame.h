@@ -11,6 +11,14 @@
  * distance in metres, so that no Inf ever reaches a file. */
 #define TL_FRAME_SKY_DEPTH 1.0e10f
 
+/* The planes of a frame, for reading back only what the outputs need. */
+enum {
+    TL_PLANE_COLOR = 1u << 0,   /* EXR */
+    TL_PLANE_DEPTH = 1u << 1,   /* EXR */
+    TL_PLANE_DISPLAY = 1u << 2, /* PNG, movies, metrics */
+    TL_PLANES_ALL = 7u,
+};
+
 typedef struct tl_frame {
     int width, height;
     float *color;   /* width*height*4: linear scene-referred RGBA */

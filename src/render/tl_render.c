@@ -269,7 +269,8 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     }
     if (!rc)
         rc = out ? tl_renderer_finish(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
-                                      (float)scene.bloom, out, err)
+                                      (float)scene.bloom,
+                                      settings->planes ? settings->planes : TL_PLANES_ALL, out, err)
                  : tl_renderer_display(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
                                        (float)scene.bloom, err);
     if (!rc && scene_out)

@@ -54,6 +54,7 @@ typedef struct tl_render_settings {
     double shutter_deg;        /* 0: no motion blur; 360 = the whole frame interval */
     int shutter_samples;       /* sub-frames when shutter_deg > 0 (0: 8) */
     const tl_camera *camera;   /* NULL: the timeline's; else this camera (the preview's) */
+    unsigned planes;           /* TL_PLANE_* bits to read back (0: all); others keep old data */
 } tl_render_settings;
 
 /* The scene a frame is rendered from: the timeline at frame / fps with the
