@@ -23,7 +23,7 @@ float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
         float span = abs(t1 - t0);
         float t = clamp(t1 + a1 * (t1 - t0) / slope, t1 - 2.0 * span, t1 + 2.0 * span);
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float a = pos.y - surface_height(pos.xz, u_march_octaves);
+        float a = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
         t0 = t1;
         a0 = a1;
         t1 = t;
@@ -71,7 +71,7 @@ float march_water(vec3 ray, float t_min)
             above_last = -1.0;
             continue;
         }
-        float above = pos.y - surface_height(pos.xz, u_march_octaves);
+        float above = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
         float radius = above; // how far along the ray is surely free
 #ifdef TL_FEATURE_GIANT_WAVE
         // A step no longer than `above` moves at most above·ray_along in s.

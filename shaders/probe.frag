@@ -33,7 +33,7 @@ void main()
     vec2 p = texelFetch(u_points, ivec2(gl_FragCoord.xy), 0).xy;
     vec4 result = vec4(0.0);
     if (u_probe_mode == 0)
-        result.x = surface_height(p, u_probe_octaves);
+        result.x = surface_height(p, u_probe_octaves, 0.0);
     else if (u_probe_mode == 1)
         result.x = optics_fresnel(p.x, p.y, 1.0);
 #ifdef TL_FEATURE_UNDERWATER

@@ -21,7 +21,7 @@ float underwater_march(vec3 ray, float t)
 #endif
     for (int i = 0; i < u_march_steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float below = surface_height(pos.xz, u_march_octaves) - pos.y;
+        float below = surface_height(pos.xz, u_march_octaves, 0.0) - pos.y;
         if (below < u_hit_epsilon)
             return t;
         float step = below;
@@ -65,7 +65,7 @@ vec3 trace_underwater(vec3 ray, out float dist)
     dist = t;
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     float value;
-    vec3 n = water_normal(hit.xz, u_normal_epsilon, value);
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, t * u_lod_angle, value);
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(hit.xz);
     vec2 slope = -n.xz / n.y + giant.grad;

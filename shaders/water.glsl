@@ -5,7 +5,7 @@
 
 // Ocean normal at p by finite differences; *value is the ocean's wave value
 // in (0, 1] at p (1 on the crests).
-vec3 water_normal(vec2 p, float e, out float value)
+vec3 water_normal(vec2 p, float e, float footprint, out float value)
 {
     // Far out (grazing rays meet the water 1e4 m and more away) a fixed
     // step is a few float ulps of p: the difference is rounding noise and
@@ -13,12 +13,15 @@ vec3 water_normal(vec2 p, float e, out float value)
     // Keep the step at least ~80 ulps of the coordinate (1e-5 relative);
     // that only matters beyond 1 km, where the normal is smoothed anyway.
     e = max(e, 1e-5 * max(abs(p.x), abs(p.y)));
+    // With level of detail the step follows the pixel's footprint: the
+    // surface has no detail finer than that left to difference.
+    e = max(e, 0.5 * footprint);
     // The offsets the float coordinates really moved by, not e.
     vec2 px = p - vec2(e, 0.0), pz = p + vec2(0.0, e);
-    value = waves_value(p, u_normal_octaves);
+    value = waves_value(p, u_normal_octaves, footprint);
     float h = value * u_depth;
-    float hx = waves_value(px, u_normal_octaves) * u_depth;
-    float hz = waves_value(pz, u_normal_octaves) * u_depth;
+    float hx = waves_value(px, u_normal_octaves, footprint) * u_depth;
+    float hz = waves_value(pz, u_normal_octaves, footprint) * u_depth;
     vec3 a = vec3(p.x, h, p.y);
     return normalize(cross(a - vec3(px.x, hx, p.y), a - vec3(p.x, hz, pz.y)));
 }
@@ -26,7 +29,7 @@ vec3 water_normal(vec2 p, float e, out float value)
 vec3 water_color(vec3 ray, vec3 hit, float dist)
 {
     float value;
-    vec3 n = water_normal(hit.xz, u_normal_epsilon, value);
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, dist * u_lod_angle, value);
     // Far away the normal's detail is below a pixel; blending toward "up"
     // removes the shimmer the reference also suppresses this way.
     float smoothing = u_normal_smooth_max *

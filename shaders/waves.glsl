@@ -15,8 +15,17 @@ float waves_radial_shift(vec2 p)
     return u_radial_phase * (den > 0.0 ? num / den : 0.0);
 }
 
+// The mean of one octave, exp(sin x - 1) over a period (I0(1) / e): what
+// an octave too fine for the pixel averages to.
+const float TL_WAVE_MEAN = 0.4657596;
+
 // Normalised wave value in (0, 1] from the first `octaves` octaves.
-float waves_value(vec2 p, int octaves)
+// `footprint`: the width of water one pixel covers there (metres; 0 for
+// none). Level of detail: an octave whose wavelength spans fewer than four
+// footprints fades to its mean and its drag to nothing, and is gone at two
+// (below that it could only alias); once one is gone, so are all finer
+// ones, and the loop ends.
+float waves_value(vec2 p, int octaves, float footprint)
 {
     float shift = waves_radial_shift(p);
     float sum = 0.0;
@@ -24,18 +33,29 @@ float waves_value(vec2 p, int octaves)
     for (int i = 0; i < octaves; i++) {
         vec4 w = u_wave[i];
         float weight = u_wave_weight[i];
+        float detail = 1.0;
+        if (footprint > 0.0) {
+            detail = smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint));
+            if (detail <= 0.0) {
+                float rest = u_wave_weight_tail[i] - u_wave_weight_tail[octaves];
+                sum += TL_WAVE_MEAN * rest;
+                weights += rest;
+                break;
+            }
+        }
         float x = dot(w.xy, p) * w.z + w.w + shift;
         float wave = exp(sin(x) - 1.0);
         // Derivative drag: small waves gather on the crests of large ones.
-        p -= w.xy * (wave * cos(x) * weight * u_drag);
-        sum += wave * weight;
+        p -= w.xy * (wave * cos(x) * weight * u_drag * detail);
+        // (detail is exactly 1 without LOD: the sum is the reference's.)
+        sum += (detail < 1.0 ? mix(TL_WAVE_MEAN, wave, detail) : wave) * weight;
         weights += weight;
     }
     return sum / weights;
 }
 
 // World height of the surface at camera-relative p: in [-depth, 0].
-float waves_height(vec2 p, int octaves)
+float waves_height(vec2 p, int octaves, float footprint)
 {
-    return (waves_value(p, octaves) - 1.0) * u_depth;
+    return (waves_value(p, octaves, footprint) - 1.0) * u_depth;
 }

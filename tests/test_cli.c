@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "image/tl_image_io.h"
+#include "metrics/tl_metrics.h"
 #include "scene/tl_quality.h"
 #include "tl_run.h"
 #include "tl_test.h"
@@ -333,6 +334,40 @@ static void test_many_samples(void)
     unlink(many);
 }
 
+/* Level of detail leaves a close-up alone: there a pixel is finer than
+ * almost every octave, so `final` with and without LOD is equally far from
+ * `reference` (within 0.5 dB). */
+static void test_lod_close_up(void)
+{
+    const char *shot = "tideline 1\nsize 96x54\nset camera.position 0 1 0\n"
+                       "set camera.pitch -40deg\nset camera.fov 12deg\nset render.bloom 0\n";
+    const char *names[3] = {"ref.tl", "lod.tl", "nolod.tl"};
+    const char *tails[3] = {"quality reference\n", "quality final\nset quality.lod on\n",
+                            "quality final\nset quality.lod off\n"};
+    tl_frame img[3] = {{0}, {0}, {0}};
+    for (int i = 0; i < 3; i++) {
+        char text[512], png[64];
+        snprintf(text, sizeof text, "%s%s", shot, tails[i]);
+        const char *tl = in_dir(0, names[i]);
+        write_file(tl, text);
+        snprintf(png, sizeof png, "%s.png", names[i]);
+        const char *out = in_dir(1, png);
+        CHECK(run(NULL, "still", tl, "-o", out, NULL) == 0);
+        tl_error err;
+        CHECK(tl_png_read(out, &img[i], NULL, &err) == 0);
+        unlink(tl);
+        unlink(out);
+    }
+    if (img[0].display && img[1].display && img[2].display) {
+        double with = tl_metrics_psnr(img[1].display, img[0].display, 96 * 54);
+        double without = tl_metrics_psnr(img[2].display, img[0].display, 96 * 54);
+        printf("close-up against reference: %.2f dB with LOD, %.2f dB without\n", with, without);
+        CHECK(fabs(with - without) < 0.5);
+    }
+    for (int i = 0; i < 3; i++)
+        tl_frame_free(&img[i]);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3 || !mkdtemp(dir))
@@ -347,6 +382,7 @@ int main(int argc, char **argv)
     test_papercuts();
     test_supersampled_horizon();
     test_many_samples();
+    test_lod_close_up();
     rmdir(dir);
     TEST_END();
 }

@@ -51,6 +51,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
         {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
         {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
+        {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
     };

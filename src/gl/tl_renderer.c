@@ -282,6 +282,8 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1f(loc(p, "u_radial_phase"), u->radial_phase);
     glUniform4fv(loc(p, "u_wave"), u->octaves, &u->wave[0][0]);
     glUniform1fv(loc(p, "u_wave_weight"), u->octaves, u->wave_weight);
+    glUniform1fv(loc(p, "u_wave_weight_tail"), TL_MAX_OCTAVES + 1, u->wave_weight_tail);
+    glUniform1f(loc(p, "u_lod_angle"), u->lod_angle);
     glUniform1f(loc(p, "u_drag"), u->drag);
     glUniform1f(loc(p, "u_depth"), u->depth);
     glUniform1i(loc(p, "u_march_octaves"), u->march_octaves);

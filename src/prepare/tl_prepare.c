@@ -379,6 +379,12 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
         u->wave[i][3] = (float)phase[i];
         u->wave_weight[i] = (float)o->weight;
     }
+    double tail = 0.0;
+    u->wave_weight_tail[TL_MAX_OCTAVES] = 0.0f;
+    for (int i = TL_MAX_OCTAVES - 1; i >= 0; i--) {
+        tail += w->octave[i].weight;
+        u->wave_weight_tail[i] = (float)tail;
+    }
     u->drag = (float)w->drag;
     u->depth = (float)w->depth;
 
@@ -390,6 +396,9 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->refine_steps = q->refine_steps;
     u->miss_at_start = q->miss_at_start;
     u->normalize_smoothed = q->normalize_smoothed;
+    if (q->lod)
+        u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / s->height /
+                               sqrt((double)(q->spp < 1 ? 1 : q->spp)));
     u->spp = q->spp < 1 ? 1 : q->spp;
     u->spp_step = rooks_step(u->spp);
     u->seed = 0;

@@ -60,12 +60,19 @@ typedef struct tl_frame_uniforms {
     int octaves; /* entries filled: max(march, normal) octaves */
     float wave[TL_MAX_OCTAVES][4];
     float wave_weight[TL_MAX_OCTAVES];
+    /* wave_weight_tail[i]: the sum of the weights of octaves i.. (all of
+     * them, to TL_MAX_OCTAVES), summed in double; its differences
+     * normalise the wave sum and stand in for faded octaves. */
+    float wave_weight_tail[TL_MAX_OCTAVES + 1];
     float drag, depth;
 
     /* Quality knobs. */
     int march_octaves, normal_octaves, march_steps;
     float hit_epsilon, normal_epsilon;
     int refine_steps, miss_at_start, normalize_smoothed;
+    /* Level of detail: the water one pixel covers per metre of distance
+     * (radians; 0 = none): pixel angle / sqrt(samples per pixel). */
+    float lod_angle;
     int spp, spp_step; /* samples per pixel; y-stratum step, coprime with spp */
     unsigned seed;     /* jitter seed of this pass (sub-frame sample index) */
 

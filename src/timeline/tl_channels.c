@@ -184,6 +184,8 @@ static const tl_channel channels[] = {
     {"quality.refine_steps", TL_CH_INT, 1, TL_UNIT_NONE, 0, 16, false,
      offsetof(tl_scene, quality.refine_steps), NULL,
      "secant steps toward the surface after a hit (0: none)"},
+    {"quality.lod", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false, offsetof(tl_scene, quality.lod), NULL,
+     "fade wave octaves finer than a pixel to their mean (no aliasing, less work far out)"},
     {"quality.miss_at_start", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
      offsetof(tl_scene, quality.miss_at_start), NULL,
      "a ray out of march steps ends where its march began (the seed shader's way)"},
