@@ -7,6 +7,11 @@
 // in (0, 1] at p (1 on the crests).
 vec3 water_normal(vec2 p, float e, float footprint, out float value)
 {
+    if (u_analytic_normals) {
+        vec2 grad;
+        value = waves_value_grad(p, u_normal_octaves, footprint, grad);
+        return normalize(vec3(-grad.x * u_depth, 1.0, -grad.y * u_depth));
+    }
     // Far out (grazing rays meet the water 1e4 m and more away) a fixed
     // step is a few float ulps of p: the difference is rounding noise and
     // the slope it gives can mirror the sun anywhere along the horizon.

@@ -54,6 +54,48 @@ float waves_value(vec2 p, int octaves, float footprint)
     return sum / weights;
 }
 
+// waves_value with its gradient (per metre of p) carried through the drag:
+// J is how the dragged position moves with p, so each octave's phase
+// gradient is f·dᵀJ plus the radial shift's. One pass gives what finite
+// differences need three for, and it is exact.
+float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
+{
+    float shift = waves_radial_shift(p);
+    vec2 q = u_radial_dir * u_radial_len + p; // from the world origin
+    float ql = length(q);
+    vec2 shift_grad = ql > 0.0 ? u_radial_phase * q / ql : vec2(0.0);
+    mat2 jac = mat2(1.0);
+    float sum = 0.0, weights = 0.0;
+    vec2 sum_grad = vec2(0.0);
+    for (int i = 0; i < octaves; i++) {
+        vec4 w = u_wave[i];
+        float weight = u_wave_weight[i];
+        float detail = 1.0;
+        if (footprint > 0.0) {
+            detail = smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint));
+            if (detail <= 0.0) {
+                float rest = u_wave_weight_tail[i] - u_wave_weight_tail[octaves];
+                sum += TL_WAVE_MEAN * rest;
+                weights += rest;
+                break;
+            }
+        }
+        float x = dot(w.xy, p) * w.z + w.w + shift;
+        vec2 x_grad = w.z * (w.xy * jac) + shift_grad; // row vector dᵀJ
+        float s = sin(x), c = cos(x);
+        float wave = exp(s - 1.0);
+        float k = weight * u_drag * detail;
+        p -= w.xy * (wave * c * k);
+        // d(wave·cos x)/dx = wave·(cos²x − sin x)
+        jac -= outerProduct(w.xy, (wave * (c * c - s) * k) * x_grad);
+        sum += (detail < 1.0 ? mix(TL_WAVE_MEAN, wave, detail) : wave) * weight;
+        sum_grad += (wave * c * weight * detail) * x_grad;
+        weights += weight;
+    }
+    grad = sum_grad / weights;
+    return sum / weights;
+}
+
 // World height of the surface at camera-relative p: in [-depth, 0].
 float waves_height(vec2 p, int octaves, float footprint)
 {

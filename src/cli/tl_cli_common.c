@@ -52,6 +52,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
         {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
         {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
+        {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
     };

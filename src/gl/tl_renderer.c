@@ -294,6 +294,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1i(loc(p, "u_refine_steps"), u->refine_steps);
     glUniform1i(loc(p, "u_miss_at_start"), u->miss_at_start);
     glUniform1i(loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
+    glUniform1i(loc(p, "u_analytic_normals"), u->analytic_normals);
     glUniform3fv(loc(p, "u_sun_dir"), 1, u->sun_dir);
     glUniform1f(loc(p, "u_sun_intensity"), u->sun_intensity);
     glUniform1f(loc(p, "u_sun_sharpness"), u->sun_sharpness);

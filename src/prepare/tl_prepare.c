@@ -396,6 +396,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->refine_steps = q->refine_steps;
     u->miss_at_start = q->miss_at_start;
     u->normalize_smoothed = q->normalize_smoothed;
+    u->analytic_normals = q->analytic_normals;
     if (q->lod)
         u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / s->height /
                                sqrt((double)(q->spp < 1 ? 1 : q->spp)));

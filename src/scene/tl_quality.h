@@ -24,6 +24,7 @@ typedef struct tl_quality {
     int giant_iterations;  /* Newton steps inverting the giant wave's horizontal map */
     int refine_steps;      /* secant steps toward the surface after the march hits */
     bool lod;              /* fade octaves finer than the pixel's footprint to their mean */
+    bool analytic_normals; /* the wave sum's exact gradient instead of finite differences */
     /* The reference shader's two behaviours that tideline improves on,
      * kept for `seed` so it reproduces that shader's image: */
     bool miss_at_start;      /* a ray out of steps reports where its march began */
