@@ -5,6 +5,7 @@
  * so tideline's `seed` preset can be compared with it (`tideline compare`).
  *
  *   seed002 [--size WxH] [--time SECONDS] [--repeat N] [--srgb] [--out FILE.png]
+ *           [--march-octaves N] [--normal-octaves N] [--steps N] [--fixed-steps N]
  *
  * Timings: one warm-up frame, then N frames; each frame is the draw plus the
  * readback (glReadPixels waits for the draw to finish). */
@@ -73,13 +74,18 @@ static void usage(FILE *to)
 {
     fprintf(to, "usage: seed002 [--size WxH] [--time SECONDS] [--repeat N] [--srgb] "
                 "[--out FILE.png] [--shader FILE]\n"
+                "               [--march-octaves N] [--normal-octaves N] [--steps N] "
+                "[--fixed-steps N]\n"
                 "Renders the seeds' reference ocean shader headless and prints the median\n"
-                "ms per frame (draw + one RGBA8 readback) over N frames after a warm-up.\n");
+                "ms per frame (draw + one RGBA8 readback) over N frames after a warm-up.\n"
+                "The document's settings are 12 march octaves, 36 normal octaves and 64\n"
+                "adaptive steps; --fixed-steps N marches N equal steps across the slab.\n");
 }
 
 int main(int argc, char **argv)
 {
     int width = 640, height = 360, repeat = 10, srgb = 0;
+    int march_octaves = 12, normal_octaves = 36, steps = 64, fixed_steps = 0;
     double t = 10.0;
     const char *out = NULL, *shader_path = SEED002_FRAG;
     for (int i = 1; i < argc; i++) {
@@ -96,6 +102,17 @@ int main(int argc, char **argv)
             i++;
         } else if (v && strcmp(a, "--repeat") == 0 && sscanf(v, "%d", &repeat) == 1 &&
                    repeat >= 1) {
+            i++;
+        } else if (v && strcmp(a, "--march-octaves") == 0 && sscanf(v, "%d", &march_octaves) == 1 &&
+                   march_octaves >= 1) {
+            i++;
+        } else if (v && strcmp(a, "--normal-octaves") == 0 &&
+                   sscanf(v, "%d", &normal_octaves) == 1 && normal_octaves >= 1) {
+            i++;
+        } else if (v && strcmp(a, "--steps") == 0 && sscanf(v, "%d", &steps) == 1 && steps >= 1) {
+            i++;
+        } else if (v && strcmp(a, "--fixed-steps") == 0 && sscanf(v, "%d", &fixed_steps) == 1 &&
+                   fixed_steps >= 0) {
             i++;
         } else if (v && strcmp(a, "--out") == 0) {
             out = v;
@@ -155,9 +172,10 @@ int main(int argc, char **argv)
     glUniform1f(glGetUniformLocation(prog, "iTime"), (float)t);
     glUniform3f(glGetUniformLocation(prog, "iResolution"), (float)width, (float)height, 1.0f);
     glUniform4f(glGetUniformLocation(prog, "iMouse"), 0.0f, 0.0f, 0.0f, 0.0f);
-    glUniform1i(glGetUniformLocation(prog, "u_iterations_raymarch"), 12);
-    glUniform1i(glGetUniformLocation(prog, "u_iterations_normal"), 36);
-    glUniform1i(glGetUniformLocation(prog, "u_raymarch_steps"), 64);
+    glUniform1i(glGetUniformLocation(prog, "u_iterations_raymarch"), march_octaves);
+    glUniform1i(glGetUniformLocation(prog, "u_iterations_normal"), normal_octaves);
+    glUniform1i(glGetUniformLocation(prog, "u_raymarch_steps"), steps);
+    glUniform1i(glGetUniformLocation(prog, "u_fixed_steps"), fixed_steps);
 
     unsigned char *pixels = malloc((size_t)width * height * 4);
     double *ms = malloc(sizeof(double) * (size_t)repeat);
