@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Every number of docs/quality.md, measured in one run on this machine (a
+# benchmark, not a test: run it on a quiet machine, it takes ~20 minutes
+# on 2 cores). Prints Markdown; writes the bench's CSV and plot to OUT.
+#
+#   scripts/bench-quality.sh [OUT_FOLDER] [BEFORE_TIDELINE]
+#
+# BEFORE_TIDELINE: a tideline binary built from an earlier commit, to time
+# `render` before and after the pipeline changes side by side.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-docs/images}
+before=${2:-}
+size=640x360
+tl=build/tideline
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+mkdir -p "$out"
+
+ms() { sed -nE 's/.*median ([0-9.]+) ms\/frame.*/\1/p'; }
+psnr() { "$tl" compare "$1" "$2" | awk '{ print $2 }'; }
+
+echo "## The yardstick: seed 002's shader alone ($size)"
+echo
+echo "| harness run | ms/frame | PSNR vs the document's settings (dB) |"
+echo "| --- | ---: | ---: |"
+base=$(build/seed002 --size $size --repeat 10 --srgb --out "$scratch/h.png" | ms)
+echo "| document's settings (12 march / 36 normal octaves, 64 adaptive steps) | $base | — |"
+m36=$(build/seed002 --size $size --repeat 10 --srgb --march-octaves 36 --out "$scratch/h36.png" | ms)
+echo "| 36 octaves marched too (one count for both) | $m36 | $(psnr "$scratch/h.png" "$scratch/h36.png") |"
+for n in 64 256 1024; do
+  f=$(build/seed002 --size $size --repeat 3 --srgb --fixed-steps $n --out "$scratch/f$n.png" | ms)
+  echo "| $n fixed steps across the slab | $f | $(psnr "$scratch/h.png" "$scratch/f$n.png") |"
+done
+echo
+echo "## tideline's \`seed\` against the shader (bench/seed002.tl)"
+echo
+for t in 10 37; do
+  build/seed002 --size $size --time $t --repeat 1 --srgb --out "$scratch/s$t.png" >/dev/null
+  "$tl" still bench/seed002.tl --time $t -o "$scratch/t$t.png"
+  echo "- t = $t s: $("$tl" compare "$scratch/s$t.png" "$scratch/t$t.png")"
+done
+echo
+echo "## Presets on the seed's scene, against the yardstick ($base ms/frame)"
+echo
+"$tl" bench bench/seed002.tl --size $size --frames 240,888 --repeat 3 -q \
+  --presets draft,preview,final,seed --csv "$out/quality-seed.csv" | tee "$scratch/seed.md"
+echo
+awk -F, -v base="$base" 'NR > 1 && $1 != "reference" {
+  printf "- %s: %.2fx the shader alone (render %.2fx)\n", $1, $6 / base, $7 / base }' "$out/quality-seed.csv"
+echo
+echo "## Presets on the bundled cutscenes ($size, 2 frames each)"
+echo
+"$tl" bench timelines/calm.tl timelines/voyage.tl timelines/giant_wave.tl timelines/dive.tl \
+  --size $size --frames 60,180 --repeat 3 -q --presets draft,preview,final,seed \
+  --csv "$out/quality-bench.csv" --plot "$out/quality-bench.png"
+echo
+echo "## tideline render, end to end ($size, calm.tl, 12 frames, final)"
+echo
+echo "| output | binary | ms/frame |"
+echo "| --- | --- | ---: |"
+for bin in "$before" "$tl"; do
+  [ -n "$bin" ] || continue
+  label=$([ "$bin" = "$tl" ] && echo now || echo before)
+  for kind in png exr movie; do
+    case $kind in
+      png) args=(-o "$scratch/$label/p_####.png") ;;
+      exr) args=(-o "$scratch/$label/e_####.exr") ;;
+      movie) args=(--movie "$scratch/$label/m.mp4") ;;
+    esac
+    r=$("$bin" render timelines/calm.tl --frames 0-11 --size $size --quality final "${args[@]}" -q 2>&1 |
+      sed -nE 's/.*\(([0-9]+) ms\/frame\).*/\1/p')
+    echo "| $kind | $label | $r |"
+  done
+done
