@@ -9,12 +9,12 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-"$tideline" bench "$timelines/calm.tl" --size 64x36 --frames 0,120 --presets draft,final \
+"$tideline" bench "$timelines/calm.tl" --size 64x36 --frames 0,120 --presets draft,final:lod=off \
   --repeat 2 --csv "$work/out/bench.csv" --plot "$work/out/bench.png" -q >"$work/table.md"
 cat "$work/table.md"
 grep -q '^| preset | ms/frame | render | readback | encode | PSNR dB | SSIM | p99 |' "$work/table.md" ||
   fail "table header"
-[ "$(grep -c '^| \(reference\|draft\|final\)' "$work/table.md")" -eq 3 ] || fail "table rows"
+[ "$(grep -c '^| \(reference\|draft\|final:lod=off\)' "$work/table.md")" -eq 3 ] || fail "table rows"
 
 csv=$work/out/bench.csv
 head -1 "$csv" | grep -qx 'preset,width,height,frames,repeat,ms_total,ms_render,ms_readback,ms_encode,psnr_db,ssim,p99_levels,worst_psnr_db,worst_frame,pareto' ||
@@ -47,6 +47,9 @@ expect_usage() {
 }
 expect_usage "--presets" "$timelines/calm.tl" --presets draft,nope
 expect_usage "always rendered" "$timelines/calm.tl" --presets reference
+expect_usage "no quality knob 'nope'" "$timelines/calm.tl" --presets final:nope=1
+expect_usage "lod=maybe is not on or off" "$timelines/calm.tl" --presets final:lod=maybe
+expect_usage "march_steps=1.5 is not a whole number in 1..10000" "$timelines/calm.tl" --presets final:march_steps=1.5
 expect_usage "--repeat" "$timelines/calm.tl" --repeat 0
 expect_usage "not a .png" "$timelines/calm.tl" --plot "$work/p.svg"
 expect_usage "no timeline" --size 64x36

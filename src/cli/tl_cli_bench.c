@@ -18,6 +18,7 @@
 #include "mesh/tl_mesh.h"
 #include "metrics/tl_metrics.h"
 #include "render/tl_render.h"
+#include "timeline/tl_channels.h"
 #include "timeline/tl_timeline.h"
 
 static const char usage[] =
@@ -35,7 +36,9 @@ static const char usage[] =
     "  --frames LIST     frames of every timeline, e.g. 0,120,239 or 0-239:60\n"
     "                    (default: first, middle and last)\n"
     "  --size WxH        frame size (default 640x360)\n"
-    "  --presets LIST    comma-separated presets (default draft,preview,final,seed)\n"
+    "  --presets LIST    comma-separated presets (default draft,preview,final,seed);\n"
+    "                    PRESET:KNOB=V:... is a variant with quality knobs changed,\n"
+    "                    e.g. final:lod=off or final:refine_steps=2:hit_epsilon=0.02\n"
     "  --repeat N        timed renders of each frame, 1..100 (default 3)\n"
     "  --csv FILE        write the table as CSV (one row per preset)\n"
     "  --plot FILE.png   plot PSNR against ms per frame with the Pareto front\n"
@@ -53,7 +56,7 @@ typedef struct bench_options {
     const char *timelines[MAX_TIMELINES];
     int timeline_count;
     const char *frames, *csv, *plot;
-    char presets[256];
+    char presets[1024];
     int width, height, repeat, quiet;
 } bench_options;
 
@@ -104,22 +107,75 @@ static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *e
     return TL_OK;
 }
 
-/* Splits the preset list; every name must be known. `reference` may not be
- * listed (it is what the others are measured against). */
-static int parse_presets(char *list, tl_quality *out, int *count, tl_error *err)
+/* One `KNOB=VALUE` of a variant: a quality.* channel of one component. */
+static int apply_knob(const char *spec, char *knob, tl_quality *q, tl_error *err)
+{
+    char *eq = strchr(knob, '=');
+    char name[96];
+    if (!eq || eq == knob)
+        return tl_error_set(err, TL_ERR_USAGE, "--presets: '%s': '%s' is not KNOB=VALUE", spec,
+                            knob);
+    *eq = '\0';
+    snprintf(name, sizeof name, "quality.%s", knob);
+    const tl_channel *ch = tl_channel_find(name);
+    if (!ch)
+        return tl_error_set(err, TL_ERR_USAGE, "--presets: '%s': no quality knob '%s'", spec, knob);
+    const char *text = eq + 1;
+    double v;
+    char *end = NULL;
+    if (ch->kind == TL_CH_BOOL) {
+        if (strcmp(text, "on") && strcmp(text, "off"))
+            return tl_error_set(err, TL_ERR_USAGE, "--presets: '%s': %s=%s is not on or off", spec,
+                                knob, text);
+        v = !strcmp(text, "on");
+    } else {
+        v = strtod(text, &end);
+        if (end == text || *end || !(v >= ch->min && v <= ch->max) ||
+            (ch->kind != TL_CH_REAL && v != (double)(long)v))
+            return tl_error_set(
+                err, TL_ERR_USAGE, "--presets: '%s': %s=%s is not a %s in %g..%g", spec, knob, text,
+                ch->kind == TL_CH_REAL ? "number" : "whole number", ch->min, ch->max);
+    }
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.quality = *q;
+    const double in[3] = {v, v, v};
+    tl_channel_set(ch, &s, in);
+    *q = s.quality;
+    return TL_OK;
+}
+
+/* Splits the preset list. Each item is a preset's name, optionally with
+ * knobs changed (a variant): `final:refine_steps=2:lod=off`. `reference`
+ * may not be listed (it is what the others are measured against). */
+static int parse_presets(char *list, tl_quality *out, char names[][TL_BENCH_NAME], int *count,
+                         tl_error *err)
 {
     *count = 0;
-    for (char *save = NULL, *name = strtok_r(list, ",", &save); name;
-         name = strtok_r(NULL, ",", &save)) {
+    for (char *save = NULL, *item = strtok_r(list, ",", &save); item;
+         item = strtok_r(NULL, ",", &save)) {
         if (*count == TL_BENCH_MAX_PRESETS)
             return tl_error_set(err, TL_ERR_USAGE, "--presets: more than %d presets",
                                 TL_BENCH_MAX_PRESETS);
-        if (strcmp(name, "reference") == 0)
+        if (snprintf(names[*count], TL_BENCH_NAME, "%s", item) >= TL_BENCH_NAME)
+            return tl_error_set(err, TL_ERR_USAGE, "--presets: '%s' is too long", item);
+        char *rest = strchr(item, ':');
+        if (rest)
+            *rest++ = '\0';
+        if (strcmp(item, "reference") == 0)
             return tl_error_set(err, TL_ERR_USAGE,
                                 "--presets: 'reference' is always rendered (it is the yardstick)");
-        if (tl_quality_preset(name, &out[*count], err)) {
+        if (tl_quality_preset(item, &out[*count], err)) {
             tl_error_prefix(err, "--presets");
             return TL_ERR_USAGE;
+        }
+        for (char *knob = rest; knob;) {
+            char *next = strchr(knob, ':');
+            if (next)
+                *next++ = '\0';
+            if (apply_knob(names[*count], knob, &out[*count], err))
+                return TL_ERR_USAGE;
+            knob = next;
         }
         (*count)++;
     }
@@ -199,8 +255,8 @@ static double median(double *v, int n)
 
 /* Renders every shot `repeat` times with q, timing each part, and scores
  * the first render of each shot against the reference. */
-static int measure(bench_state *s, const tl_quality *q, int repeat, tl_bench_row *row,
-                   tl_error *err)
+static int measure(bench_state *s, const tl_quality *q, const char *name, int repeat,
+                   tl_bench_row *row, tl_error *err)
 {
     int n = s->shot_count * repeat;
     double *t[4];
@@ -215,7 +271,7 @@ static int measure(bench_state *s, const tl_quality *q, int repeat, tl_bench_row
     snprintf(png, sizeof png, "%s/frame.png", s->scratch);
     for (int k = 0, i = 0; !rc && k < s->shot_count; k++) {
         for (int r = 0; !rc && r < repeat; r++, i++) {
-            progress(s, q->name, k, r);
+            progress(s, name, k, r);
             rc = render_shot(s, k, q, &frame, err);
             double t0 = tl_clock_seconds();
             if (!rc)
@@ -321,7 +377,7 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
 }
 
 static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_quality *presets,
-               int preset_count, tl_error *err)
+               char names[][TL_BENCH_NAME], int preset_count, tl_error *err)
 {
     tl_shader_lib lib;
     tl_shader_lib_embedded(&lib);
@@ -344,8 +400,8 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
     for (int p = 0; !rc && p < preset_count; p++) {
         tl_bench_row *row = &rows[1 + p];
         memset(row, 0, sizeof *row);
-        snprintf(row->preset, sizeof row->preset, "%s", presets[p].name);
-        rc = measure(s, &presets[p], s->o->repeat, row, err);
+        memcpy(row->preset, names[p], TL_BENCH_NAME); /* both TL_BENCH_NAME, terminated */
+        rc = measure(s, &presets[p], names[p], s->o->repeat, row, err);
     }
     if (!s->o->quiet && isatty(STDERR_FILENO))
         fprintf(stderr, "%60s\r", "");
@@ -372,9 +428,10 @@ int tl_cli_bench(int argc, char **argv)
         return 0;
     }
     tl_quality presets[TL_BENCH_MAX_PRESETS];
+    static char names[TL_BENCH_MAX_PRESETS][TL_BENCH_NAME];
     int preset_count = 0;
     if (!rc)
-        rc = parse_presets(o.presets, presets, &preset_count, &err);
+        rc = parse_presets(o.presets, presets, names, &preset_count, &err);
     if (!rc && o.csv && tl_cli_make_parent_dirs(o.csv, &err))
         rc = TL_ERR_USAGE;
     if (!rc && o.plot &&
@@ -401,7 +458,7 @@ int tl_cli_bench(int argc, char **argv)
 
     tl_bench_row rows[1 + TL_BENCH_MAX_PRESETS];
     int row_count = 0;
-    if (!status && run(&s, rows, &row_count, presets, preset_count, &err)) {
+    if (!status && run(&s, rows, &row_count, presets, names, preset_count, &err)) {
         tl_cli_print_error("bench", &err);
         status = 1;
     }

@@ -8,9 +8,10 @@
 #include "core/tl_error.h"
 
 #define TL_BENCH_MAX_PRESETS 16
+#define TL_BENCH_NAME        96 /* a preset, or a variant "final:lod=off" */
 
 typedef struct tl_bench_row {
-    char preset[32];
+    char preset[TL_BENCH_NAME];
     int is_reference; /* the yardstick row: its own error is zero */
     /* Medians over every frame and repeat, milliseconds. The parts are
      * medians too, so they need not add up to the total exactly. */
