@@ -55,6 +55,27 @@ echo
   --size $size --frames 60,180 --repeat 3 -q --presets draft,preview,final,seed \
   --csv "$out/quality-bench.csv" --plot "$out/quality-bench.png"
 echo
+echo "## Each change to final, on and off, on the same cutscenes"
+echo
+"$tl" bench timelines/calm.tl timelines/voyage.tl timelines/giant_wave.tl timelines/dive.tl \
+  --size $size --frames 60,180 --repeat 3 -q \
+  --presets final,final:lod=off,final:analytic_normals=off,final:lod=off:analytic_normals=off,final:refine_steps=2,final:refine_steps=2:hit_epsilon=0.02,seed,seed:miss_at_start=off:normalize_smoothed=on,seed:march_octaves=36 \
+  --csv "$out/quality-changes.csv"
+echo
+echo "## Feature specialisation ($size, calm.tl frames 0-11, final)"
+echo
+# The same frames with the giant wave and fog compiled in but all but
+# invisible: what every frame would cost if the program were not
+# specialised to what the scene needs.
+general="timelines/.calm-general.$$.tl"
+trap 'rm -rf "$scratch" "$general"' EXIT
+{ cat timelines/calm.tl; printf '%s\n' 'set giant.enabled on' 'set giant.fade 0.0001' \
+    'set giant.center 0 5000' 'set fog.density 0.000001'; } >"$general"
+for t in timelines/calm.tl "$general"; do
+  r=$("$tl" render "$t" --frames 0-11 --size $size -o "$scratch/spec/f_####.png" -v 2>&1)
+  echo "- $(basename "$t"): $(sed -nE 's/.*\(([0-9]+) ms\/frame\).*/\1/p' <<<"$r") ms/frame, features: $(sed -nE 's/.*frame 0: features: (.*)/\1/p' <<<"$r")"
+done
+echo
 echo "## tideline render, end to end ($size, calm.tl, 12 frames, final)"
 echo
 echo "| output | binary | ms/frame |"
@@ -73,3 +94,7 @@ for bin in "$before" "$tl"; do
     echo "| $kind | $label | $r |"
   done
 done
+echo
+echo "## Is reference converged? (320x180, the middle frame of each cutscene)"
+echo
+scripts/reference-convergence.sh 320x180
