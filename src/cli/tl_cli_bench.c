@@ -286,8 +286,10 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
                 continue;
             tl_metrics m;
             if (tl_metrics_compare(frame.display, s->shots[k].reference, frame.width, frame.height,
-                                   &m))
+                                   &m)) {
                 rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+                continue;
+            }
             psnr_sum += m.psnr;
             ssim_sum += m.ssim;
             row->p99 = m.p99 > row->p99 ? m.p99 : row->p99;
