@@ -34,6 +34,7 @@ int tl_writer_wait(tl_writer *w, long *written, tl_error *err)
     }
     if (written)
         *written = w->number;
+    memcpy(w->done_path, w->path, sizeof w->path);
     return TL_OK;
 }
 
@@ -66,7 +67,7 @@ int tl_writer_submit(tl_writer *w, tl_frame *frame, long number, const tl_scene 
 
 const char *tl_writer_path(const tl_writer *w)
 {
-    return w->path;
+    return w->done_path;
 }
 
 void tl_writer_free(tl_writer *w)

@@ -26,6 +26,7 @@ typedef struct tl_writer {
     long number;
     tl_scene scene;
     char path[4096];
+    char done_path[4096]; /* the path of the frame last waited for */
     int rc; /* its result, and */
     tl_error err;
 } tl_writer;
