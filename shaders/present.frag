@@ -1,23 +1,65 @@
-// Display pass: linear HDR in, tonemapped sRGB out (PNG, movies, window).
+// Display pass: linear HDR in, tonemapped sRGB out (PNG, movies, window),
+// at the output size; it also carries the colour (EXR, without glare) and
+// the distance planes to that size. A scene rendered smaller than the
+// output (quality.render_scale < 1) is upscaled here: Catmull-Rom for
+// radiance (held at >= 0: its negative lobes can ring below zero beside the
+// sun), nearest for distance (an average of two distances is neither).
 // Glare first: a share u_bloom of the light is spread over the image's mip
 // levels 1 to 6 (box averages, smoothed by a tent: the spread keeps the
 // energy), so a small, very bright sun still reads as bright once the
 // tonemap clips it.
-// EXR files hold the colour plane, without glare.
 #include "tonemap.glsl"
 
 uniform sampler2D u_hdr;
+uniform sampler2D u_distance;
+uniform bool u_upscale;   // the scene is smaller than the output
+uniform ivec2 u_out_size; // the output, pixels
 uniform float u_exposure;
 uniform float u_bloom;
 
 layout(location = 0) out vec4 out_display;
+layout(location = 1) out vec4 out_color;
+layout(location = 2) out float out_depth;
+
+// Catmull-Rom weights of the four texels around a sample at fraction t.
+vec4 catmull_rom(float t)
+{
+    return vec4(t * (-0.5 + t * (1.0 - 0.5 * t)), 1.0 + t * t * (-2.5 + 1.5 * t),
+                t * (0.5 + t * (2.0 - 1.5 * t)), t * t * (-0.5 + 0.5 * t));
+}
+
+// The scene's radiance at output position `uv` (0..1), bicubic.
+vec3 upscaled(vec2 uv)
+{
+    ivec2 size = textureSize(u_hdr, 0);
+    vec2 src = uv * vec2(size) - 0.5;
+    vec2 base = floor(src);
+    vec4 wx = catmull_rom(src.x - base.x), wy = catmull_rom(src.y - base.y);
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++) {
+            ivec2 p = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), size - 1);
+            sum += wx[i] * wy[j] * texelFetch(u_hdr, p, 0).rgb;
+        }
+    return max(sum, vec3(0.0));
+}
 
 void main()
 {
-    vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+    vec3 hdr;
+    if (u_upscale) {
+        ivec2 size = textureSize(u_hdr, 0);
+        vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
+        hdr = upscaled(uv);
+        out_depth = texelFetch(u_distance, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).r;
+    } else {
+        hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+        out_depth = texelFetch(u_distance, ivec2(gl_FragCoord.xy), 0).r;
+    }
+    out_color = vec4(hdr, 1.0);
     if (u_bloom > 0.0) {
         vec2 size = vec2(textureSize(u_hdr, 0));
-        vec2 uv = gl_FragCoord.xy / size;
+        vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
         vec3 glare = vec3(0.0);
         for (int level = 1; level <= 6; level++) {
             // A 3x3 tent at the level's own texel spacing: the box-filtered

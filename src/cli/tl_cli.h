@@ -27,11 +27,11 @@ int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeli
 int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 
 /* Writes the effective quality knobs (preset name and every value the
- * preset or the overrides set) as image metadata entries into out[0..12],
- * so a frame records exactly how it was made. Returns the count (13). */
+ * preset or the overrides set) as image metadata entries into out[0..13],
+ * so a frame records exactly how it was made. Returns the count (14). */
 struct tl_quality;
 struct tl_meta;
-#define TL_CLI_QUALITY_META 13
+#define TL_CLI_QUALITY_META 14
 int tl_cli_quality_meta(const struct tl_quality *q, struct tl_meta *out);
 
 /* Prints err as one line (with file:line:col when it has one). */

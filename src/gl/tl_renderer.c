@@ -20,7 +20,7 @@ typedef struct cached_program {
  * buffer when it is asked for. */
 typedef struct target {
     GLuint fbo;
-    GLuint tex[2];
+    GLuint tex[3];
     GLuint depth; /* renderbuffer, 0 when none */
     int attachments;
     int width, height;
@@ -41,7 +41,7 @@ struct tl_renderer {
     cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
     int probe_count;
     target scene;   /* colour RGBA32F + depth R32F */
-    target display; /* tonemapped RGBA32F */
+    target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
     target mirror;  /* the hull reflected in the water RGBA32F + depth */
     GLuint mesh_program[4]; /* per sun disc and sky model */
@@ -185,7 +185,7 @@ static int target_ensure_depth(target *t, int width, int height, int attachments
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
     glGenTextures(attachments, t->tex);
     t->attachments = attachments;
-    GLenum draw[2];
+    GLenum draw[3];
     for (int i = 0; i < attachments; i++) {
         glBindTexture(GL_TEXTURE_2D, t->tex[i]);
         glTexImage2D(GL_TEXTURE_2D, 0, (GLint)formats[i], width, height, 0,
@@ -365,13 +365,14 @@ static void read_rows(int index, int width, int height, int channels, float *dst
     }
 }
 
-int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err)
+int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
+                      tl_error *err)
 {
     const GLenum scene_formats[2] = {GL_RGBA32F, GL_R32F};
-    const GLenum display_formats[1] = {GL_RGBA32F};
+    const GLenum display_formats[3] = {GL_RGBA32F, GL_RGBA32F, GL_R32F};
     int rc = target_ensure(&r->scene, width, height, 2, scene_formats, err);
     if (!rc)
-        rc = target_ensure(&r->display, width, height, 1, display_formats, err);
+        rc = target_ensure(&r->display, out_width, out_height, 3, display_formats, err);
     if (rc)
         return rc;
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
@@ -613,11 +614,13 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
 
 int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
 {
-    int w = r->scene.width, h = r->scene.height;
+    int w = r->display.width, h = r->display.height;
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
     glViewport(0, 0, w, h);
     glUseProgram(r->present_program);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r->scene.tex[1]);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
     if (bloom > 0.0f) { /* the glare reads the image's mip chain */
@@ -625,6 +628,9 @@ int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *e
         glGenerateMipmap(GL_TEXTURE_2D);
     }
     glUniform1i(loc(r->present_program, "u_hdr"), 0);
+    glUniform1i(loc(r->present_program, "u_distance"), 1);
+    glUniform1i(loc(r->present_program, "u_upscale"), r->scene.width != w || r->scene.height != h);
+    glUniform2i(loc(r->present_program, "u_out_size"), w, h);
     glUniform1f(loc(r->present_program, "u_exposure"), exposure);
     glUniform1f(loc(r->present_program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -652,7 +658,7 @@ int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
 int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
                        tl_frame *frame, tl_error *err)
 {
-    int w = r->scene.width, h = r->scene.height;
+    int w = r->display.width, h = r->display.height;
     if (frame->width != w || frame->height != h)
         return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
     int rc = tl_renderer_display(r, exposure, bloom, err);
@@ -665,13 +671,13 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned pla
      * transfers take can be told from the time the drawing took. */
     glFinish();
     double t0 = tl_clock_seconds();
-    /* Each plane is a transfer and a row flip: only the ones asked for. */
-    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
-    if (planes & TL_PLANE_COLOR)
-        read_rows(0, w, h, 4, frame->color, row);
-    if (planes & TL_PLANE_DEPTH)
-        read_rows(1, w, h, 1, frame->depth, row);
+    /* Each plane is a transfer and a row flip: only the ones asked for.
+     * All three come from the display pass, at the output size. */
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    if (planes & TL_PLANE_COLOR)
+        read_rows(1, w, h, 4, frame->color, row);
+    if (planes & TL_PLANE_DEPTH)
+        read_rows(2, w, h, 1, frame->depth, row);
     if (planes & TL_PLANE_DISPLAY)
         read_rows(0, w, h, 4, frame->display, row);
     free(row);
@@ -682,7 +688,7 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned pla
 
 int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)
 {
-    int rc = tl_renderer_begin(r, u->width, u->height, err);
+    int rc = tl_renderer_begin(r, u->width, u->height, u->out_width, u->out_height, err);
     if (!rc)
         rc = tl_renderer_accumulate(r, u, 1.0f, 1, err);
     if (!rc)

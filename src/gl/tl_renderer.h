@@ -40,12 +40,15 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err);
 int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err);
 
 /* A frame built from several passes (motion blur sub-frames): begin clears
- * the float target; each accumulate adds weight x its radiance (weights
- * should sum to 1) and, when write_depth is set, stores its depth; finish
- * runs the display pass with `exposure` and `bloom` (the share of light
- * spread into glare: the display plane only, never the colour plane) and
- * reads everything back. */
-int tl_renderer_begin(tl_renderer *r, int width, int height, tl_error *err);
+ * the float target of width x height; each accumulate adds weight x its
+ * radiance (weights should sum to 1) and, when write_depth is set, stores
+ * its depth; finish runs the display pass at out_width x out_height with
+ * `exposure` and `bloom` (the share of light spread into glare: the
+ * display plane only, never the colour plane) and reads back the planes
+ * asked for. A render smaller than the output (quality.render_scale) is
+ * upscaled there: colour and display by Catmull-Rom, distance nearest. */
+int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
+                      tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,

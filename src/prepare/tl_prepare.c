@@ -343,11 +343,21 @@ static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
     to_float3(s->fog.color, u->fog_color);
 }
 
+void tl_prepare_render_size(const tl_scene *s, int *width, int *height)
+{
+    double k = s->quality.render_scale > 0.0 && s->quality.render_scale < 1.0
+                   ? s->quality.render_scale
+                   : 1.0;
+    *width = (int)fmax(1.0, floor(s->width * k + 0.5));
+    *height = (int)fmax(1.0, floor(s->height * k + 0.5));
+}
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
-    u->width = s->width;
-    u->height = s->height;
+    tl_prepare_render_size(s, &u->width, &u->height);
+    u->out_width = s->width;
+    u->out_height = s->height;
 
     double right[3], up[3], forward[3];
     tl_scene_camera_basis(&s->camera, right, up, forward);
@@ -398,7 +408,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normalize_smoothed = q->normalize_smoothed;
     u->analytic_normals = q->analytic_normals;
     if (q->lod)
-        u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / s->height /
+        u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / u->height /
                                sqrt((double)(q->spp < 1 ? 1 : q->spp)));
     u->spp = q->spp < 1 ? 1 : q->spp;
     u->spp_step = rooks_step(u->spp);

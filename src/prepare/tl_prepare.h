@@ -14,6 +14,10 @@
 #include "scene/tl_scene.h"
 #include "waves/tl_waves.h"
 
+/* The size the ocean renders at for `s`: its size scaled by
+ * quality.render_scale (at least 1 pixel each way). */
+void tl_prepare_render_size(const tl_scene *s, int *width, int *height);
+
 /* Shader features a frame may need; each is a #define in the program.
  * A frame compiles only the code its scene uses. */
 typedef enum tl_feature {
@@ -43,7 +47,8 @@ void tl_feature_describe(unsigned features, char *out, size_t size);
 
 typedef struct tl_frame_uniforms {
     unsigned features;
-    int width, height;
+    int width, height;         /* the ocean's render size (quality.render_scale) */
+    int out_width, out_height; /* the frame's */
 
     /* Camera: basis vectors and lens; the camera sits at the xz origin. */
     float cam_right[3], cam_up[3], cam_forward[3];

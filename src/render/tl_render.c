@@ -226,8 +226,10 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     int rc = tl_scene_validate(&scene, err);
     if (!rc && out)
         rc = ensure_frame(out, scene.width, scene.height, err);
+    int rw, rh;
+    tl_prepare_render_size(&scene, &rw, &rh);
     if (!rc)
-        rc = tl_renderer_begin(r->renderer, scene.width, scene.height, err);
+        rc = tl_renderer_begin(r->renderer, rw, rh, scene.width, scene.height, err);
     if (rc)
         return rc;
     int samples = 1;

@@ -29,6 +29,8 @@ typedef struct tl_quality {
      * kept for `seed` so it reproduces that shader's image: */
     bool miss_at_start;      /* a ray out of steps reports where its march began */
     bool normalize_smoothed; /* renormalise the distance-smoothed normal (false: seed) */
+    double render_scale;     /* the ocean renders at this share of the output's width and
+                                height, then is upscaled (1: full size) */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */
