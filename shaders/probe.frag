@@ -8,6 +8,9 @@
 //   mode 4: the lens's gap to the surface for the pixel at NDC (x, y)
 //   mode 5: the sky's radiance (no sun disc) at elevation x, azimuth y from
 //           the sun's, radians                           (tl_sky_reference)
+//   mode 6: the surface's slope d height / d (x, z) at camera-relative
+//           (x, z) as the analytic normal sees it (the ocean's carried
+//           gradient plus the giant wave's) in .xy, that path's height in .z
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -51,6 +54,15 @@ void main()
         float a = atan(u_sun_dir.x, u_sun_dir.z); // turn azimuth 0 to the sun's
         dir.xz = mat2(cos(a), -sin(a), sin(a), cos(a)) * dir.xz;
         result.xyz = sky_atmosphere(dir, u_sun_dir);
+    }
+    else if (u_probe_mode == 6) {
+        vec2 grad;
+        float value = waves_value_grad(p, u_probe_octaves, 0.0, grad);
+        result.xyz = vec3(grad * u_depth, (value - 1.0) * u_depth);
+#ifdef TL_FEATURE_GIANT_WAVE
+        GiantSample g = giant_sample(p);
+        result.xyz += vec3(g.grad, g.height);
+#endif
     }
 #ifdef TL_FEATURE_FOG
     else if (u_probe_mode == 3)

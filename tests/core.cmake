@@ -36,3 +36,7 @@ add_test(NAME test_bench
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
 set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
+# Extremes (issue 15): every row of docs/precision.md's table; it prints the
+# table. The timeout is the "no hang" bound.
+tl_add_test(test_extremes SOURCES test_extremes.c LIBS tideline_gl)
+set_tests_properties(test_extremes PROPERTIES TIMEOUT 300)
