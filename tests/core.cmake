@@ -36,3 +36,8 @@ add_test(NAME test_bench
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
 set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
+# Soak: renders killed (SIGKILL, SIGTERM) at random moments and resumed with
+# --skip-existing end as an uninterrupted run does, with no temporary left.
+add_test(NAME test_soak
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_soak.sh $<TARGET_FILE:tideline>)
+set_tests_properties(test_soak PROPERTIES PASS_REGULAR_EXPRESSION "SOAK_OK" TIMEOUT 300)
