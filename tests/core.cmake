@@ -41,3 +41,6 @@ set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
 add_test(NAME test_soak
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_soak.sh $<TARGET_FILE:tideline>)
 set_tests_properties(test_soak PROPERTIES PASS_REGULAR_EXPRESSION "SOAK_OK" TIMEOUT 300)
+# The bad-input catalogue of docs/errors.md through `render`, over a good frame.
+tl_add_test(test_errors SOURCES test_errors.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders)
