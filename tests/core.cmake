@@ -40,3 +40,11 @@ set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
 # table. The timeout is the "no hang" bound.
 tl_add_test(test_extremes SOURCES test_extremes.c LIBS tideline_gl)
 set_tests_properties(test_extremes PROPERTIES TIMEOUT 300)
+# Soak: renders killed (SIGKILL, SIGTERM) at random moments and resumed with
+# --skip-existing end as an uninterrupted run does, with no temporary left.
+add_test(NAME test_soak
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_soak.sh $<TARGET_FILE:tideline>)
+set_tests_properties(test_soak PROPERTIES PASS_REGULAR_EXPRESSION "SOAK_OK" TIMEOUT 300)
+# The bad-input catalogue of docs/errors.md through `render`, over a good frame.
+tl_add_test(test_errors SOURCES test_errors.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders)

@@ -348,6 +348,10 @@ static void test_check_writable(void)
     CHECK(tl_image_check_writable(path, &err) != 0);
     CHECK_STR_CONTAINS(err.message, path);
 
+    /* A folder no file can be created in, even by root (access() says yes). */
+    CHECK(tl_image_check_writable("/proc/frame.png", &err) == TL_ERR_USAGE);
+    CHECK_STR_CONTAINS(err.message, "/proc/frame.png: folder '/proc' is not writable");
+
     join(sub, sizeof sub, "folder.exr");
     CHECK(mkdir(sub, 0755) == 0);
     CHECK(tl_image_check_writable(sub, &err) != 0);
@@ -390,6 +394,41 @@ static void test_atomic_file(void)
     struct stat st;
     CHECK(stat(path, &st) == 0 && st.st_size == 5);
     CHECK((st.st_mode & 0777) == (0644 & ~mask));
+    CHECK(count_tmp_files(g_dir) == 0);
+}
+
+static int owns_a_and_b(const char *target, void *ctx)
+{
+    (void)ctx;
+    return strcmp(target, "a.png") == 0 || strcmp(target, "b.png") == 0;
+}
+
+/* A temporary left by a killed writer is removed; one a live writer holds
+ * (its flock), and one of another target, are not. */
+static void test_stale_temporaries(void)
+{
+    char stale[512], other[512], target[512];
+    join(stale, sizeof stale, ".a.png.tmp-Ab12Cd");
+    join(other, sizeof other, ".c.png.tmp-Ab12Cd");
+    FILE *f = fopen(stale, "w");
+    CHECK(f != NULL && fclose(f) == 0);
+    f = fopen(other, "w");
+    CHECK(f != NULL && fclose(f) == 0);
+    tl_atomic_file live;
+    tl_error err;
+    join(target, sizeof target, "b.png");
+    CHECK(tl_atomic_open(&live, target, &err) == 0);
+    CHECK(count_tmp_files(g_dir) == 3);
+    CHECK(tl_atomic_remove_stale(g_dir, owns_a_and_b, NULL) == 1);
+    CHECK(access(stale, F_OK) != 0);
+    CHECK(access(other, F_OK) == 0);
+    CHECK(access(live.tmp_path, F_OK) == 0);
+    /* The live writer is undisturbed, and lets go of its lock on commit. */
+    CHECK(fputs("x", live.fp) >= 0);
+    CHECK(tl_atomic_commit(&live, &err) == 0);
+    CHECK(access(target, F_OK) == 0 && live.lock_fd == -1);
+    unlink(other);
+    unlink(target);
     CHECK(count_tmp_files(g_dir) == 0);
 }
 
@@ -546,6 +585,7 @@ int main(void)
     CHECK(count_tmp_files(g_dir) == 0);
     test_check_writable();
     test_atomic_file();
+    test_stale_temporaries();
     test_read_only_folder();
     /* Fails in the middle of the data (pwrite / fwrite)... */
     test_write_fails_midway("full.exr", 300, 64 * 1024, 0);

@@ -1,9 +1,9 @@
 /* Golden error messages: `tideline check NAME.tl` on every broken timeline
  * in the folder must print exactly NAME.err on stderr and exit 1; files
- * named ok_*.tl are valid (CRLF line endings, UTF-8 comments) and must
- * exit 0 with nothing on stderr. The binary runs inside the folder with the
- * bare file name, so the messages do not depend on where the repo lives.
- * argv[1] is the tideline binary, argv[2] the folder. */
+ * named ok_*.tl are valid (CRLF line endings, a UTF-8 byte-order mark,
+ * UTF-8 comments) and must exit 0 with nothing on stderr. The binary runs inside the folder with
+ * the bare file name, so the messages do not depend on where the repo lives. argv[1] is the
+ * tideline binary, argv[2] the folder. */
 #include <dirent.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -153,6 +153,12 @@ static void check_input_bytes(const char *name, const char *text, size_t len)
         for (size_t i = 0; i < len; i++)
             high |= (unsigned char)text[i] >= 0x80;
         CHECK(high);
+    } else if (strcmp(name, "ok_bom.tl") == 0) {
+        CHECK(len > 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0);
+    } else if (strcmp(name, "utf16.tl") == 0) {
+        CHECK(len > 2 && memcmp(text, "\xff\xfe", 2) == 0);
+    } else if (strcmp(name, "empty_file.tl") == 0) {
+        CHECK(len == 0);
     } else if (strcmp(name, "nul_byte.tl") == 0) {
         CHECK(memchr(text, '\0', len) != NULL);
     } else if (strcmp(name, "long_line.tl") == 0) {

@@ -1,12 +1,16 @@
 #include "tl_atomic.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#define TMP_TAIL ".tmp-XXXXXX"
 
 /* The process umask. umask() can only be read by setting it, which would race
  * with other threads creating files, so read it from /proc where possible. */
@@ -58,19 +62,67 @@ static void sync_folder(const char *path)
     close(fd);
 }
 
+/* Drops the lock (after the temporary is renamed or removed). */
+static void unlock(tl_atomic_file *f)
+{
+    if (f->lock_fd >= 0)
+        (void)close(f->lock_fd);
+    f->lock_fd = -1;
+}
+
+/* mkstemp, then the lock. A cleaner may have locked and removed the new file
+ * between the two (it looked stale): then it is unlinked and we try again. */
+static int create_locked(char *tmp_path, size_t size, int *lock_fd)
+{
+    char pattern[4096];
+    snprintf(pattern, sizeof pattern, "%s", tmp_path);
+    for (int attempt = 0; attempt < 8; attempt++) {
+        snprintf(tmp_path, size, "%s", pattern);
+        int fd = mkstemp(tmp_path);
+        if (fd < 0)
+            return -1;
+        struct stat st;
+        if (flock(fd, LOCK_EX) != 0 || fstat(fd, &st) != 0) {
+            int e = errno;
+            (void)close(fd);
+            (void)unlink(tmp_path);
+            errno = e;
+            return -1;
+        }
+        if (st.st_nlink == 0) {
+            (void)close(fd);
+            continue;
+        }
+        /* A second descriptor on the same open file keeps the lock after
+         * the stream is closed, until the rename. */
+        *lock_fd = fcntl(fd, F_DUPFD_CLOEXEC, 0);
+        if (*lock_fd < 0) {
+            int e = errno;
+            (void)close(fd);
+            (void)unlink(tmp_path);
+            errno = e;
+            return -1;
+        }
+        return fd;
+    }
+    errno = EAGAIN;
+    return -1;
+}
+
 int tl_atomic_open(tl_atomic_file *f, const char *path, tl_error *err)
 {
     f->path[0] = '\0';
     f->tmp_path[0] = '\0';
     f->fd = -1;
     f->fp = NULL;
+    f->lock_fd = -1;
 
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     int dir_len = slash ? (int)(slash - path + 1) : 0;
     if (*base == '\0')
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: not a file name", path);
-    int n = snprintf(f->tmp_path, sizeof f->tmp_path, "%.*s.%s.tmp-XXXXXX", dir_len, path, base);
+    int n = snprintf(f->tmp_path, sizeof f->tmp_path, "%.*s.%s" TMP_TAIL, dir_len, path, base);
     if (strlen(path) >= sizeof f->path || n < 0 || (size_t)n >= sizeof f->tmp_path) {
         f->tmp_path[0] = '\0';
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: path too long", path);
@@ -79,7 +131,7 @@ int tl_atomic_open(tl_atomic_file *f, const char *path, tl_error *err)
 
     /* Same folder as the target, so that the final rename cannot cross
      * file systems and is atomic. */
-    int fd = mkstemp(f->tmp_path);
+    int fd = create_locked(f->tmp_path, sizeof f->tmp_path, &f->lock_fd);
     if (fd < 0) {
         int e = errno;
         f->tmp_path[0] = '\0';
@@ -118,6 +170,7 @@ int tl_atomic_commit(tl_atomic_file *f, tl_error *err)
     if (rename(f->tmp_path, f->path) != 0)
         return fail(f, err, "cannot rename the temporary file over it");
     f->tmp_path[0] = '\0';
+    unlock(f);
     sync_folder(f->path);
     return TL_OK;
 }
@@ -135,4 +188,48 @@ void tl_atomic_abort(tl_atomic_file *f)
         (void)unlink(f->tmp_path);
         f->tmp_path[0] = '\0';
     }
+    unlock(f);
+}
+
+/* The target name of a temporary ".NAME.tmp-XXXXXX", or 0 if `entry` is not
+ * one. */
+static int temp_target(const char *entry, char *target, size_t size)
+{
+    size_t n = strlen(entry), tail = strlen(TMP_TAIL);
+    if (entry[0] != '.' || n < tail + 2 || strncmp(entry + n - tail, ".tmp-", 5) != 0)
+        return 0;
+    size_t len = n - tail - 1;
+    if (len >= size)
+        return 0;
+    memcpy(target, entry + 1, len);
+    target[len] = '\0';
+    return 1;
+}
+
+int tl_atomic_remove_stale(const char *dir, tl_atomic_owns_fn owns, void *ctx)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return 0;
+    int removed = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        char target[256], path[4096 + 256];
+        if (!temp_target(e->d_name, target, sizeof target) || !owns(target, ctx))
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        int fd = open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+        if (fd < 0)
+            continue;
+        /* Locked: a live writer. Unlocked: its writer is gone. The name must
+         * still be the file we locked (a writer may have renamed it). */
+        struct stat held, named;
+        if (flock(fd, LOCK_EX | LOCK_NB) == 0 && fstat(fd, &held) == 0 &&
+            lstat(path, &named) == 0 && S_ISREG(named.st_mode) && held.st_ino == named.st_ino &&
+            held.st_dev == named.st_dev && unlink(path) == 0)
+            removed++;
+        (void)close(fd);
+    }
+    closedir(d);
+    return removed;
 }

@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "tl_atomic.h"
+
 #define TL_SUPPORTED_EXTENSIONS ".exr, .png"
 
 tl_image_format tl_image_format_from_path(const char *path)
@@ -70,6 +72,16 @@ int tl_image_check_writable(const char *path, tl_error *err)
     if (access(dir, W_OK | X_OK) != 0)
         return tl_error_set(err, TL_ERR_USAGE, "%s: folder '%s' is not writable: %s", path, dir,
                             strerror(errno));
+    /* access() says yes to root everywhere and knows nothing of /proc-like
+     * folders: create (and remove) the temporary a write would. */
+    tl_atomic_file probe;
+    tl_error why;
+    if (tl_atomic_open(&probe, path, &why) != 0) {
+        const char *reason = strrchr(why.message, ':'); /* "...: strerror" */
+        return tl_error_set(err, TL_ERR_USAGE, "%s: folder '%s' is not writable: %s", path, dir,
+                            reason ? reason + 2 : why.message);
+    }
+    tl_atomic_abort(&probe);
     return TL_OK;
 }
 

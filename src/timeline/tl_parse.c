@@ -1085,6 +1085,23 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
     p.tl = out;
     p.diags = diags;
     size_t pos = 0;
+    /* Windows editors start UTF-8 files with a byte-order mark: skip it, so
+     * that columns on line 1 count from the first visible character. */
+    if (length >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) {
+        text += 3;
+        length -= 3;
+        p.source = text;
+        p.source_len = length;
+    }
+    if (length >= 2 && ((unsigned char)text[0] == 0xff || (unsigned char)text[0] == 0xfe) &&
+        (unsigned char)text[1] == ((unsigned char)text[0] ^ 0x01)) {
+        p.line_no = 1;
+        tl_parse_diag(&p, 1, 2, NULL,
+                      "the file is UTF-16 (byte-order mark 0x%02x 0x%02x); save it "
+                      "as UTF-8 or ASCII",
+                      (unsigned char)text[0], (unsigned char)text[1]);
+        p.stopped = 1;
+    }
     while (pos < length && !p.stopped) {
         const char *eol = memchr(text + pos, '\n', length - pos);
         size_t len = eol ? (size_t)(eol - (text + pos)) : length - pos;
@@ -1098,7 +1115,8 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
         finish_block(&p);
         if (!p.saw_header) {
             p.line_no = 1;
-            tl_parse_diag(&p, 0, 1, NULL, "a timeline starts with the line 'tideline 1'");
+            tl_parse_diag(&p, 0, 1, NULL, "%sa timeline starts with the line 'tideline 1'",
+                          length == 0 ? "the file is empty: " : "");
         }
         check_links(&p);
         if (diags->errors == 0)
@@ -1140,8 +1158,9 @@ int tl_timeline_parse_file(const char *path, tl_timeline *out, tl_diags *diags, 
     if (!S_ISREG(st.st_mode))
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: not a regular file", path);
     if (st.st_size > TL_PARSE_MAX_BYTES)
-        return tl_error_set(err, TL_ERR_RUNTIME, "%s: %.1f MB is too large for a timeline (limit %d MiB)",
-                            path, (double)st.st_size / 1e6, TL_PARSE_MAX_BYTES >> 20);
+        return tl_error_set(err, TL_ERR_RUNTIME,
+                            "%s: %.1f MiB is too large for a timeline (the limit is %d MiB)", path,
+                            (double)st.st_size / (1 << 20), TL_PARSE_MAX_BYTES >> 20);
     FILE *f = fopen(path, "rb");
     if (!f)
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: cannot open timeline: %s", path,
