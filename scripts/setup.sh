@@ -17,6 +17,8 @@ packages=(
   libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
   xvfb xauth                       # a virtual display for the preview's tests
+  clang-14 libclang-rt-14-dev      # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
+  valgrind                         # memcheck over a still and a render (scripts/valgrind.sh)
 )
 
 missing=()
