@@ -3,8 +3,9 @@
 # under valgrind's memcheck: no memory errors and no definite leak may be
 # reported. The GL driver's own reports are suppressed
 # (tests/sanitizers/valgrind.supp, each entry explained). Tiny frames and
-# the draft preset: llvmpipe under valgrind is slow (about 1.5 minutes on
-# 2 cores, the two runs side by side). Needs build/ (scripts/setup.sh).
+# the draft preset: llvmpipe under valgrind is slow (1 to 2 minutes on 2 cores,
+# the two runs side by side). Logs and output in build/valgrind/. Needs
+# build/ (scripts/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v valgrind >/dev/null || {
@@ -18,10 +19,10 @@ vg=(valgrind --tool=memcheck --error-exitcode=99 --keep-debuginfo=yes --num-call
   --suppressions=tests/sanitizers/valgrind.supp)
 
 "${vg[@]}" --log-file="$out/still.log" build/tideline still timelines/giant_wave.tl \
-  --time 10.5s --size 32x18 --quality draft -o "$out/still.png" -o "$out/still.exr" &
+  --time 10.5s --size 32x18 --quality draft -o "$out/still.png" -o "$out/still.exr" >"$out/still.out" 2>&1 &
 still=$!
 "${vg[@]}" --log-file="$out/render.log" build/tideline render timelines/calm.tl \
-  --frames 0-2 --size 32x18 --quality draft -q -o "$out/render_####.png" &
+  --frames 0-2 --size 32x18 --quality draft -q -o "$out/render_####.png" >"$out/render.out" 2>&1 &
 render=$!
 
 status=0
@@ -30,7 +31,7 @@ for job in "still:$still" "render:$render"; do
   if wait "${job#*:}"; then
     echo "valgrind: $name clean ($(grep -o 'ERROR SUMMARY: .*' "$out/$name.log"))"
   else
-    cat "$out/$name.log"
+    cat "$out/$name.out" "$out/$name.log"
     echo "valgrind: $name reported errors (log above, also in $out/$name.log)"
     status=1
   fi
