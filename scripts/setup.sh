@@ -18,6 +18,8 @@ packages=(
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
   xvfb xauth                       # a virtual display for the preview's tests
   gnuplot-nox                      # tideline bench --plot
+  clang-14 libclang-rt-14-dev      # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
+  valgrind                         # memcheck over a still and a render (scripts/valgrind.sh)
 )
 
 missing=()
