@@ -27,7 +27,6 @@ uniform int u_march_steps;
 uniform float u_hit_epsilon;
 uniform float u_normal_epsilon;
 uniform int u_refine_steps;       // secant steps after a hit
-uniform bool u_analytic_normals;  // normals from the carried gradient (else finite differences)
 uniform bool u_miss_at_start;     // out of steps: the march's start (seed shader)
 uniform bool u_normalize_smoothed; // renormalise the smoothed normal (not the seed)
 

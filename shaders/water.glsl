@@ -3,15 +3,15 @@
 // the giant wave, its slope, light through its crest and its foam; with the
 // boat, its wake.
 
-// Ocean normal at p by finite differences; *value is the ocean's wave value
-// in (0, 1] at p (1 on the crests).
+// Ocean normal at p, exact (analytic normals) or by finite differences;
+// *value is the ocean's wave value in (0, 1] at p (1 on the crests).
 vec3 water_normal(vec2 p, float e, float footprint, out float value)
 {
-    if (u_analytic_normals) {
-        vec2 grad;
-        value = waves_value_grad(p, u_normal_octaves, footprint, grad);
-        return normalize(vec3(-grad.x * u_depth, 1.0, -grad.y * u_depth));
-    }
+#ifdef TL_FEATURE_ANALYTIC_NORMALS
+    vec2 grad;
+    value = waves_value_grad(p, u_normal_octaves, footprint, grad);
+    return normalize(vec3(-grad.x * u_depth, 1.0, -grad.y * u_depth));
+#else
     // Far out (grazing rays meet the water 1e4 m and more away) a fixed
     // step is a few float ulps of p: the difference is rounding noise and
     // the slope it gives can mirror the sun anywhere along the horizon.
@@ -29,6 +29,7 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value)
     float hz = waves_value(pz, u_normal_octaves, footprint) * u_depth;
     vec3 a = vec3(p.x, h, p.y);
     return normalize(cross(a - vec3(px.x, hx, p.y), a - vec3(p.x, hz, pz.y)));
+#endif
 }
 
 vec3 water_color(vec3 ray, vec3 hit, float dist)

@@ -33,22 +33,25 @@ float waves_value(vec2 p, int octaves, float footprint)
     for (int i = 0; i < octaves; i++) {
         vec4 w = u_wave[i];
         float weight = u_wave_weight[i];
-        float detail = 1.0;
-        if (footprint > 0.0) {
-            detail = smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint));
-            if (detail <= 0.0) {
-                float rest = u_wave_weight_tail[i] - u_wave_weight_tail[octaves];
-                sum += TL_WAVE_MEAN * rest;
-                weights += rest;
-                break;
-            }
-        }
         float x = dot(w.xy, p) * w.z + w.w + shift;
+#ifdef TL_FEATURE_LOD
+        float detail = footprint > 0.0 ? smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint)) : 1.0;
+        if (detail <= 0.0) {
+            float rest = u_wave_weight_tail[i] - u_wave_weight_tail[octaves];
+            sum += TL_WAVE_MEAN * rest;
+            weights += rest;
+            break;
+        }
+        float wave = exp(sin(x) - 1.0);
+        p -= w.xy * (wave * cos(x) * weight * u_drag * detail);
+        sum += (detail < 1.0 ? mix(TL_WAVE_MEAN, wave, detail) : wave) * weight;
+#else
+        // The reference shader's octave, operation for operation.
         float wave = exp(sin(x) - 1.0);
         // Derivative drag: small waves gather on the crests of large ones.
-        p -= w.xy * (wave * cos(x) * weight * u_drag * detail);
-        // (detail is exactly 1 without LOD: the sum is the reference's.)
-        sum += (detail < 1.0 ? mix(TL_WAVE_MEAN, wave, detail) : wave) * weight;
+        p -= w.xy * (wave * cos(x) * weight * u_drag);
+        sum += wave * weight;
+#endif
         weights += weight;
     }
     return sum / weights;
@@ -71,6 +74,7 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
         vec4 w = u_wave[i];
         float weight = u_wave_weight[i];
         float detail = 1.0;
+#ifdef TL_FEATURE_LOD
         if (footprint > 0.0) {
             detail = smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint));
             if (detail <= 0.0) {
@@ -80,6 +84,7 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
                 break;
             }
         }
+#endif
         float x = dot(w.xy, p) * w.z + w.w + shift;
         vec2 x_grad = w.z * (w.xy * jac) + shift_grad; // row vector dᵀJ
         float s = sin(x), c = cos(x);

@@ -164,7 +164,8 @@ static void test_success(void)
     CHECK(dir_entries(dir) == 2); /* no temporary files left */
     CHECK(run(NULL, "still", "-v", "--size", "16x16", "-o", png, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "OpenGL");
-    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky\n");
+    CHECK_STR_CONTAINS(
+        out_text, "features: ocean, sun disc, physical sky, level of detail, analytic normals\n");
     /* A timeline's giant wave joins the feature set only while it is there. */
     const char *tl = in_dir(2, "wave.tl");
     FILE *f = fopen(tl, "w");
@@ -177,9 +178,12 @@ static void test_success(void)
         fclose(f);
     }
     CHECK(run(NULL, "still", tl, "-v", "--time", "0", "--size", "16x16", "-o", png, NULL) == 0);
-    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky\n");
+    CHECK_STR_CONTAINS(
+        out_text, "features: ocean, sun disc, physical sky, level of detail, analytic normals\n");
     CHECK(run(NULL, "still", tl, "-v", "--time", "0.5", "--size", "16x16", "-o", png, NULL) == 0);
-    CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, giant wave, physical sky\n");
+    CHECK_STR_CONTAINS(
+        out_text,
+        "features: ocean, sun disc, giant wave, physical sky, level of detail, analytic normals\n");
     /* eval reports the wave and the water under the camera and the crest. */
     CHECK(run(NULL, "eval", tl, "--at", "1s", NULL) == 0);
     /* The crest reaches the centre at giant.arrival, at the deep-water
@@ -407,7 +411,7 @@ static void test_render_scale(void)
 {
     const char *shot = "tideline 1\nsize 96x54\nquality draft\nset render.bloom 0\n"
                        "set camera.pitch 20deg\nset sun.elevation 30deg\n";
-    const char *knob[2] = {"", "set quality.render_scale 0.5\n"};
+    const char *knob[2] = {"set quality.render_scale 1\n", "set quality.render_scale 0.5\n"};
     tl_frame img[2] = {{0}, {0}}, exr = {0};
     for (int i = 0; i < 2; i++) {
         char text[256];

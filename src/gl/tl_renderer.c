@@ -294,7 +294,6 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1i(loc(p, "u_refine_steps"), u->refine_steps);
     glUniform1i(loc(p, "u_miss_at_start"), u->miss_at_start);
     glUniform1i(loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
-    glUniform1i(loc(p, "u_analytic_normals"), u->analytic_normals);
     glUniform3fv(loc(p, "u_sun_dir"), 1, u->sun_dir);
     glUniform1f(loc(p, "u_sun_intensity"), u->sun_intensity);
     glUniform1f(loc(p, "u_sun_sharpness"), u->sun_sharpness);
@@ -612,11 +611,17 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     return gl_check("rendering", err);
 }
 
-int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
+/* The display pass, writing only the planes in `planes` (the display image
+ * always: the window shows it). */
+static int display_pass(tl_renderer *r, float exposure, float bloom, unsigned planes, tl_error *err)
 {
     int w = r->display.width, h = r->display.height;
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    const GLenum draw[3] = {GL_COLOR_ATTACHMENT0,
+                            (planes & TL_PLANE_COLOR) ? GL_COLOR_ATTACHMENT1 : GL_NONE,
+                            (planes & TL_PLANE_DEPTH) ? GL_COLOR_ATTACHMENT2 : GL_NONE};
+    glDrawBuffers(3, draw);
     glViewport(0, 0, w, h);
     glUseProgram(r->present_program);
     glActiveTexture(GL_TEXTURE1);
@@ -635,6 +640,11 @@ int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *e
     glUniform1f(loc(r->present_program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return gl_check("the display pass", err);
+}
+
+int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
+{
+    return display_pass(r, exposure, bloom, TL_PLANE_DISPLAY, err);
 }
 
 int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
@@ -661,7 +671,7 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned pla
     int w = r->display.width, h = r->display.height;
     if (frame->width != w || frame->height != h)
         return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
-    int rc = tl_renderer_display(r, exposure, bloom, err);
+    int rc = display_pass(r, exposure, bloom, planes, err);
     if (rc)
         return rc;
     float *row = malloc((size_t)w * 4 * sizeof(float));

@@ -13,10 +13,15 @@
 #include "waves/tl_giant.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
-    "TL_FEATURE_SUN_DISC",   "TL_FEATURE_GIANT_WAVE", "TL_FEATURE_BOAT", "TL_FEATURE_WAKE",
-    "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",  "TL_FEATURE_FOG",  "TL_FEATURE_SKY_PHYSICAL"};
+    "TL_FEATURE_SUN_DISC",   "TL_FEATURE_GIANT_WAVE",
+    "TL_FEATURE_BOAT",       "TL_FEATURE_WAKE",
+    "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",
+    "TL_FEATURE_FOG",        "TL_FEATURE_SKY_PHYSICAL",
+    "TL_FEATURE_LOD",        "TL_FEATURE_ANALYTIC_NORMALS"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
-    "sun disc", "giant wave", "boat", "wake", "underwater", "waterline", "fog", "physical sky"};
+    "sun disc",        "giant wave",      "boat", "wake",
+    "underwater",      "waterline",       "fog",  "physical sky",
+    "level of detail", "analytic normals"};
 
 const char *tl_feature_define(int index)
 {
@@ -406,7 +411,10 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->refine_steps = q->refine_steps;
     u->miss_at_start = q->miss_at_start;
     u->normalize_smoothed = q->normalize_smoothed;
-    u->analytic_normals = q->analytic_normals;
+    if (q->analytic_normals)
+        u->features |= TL_FEATURE_ANALYTIC_NORMALS;
+    if (q->lod)
+        u->features |= TL_FEATURE_LOD;
     if (q->lod)
         u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / u->height /
                                sqrt((double)(q->spp < 1 ? 1 : q->spp)));

@@ -29,9 +29,13 @@ typedef enum tl_feature {
     TL_FEATURE_WATERLINE = 1u << 5,    /* the lens crosses the surface: decide per pixel */
     TL_FEATURE_FOG = 1u << 6,          /* fog above the water */
     TL_FEATURE_SKY_PHYSICAL = 1u << 7, /* sky.model physical (else the seed's sky) */
+    /* Quality knobs whose code is compiled only when on, so that turning
+     * one off (as `seed` does) costs nothing per octave: */
+    TL_FEATURE_LOD = 1u << 8,              /* quality.lod */
+    TL_FEATURE_ANALYTIC_NORMALS = 1u << 9, /* quality.analytic_normals */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 8
+#define TL_FEATURE_COUNT 10
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -74,7 +78,7 @@ typedef struct tl_frame_uniforms {
     /* Quality knobs. */
     int march_octaves, normal_octaves, march_steps;
     float hit_epsilon, normal_epsilon;
-    int refine_steps, miss_at_start, normalize_smoothed, analytic_normals;
+    int refine_steps, miss_at_start, normalize_smoothed;
     /* Level of detail: the water one pixel covers per metre of distance
      * (radians; 0 = none): pixel angle / sqrt(samples per pixel). */
     float lod_angle;
