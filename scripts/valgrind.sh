@@ -12,6 +12,12 @@ command -v valgrind >/dev/null || {
   echo "valgrind: not installed (Debian package 'valgrind')" >&2
   exit 1
 }
+# Mesa's on-disk shader cache compresses (zstd) blobs that hold
+# uninitialised padding, which memcheck reports inside the driver whenever a
+# program is compiled that the cache has not seen yet. It is Mesa's cache,
+# not tideline's memory: keep it out of these runs (they compile every
+# program fresh, the same on every machine).
+export MESA_SHADER_CACHE_DISABLE=true
 out=build/valgrind
 rm -rf "$out" && mkdir -p "$out"
 vg=(valgrind --tool=memcheck --error-exitcode=99 --keep-debuginfo=yes --num-callers=40
