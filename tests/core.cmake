@@ -40,6 +40,8 @@ set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
 # table. The timeout is the "no hang" bound.
 tl_add_test(test_extremes SOURCES test_extremes.c LIBS tideline_gl)
 set_tests_properties(test_extremes PROPERTIES TIMEOUT 300)
+tl_add_test(test_extremes_params SOURCES test_extremes_params.c LIBS tideline_gl)
+set_tests_properties(test_extremes_params PROPERTIES TIMEOUT 300)
 # Soak: renders killed (SIGKILL, SIGTERM) at random moments and resumed with
 # --skip-existing end as an uninterrupted run does, with no temporary left.
 add_test(NAME test_soak
