@@ -45,7 +45,8 @@ static int renders = 0;
 
 /* Validates and renders `s` (one pass, as tl_render does) and checks the
  * frame; keeps the frame in *f when `keep`. Returns 1 when all is well. */
-static inline int render_checked(tl_renderer *r, const tl_scene *s, const char *label, tl_frame *keep)
+static inline int render_checked(tl_renderer *r, const tl_scene *s, const char *label,
+                                 tl_frame *keep)
 {
     tl_error err;
     tl_error_clear(&err);
@@ -74,6 +75,5 @@ static inline int render_checked(tl_renderer *r, const tl_scene *s, const char *
         tl_frame_free(&f);
     return ok;
 }
-
 
 #endif

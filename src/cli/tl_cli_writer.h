@@ -27,7 +27,7 @@ typedef struct tl_writer {
     tl_scene scene;
     char path[4096];
     char done_path[4096]; /* the path of the frame last waited for */
-    int rc; /* its result, and */
+    int rc;               /* its result, and */
     tl_error err;
 } tl_writer;
 
