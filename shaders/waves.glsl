@@ -19,6 +19,14 @@ float waves_radial_shift(vec2 p)
 // an octave too fine for the pixel averages to.
 const float TL_WAVE_MEAN = 0.4657596;
 
+// How much of an octave of `frequency` (rad/m) a pixel covering
+// `footprint` metres resolves: 1 while its wavelength spans four footprints
+// or more, 0 at two and below (level of detail).
+float waves_detail(float frequency, float footprint)
+{
+    return smoothstep(2.0, 4.0, 6.2831853 / (frequency * footprint));
+}
+
 // Normalised wave value in (0, 1] from the first `octaves` octaves.
 // `footprint`: the width of water one pixel covers there (metres; 0 for
 // none). Level of detail: an octave whose wavelength spans fewer than four
@@ -35,7 +43,7 @@ float waves_value(vec2 p, int octaves, float footprint)
         float weight = u_wave_weight[i];
         float x = dot(w.xy, p) * w.z + w.w + shift;
 #ifdef TL_FEATURE_LOD
-        float detail = footprint > 0.0 ? smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint)) : 1.0;
+        float detail = footprint > 0.0 ? waves_detail(w.z, footprint) : 1.0;
         if (detail <= 0.0) {
             float rest = u_wave_weight_tail[i] - u_wave_weight_tail[octaves];
             sum += TL_WAVE_MEAN * rest;
@@ -76,7 +84,7 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
         float detail = 1.0;
 #ifdef TL_FEATURE_LOD
         if (footprint > 0.0) {
-            detail = smoothstep(2.0, 4.0, 6.2831853 / (w.z * footprint));
+            detail = waves_detail(w.z, footprint);
             if (detail <= 0.0) {
                 float rest = u_wave_weight_tail[i] - u_wave_weight_tail[octaves];
                 sum += TL_WAVE_MEAN * rest;

@@ -413,11 +413,11 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normalize_smoothed = q->normalize_smoothed;
     if (q->analytic_normals)
         u->features |= TL_FEATURE_ANALYTIC_NORMALS;
-    if (q->lod)
+    if (q->lod) {
         u->features |= TL_FEATURE_LOD;
-    if (q->lod)
         u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / u->height /
                                sqrt((double)(q->spp < 1 ? 1 : q->spp)));
+    }
     u->spp = q->spp < 1 ? 1 : q->spp;
     u->spp_step = rooks_step(u->spp);
     u->seed = 0;
