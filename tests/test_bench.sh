@@ -35,6 +35,16 @@ awk -F, 'NR > 1 {
 head -c 8 "$work/out/bench.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' || fail "plot is not a PNG"
 ls -A "$work/out" | grep -q '^\.' && fail "a temporary file was left behind"
 
+# --time-only: no reference row, timings only, error columns empty; with
+# --shader-dir the shaders of a folder (the source tree's) are timed.
+"$tideline" bench "$timelines/calm.tl" --size 64x36 --frames 0 --presets draft --repeat 1 --time-only \
+  --shader-dir "$(dirname "$timelines")/shaders" --csv "$work/t.csv" -q >"$work/t.md"
+grep -q '^| reference' "$work/t.md" && fail "--time-only rendered the reference"
+grep -q '^| draft | [0-9.]* | [0-9.]* | [0-9.]* | [0-9.]* | | | | |$' "$work/t.md" ||
+  fail "--time-only table: $(cat "$work/t.md")"
+awk -F, 'NR == 2 { if ($1 != "draft" || !($6 > 0) || $10 != "" || $15 != 0) exit 1 } END { if (NR != 2) exit 1 }' \
+  "$work/t.csv" || fail "--time-only CSV: $(cat "$work/t.csv")"
+
 # Usage errors: status 2, a message naming the flag, nothing written.
 expect_usage() {
   local want=$1; shift
@@ -53,6 +63,8 @@ expect_usage "march_steps=1.5 is not a whole number in 1..10000" "$timelines/cal
 expect_usage "--repeat" "$timelines/calm.tl" --repeat 0
 expect_usage "not a .png" "$timelines/calm.tl" --plot "$work/p.svg"
 expect_usage "no timeline" --size 64x36
+expect_usage "--time-only does not measure" "$timelines/calm.tl" --time-only --plot "$work/p.png"
+expect_usage "shader" "$timelines/calm.tl" --shader-dir "$work/nowhere" --size 64x36
 expect_usage "--frames" "$timelines/calm.tl" --frames 99999 --size 64x36
 [ ! -e "$work/p.svg" ] || fail "wrote a plot on a usage error"
 "$tideline" bench --help | grep -q 'Usage: tideline bench' || fail "--help"

@@ -4,6 +4,7 @@
  * readback and PNG encoding) and the error against `reference` (PSNR,
  * SSIM, 99th-percentile pixel error, the worst frame). Table on stdout; a
  * CSV and a gnuplot plot on request (tl_cli_bench_report.c). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +41,10 @@ static const char usage[] =
     "                    PRESET:KNOB=V:... is a variant with quality knobs changed,\n"
     "                    e.g. final:lod=off or final:refine_steps=2:hit_epsilon=0.02\n"
     "  --repeat N        timed renders of each frame, 1..100 (default 3)\n"
+    "  --time-only       time the presets only: no `reference` render, no error\n"
+    "                    columns (to time a change quickly)\n"
+    "  --shader-dir DIR  render with the shaders in DIR instead of the built-in\n"
+    "                    copies (to measure a shader edit before rebuilding)\n"
     "  --csv FILE        write the table as CSV (one row per preset)\n"
     "  --plot FILE.png   plot PSNR against ms per frame with the Pareto front\n"
     "                    (needs gnuplot: Debian package gnuplot-nox)\n"
@@ -55,9 +60,9 @@ static const char usage[] =
 typedef struct bench_options {
     const char *timelines[MAX_TIMELINES];
     int timeline_count;
-    const char *frames, *csv, *plot;
+    const char *frames, *csv, *plot, *shader_dir;
     char presets[1024];
-    int width, height, repeat, quiet;
+    int width, height, repeat, quiet, time_only;
 } bench_options;
 
 static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *err)
@@ -83,6 +88,10 @@ static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *e
                 rc = tl_error_set(err, TL_ERR_USAGE, "--presets: the list is too long");
         } else if (tl_args_match(&a, "--repeat", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 100, &o->repeat, err) : 0;
+        } else if (tl_args_match(&a, "--time-only", NULL, false, err)) {
+            o->time_only = 1;
+        } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
+            o->shader_dir = a.value;
         } else if (tl_args_match(&a, "--csv", NULL, true, err)) {
             o->csv = a.value;
         } else if (tl_args_match(&a, "--plot", NULL, true, err)) {
@@ -104,6 +113,10 @@ static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *e
     }
     if (o->timeline_count == 0)
         return tl_error_set(err, TL_ERR_USAGE, "no timeline given (see --help)");
+    if (o->time_only && o->plot)
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "--plot: the plot needs the error against `reference`, which "
+                            "--time-only does not measure");
     return TL_OK;
 }
 
@@ -198,6 +211,7 @@ typedef struct bench_state {
     bench_shot *shots;
     int shot_count;
     tl_render *render;
+    tl_shader_lib lib; /* built in, or --shader-dir */
     int boat_of;      /* the timeline whose boat is uploaded, or -1 */
     char scratch[64]; /* folder for the encoded PNGs */
     double last_progress;
@@ -282,7 +296,7 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
             t[1][i] = render * 1e3;
             t[2][i] = readback * 1e3;
             t[3][i] = encode * 1e3;
-            if (rc || r > 0)
+            if (rc || r > 0 || !s->shots[k].reference)
                 continue;
             tl_metrics m;
             if (tl_metrics_compare(frame.display, s->shots[k].reference, frame.width, frame.height,
@@ -305,8 +319,8 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
         row->ms_render = median(t[1], n);
         row->ms_readback = median(t[2], n);
         row->ms_encode = median(t[3], n);
-        row->psnr = psnr_sum / s->shot_count;
-        row->ssim = ssim_sum / s->shot_count;
+        row->psnr = s->o->time_only ? NAN : psnr_sum / s->shot_count;
+        row->ssim = s->o->time_only ? NAN : ssim_sum / s->shot_count;
     }
     tl_frame_free(&frame);
     for (int i = 0; i < 4; i++)
@@ -381,9 +395,7 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
 static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_quality *presets,
                char names[][TL_BENCH_NAME], int preset_count, tl_error *err)
 {
-    tl_shader_lib lib;
-    tl_shader_lib_embedded(&lib);
-    int rc = tl_render_open(&s->render, &lib, err);
+    int rc = tl_render_open(&s->render, &s->lib, err);
     if (!rc && !mkdtemp(strcpy(s->scratch, "/tmp/tideline-bench-XXXXXX")))
         rc = tl_error_set(err, TL_ERR_RUNTIME, "cannot create a scratch folder in /tmp");
     if (!rc && !s->o->quiet)
@@ -397,10 +409,11 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
         rc = render_shot(s, k, &presets[0], &frame, err);
     }
     tl_frame_free(&frame);
-    if (!rc)
+    int first = s->o->time_only ? 0 : 1; /* row 0: `reference`, when measured */
+    if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
     for (int p = 0; !rc && p < preset_count; p++) {
-        tl_bench_row *row = &rows[1 + p];
+        tl_bench_row *row = &rows[first + p];
         memset(row, 0, sizeof *row);
         memcpy(row->preset, names[p], TL_BENCH_NAME); /* both TL_BENCH_NAME, terminated */
         rc = measure(s, &presets[p], names[p], s->o->repeat, row, err);
@@ -413,7 +426,7 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
         unlink(png);
         rmdir(s->scratch);
     }
-    *row_count = 1 + preset_count;
+    *row_count = first + preset_count;
     return rc;
 }
 
@@ -434,6 +447,10 @@ int tl_cli_bench(int argc, char **argv)
     int preset_count = 0;
     if (!rc)
         rc = parse_presets(o.presets, presets, names, &preset_count, &err);
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    if (!rc && o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err))
+        rc = TL_ERR_USAGE;
     if (!rc && o.csv && tl_cli_make_parent_dirs(o.csv, &err))
         rc = TL_ERR_USAGE;
     if (!rc && o.plot &&
@@ -447,6 +464,7 @@ int tl_cli_bench(int argc, char **argv)
     static bench_state s;
     memset(&s, 0, sizeof s);
     s.o = &o;
+    s.lib = lib;
     s.boat_of = -1;
     int loaded = 0;
     for (; loaded < o.timeline_count; loaded++)

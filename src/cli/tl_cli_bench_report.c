@@ -1,5 +1,6 @@
 /* The bench's reports: a Markdown table, a CSV and a gnuplot plot. */
 #include <errno.h>
+#include <math.h>
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,7 +16,8 @@ extern char **environ;
 void tl_bench_mark_front(tl_bench_row *rows, int count)
 {
     for (int i = 0; i < count; i++) {
-        rows[i].on_front = !rows[i].is_reference;
+        /* Untimed error (--time-only): no front to speak of. */
+        rows[i].on_front = !rows[i].is_reference && !isnan(rows[i].psnr);
         for (int j = 0; j < count && rows[i].on_front; j++) {
             if (j == i || rows[j].is_reference)
                 continue;
@@ -39,6 +41,11 @@ void tl_bench_print_table(FILE *to, const tl_bench_row *rows, int count)
                     r->ms_render);
             continue;
         }
+        if (isnan(r->psnr)) { /* --time-only */
+            fprintf(to, "| %s | %.1f | %.1f | %.1f | %.1f | | | | |\n", r->preset, r->ms_total,
+                    r->ms_render, r->ms_readback, r->ms_encode);
+            continue;
+        }
         fprintf(to, "| %s%s | %.1f | %.1f | %.1f | %.1f | %.2f | %.4f | %.0f | %s (%.2f) |\n",
                 r->preset, r->on_front ? " *" : "", r->ms_total, r->ms_render, r->ms_readback,
                 r->ms_encode, r->psnr, r->ssim, r->p99, r->worst_shot, r->worst_psnr);
@@ -56,6 +63,11 @@ int tl_bench_write_csv(const char *path, const tl_bench_row *rows, int count, in
                   "psnr_db,ssim,p99_levels,worst_psnr_db,worst_frame,pareto\n");
     for (int i = 0; i < count; i++) {
         const tl_bench_row *r = &rows[i];
+        if (isnan(r->psnr)) { /* --time-only: the error columns stay empty */
+            fprintf(f.fp, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,,,,,,0\n", r->preset, width, height,
+                    frames, repeat, r->ms_total, r->ms_render, r->ms_readback, r->ms_encode);
+            continue;
+        }
         fprintf(f.fp, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.4f,%.6f,%.2f,%.4f,%s,%d\n", r->preset,
                 width, height, frames, r->is_reference ? 1 : repeat, r->ms_total, r->ms_render,
                 r->ms_readback, r->ms_encode, r->psnr, r->ssim, r->p99,
