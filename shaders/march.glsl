@@ -34,15 +34,61 @@ float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
     return t1;
 }
 
+// How a march ends: at a hit (`above` there), refined
+// from the last point above the surface; or out of steps, where the last
+// position is the best estimate of the hit (the reference returns the start
+// point instead, which brightens grazing rays at the horizon; `seed` keeps
+// that). The refinement is here, after the march's loop, not inside it:
+// llvmpipe runs a loop body's code for every pixel, hit or not.
+float march_end(vec3 ray, bool hit, float t_start, float t_last, float above_last, float t,
+                float above)
+{
+    if (!hit)
+        return u_miss_at_start ? t_start : t;
+    if (above_last > 0.0 && u_refine_steps > 0)
+        return march_refine(ray, t_last, above_last, t, above);
+    return t;
+}
+
 // Distance along `ray` to the surface, or a negative value for a miss;
 // the view starts t_min along the ray.
+#ifndef TL_FEATURE_GIANT_WAVE
+// The ocean alone: the ray is marched from where it enters the band to
+// where it leaves it, through the trough plane (a hit, held finite for rays
+// that graze the horizon) or up through the crest plane (the sky). Each
+// check and variable here is paid on every step of every pixel.
 float march_water(vec3 ray, float t_min)
 {
-    vec2 box = vec2(TL_FAR, -1.0); // the giant wave's part of the ray (none)
-#ifdef TL_FEATURE_GIANT_WAVE
-    box = giant_ray_interval(ray);
+    if (ray.y >= 0.0 && u_cam_height >= 0.0)
+        return -1.0;
+    float t_high = ray.y < 0.0 ? max((0.0 - u_cam_height) / ray.y, 0.0) : 0.0;
+    float t_end = min((ray.y < 0.0 ? -u_depth - u_cam_height : -u_cam_height) / ray.y, TL_FAR);
+    float t = max(t_high, t_min);
+    float t_start = t;
+    float t_last = t, above_last = -1.0, above_hit = 0.0;
+    bool hit = false;
+    for (int i = 0; i < u_march_steps; i++) {
+        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
+        float above = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
+        if (above < u_hit_epsilon) {
+            hit = true;
+            above_hit = above;
+            break;
+        }
+        t_last = t;
+        above_last = above;
+        t += above;
+        if (t > t_end)
+            return ray.y < 0.0 ? t_end : -1.0;
+    }
+    return march_end(ray, hit, t_start, t_last, above_last, t, above_hit);
+}
+#else
+// With the giant wave: the band and the wave's box.
+float march_water(vec3 ray, float t_min)
+{
+    vec2 box = giant_ray_interval(ray); // the giant wave's part of the ray
     float ray_along = abs(dot(u_giant_frame.xy, ray.xz)), ray_flat = length(ray.xz);
-#endif
     bool has_box = box.x <= box.y;
     if (ray.y >= 0.0 && u_cam_height >= 0.0 && !has_box)
         return -1.0;
@@ -53,6 +99,8 @@ float march_water(vec3 ray, float t_min)
     float t = max(has_box ? min(t_high, box.x) : t_high, t_min);
     float t_start = t;
     float t_last = t, above_last = -1.0; // the previous point, for refinement
+    float above_hit = 0.0;
+    bool hit = false;
     // Over-relaxation inside the box (enhanced sphere tracing): a step of
     // TL_MARCH_RELAX radii stands when the free interval around the point it
     // reaches overlaps the last point's; otherwise the march goes back to
@@ -73,7 +121,6 @@ float march_water(vec3 ray, float t_min)
         }
         float above = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
         float radius = above; // how far along the ray is surely free
-#ifdef TL_FEATURE_GIANT_WAVE
         // A step no longer than `above` moves at most above·ray_along in s.
         if (in_box)
             radius /= 1.0 + ray_flat * giant_slope_near(giant_coords(pos.xz).x, above * ray_along);
@@ -82,9 +129,11 @@ float march_water(vec3 ray, float t_min)
             relaxed = false;
             continue;
         }
-#endif
-        if (above < u_hit_epsilon)
-            return above_last > 0.0 ? march_refine(ray, t_last, above_last, t, above) : t;
+        if (above < u_hit_epsilon) {
+            hit = true;
+            above_hit = above;
+            break;
+        }
         t_last = t;
         above_last = above;
         float next = t + radius;
@@ -103,8 +152,6 @@ float march_water(vec3 ray, float t_min)
         if (t > t_low && (t < box.x || t > box.y))
             return t < box.x ? t_low : max(t_low, box.y);
     }
-    // Out of steps: the last position is the best estimate of the hit (the
-    // reference returns the start point instead, which brightens grazing
-    // rays at the horizon; `seed` keeps that).
-    return u_miss_at_start ? t_start : t;
+    return march_end(ray, hit, t_start, t_last, above_last, t, above_hit);
 }
+#endif

@@ -25,8 +25,9 @@
 #include "underwater.glsl"
 #endif
 
-// Supersampling: u_spp stratified samples per pixel (N-rooks: sample s
-// takes x stratum s and y stratum (s * u_spp_step) mod u_spp, jittered
+// Supersampling (TL_FEATURE_SUPERSAMPLE): u_spp stratified samples per
+// pixel (N-rooks: sample s takes x stratum s and y stratum
+// (s * u_spp_step) mod u_spp, jittered
 // inside its cell by a hash of pixel, sample and u_seed, so a frame is the
 // same every time it is rendered). One draw takes samples u_sample_first
 // .. u_sample_first + u_sample_count - 1 (the renderer splits a pixel's
@@ -128,6 +129,7 @@ vec3 trace(vec3 ray, out float dist)
 
 void main()
 {
+#ifdef TL_FEATURE_SUPERSAMPLE
     vec3 sum = vec3(0.0);
     int good = 0;
     // Depth of a supersampled pixel: the nearest surface any sample saw.
@@ -145,6 +147,14 @@ void main()
         depth = min(depth, dist);
     }
     vec3 color = good > 0 ? sum / float(good) : vec3(0.0);
+#else
+    // One sample at the pixel's centre, without the loop: around the whole
+    // trace it costs llvmpipe a sixth of the frame.
+    float depth;
+    vec3 color = trace(camera_ray(gl_FragCoord.xy), depth);
+    if (any(isnan(color)) || any(isinf(color))) // the same last guard
+        color = vec3(0.0);
+#endif
     out_color = vec4(color, 1.0) * u_sample_weight;
     out_depth = depth;
 }

@@ -8,11 +8,13 @@
 // levels 1 to 6 (box averages, smoothed by a tent: the spread keeps the
 // energy), so a small, very bright sun still reads as bright once the
 // tonemap clips it.
+// The upscale (TL_PRESENT_UPSCALE) and the glare (TL_PRESENT_GLARE) are
+// compiled in only when a frame uses them: llvmpipe runs an `if` body for
+// every pixel whether taken or not.
 #include "tonemap.glsl"
 
 uniform sampler2D u_hdr;
 uniform sampler2D u_distance;
-uniform bool u_upscale;   // the scene is smaller than the output
 uniform ivec2 u_out_size; // the output, pixels
 uniform float u_exposure;
 uniform float u_bloom;
@@ -21,6 +23,7 @@ layout(location = 0) out vec4 out_display;
 layout(location = 1) out vec4 out_color;
 layout(location = 2) out float out_depth;
 
+#ifdef TL_PRESENT_UPSCALE
 // Catmull-Rom weights of the four texels around a sample at fraction t.
 vec4 catmull_rom(float t)
 {
@@ -43,21 +46,22 @@ vec3 upscaled(vec2 uv)
         }
     return max(sum, vec3(0.0));
 }
+#endif
 
 void main()
 {
-    vec3 hdr;
-    if (u_upscale) {
-        ivec2 size = textureSize(u_hdr, 0);
-        vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
-        hdr = upscaled(uv);
-        out_depth = texelFetch(u_distance, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).r;
-    } else {
-        hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
-        out_depth = texelFetch(u_distance, ivec2(gl_FragCoord.xy), 0).r;
-    }
+#ifdef TL_PRESENT_UPSCALE
+    ivec2 size = textureSize(u_hdr, 0);
+    vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
+    vec3 hdr = upscaled(uv);
+    out_depth = texelFetch(u_distance, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).r;
+#else
+    vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+    out_depth = texelFetch(u_distance, ivec2(gl_FragCoord.xy), 0).r;
+#endif
     out_color = vec4(hdr, 1.0);
-    if (u_bloom > 0.0) {
+#ifdef TL_PRESENT_GLARE
+    {
         vec2 size = vec2(textureSize(u_hdr, 0));
         vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
         vec3 glare = vec3(0.0);
@@ -75,5 +79,6 @@ void main()
         }
         hdr = mix(hdr, glare / 6.0, u_bloom);
     }
+#endif
     out_display = vec4(tonemap_srgb_encode(tonemap_aces(hdr * u_exposure)), 1.0);
 }

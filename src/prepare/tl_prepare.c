@@ -17,11 +17,12 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_BOAT",       "TL_FEATURE_WAKE",
     "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",
     "TL_FEATURE_FOG",        "TL_FEATURE_SKY_PHYSICAL",
-    "TL_FEATURE_LOD",        "TL_FEATURE_ANALYTIC_NORMALS"};
+    "TL_FEATURE_LOD",        "TL_FEATURE_ANALYTIC_NORMALS",
+    "TL_FEATURE_SUPERSAMPLE"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
-    "sun disc",        "giant wave",      "boat", "wake",
-    "underwater",      "waterline",       "fog",  "physical sky",
-    "level of detail", "analytic normals"};
+    "sun disc",        "giant wave",       "boat",         "wake",
+    "underwater",      "waterline",        "fog",          "physical sky",
+    "level of detail", "analytic normals", "supersampling"};
 
 const char *tl_feature_define(int index)
 {
@@ -419,6 +420,8 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
                                sqrt((double)(q->spp < 1 ? 1 : q->spp)));
     }
     u->spp = q->spp < 1 ? 1 : q->spp;
+    if (u->spp > 1)
+        u->features |= TL_FEATURE_SUPERSAMPLE;
     u->spp_step = rooks_step(u->spp);
     u->seed = 0;
 

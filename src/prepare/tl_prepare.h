@@ -33,9 +33,10 @@ typedef enum tl_feature {
      * one off (as `seed` does) costs nothing per octave: */
     TL_FEATURE_LOD = 1u << 8,              /* quality.lod */
     TL_FEATURE_ANALYTIC_NORMALS = 1u << 9, /* quality.analytic_normals */
+    TL_FEATURE_SUPERSAMPLE = 1u << 10,     /* quality.spp > 1 */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 10
+#define TL_FEATURE_COUNT 11
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
