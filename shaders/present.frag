@@ -5,9 +5,8 @@
 // radiance (held at >= 0: its negative lobes can ring below zero beside the
 // sun), nearest for distance (an average of two distances is neither).
 // Glare first: a share u_bloom of the light is spread over the image's mip
-// levels 1 to 6 (box averages, smoothed by a tent: the spread keeps the
-// energy), so a small, very bright sun still reads as bright once the
-// tonemap clips it.
+// levels 1 to 6 (glare.frag; the spread keeps the energy), so a small, very
+// bright sun still reads as bright once the tonemap clips it.
 // The upscale (TL_PRESENT_UPSCALE) and the glare (TL_PRESENT_GLARE) are
 // compiled in only when a frame uses them: llvmpipe runs an `if` body for
 // every pixel whether taken or not.
@@ -15,6 +14,7 @@
 
 uniform sampler2D u_hdr;
 uniform sampler2D u_distance;
+uniform sampler2D u_glare; // glare.frag's image (TL_PRESENT_GLARE)
 uniform ivec2 u_out_size; // the output, pixels
 uniform float u_exposure;
 uniform float u_bloom;
@@ -61,24 +61,7 @@ void main()
 #endif
     out_color = vec4(hdr, 1.0);
 #ifdef TL_PRESENT_GLARE
-    {
-        vec2 size = vec2(textureSize(u_hdr, 0));
-        vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
-        vec3 glare = vec3(0.0);
-        for (int level = 1; level <= 6; level++) {
-            // A 3x3 tent at the level's own texel spacing: the box-filtered
-            // mip chain alone shows its blocks around a bright sun.
-            vec2 texel = exp2(float(level)) / size;
-            vec3 sum = vec3(0.0);
-            for (int j = -1; j <= 1; j++)
-                for (int i = -1; i <= 1; i++) {
-                    float w = float((2 - abs(i)) * (2 - abs(j)));
-                    sum += w * textureLod(u_hdr, uv + vec2(i, j) * texel, float(level)).rgb;
-                }
-            glare += sum / 16.0;
-        }
-        hdr = mix(hdr, glare / 6.0, u_bloom);
-    }
+    hdr = mix(hdr, texture(u_glare, gl_FragCoord.xy / vec2(u_out_size)).rgb, u_bloom);
 #endif
     out_display = vec4(tonemap_srgb_encode(tonemap_aces(hdr * u_exposure)), 1.0);
 }

@@ -7,54 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/tl_clock.h"
+#include "gl/tl_renderer_internal.h"
 
-#define MAX_PROGRAMS 16
-
-typedef struct cached_program {
-    unsigned features;
-    GLuint program;
-} cached_program;
-
-/* A framebuffer with float colour attachments of one size, and a depth
- * buffer when it is asked for. */
-typedef struct target {
-    GLuint fbo;
-    GLuint tex[3];
-    GLuint depth; /* renderbuffer, 0 when none */
-    int attachments;
-    int width, height;
-} target;
-
-/* The boat's mesh on the GPU: interleaved position, normal, colour. */
-typedef struct gpu_mesh {
-    GLuint vao, vbo, ibo;
-    GLsizei indices;
-} gpu_mesh;
-
-struct tl_renderer {
-    tl_shader_lib lib;
-    GLuint vao;
-    cached_program programs[MAX_PROGRAMS];
-    int program_count;
-    /* The display pass per variant: bit 0 upscales (render scale < 1), bit
-     * 1 adds glare. Each is its own program: llvmpipe runs the code of an
-     * `if` for every pixel, taken or not, so code a frame does not use must
-     * not be compiled in (12 of 14 ms of a 640x360 display pass). */
-    GLuint present_programs[4];
-    cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
-    int probe_count;
-    target scene;   /* colour RGBA32F + depth R32F */
-    target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
-    target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
-    target mirror;  /* the hull reflected in the water RGBA32F + depth */
-    GLuint mesh_program[4]; /* per sun disc and sky model */
-    GLuint sky_view;        /* the physical sky's sky-view table */
-    gpu_mesh mesh;
-    double readback_seconds; /* of the last tl_renderer_finish */
-};
-
-static int gl_check(const char *what, tl_error *err)
+int tl_renderer_check(const char *what, tl_error *err)
 {
     GLenum e = glGetError();
     if (e != GL_NO_ERROR)
@@ -84,8 +39,8 @@ static GLuint compile_stage(GLenum stage, const tl_shader_source *src, tl_error 
 }
 
 /* Builds vertex `vs` + fragment `fs` with the given #defines. */
-static GLuint build_program(tl_renderer *r, const char *vs, const char *fs, const char *defines,
-                            tl_error *err)
+GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
+                                 const char *defines, tl_error *err)
 {
     tl_shader_source vsrc, fsrc;
     if (tl_shader_compose(&r->lib, vs, defines, &vsrc, err))
@@ -122,7 +77,7 @@ static GLuint build_program(tl_renderer *r, const char *vs, const char *fs, cons
 }
 
 /* The #defines every program shares, plus one per feature bit. */
-static void make_defines(unsigned features, char *out, size_t size)
+void tl_renderer_defines(unsigned features, char *out, size_t size)
 {
     int n =
         snprintf(out, size,
@@ -144,8 +99,8 @@ static GLuint ocean_program(tl_renderer *r, unsigned features, tl_error *err)
         if (r->programs[i].features == features)
             return r->programs[i].program;
     char defines[512];
-    make_defines(features, defines, sizeof defines);
-    GLuint p = build_program(r, "fullscreen.vert", "ocean.frag", defines, err);
+    tl_renderer_defines(features, defines, sizeof defines);
+    GLuint p = tl_renderer_build_program(r, "fullscreen.vert", "ocean.frag", defines, err);
     if (!p)
         return 0;
     if (r->program_count == MAX_PROGRAMS) { /* evict the oldest */
@@ -157,28 +112,7 @@ static GLuint ocean_program(tl_renderer *r, unsigned features, tl_error *err)
     return p;
 }
 
-enum { PRESENT_UPSCALE = 1, PRESENT_GLARE = 2 };
-
-static GLuint build_present(tl_renderer *r, int variant, tl_error *err)
-{
-    char defines[640];
-    make_defines(0, defines, sizeof defines);
-    size_t n = strlen(defines);
-    snprintf(defines + n, sizeof defines - n, "%s%s",
-             (variant & PRESENT_UPSCALE) ? "#define TL_PRESENT_UPSCALE 1\n" : "",
-             (variant & PRESENT_GLARE) ? "#define TL_PRESENT_GLARE 1\n" : "");
-    return build_program(r, "fullscreen.vert", "present.frag", defines, err);
-}
-
-/* The display pass's program for `variant`, built on first use. */
-static GLuint present_program(tl_renderer *r, int variant, tl_error *err)
-{
-    if (!r->present_programs[variant])
-        r->present_programs[variant] = build_present(r, variant, err);
-    return r->present_programs[variant];
-}
-
-static void target_free(target *t)
+void tl_renderer_target_free(target *t)
 {
     if (t->fbo)
         glDeleteFramebuffers(1, &t->fbo);
@@ -194,8 +128,8 @@ static void target_free(target *t)
 static int target_ensure_depth(target *t, int width, int height, int attachments,
                                const GLenum *formats, int depth, tl_error *err);
 
-static int target_ensure(target *t, int width, int height, int attachments, const GLenum *formats,
-                         tl_error *err)
+int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
+                              const GLenum *formats, tl_error *err)
 {
     return target_ensure_depth(t, width, height, attachments, formats, 0, err);
 }
@@ -205,7 +139,7 @@ static int target_ensure_depth(target *t, int width, int height, int attachments
 {
     if (t->fbo && t->width == width && t->height == height)
         return TL_OK;
-    target_free(t);
+    tl_renderer_target_free(t);
     glGenFramebuffers(1, &t->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
     glGenTextures(attachments, t->tex);
@@ -234,14 +168,14 @@ static int target_ensure_depth(target *t, int width, int height, int attachments
     }
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        target_free(t);
+        tl_renderer_target_free(t);
         return tl_error_set(err, TL_ERR_RUNTIME,
                             "cannot create a %dx%d float framebuffer (status 0x%04x)", width,
                             height, status);
     }
     t->width = width;
     t->height = height;
-    return gl_check("framebuffer creation", err);
+    return tl_renderer_check("framebuffer creation", err);
 }
 
 int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err)
@@ -252,12 +186,12 @@ int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *er
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     r->lib = *lib;
     glGenVertexArrays(1, &r->vao); /* core profile draws need a bound VAO */
-    if (!present_program(r, 0, err)) {
+    if (!tl_renderer_present_program(r, 0, err)) {
         tl_renderer_destroy(r);
         return err ? (int)err->status : TL_ERR_RUNTIME;
     }
     *out = r;
-    return gl_check("renderer setup", err);
+    return tl_renderer_check("renderer setup", err);
 }
 
 void tl_renderer_destroy(tl_renderer *r)
@@ -271,10 +205,13 @@ void tl_renderer_destroy(tl_renderer *r)
             glDeleteProgram(r->present_programs[i]);
     for (int i = 0; i < r->probe_count; i++)
         glDeleteProgram(r->probes[i].program);
-    target_free(&r->scene);
-    target_free(&r->display);
-    target_free(&r->boat);
-    target_free(&r->mirror);
+    tl_renderer_target_free(&r->scene);
+    tl_renderer_target_free(&r->display);
+    tl_renderer_target_free(&r->boat);
+    tl_renderer_target_free(&r->mirror);
+    tl_renderer_target_free(&r->glare);
+    if (r->glare_program)
+        glDeleteProgram(r->glare_program);
     tl_renderer_set_mesh(r, NULL, NULL);
     for (int i = 0; i < 4; i++)
         if (r->mesh_program[i])
@@ -285,7 +222,7 @@ void tl_renderer_destroy(tl_renderer *r)
     free(r);
 }
 
-static GLint loc(GLuint p, const char *name)
+GLint tl_renderer_loc(GLuint p, const char *name)
 {
     return glGetUniformLocation(p, name);
 }
@@ -294,96 +231,79 @@ static GLint loc(GLuint p, const char *name)
  * optimised away and have location -1, which GL ignores. */
 static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
 {
-    glUniform2f(loc(p, "u_resolution"), (float)u->width, (float)u->height);
-    glUniform3fv(loc(p, "u_cam_right"), 1, u->cam_right);
-    glUniform3fv(loc(p, "u_cam_up"), 1, u->cam_up);
-    glUniform3fv(loc(p, "u_cam_forward"), 1, u->cam_forward);
-    glUniform1f(loc(p, "u_tan_half_vfov"), u->tan_half_vfov);
-    glUniform1f(loc(p, "u_cam_height"), u->cam_height);
-    glUniform2fv(loc(p, "u_radial_dir"), 1, u->radial_dir);
-    glUniform1f(loc(p, "u_radial_len"), u->radial_len);
-    glUniform1f(loc(p, "u_radial_phase"), u->radial_phase);
-    glUniform4fv(loc(p, "u_wave"), u->octaves, &u->wave[0][0]);
-    glUniform1fv(loc(p, "u_wave_weight"), u->octaves, u->wave_weight);
-    glUniform1fv(loc(p, "u_wave_weight_tail"), TL_MAX_OCTAVES + 1, u->wave_weight_tail);
-    glUniform1f(loc(p, "u_lod_angle"), u->lod_angle);
-    glUniform1f(loc(p, "u_drag"), u->drag);
-    glUniform1f(loc(p, "u_depth"), u->depth);
-    glUniform1i(loc(p, "u_march_octaves"), u->march_octaves);
-    glUniform1i(loc(p, "u_normal_octaves"), u->normal_octaves);
-    glUniform1i(loc(p, "u_march_steps"), u->march_steps);
-    glUniform1f(loc(p, "u_hit_epsilon"), u->hit_epsilon);
-    glUniform1f(loc(p, "u_normal_epsilon"), u->normal_epsilon);
-    glUniform1i(loc(p, "u_refine_steps"), u->refine_steps);
-    glUniform1i(loc(p, "u_miss_at_start"), u->miss_at_start);
-    glUniform1i(loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
-    glUniform3fv(loc(p, "u_sun_dir"), 1, u->sun_dir);
-    glUniform1f(loc(p, "u_sun_intensity"), u->sun_intensity);
-    glUniform1f(loc(p, "u_sun_sharpness"), u->sun_sharpness);
-    glUniform1f(loc(p, "u_sky_brightness"), u->sky_brightness);
-    glUniform1f(loc(p, "u_fresnel_f0"), u->fresnel_f0);
-    glUniform3fv(loc(p, "u_scatter_color"), 1, u->scatter_color);
-    glUniform1f(loc(p, "u_scatter_strength"), u->scatter_strength);
-    glUniform1f(loc(p, "u_scatter_base"), u->scatter_base);
-    glUniform1f(loc(p, "u_normal_smooth_max"), u->normal_smooth_max);
-    glUniform1f(loc(p, "u_normal_smooth_rate"), u->normal_smooth_rate);
-    glUniform1f(loc(p, "u_normal_smooth_gain"), u->normal_smooth_gain);
-    glUniform1i(loc(p, "u_spp"), u->spp);
-    glUniform1i(loc(p, "u_spp_step"), u->spp_step);
-    glUniform1ui(loc(p, "u_seed"), u->seed);
+    glUniform2f(tl_renderer_loc(p, "u_resolution"), (float)u->width, (float)u->height);
+    glUniform3fv(tl_renderer_loc(p, "u_cam_right"), 1, u->cam_right);
+    glUniform3fv(tl_renderer_loc(p, "u_cam_up"), 1, u->cam_up);
+    glUniform3fv(tl_renderer_loc(p, "u_cam_forward"), 1, u->cam_forward);
+    glUniform1f(tl_renderer_loc(p, "u_tan_half_vfov"), u->tan_half_vfov);
+    glUniform1f(tl_renderer_loc(p, "u_cam_height"), u->cam_height);
+    glUniform2fv(tl_renderer_loc(p, "u_radial_dir"), 1, u->radial_dir);
+    glUniform1f(tl_renderer_loc(p, "u_radial_len"), u->radial_len);
+    glUniform1f(tl_renderer_loc(p, "u_radial_phase"), u->radial_phase);
+    glUniform4fv(tl_renderer_loc(p, "u_wave"), u->octaves, &u->wave[0][0]);
+    glUniform1fv(tl_renderer_loc(p, "u_wave_weight"), u->octaves, u->wave_weight);
+    glUniform1fv(tl_renderer_loc(p, "u_wave_weight_tail"), TL_MAX_OCTAVES + 1, u->wave_weight_tail);
+    glUniform1f(tl_renderer_loc(p, "u_lod_angle"), u->lod_angle);
+    glUniform1f(tl_renderer_loc(p, "u_drag"), u->drag);
+    glUniform1f(tl_renderer_loc(p, "u_depth"), u->depth);
+    glUniform1i(tl_renderer_loc(p, "u_march_octaves"), u->march_octaves);
+    glUniform1i(tl_renderer_loc(p, "u_normal_octaves"), u->normal_octaves);
+    glUniform1i(tl_renderer_loc(p, "u_march_steps"), u->march_steps);
+    glUniform1f(tl_renderer_loc(p, "u_hit_epsilon"), u->hit_epsilon);
+    glUniform1f(tl_renderer_loc(p, "u_normal_epsilon"), u->normal_epsilon);
+    glUniform1i(tl_renderer_loc(p, "u_refine_steps"), u->refine_steps);
+    glUniform1i(tl_renderer_loc(p, "u_miss_at_start"), u->miss_at_start);
+    glUniform1i(tl_renderer_loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
+    glUniform3fv(tl_renderer_loc(p, "u_sun_dir"), 1, u->sun_dir);
+    glUniform1f(tl_renderer_loc(p, "u_sun_intensity"), u->sun_intensity);
+    glUniform1f(tl_renderer_loc(p, "u_sun_sharpness"), u->sun_sharpness);
+    glUniform1f(tl_renderer_loc(p, "u_sky_brightness"), u->sky_brightness);
+    glUniform1f(tl_renderer_loc(p, "u_fresnel_f0"), u->fresnel_f0);
+    glUniform3fv(tl_renderer_loc(p, "u_scatter_color"), 1, u->scatter_color);
+    glUniform1f(tl_renderer_loc(p, "u_scatter_strength"), u->scatter_strength);
+    glUniform1f(tl_renderer_loc(p, "u_scatter_base"), u->scatter_base);
+    glUniform1f(tl_renderer_loc(p, "u_normal_smooth_max"), u->normal_smooth_max);
+    glUniform1f(tl_renderer_loc(p, "u_normal_smooth_rate"), u->normal_smooth_rate);
+    glUniform1f(tl_renderer_loc(p, "u_normal_smooth_gain"), u->normal_smooth_gain);
+    glUniform1i(tl_renderer_loc(p, "u_spp"), u->spp);
+    glUniform1i(tl_renderer_loc(p, "u_spp_step"), u->spp_step);
+    glUniform1ui(tl_renderer_loc(p, "u_seed"), u->seed);
     if (u->features & TL_FEATURE_GIANT_WAVE) {
-        glUniform4fv(loc(p, "u_giant_frame"), 1, u->giant_frame);
-        glUniform4fv(loc(p, "u_giant_shape"), 1, u->giant_shape);
-        glUniform4fv(loc(p, "u_giant_mask"), 1, u->giant_mask);
-        glUniform4fv(loc(p, "u_giant_bounds"), 1, u->giant_bounds);
-        glUniform4fv(loc(p, "u_giant_foam"), 1, u->giant_foam);
-        glUniform4fv(loc(p, "u_giant_scatter"), 1, u->giant_scatter);
-        glUniform3fv(loc(p, "u_giant_scatter_color"), 1, u->giant_scatter_color);
-        glUniform1i(loc(p, "u_giant_iterations"), u->giant_iterations);
-        glUniform1fv(loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
-        glUniform2fv(loc(p, "u_giant_world"), 1, u->giant_world);
+        glUniform4fv(tl_renderer_loc(p, "u_giant_frame"), 1, u->giant_frame);
+        glUniform4fv(tl_renderer_loc(p, "u_giant_shape"), 1, u->giant_shape);
+        glUniform4fv(tl_renderer_loc(p, "u_giant_mask"), 1, u->giant_mask);
+        glUniform4fv(tl_renderer_loc(p, "u_giant_bounds"), 1, u->giant_bounds);
+        glUniform4fv(tl_renderer_loc(p, "u_giant_foam"), 1, u->giant_foam);
+        glUniform4fv(tl_renderer_loc(p, "u_giant_scatter"), 1, u->giant_scatter);
+        glUniform3fv(tl_renderer_loc(p, "u_giant_scatter_color"), 1, u->giant_scatter_color);
+        glUniform1i(tl_renderer_loc(p, "u_giant_iterations"), u->giant_iterations);
+        glUniform1fv(tl_renderer_loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
+        glUniform2fv(tl_renderer_loc(p, "u_giant_world"), 1, u->giant_world);
     }
     if (u->features & TL_FEATURE_UNDERWATER) {
-        glUniform3fv(loc(p, "u_water_sigma"), 1, u->water_sigma);
-        glUniform1f(loc(p, "u_water_scattering"), u->water_scattering);
-        glUniform1f(loc(p, "u_water_ior"), u->water_ior);
-        glUniform1f(loc(p, "u_cam_depth"), u->cam_depth);
-        glUniform1f(loc(p, "u_lens"), u->lens);
-        glUniform3fv(loc(p, "u_sun_water"), 1, u->sun_water);
-        glUniform1f(loc(p, "u_sun_water_trans"), u->sun_water_trans);
+        glUniform3fv(tl_renderer_loc(p, "u_water_sigma"), 1, u->water_sigma);
+        glUniform1f(tl_renderer_loc(p, "u_water_scattering"), u->water_scattering);
+        glUniform1f(tl_renderer_loc(p, "u_water_ior"), u->water_ior);
+        glUniform1f(tl_renderer_loc(p, "u_cam_depth"), u->cam_depth);
+        glUniform1f(tl_renderer_loc(p, "u_lens"), u->lens);
+        glUniform3fv(tl_renderer_loc(p, "u_sun_water"), 1, u->sun_water);
+        glUniform1f(tl_renderer_loc(p, "u_sun_water_trans"), u->sun_water_trans);
     }
     if (u->features & TL_FEATURE_SKY_PHYSICAL) {
-        glUniform1f(loc(p, "u_sky_scale"), u->sky_scale);
-        glUniform3fv(loc(p, "u_sun_light"), 1, u->sun_light);
-        glUniform1f(loc(p, "u_sun_cos_radius"), u->sun_cos_radius);
-        glUniform3fv(loc(p, "u_sky_ambient"), 1, u->sky_ambient);
-        glUniform1i(loc(p, "u_sky_view"), 4); /* bound by tl_renderer_set_sky_view */
+        glUniform1f(tl_renderer_loc(p, "u_sky_scale"), u->sky_scale);
+        glUniform3fv(tl_renderer_loc(p, "u_sun_light"), 1, u->sun_light);
+        glUniform1f(tl_renderer_loc(p, "u_sun_cos_radius"), u->sun_cos_radius);
+        glUniform3fv(tl_renderer_loc(p, "u_sky_ambient"), 1, u->sky_ambient);
+        glUniform1i(tl_renderer_loc(p, "u_sky_view"), 4); /* bound by tl_renderer_set_sky_view */
     }
     if (u->features & TL_FEATURE_FOG) {
-        glUniform2fv(loc(p, "u_fog"), 1, u->fog);
-        glUniform3fv(loc(p, "u_fog_color"), 1, u->fog_color);
+        glUniform2fv(tl_renderer_loc(p, "u_fog"), 1, u->fog);
+        glUniform3fv(tl_renderer_loc(p, "u_fog_color"), 1, u->fog_color);
     }
     if (u->features & TL_FEATURE_WAKE) {
-        glUniform4fv(loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
-        glUniform4fv(loc(p, "u_wake_params"), 1, u->wake_params);
-        glUniform2fv(loc(p, "u_world_offset"), 1, u->world_offset);
-    }
-}
-
-/* Reads attachment `index` of the bound framebuffer in one transfer, then
- * flips GL's bottom-up rows into image order in place. */
-static void read_rows(int index, int width, int height, int channels, float *dst, float *row)
-{
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)index);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width, height, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT, dst);
-    size_t bytes = (size_t)width * (size_t)channels * sizeof(float);
-    for (int y = 0; y < height / 2; y++) {
-        float *a = dst + (size_t)y * (size_t)width * (size_t)channels;
-        float *b = dst + (size_t)(height - 1 - y) * (size_t)width * (size_t)channels;
-        memcpy(row, a, bytes);
-        memcpy(a, b, bytes);
-        memcpy(b, row, bytes);
+        glUniform4fv(tl_renderer_loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
+        glUniform4fv(tl_renderer_loc(p, "u_wake_params"), 1, u->wake_params);
+        glUniform2fv(tl_renderer_loc(p, "u_world_offset"), 1, u->world_offset);
     }
 }
 
@@ -392,9 +312,9 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
 {
     const GLenum scene_formats[2] = {GL_RGBA32F, GL_R32F};
     const GLenum display_formats[3] = {GL_RGBA32F, GL_RGBA32F, GL_R32F};
-    int rc = target_ensure(&r->scene, width, height, 2, scene_formats, err);
+    int rc = tl_renderer_target_ensure(&r->scene, width, height, 2, scene_formats, err);
     if (!rc)
-        rc = target_ensure(&r->display, out_width, out_height, 3, display_formats, err);
+        rc = tl_renderer_target_ensure(&r->display, out_width, out_height, 3, display_formats, err);
     if (rc)
         return rc;
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
@@ -403,12 +323,12 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
     const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, sky);
-    return gl_check("frame setup", err);
+    return tl_renderer_check("frame setup", err);
 }
 
 int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
 {
-    GLuint present = build_present(r, 0, err);
+    GLuint present = tl_renderer_build_present(r, 0, err);
     if (!present)
         return err ? (int)err->status : TL_ERR_RUNTIME; /* the old programs stay */
     for (int i = 0; i < 4; i++) {
@@ -417,6 +337,9 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
         r->present_programs[i] = 0;
     }
     r->present_programs[0] = present;
+    if (r->glare_program)
+        glDeleteProgram(r->glare_program);
+    r->glare_program = 0;
     for (int i = 0; i < r->program_count; i++)
         glDeleteProgram(r->programs[i].program);
     r->program_count = 0;
@@ -428,7 +351,7 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
             glDeleteProgram(r->mesh_program[i]);
             r->mesh_program[i] = 0;
         }
-    return gl_check("reloading shaders", err);
+    return tl_renderer_check("reloading shaders", err);
 }
 
 int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int height, tl_error *err)
@@ -446,7 +369,7 @@ int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int he
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, width, height, 0, GL_RGB, GL_FLOAT, rgb);
     glActiveTexture(GL_TEXTURE0);
-    return gl_check("uploading the sky", err);
+    return tl_renderer_check("uploading the sky", err);
 }
 
 int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
@@ -488,7 +411,7 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
     }
     glBindVertexArray(r->vao);
     g->indices = (GLsizei)mesh->index_count;
-    return gl_check("uploading the boat mesh", err);
+    return tl_renderer_check("uploading the boat mesh", err);
 }
 
 /* Draws the mesh into `t` (cleared first): directly, or mirrored in the
@@ -508,10 +431,11 @@ static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_
     float h = u->boat_water;
     const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
-    glUniformMatrix4fv(loc(program, "u_mirror"), 1, GL_FALSE, mirrored ? mirror : identity);
-    glUniform3f(loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
+    glUniformMatrix4fv(tl_renderer_loc(program, "u_mirror"), 1, GL_FALSE,
+                       mirrored ? mirror : identity);
+    glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
     /* The direct pass clips nothing, whatever the clip-distance state. */
-    glUniform1f(loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
+    glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
     if (mirrored)
         glEnable(GL_CLIP_DISTANCE0);
     glBindVertexArray(r->mesh.vao);
@@ -536,8 +460,8 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
                                        (features & TL_FEATURE_SKY_PHYSICAL ? 2 : 0)];
     if (!*program) {
         char defines[512];
-        make_defines(features, defines, sizeof defines);
-        *program = build_program(r, "mesh.vert", "mesh.frag", defines, err);
+        tl_renderer_defines(features, defines, sizeof defines);
+        *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
         if (!*program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
     }
@@ -547,12 +471,12 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
     glDisable(GL_BLEND);
     glUseProgram(*program);
     upload_uniforms(*program, u);
-    glUniformMatrix4fv(loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
-    glUniformMatrix4fv(loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
+    glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
+    glUniformMatrix4fv(tl_renderer_loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
     draw_mesh(r, *program, &r->boat, u, 0);
     draw_mesh(r, *program, &r->mirror, u, 1);
     glDisable(GL_DEPTH_TEST);
-    return gl_check("drawing the boat", err);
+    return tl_renderer_check("drawing the boat", err);
 }
 
 /* Samples per draw. Mesa's llvmpipe ends every loop of a fragment once
@@ -611,12 +535,13 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
             glBindTexture(GL_TEXTURE_2D, textures[i]);
         }
         glActiveTexture(GL_TEXTURE0);
-        glUniform1i(loc(program, "u_boat_color"), 1);
-        glUniform1i(loc(program, "u_boat_distance"), 2);
-        glUniform1i(loc(program, "u_boat_reflection"), 3);
-        glUniformMatrix4fv(loc(program, "u_boat_to_model"), 1, GL_FALSE, u->boat_to_model);
-        glUniform4fv(loc(program, "u_boat_hull"), 1, u->boat_hull);
-        glUniform1f(loc(program, "u_boat_top"), u->boat_top);
+        glUniform1i(tl_renderer_loc(program, "u_boat_color"), 1);
+        glUniform1i(tl_renderer_loc(program, "u_boat_distance"), 2);
+        glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), 3);
+        glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_to_model"), 1, GL_FALSE,
+                           u->boat_to_model);
+        glUniform4fv(tl_renderer_loc(program, "u_boat_hull"), 1, u->boat_hull);
+        glUniform1f(tl_renderer_loc(program, "u_boat_top"), u->boat_top);
     }
     /* The pixel's samples in draws of at most `chunk`; each adds its share
      * of the average. Depth (the nearest surface any sample saw) comes from
@@ -626,103 +551,15 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
         int count = spp - first < chunk ? spp - first : chunk;
         int depth = write_depth && first == 0;
         glColorMaski(1, depth, depth, depth, depth);
-        glUniform1i(loc(program, "u_sample_first"), first);
-        glUniform1i(loc(program, "u_sample_count"), count);
-        glUniform1f(loc(program, "u_sample_weight"), weight * (float)count / (float)spp);
+        glUniform1i(tl_renderer_loc(program, "u_sample_first"), first);
+        glUniform1i(tl_renderer_loc(program, "u_sample_count"), count);
+        glUniform1f(tl_renderer_loc(program, "u_sample_weight"),
+                    weight * (float)count / (float)spp);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisablei(GL_BLEND, 0);
-    return gl_check("rendering", err);
-}
-
-/* The display pass, writing only the planes in `planes` (the display image
- * always: the window shows it). */
-static int display_pass(tl_renderer *r, float exposure, float bloom, unsigned planes, tl_error *err)
-{
-    int w = r->display.width, h = r->display.height;
-    glBindVertexArray(r->vao);
-    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
-    const GLenum draw[3] = {GL_COLOR_ATTACHMENT0,
-                            (planes & TL_PLANE_COLOR) ? GL_COLOR_ATTACHMENT1 : GL_NONE,
-                            (planes & TL_PLANE_DEPTH) ? GL_COLOR_ATTACHMENT2 : GL_NONE};
-    glDrawBuffers(3, draw);
-    glViewport(0, 0, w, h);
-    int upscale = r->scene.width != w || r->scene.height != h;
-    GLuint program = present_program(
-        r, (upscale ? PRESENT_UPSCALE : 0) | (bloom > 0.0f ? PRESENT_GLARE : 0), err);
-    if (!program)
-        return err ? (int)err->status : TL_ERR_RUNTIME;
-    glUseProgram(program);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, r->scene.tex[1]);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
-    if (bloom > 0.0f) { /* the glare reads the image's mip chain */
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glGenerateMipmap(GL_TEXTURE_2D);
-    }
-    glUniform1i(loc(program, "u_hdr"), 0);
-    glUniform1i(loc(program, "u_distance"), 1);
-    glUniform2i(loc(program, "u_out_size"), w, h);
-    glUniform1f(loc(program, "u_exposure"), exposure);
-    glUniform1f(loc(program, "u_bloom"), bloom);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    return gl_check("the display pass", err);
-}
-
-int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
-{
-    return display_pass(r, exposure, bloom, TL_PLANE_DISPLAY, err);
-}
-
-int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
-{
-    int w = r->display.width, h = r->display.height;
-    /* Letterboxed: the frame keeps its aspect in the window. */
-    double scale = fmin((double)width / w, (double)height / h);
-    int dw = (int)(w * scale + 0.5), dh = (int)(h * scale + 0.5);
-    int x0 = (width - dw) / 2, y0 = (height - dh) / 2;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r->display.fbo);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + dw, y0 + dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return gl_check("presenting", err);
-}
-
-int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
-                       tl_frame *frame, tl_error *err)
-{
-    int w = r->display.width, h = r->display.height;
-    if (frame->width != w || frame->height != h)
-        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
-    int rc = display_pass(r, exposure, bloom, planes, err);
-    if (rc)
-        return rc;
-    float *row = malloc((size_t)w * 4 * sizeof(float));
-    if (!row)
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    /* Wait for the GPU here (the readback would anyway), so the time the
-     * transfers take can be told from the time the drawing took. */
-    glFinish();
-    double t0 = tl_clock_seconds();
-    /* Each plane is a transfer and a row flip: only the ones asked for.
-     * All three come from the display pass, at the output size. */
-    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
-    if (planes & TL_PLANE_COLOR)
-        read_rows(1, w, h, 4, frame->color, row);
-    if (planes & TL_PLANE_DEPTH)
-        read_rows(2, w, h, 1, frame->depth, row);
-    if (planes & TL_PLANE_DISPLAY)
-        read_rows(0, w, h, 4, frame->display, row);
-    free(row);
-    r->readback_seconds = tl_clock_seconds() - t0;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return gl_check("reading the frame back", err);
+    return tl_renderer_check("rendering", err);
 }
 
 int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)
@@ -752,8 +589,8 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
         if (r->probe_count == MAX_PROGRAMS)
             return tl_error_set(err, TL_ERR_RUNTIME, "probe: too many feature sets");
         char defines[512];
-        make_defines(features, defines, sizeof defines);
-        program = build_program(r, "fullscreen.vert", "probe.frag", defines, err);
+        tl_renderer_defines(features, defines, sizeof defines);
+        program = tl_renderer_build_program(r, "fullscreen.vert", "probe.frag", defines, err);
         if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
         r->probes[r->probe_count++] = (cached_program){features, program};
@@ -781,7 +618,7 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
 
     target t = {0};
     const GLenum formats[1] = {GL_RGBA32F};
-    int rc = target_ensure(&t, width, height, 1, formats, err);
+    int rc = tl_renderer_target_ensure(&t, width, height, 1, formats, err);
     if (!rc) {
         glBindVertexArray(r->vao);
         glViewport(0, 0, width, height);
@@ -790,16 +627,16 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
         /* target_ensure bound its own texture to unit 0: bind the points again. */
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, points);
-        glUniform1i(loc(program, "u_points"), 0);
-        glUniform1i(loc(program, "u_probe_octaves"), octaves);
-        glUniform1i(loc(program, "u_probe_mode"), mode);
+        glUniform1i(tl_renderer_loc(program, "u_points"), 0);
+        glUniform1i(tl_renderer_loc(program, "u_probe_octaves"), octaves);
+        glUniform1i(tl_renderer_loc(program, "u_probe_mode"), mode);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
         memcpy(out4, out, (size_t)count * 4 * sizeof(float));
-        rc = gl_check("probe", err);
+        rc = tl_renderer_check("probe", err);
     }
-    target_free(&t);
+    tl_renderer_target_free(&t);
     glDeleteTextures(1, &points);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     free(texels);
@@ -818,9 +655,4 @@ int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const 
         heights[i] = out[i * 4];
     free(out);
     return rc;
-}
-
-double tl_renderer_last_readback(const tl_renderer *r)
-{
-    return r->readback_seconds;
 }

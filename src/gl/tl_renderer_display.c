@@ -1,0 +1,178 @@
+/* The display pass: the scene's radiance (at the render size) into the
+ * planes that leave the GPU at the output size, with glare and the
+ * tonemap; the window's letterboxed copy; the readback. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/tl_clock.h"
+#include "gl/tl_renderer_internal.h"
+
+GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err)
+{
+    char defines[640];
+    tl_renderer_defines(0, defines, sizeof defines);
+    size_t n = strlen(defines);
+    snprintf(defines + n, sizeof defines - n, "%s%s",
+             (variant & TL_PRESENT_UPSCALE) ? "#define TL_PRESENT_UPSCALE 1\n" : "",
+             (variant & TL_PRESENT_GLARE) ? "#define TL_PRESENT_GLARE 1\n" : "");
+    return tl_renderer_build_program(r, "fullscreen.vert", "present.frag", defines, err);
+}
+
+/* The display pass's program for `variant`, built on first use. */
+GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err)
+{
+    if (!r->present_programs[variant])
+        r->present_programs[variant] = tl_renderer_build_present(r, variant, err);
+    return r->present_programs[variant];
+}
+
+/* Reads attachment `index` of the bound framebuffer in one transfer, then
+ * flips GL's bottom-up rows into image order in place. */
+static void read_rows(int index, int width, int height, int channels, float *dst, float *row)
+{
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)index);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT, dst);
+    size_t bytes = (size_t)width * (size_t)channels * sizeof(float);
+    for (int y = 0; y < height / 2; y++) {
+        float *a = dst + (size_t)y * (size_t)width * (size_t)channels;
+        float *b = dst + (size_t)(height - 1 - y) * (size_t)width * (size_t)channels;
+        memcpy(row, a, bytes);
+        memcpy(a, b, bytes);
+        memcpy(b, row, bytes);
+    }
+}
+
+/* The glare image at half the output size (shaders/glare.frag), read
+ * bilinearly by the display pass; from the scene's mip chain. */
+static int glare_pass(tl_renderer *r, tl_error *err)
+{
+    int w = (r->display.width + 1) / 2, h = (r->display.height + 1) / 2;
+    const GLenum format = GL_RGBA32F;
+    int rc = tl_renderer_target_ensure(&r->glare, w, h, 1, &format, err);
+    if (!rc && !r->glare_program) {
+        char defines[512];
+        tl_renderer_defines(0, defines, sizeof defines);
+        r->glare_program =
+            tl_renderer_build_program(r, "fullscreen.vert", "glare.frag", defines, err);
+        if (!r->glare_program)
+            rc = err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    if (rc)
+        return rc;
+    glBindTexture(GL_TEXTURE_2D, r->glare.tex[0]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glBindVertexArray(r->vao);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->glare.fbo);
+    glViewport(0, 0, w, h);
+    glUseProgram(r->glare_program);
+    glUniform1i(tl_renderer_loc(r->glare_program, "u_hdr"), 0);
+    glUniform2f(tl_renderer_loc(r->glare_program, "u_glare_size"), (float)w, (float)h);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return tl_renderer_check("the glare pass", err);
+}
+
+/* The display pass, writing only the planes in `planes` (the display image
+ * always: the window shows it). */
+static int display_pass(tl_renderer *r, float exposure, float bloom, unsigned planes, tl_error *err)
+{
+    int w = r->display.width, h = r->display.height;
+    if (bloom > 0.0f) {
+        int rc = glare_pass(r, err);
+        if (rc)
+            return rc;
+    }
+    glBindVertexArray(r->vao);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    const GLenum draw[3] = {GL_COLOR_ATTACHMENT0,
+                            (planes & TL_PLANE_COLOR) ? GL_COLOR_ATTACHMENT1 : GL_NONE,
+                            (planes & TL_PLANE_DEPTH) ? GL_COLOR_ATTACHMENT2 : GL_NONE};
+    glDrawBuffers(3, draw);
+    glViewport(0, 0, w, h);
+    int upscale = r->scene.width != w || r->scene.height != h;
+    GLuint program = tl_renderer_present_program(
+        r, (upscale ? TL_PRESENT_UPSCALE : 0) | (bloom > 0.0f ? TL_PRESENT_GLARE : 0), err);
+    if (!program)
+        return err ? (int)err->status : TL_ERR_RUNTIME;
+    glUseProgram(program);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, bloom > 0.0f ? r->glare.tex[0] : 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r->scene.tex[1]);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
+    glUniform1i(tl_renderer_loc(program, "u_hdr"), 0);
+    glUniform1i(tl_renderer_loc(program, "u_distance"), 1);
+    glUniform1i(tl_renderer_loc(program, "u_glare"), 2);
+    glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
+    glUniform1f(tl_renderer_loc(program, "u_exposure"), exposure);
+    glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return tl_renderer_check("the display pass", err);
+}
+
+int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
+{
+    return display_pass(r, exposure, bloom, TL_PLANE_DISPLAY, err);
+}
+
+int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
+{
+    int w = r->display.width, h = r->display.height;
+    /* Letterboxed: the frame keeps its aspect in the window. */
+    double scale = fmin((double)width / w, (double)height / h);
+    int dw = (int)(w * scale + 0.5), dh = (int)(h * scale + 0.5);
+    int x0 = (width - dw) / 2, y0 = (height - dh) / 2;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r->display.fbo);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + dw, y0 + dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return tl_renderer_check("presenting", err);
+}
+
+int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
+                       tl_frame *frame, tl_error *err)
+{
+    int w = r->display.width, h = r->display.height;
+    if (frame->width != w || frame->height != h)
+        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
+    int rc = display_pass(r, exposure, bloom, planes, err);
+    if (rc)
+        return rc;
+    float *row = malloc((size_t)w * 4 * sizeof(float));
+    if (!row)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    /* Wait for the GPU here (the readback would anyway), so the time the
+     * transfers take can be told from the time the drawing took. */
+    glFinish();
+    double t0 = tl_clock_seconds();
+    /* Each plane is a transfer and a row flip: only the ones asked for.
+     * All three come from the display pass, at the output size. */
+    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
+    if (planes & TL_PLANE_COLOR)
+        read_rows(1, w, h, 4, frame->color, row);
+    if (planes & TL_PLANE_DEPTH)
+        read_rows(2, w, h, 1, frame->depth, row);
+    if (planes & TL_PLANE_DISPLAY)
+        read_rows(0, w, h, 4, frame->display, row);
+    free(row);
+    r->readback_seconds = tl_clock_seconds() - t0;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return tl_renderer_check("reading the frame back", err);
+}
+
+double tl_renderer_last_readback(const tl_renderer *r)
+{
+    return r->readback_seconds;
+}

@@ -1,0 +1,78 @@
+/* What the renderer's files share (not part of its interface): the
+ * renderer's state and the GL helpers. tl_renderer.c draws the scene,
+ * tl_renderer_display.c turns it into the planes that leave the GPU. */
+#ifndef TL_RENDERER_INTERNAL_H
+#define TL_RENDERER_INTERNAL_H
+
+#include <epoxy/gl.h>
+#include <stddef.h>
+
+#include "gl/tl_renderer.h"
+
+#define MAX_PROGRAMS 16
+
+typedef struct cached_program {
+    unsigned features;
+    GLuint program;
+} cached_program;
+
+/* A framebuffer with float colour attachments of one size, and a depth
+ * buffer when it is asked for. */
+typedef struct target {
+    GLuint fbo;
+    GLuint tex[3];
+    GLuint depth; /* renderbuffer, 0 when none */
+    int attachments;
+    int width, height;
+} target;
+
+/* The boat's mesh on the GPU: interleaved position, normal, colour. */
+typedef struct gpu_mesh {
+    GLuint vao, vbo, ibo;
+    GLsizei indices;
+} gpu_mesh;
+
+struct tl_renderer {
+    tl_shader_lib lib;
+    GLuint vao;
+    cached_program programs[MAX_PROGRAMS];
+    int program_count;
+    /* The display pass per variant: bit 0 upscales (render scale < 1), bit
+     * 1 adds glare. Each is its own program: llvmpipe runs the code of an
+     * `if` for every pixel, taken or not, so code a frame does not use must
+     * not be compiled in (12 of 14 ms of a 640x360 display pass). */
+    GLuint present_programs[4];
+    cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
+    int probe_count;
+    target scene;   /* colour RGBA32F + depth R32F */
+    target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
+    target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
+    target mirror;  /* the hull reflected in the water RGBA32F + depth */
+    target glare;   /* glare RGBA32F at half the output size (render.bloom) */
+    GLuint glare_program;
+    GLuint mesh_program[4]; /* per sun disc and sky model */
+    GLuint sky_view;        /* the physical sky's sky-view table */
+    gpu_mesh mesh;
+    double readback_seconds; /* of the last tl_renderer_finish */
+};
+
+/* An OpenGL error since the last check, as an error naming `what`. */
+int tl_renderer_check(const char *what, tl_error *err);
+/* Builds vertex `vs` + fragment `fs` with the given #defines. */
+GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
+                                 const char *defines, tl_error *err);
+/* The #defines every program shares, plus one per feature bit. */
+void tl_renderer_defines(unsigned features, char *out, size_t size);
+GLint tl_renderer_loc(GLuint p, const char *name);
+/* (Re)creates `t` at the size with the given internal formats. */
+int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
+                              const GLenum *formats, tl_error *err);
+void tl_renderer_target_free(target *t);
+
+/* The display pass's program for `variant` (TL_PRESENT_*), built on first
+ * use; tl_renderer_build_present builds one afresh. */
+enum { TL_PRESENT_UPSCALE = 1, TL_PRESENT_GLARE = 2 };
+GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err);
+GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err);
+
+#endif
