@@ -20,6 +20,6 @@ float underwater_start(vec3 ray)
 float underwater_lens_gap(vec3 ray)
 {
     vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * underwater_start(ray);
-    return p.y - surface_height(p.xz, u_march_octaves, 0.0);
+    return p.y - surface_height(p.xz, TL_MARCH_OCTAVES, 0.0);
 }
 

@@ -23,7 +23,7 @@ float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
         float span = abs(t1 - t0);
         float t = clamp(t1 + a1 * (t1 - t0) / slope, t1 - 2.0 * span, t1 + 2.0 * span);
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float a = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
+        float a = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
         t0 = t1;
         a0 = a1;
         t1 = t;
@@ -69,7 +69,7 @@ float march_water(vec3 ray, float t_min)
     bool hit = false;
     for (int i = 0; i < u_march_steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float above = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
+        float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
         if (above < u_hit_epsilon) {
             hit = true;
             above_hit = above;
@@ -119,7 +119,7 @@ float march_water(vec3 ray, float t_min)
             above_last = -1.0;
             continue;
         }
-        float above = pos.y - surface_height(pos.xz, u_march_octaves, t * u_lod_angle);
+        float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
         float radius = above; // how far along the ray is surely free
         // A step no longer than `above` moves at most above·ray_along in s.
         if (in_box)

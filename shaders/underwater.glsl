@@ -21,7 +21,7 @@ float underwater_march(vec3 ray, float t)
 #endif
     for (int i = 0; i < u_march_steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float below = surface_height(pos.xz, u_march_octaves, 0.0) - pos.y;
+        float below = surface_height(pos.xz, TL_MARCH_OCTAVES, 0.0) - pos.y;
         if (below < u_hit_epsilon)
             return t;
         float step = below;

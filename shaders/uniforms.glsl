@@ -23,6 +23,15 @@ uniform float u_depth;
 
 uniform int u_march_octaves;
 uniform int u_normal_octaves;
+// The ocean programs are built with the octave counts as constants: a wave
+// loop with a constant bound is unrolled and its per-octave uniforms become
+// direct loads. Other programs (the probe) read the uniforms.
+#ifndef TL_MARCH_OCTAVES
+#define TL_MARCH_OCTAVES u_march_octaves
+#endif
+#ifndef TL_NORMAL_OCTAVES
+#define TL_NORMAL_OCTAVES u_normal_octaves
+#endif
 uniform int u_march_steps;
 uniform float u_hit_epsilon;
 uniform float u_normal_epsilon;

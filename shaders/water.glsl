@@ -9,7 +9,7 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value)
 {
 #ifdef TL_FEATURE_ANALYTIC_NORMALS
     vec2 grad;
-    value = waves_value_grad(p, u_normal_octaves, footprint, grad);
+    value = waves_value_grad(p, TL_NORMAL_OCTAVES, footprint, grad);
     return normalize(vec3(-grad.x * u_depth, 1.0, -grad.y * u_depth));
 #else
     // Far out (grazing rays meet the water 1e4 m and more away) a fixed
@@ -23,10 +23,10 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value)
     e = max(e, 0.5 * footprint);
     // The offsets the float coordinates really moved by, not e.
     vec2 px = p - vec2(e, 0.0), pz = p + vec2(0.0, e);
-    value = waves_value(p, u_normal_octaves, footprint);
+    value = waves_value(p, TL_NORMAL_OCTAVES, footprint);
     float h = value * u_depth;
-    float hx = waves_value(px, u_normal_octaves, footprint) * u_depth;
-    float hz = waves_value(pz, u_normal_octaves, footprint) * u_depth;
+    float hx = waves_value(px, TL_NORMAL_OCTAVES, footprint) * u_depth;
+    float hz = waves_value(pz, TL_NORMAL_OCTAVES, footprint) * u_depth;
     vec3 a = vec3(p.x, h, p.y);
     return normalize(cross(a - vec3(px.x, hx, p.y), a - vec3(p.x, hz, pz.y)));
 #endif

@@ -13,6 +13,7 @@
 
 typedef struct cached_program {
     unsigned features;
+    int march_octaves, normal_octaves; /* compiled in (ocean programs; 0 in probes) */
     GLuint program;
 } cached_program;
 
