@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every number of docs/quality.md, measured in one run on this machine (a
-# benchmark, not a test: run it on a quiet machine, it takes ~20 minutes
+# benchmark, not a test: run it on a quiet machine, it takes ~35 minutes
 # on 2 cores). Prints Markdown; writes the bench's CSV and plot to OUT.
 #
 #   scripts/bench-quality.sh [OUT_FOLDER] [BEFORE_TIDELINE]
@@ -48,6 +48,65 @@ echo
 echo
 awk -F, -v base="$base" 'NR > 1 && $1 != "reference" {
   printf "- %s: %.2fx the shader alone (render %.2fx)\n", $1, $6 / base, $7 / base }' "$out/quality-seed.csv"
+echo
+echo "## Against the targets: each preset's time over the shader's, interleaved ($size)"
+echo
+# A shared machine's speed drifts 10-20% over minutes, so each of three
+# rounds times the shader (t = 10 s and 37 s, before and after), then the
+# presets on the seed's scene and on the targets' scenes (calm.tl and
+# voyage.tl with the seed's sky), and divides neighbours in time; the
+# table gives the median of the rounds' ratios.
+for t in calm voyage; do
+  { cat timelines/$t.tl; echo 'set sky.model seed'; } >"$scratch/$t.tl"
+done
+shader() { echo "($(build/seed002 --size $size --time 10 --repeat 6 | ms) + $(build/seed002 --size $size --time 37 --repeat 6 | ms)) / 2" | bc -l; }
+for round in 1 2 3; do
+  h1=$(shader)
+  "$tl" bench bench/seed002.tl --size $size --frames 240,888 --repeat 3 -q --time-only \
+    --presets draft,preview,final,seed --csv "$scratch/seed-$round.csv" >/dev/null
+  "$tl" bench "$scratch/calm.tl" "$scratch/voyage.tl" --size $size --frames 60,180 --repeat 3 -q \
+    --time-only --presets draft,preview,final,seed --csv "$scratch/cv-$round.csv" >/dev/null
+  h2=$(shader)
+  h=$(echo "($h1 + $h2) / 2" | bc -l)
+  for k in seed cv; do
+    awk -F, -v h="$h" -v r=$round -v k=$k 'NR > 1 { printf "%s %s %s %.4f %.4f\n", k, r, $1, $6 / h, $7 / h }' \
+      "$scratch/$k-$round.csv"
+  done >>"$scratch/ratios"
+  echo "- round $round: the shader alone $(printf '%.1f' "$h") ms/frame"
+done
+echo
+echo "| preset | seed's scene: end to end | render | calm + voyage (seed sky): end to end | render |"
+echo "| --- | ---: | ---: | ---: | ---: |"
+for p in draft preview final seed; do
+  med() { awk -v k=$1 -v p=$p -v c=$2 '$1 == k && $3 == p { print $c }' "$scratch/ratios" | sort -n | sed -n 2p; }
+  printf '| %s | %.2fx | %.2fx | %.2fx | %.2fx |\n' $p "$(med seed 4)" "$(med seed 5)" "$(med cv 4)" "$(med cv 5)"
+done
+if [ -n "$before" ]; then
+  # The same, once, with the earlier binary (it renders `reference` too).
+  h1=$(shader)
+  "$before" bench bench/seed002.tl --size $size --frames 240,888 --repeat 3 -q \
+    --presets draft,preview,final,seed --csv "$scratch/bseed.csv" >/dev/null
+  "$before" bench "$scratch/calm.tl" "$scratch/voyage.tl" --size $size --frames 60,180 --repeat 3 -q \
+    --presets draft,preview,final,seed --csv "$scratch/bcv.csv" >/dev/null
+  h2=$(shader)
+  h=$(echo "($h1 + $h2) / 2" | bc -l)
+  for p in draft preview final seed; do
+    r() { awk -F, -v h="$h" -v p=$p -v c=$2 '$1 == p { printf "%.2f", $c / h }' "$1"; }
+    echo "| $p (before) | $(r "$scratch/bseed.csv" 6)x | $(r "$scratch/bseed.csv" 7)x | $(r "$scratch/bcv.csv" 6)x | $(r "$scratch/bcv.csv" 7)x |"
+  done
+fi
+echo
+echo "\`tideline render\` of the seed's scene with \`seed\` to PNG, steady frames (the"
+echo "time of 28 frames less that of 4, over 24), against the shader in the same minute:"
+steady() {
+  local a b s
+  s=$(date +%s.%N); "$tl" render bench/seed002.tl --frames 240-243 --size $size -q -o "$scratch/e2e/a_####.png" 2>/dev/null; a=$(echo "$(date +%s.%N) - $s" | bc -l)
+  s=$(date +%s.%N); "$tl" render bench/seed002.tl --frames 240-267 --size $size -q -o "$scratch/e2e/b_####.png" 2>/dev/null; b=$(echo "$(date +%s.%N) - $s" | bc -l)
+  echo "($b - $a) * 1000 / 24" | bc -l
+}
+h1=$(shader); e=$(steady); h2=$(shader)
+printf -- '- render %.1f ms/frame, the shader %.1f: %.2fx\n' "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
+  "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
 echo
 echo "## Presets on the bundled cutscenes ($size, 2 frames each)"
 echo
