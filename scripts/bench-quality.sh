@@ -96,17 +96,23 @@ if [ -n "$before" ]; then
   done
 fi
 echo
-echo "\`tideline render\` of the seed's scene with \`seed\` to PNG, steady frames (the"
-echo "time of 28 frames less that of 4, over 24), against the shader in the same minute:"
+echo "\`tideline render\` of the seed's scene to PNG (render and write overlap), steady"
+echo "frames (the time of 28 frames less that of 4, over 24), against the shader timed"
+echo "just before and after:"
+echo
 steady() {
   local a b s
-  s=$(date +%s.%N); "$tl" render bench/seed002.tl --frames 240-243 --size $size -q -o "$scratch/e2e/a_####.png" 2>/dev/null; a=$(echo "$(date +%s.%N) - $s" | bc -l)
-  s=$(date +%s.%N); "$tl" render bench/seed002.tl --frames 240-267 --size $size -q -o "$scratch/e2e/b_####.png" 2>/dev/null; b=$(echo "$(date +%s.%N) - $s" | bc -l)
+  s=$(date +%s.%N); "$tl" render bench/seed002.tl --quality $1 --frames 240-243 --size $size -q -o "$scratch/e2e/a_####.png" 2>/dev/null; a=$(echo "$(date +%s.%N) - $s" | bc -l)
+  s=$(date +%s.%N); "$tl" render bench/seed002.tl --quality $1 --frames 240-267 --size $size -q -o "$scratch/e2e/b_####.png" 2>/dev/null; b=$(echo "$(date +%s.%N) - $s" | bc -l)
   echo "($b - $a) * 1000 / 24" | bc -l
 }
-h1=$(shader); e=$(steady); h2=$(shader)
-printf -- '- render %.1f ms/frame, the shader %.1f: %.2fx\n' "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
-  "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
+echo "| preset | render to PNG (ms/frame) | the shader (ms/frame) | ratio |"
+echo "| --- | ---: | ---: | ---: |"
+for p in draft preview final seed; do
+  h1=$(shader); e=$(steady $p); h2=$(shader)
+  printf '| %s | %.1f | %.1f | %.2fx |\n' $p "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
+    "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
+done
 echo
 echo "## Presets on the bundled cutscenes ($size, 2 frames each)"
 echo
