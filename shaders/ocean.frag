@@ -27,8 +27,8 @@
 
 // Supersampling (TL_FEATURE_SUPERSAMPLE): u_spp stratified samples per
 // pixel (N-rooks: sample s takes x stratum s and y stratum
-// (s * u_spp_step) mod u_spp, jittered
-// inside its cell by a hash of pixel, sample and u_seed, so a frame is the
+// (s * u_spp_step) mod u_spp, jittered inside its cell by a hash of
+// pixel, sample and u_seed, so a frame is the
 // same every time it is rendered). One draw takes samples u_sample_first
 // .. u_sample_first + u_sample_count - 1 (the renderer splits a pixel's
 // samples over draws: llvmpipe caps a fragment's loop iterations), and
@@ -152,8 +152,10 @@ void main()
     // trace it costs llvmpipe a sixth of the frame.
     float depth;
     vec3 color = trace(camera_ray(gl_FragCoord.xy), depth);
-    if (any(isnan(color)) || any(isinf(color))) // the same last guard
+    if (any(isnan(color)) || any(isinf(color))) { // the same last guard
         color = vec3(0.0);
+        depth = TL_SKY_DEPTH;
+    }
 #endif
     out_color = vec4(color, 1.0) * u_sample_weight;
     out_depth = depth;
