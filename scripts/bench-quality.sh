@@ -77,8 +77,9 @@ done
 echo
 echo "| preset | seed's scene: end to end | render | calm + voyage (seed sky): end to end | render |"
 echo "| --- | ---: | ---: | ---: | ---: |"
+# The median of the rounds' ratios: scene $1, column $2, preset $p.
+med() { awk -v k=$1 -v p=$p -v c=$2 '$1 == k && $3 == p { print $c }' "$scratch/ratios" | sort -n | sed -n 2p; }
 for p in draft preview final seed; do
-  med() { awk -v k=$1 -v p=$p -v c=$2 '$1 == k && $3 == p { print $c }' "$scratch/ratios" | sort -n | sed -n 2p; }
   printf '| %s | %.2fx | %.2fx | %.2fx | %.2fx |\n' $p "$(med seed 4)" "$(med seed 5)" "$(med cv 4)" "$(med cv 5)"
 done
 if [ -n "$before" ]; then
@@ -90,8 +91,9 @@ if [ -n "$before" ]; then
     --presets draft,preview,final,seed --csv "$scratch/bcv.csv" >/dev/null
   h2=$(shader)
   h=$(echo "($h1 + $h2) / 2" | bc -l)
+  # Preset $p's column $2 of CSV $1 over the shader's time.
+  r() { awk -F, -v h="$h" -v p=$p -v c=$2 '$1 == p { printf "%.2f", $c / h }' "$1"; }
   for p in draft preview final seed; do
-    r() { awk -F, -v h="$h" -v p=$p -v c=$2 '$1 == p { printf "%.2f", $c / h }' "$1"; }
     echo "| $p (before) | $(r "$scratch/bseed.csv" 6)x | $(r "$scratch/bseed.csv" 7)x | $(r "$scratch/bcv.csv" 6)x | $(r "$scratch/bcv.csv" 7)x |"
   done
 fi
