@@ -131,8 +131,23 @@ static void test_sun_disc(tl_renderer *r)
     tl_frame_free(&f);
 }
 
+/* The device platform must be tried on both drivers' extension lists:
+ * NVIDIA names only EGL_EXT_device_base, Mesa the two parts of it. */
+static void test_device_platform_extensions(void)
+{
+    CHECK(tl_gl_egl_lists_devices("EGL_EXT_platform_base EGL_EXT_device_base "
+                                  "EGL_EXT_platform_device EGL_MESA_platform_surfaceless"));
+    CHECK(tl_gl_egl_lists_devices("EGL_EXT_device_enumeration EGL_EXT_device_query "
+                                  "EGL_EXT_platform_device"));
+    CHECK(!tl_gl_egl_lists_devices("EGL_EXT_device_base EGL_MESA_platform_surfaceless"));
+    CHECK(!tl_gl_egl_lists_devices("EGL_EXT_platform_device EGL_EXT_device_query"));
+    CHECK(!tl_gl_egl_lists_devices("EGL_EXT_device_base_x EGL_EXT_platform_device"));
+    CHECK(!tl_gl_egl_lists_devices(""));
+}
+
 int main(void)
 {
+    test_device_platform_extensions();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)

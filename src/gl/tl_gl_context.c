@@ -102,13 +102,21 @@ static int make_context(struct tl_gl_context *c, EGLDisplay dpy, char *why, size
     return 1;
 }
 
+int tl_gl_egl_lists_devices(const char *client_exts)
+{
+    /* EGL_EXT_device_base is device_enumeration and device_query in one
+     * name; NVIDIA's driver lists only that one. */
+    return has_word(client_exts, "EGL_EXT_platform_device") &&
+           (has_word(client_exts, "EGL_EXT_device_enumeration") ||
+            has_word(client_exts, "EGL_EXT_device_base"));
+}
+
 static int try_platform(struct tl_gl_context *c, platform p, const char *client_exts, char *why,
                         size_t why_size)
 {
     switch (p) {
     case PLATFORM_DEVICE: {
-        if (!has_word(client_exts, "EGL_EXT_platform_device") ||
-            !has_word(client_exts, "EGL_EXT_device_enumeration")) {
+        if (!tl_gl_egl_lists_devices(client_exts)) {
             snprintf(why, why_size, "EGL_EXT_platform_device not supported");
             return 0;
         }

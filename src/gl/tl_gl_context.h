@@ -16,6 +16,11 @@ typedef struct tl_gl_context tl_gl_context;
 int tl_gl_context_create_headless(tl_gl_context **out, tl_error *err);
 void tl_gl_context_destroy(tl_gl_context *ctx);
 
+/* Whether EGL's client extensions (a space-separated list) let the device
+ * platform enumerate GPUs: EGL_EXT_platform_device with either
+ * EGL_EXT_device_enumeration (Mesa) or EGL_EXT_device_base (NVIDIA). */
+int tl_gl_egl_lists_devices(const char *client_exts);
+
 /* "EGL <platform>: <GL renderer>, OpenGL <version>" for -v logs. */
 const char *tl_gl_context_describe(const tl_gl_context *ctx);
 
