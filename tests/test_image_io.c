@@ -568,6 +568,52 @@ static void test_png_compression(void)
     tl_frame_free(&f);
 }
 
+/* ZIP chunks are compressed at the level asked for, 4 by default; the
+ * level never changes a pixel, and levels outside 1..9 are refused. */
+static void test_exr_compression(void)
+{
+    tl_error err;
+    tl_frame f, back[3] = {{0}, {0}, {0}};
+    const int w = 128, h = 64;
+    CHECK(tl_frame_alloc(&f, w, h, &err) == 0);
+    for (int i = 0; i < w * h; i++) { /* smooth, as a rendered sky is */
+        for (int c = 0; c < 4; c++)
+            f.color[i * 4 + c] = 0.25f + 0.001f * (float)(i % w) + 0.1f * (float)c;
+        f.depth[i] = 100.0f + (float)(i / w);
+    }
+    const size_t raw = (size_t)w * (size_t)h * (4 * 2 + 4);
+    size_t size[3] = {0, 0, 0};
+    const int levels[3] = {0, 4, 9};
+    for (int i = 0; i < 3; i++) {
+        char path[512], name[32];
+        snprintf(name, sizeof name, "zip%d.exr", levels[i]);
+        join(path, sizeof path, name);
+        tl_image_options opt = {.exr_compression = levels[i]};
+        CHECK(tl_exr_write(path, &f, &opt, &err) == 0);
+        free(slurp(path, &size[i]));
+        CHECK(tl_exr_read(path, &back[i], &err) == 0);
+        unlink(path);
+    }
+    printf("EXR of %zu raw bytes: %zu (default), %zu (level 4), %zu (level 9)\n", raw, size[0],
+           size[1], size[2]);
+    CHECK(size[0] < raw / 4);
+    CHECK(size[0] == size[1]); /* the default is level 4 */
+    CHECK(size[2] < size[1]);
+    for (int i = 1; i < 3; i++)
+        CHECK(back[0].color && back[i].color &&
+              memcmp(back[0].color, back[i].color, sizeof(float) * 4 * (size_t)(w * h)) == 0 &&
+              memcmp(back[0].depth, back[i].depth, sizeof(float) * (size_t)(w * h)) == 0);
+    char path[512];
+    join(path, sizeof path, "zip10.exr");
+    tl_image_options bad = {.exr_compression = 10};
+    CHECK(tl_exr_write(path, &f, &bad, &err) == TL_ERR_USAGE);
+    CHECK_STR_CONTAINS(err.message, "EXR compression must be 1..9, not 10");
+    CHECK(access(path, F_OK) != 0);
+    for (int i = 0; i < 3; i++)
+        tl_frame_free(&back[i]);
+    tl_frame_free(&f);
+}
+
 int main(void)
 {
     snprintf(g_dir, sizeof g_dir, "/tmp/tl_image_io_XXXXXX");
@@ -582,6 +628,7 @@ int main(void)
     test_png_chunks();
     test_png_bad_keyword();
     test_png_compression();
+    test_exr_compression();
     CHECK(count_tmp_files(g_dir) == 0);
     test_check_writable();
     test_atomic_file();

@@ -370,6 +370,8 @@ static void test_bad_input(void)
     EXPECT(2, "nothing to write", "render", six_path);
     EXPECT(2, "--shutter", "render", six_path, "-o", pattern, "--shutter", "400");
     EXPECT(2, "--spp", "render", six_path, "-o", pattern, "--spp", "0");
+    EXPECT(2, "--exr-compression", "render", six_path, "-o", pattern, "--exr-compression", "0");
+    EXPECT(2, "--png-compression", "render", six_path, "-o", pattern, "--png-compression", "10");
     EXPECT(1, "cannot open timeline", "render", "/nonexistent.tl", "-o", pattern);
     CHECK(tl_dir_entries(out) <= 0); /* nothing rendered by any of them */
     /* A folder that cannot be created: its parent is a file. */

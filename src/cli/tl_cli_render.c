@@ -56,6 +56,7 @@ static const char usage[] =
     "                         or .mov (ProRes 422 HQ), at the timeline's fps\n"
     "  --png-bits 8|16        PNG bit depth (default 8)\n"
     "  --png-compression N    zlib level 1 (fast, the default) .. 9 (smallest files)\n"
+    "  --exr-compression N    zlib level of EXR's ZIP chunks, 1 (fast) .. 9 (default 4)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  -q, --quiet            no progress display\n"
@@ -82,6 +83,7 @@ typedef struct render_options {
     int shutter_samples;
     int png_bits;
     int png_compression; /* 0: the writer's default (fast) */
+    int exr_compression; /* 0: the writer's default (fast) */
     int skip_existing;
     int quiet, verbose;
 } render_options;
@@ -138,6 +140,8 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 256, &o->shutter_samples, err) : 0;
         } else if (tl_args_match(&a, "--png-compression", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->png_compression, err) : 0;
+        } else if (tl_args_match(&a, "--exr-compression", NULL, true, err)) {
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->exr_compression, err) : 0;
         } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
             if (!rc && a.value && o->png_bits != 8 && o->png_bits != 16)
@@ -311,6 +315,7 @@ static int write_frame_files(const render_options *o, const tl_timeline *tl, lon
     int n = 7 + tl_cli_quality_meta(&scene->quality, meta + 7);
     tl_image_options opt = {.png_bits = o->png_bits,
                             .png_compression = o->png_compression,
+                            .exr_compression = o->exr_compression,
                             .meta = meta,
                             .meta_count = n};
     return tl_image_write(path, f, &opt, err);

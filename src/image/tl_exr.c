@@ -250,7 +250,7 @@ static exr_result_t set_meta(exr_context_t ctx, const tl_image_options *opt)
 }
 
 static exr_result_t define_header(exr_context_t ctx, const tl_frame *frame,
-                                  const tl_image_options *opt)
+                                  const tl_image_options *opt, int level)
 {
     int part = 0;
     exr_result_t r = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
@@ -270,6 +270,8 @@ static exr_result_t define_header(exr_context_t ctx, const tl_frame *frame,
     if (r == EXR_ERR_SUCCESS)
         r = exr_add_channel(ctx, part, "Z", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1);
     if (r == EXR_ERR_SUCCESS)
+        r = exr_set_zip_compression_level(ctx, part, level);
+    if (r == EXR_ERR_SUCCESS)
         r = set_meta(ctx, opt);
     return r;
 }
@@ -279,6 +281,10 @@ int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options
 {
     if (!frame || frame->width <= 0 || frame->height <= 0 || !frame->color || !frame->depth)
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: no frame to write", path);
+    int level = opt && opt->exr_compression ? opt->exr_compression : TL_EXR_COMPRESSION_DEFAULT;
+    if (level < 1 || level > 9)
+        return tl_error_set(err, TL_ERR_USAGE, "%s: EXR compression must be 1..9, not %d", path,
+                            level);
     int rc = tl_image_check_meta(path, opt, err);
     if (rc)
         return rc;
@@ -299,7 +305,7 @@ int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options
     exr_context_t ctx = NULL;
     exr_result_t r = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (r == EXR_ERR_SUCCESS)
-        r = define_header(ctx, frame, opt);
+        r = define_header(ctx, frame, opt, level);
     if (r == EXR_ERR_SUCCESS)
         r = exr_write_header(ctx);
     if (r == EXR_ERR_SUCCESS)
