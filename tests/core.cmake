@@ -10,6 +10,8 @@ add_test(NAME example_render_frame
   COMMAND sh -c "$<TARGET_FILE:render_frame> ${PROJECT_SOURCE_DIR}/timelines/calm.tl 12 example.png 64x36 && test -s example.png && rm example.png && echo EXAMPLE_OK"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(example_render_frame PROPERTIES PASS_REGULAR_EXPRESSION "frame 12 \\(t = 0.5000 s\\) -> example.png\nEXAMPLE_OK")
+tl_add_test(test_writer SOURCES test_writer.c ${PROJECT_SOURCE_DIR}/src/cli/tl_cli_writer.c
+  LIBS tideline_core)
 tl_add_test(test_render_cmd SOURCES test_render_cmd.c LIBS tideline_gl
   ARGS $<TARGET_FILE:tideline>)
 # Every bundled timeline is valid.

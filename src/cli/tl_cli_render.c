@@ -57,6 +57,8 @@ static const char usage[] =
     "  --png-bits 8|16        PNG bit depth (default 8)\n"
     "  --png-compression N    zlib level 1 (fast, the default) .. 9 (smallest files)\n"
     "  --exr-compression N    zlib level of EXR's ZIP chunks, 1 (fast) .. 9 (default 4)\n"
+    "  --writers N            frames encoded and written side by side, 1..8 (default:\n"
+    "                         half the processors, 1 to 4)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  -q, --quiet            no progress display\n"
@@ -84,6 +86,7 @@ typedef struct render_options {
     int png_bits;
     int png_compression; /* 0: the writer's default (fast) */
     int exr_compression; /* 0: the writer's default (fast) */
+    int writers;         /* 0: tl_writer_default_count() */
     int skip_existing;
     int quiet, verbose;
 } render_options;
@@ -140,6 +143,9 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 256, &o->shutter_samples, err) : 0;
         } else if (tl_args_match(&a, "--png-compression", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->png_compression, err) : 0;
+        } else if (tl_args_match(&a, "--writers", NULL, true, err)) {
+            rc = a.value ? tl_args_int_range(a.flag, a.value, 1, TL_WRITER_MAX, &o->writers, err)
+                         : 0;
         } else if (tl_args_match(&a, "--exr-compression", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->exr_compression, err) : 0;
         } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
@@ -329,16 +335,24 @@ typedef struct write_context {
     uint8_t *rgb;
 } write_context;
 
-static int write_frame(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
+/* A frame's files: on any writer thread, several frames at once. */
+static int write_files(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
                        const char *path, tl_error *err)
 {
     const write_context *w = ctx;
-    int rc = w->o->pattern ? write_frame_files(w->o, w->tl, n, scene, f, path, err) : TL_OK;
-    if (!rc && w->movie) {
-        display_to_rgb8(f, w->rgb);
-        rc = tl_movie_write(w->movie, w->rgb, err);
-    }
-    return rc;
+    return w->o->pattern ? write_frame_files(w->o, w->tl, n, scene, f, path, err) : TL_OK;
+}
+
+/* A frame of the movie: one at a time, in frame order. */
+static int write_movie(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
+                       const char *path, tl_error *err)
+{
+    (void)n;
+    (void)scene;
+    (void)path;
+    const write_context *w = ctx;
+    display_to_rgb8(f, w->rgb);
+    return tl_movie_write(w->movie, w->rgb, err);
 }
 
 /* Counts a frame the writer finished. */
@@ -458,10 +472,14 @@ int tl_cli_render(int argc, char **argv)
     progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, tl_clock_seconds(), 0.0, 0};
     size_t written = 0, skipped = 0;
     unsigned last_features = 0;
-    /* Frame n renders while frame n-1 is encoded and written. */
+    /* Frame n renders while the frames before it are encoded and written. */
     write_context wctx = {&o, &tl, movie, rgb};
     tl_writer writer;
-    tl_writer_init(&writer, write_frame, &wctx);
+    tl_writer_init(&writer, write_files, movie ? write_movie : NULL, &wctx,
+                   o.writers ? o.writers : tl_writer_default_count());
+    if (o.verbose)
+        fprintf(stderr, "tideline render: %d writer thread%s\n", writer.count,
+                writer.count == 1 ? "" : "s");
     long done_frame;
     for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
         long n = frames.frames[i];
@@ -470,8 +488,11 @@ int tl_cli_render(int argc, char **argv)
         if (rc)
             break;
         if (o.skip_existing && o.pattern && frame_file_complete(path, width, height)) {
-            rc = tl_writer_wait(&writer, &done_frame, &err);
-            frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+            /* The frames in flight are reported first: progress stays in order. */
+            for (int k = 0; !rc && k < writer.count; k++) {
+                rc = tl_writer_wait(&writer, &done_frame, &err);
+                frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+            }
             if (rc)
                 break;
             skipped++;
@@ -497,14 +518,16 @@ int tl_cli_render(int argc, char **argv)
         prog.rendered += !rc;
         prog.busy += tl_clock_seconds() - t0;
     }
-    /* The last frame submitted is complete: it is always written, even
+    /* The frames submitted are complete: they are always written, even
      * when interrupted (what was rendered is kept, atomically). */
     double t_last = tl_clock_seconds();
-    int wrc = tl_writer_wait(&writer, &done_frame, rc ? &(tl_error){0} : &err);
-    if (!rc && wrc)
-        rc = wrc;
-    else
-        frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+    for (int i = 0; i < writer.count; i++) { /* each wait takes the oldest */
+        int wrc = tl_writer_wait(&writer, &done_frame, rc ? &(tl_error){0} : &err);
+        if (!rc && wrc)
+            rc = wrc;
+        else if (!wrc)
+            frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
+    }
     prog.busy += tl_clock_seconds() - t_last;
     tl_writer_free(&writer);
     if (prog.tty && !o.quiet && prog.done)
