@@ -132,7 +132,7 @@ int main(void)
     CHECK(w.count == TL_WRITER_MAX);
     tl_writer_free(&w);
     int d = tl_writer_default_count();
-    CHECK(d >= 1 && d <= 4);
+    CHECK(d >= 1 && d <= TL_WRITER_MAX);
     for (int count = 1; count <= TL_WRITER_MAX; count *= 2) {
         test_in_order(count);
         test_error_stops(count);

@@ -58,7 +58,7 @@ static const char usage[] =
     "  --png-compression N    zlib level 1 (fast, the default) .. 9 (smallest files)\n"
     "  --exr-compression N    zlib level of EXR's ZIP chunks, 1 (fast) .. 9 (default 4)\n"
     "  --writers N            frames encoded and written side by side, 1..8 (default:\n"
-    "                         half the processors, 1 to 4)\n"
+    "                         half the processors, at most 8)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  -q, --quiet            no progress display\n"

@@ -24,7 +24,7 @@ int tl_writer_default_count(void)
 {
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
     long n = cpus / 2;
-    return n < 1 ? 1 : n > 4 ? 4 : (int)n;
+    return n < 1 ? 1 : n > TL_WRITER_MAX ? TL_WRITER_MAX : (int)n;
 }
 
 static void *write_main(void *arg)
