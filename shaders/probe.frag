@@ -57,7 +57,8 @@ void main()
     }
     else if (u_probe_mode == 6) {
         vec2 grad;
-        float value = waves_value_grad(p, u_probe_octaves, 0.0, grad);
+        float slope_var;
+        float value = waves_value_grad(p, u_probe_octaves, 0.0, grad, slope_var);
         result.xyz = vec3(grad * u_depth, (value - 1.0) * u_depth);
 #ifdef TL_FEATURE_GIANT_WAVE
         GiantSample g = giant_sample(p);

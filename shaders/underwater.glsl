@@ -65,7 +65,8 @@ vec3 trace_underwater(vec3 ray, out float dist)
     dist = t;
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     float value;
-    vec3 n = water_normal(hit.xz, u_normal_epsilon, t * u_lod_angle, value);
+    float slope_var; // the underside is shaded with the mean normal
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, t * u_lod_angle, value, slope_var);
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(hit.xz);
     vec2 slope = -n.xz / n.y + giant.grad;

@@ -17,6 +17,7 @@ uniform float u_radial_phase;   // phase per metre of distance from the origin
 uniform vec4 u_wave[TL_MAX_OCTAVES];        // (dir.x, dir.z, frequency, phase offset)
 uniform float u_wave_weight[TL_MAX_OCTAVES];
 uniform float u_wave_weight_tail[TL_MAX_OCTAVES + 1]; // sum of the weights of octaves i..
+uniform float u_wave_slope_tail[TL_MAX_OCTAVES + 1];  // mean squared slope of octaves i.. (raw)
 uniform float u_lod_angle;      // water a pixel covers per metre of distance (0: no LOD)
 uniform float u_drag;
 uniform float u_depth;

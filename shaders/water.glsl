@@ -4,14 +4,17 @@
 // boat, its wake.
 
 // Ocean normal at p, exact (analytic normals) or by finite differences;
-// *value is the ocean's wave value in (0, 1] at p (1 on the crests).
-vec3 water_normal(vec2 p, float e, float footprint, out float value)
+// *value is the ocean's wave value in (0, 1] at p (1 on the crests);
+// *slope_var the variance per axis of the slope level of detail left out
+// (waves_faded_slope_variance), for filtered shading.
+vec3 water_normal(vec2 p, float e, float footprint, out float value, out float slope_var)
 {
 #ifdef TL_FEATURE_ANALYTIC_NORMALS
     vec2 grad;
-    value = waves_value_grad(p, TL_NORMAL_OCTAVES, footprint, grad);
+    value = waves_value_grad(p, TL_NORMAL_OCTAVES, footprint, grad, slope_var);
     return normalize(vec3(-grad.x * u_depth, 1.0, -grad.y * u_depth));
 #else
+    slope_var = waves_faded_slope_variance(TL_NORMAL_OCTAVES, footprint);
     // Far out (grazing rays meet the water 1e4 m and more away) a fixed
     // step is a few float ulps of p: the difference is rounding noise and
     // the slope it gives can mirror the sun anywhere along the horizon.
@@ -32,10 +35,45 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value)
 #endif
 }
 
+// The sky the water mirrors, times Fresnel, averaged over the normals of a
+// pixel: the mean normal n and, with filtered shading, the slopes the
+// octaves level of detail faded would have added (variance slope_var per
+// axis). Three normals
+// whose slopes sit on a circle of radius sqrt(2·slope_var) around n's match
+// that spread's mean and variance. *fresnel gets the mean Fresnel factor;
+// the result is the reflection it weights.
+vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, out float fresnel)
+{
+#ifdef TL_FEATURE_FILTERED_SHADING
+    float radius = sqrt(2.0 * slope_var);
+    vec2 slope = -n.xz / n.y;
+    vec3 sum = vec3(0.0);
+    float fresnel_sum = 0.0;
+    for (int k = 0; k < 3; k++) {
+        vec2 offset = radius * (k == 0 ? vec2(1.0, 0.0)
+                                : k == 1 ? vec2(-0.5, 0.8660254)
+                                         : vec2(-0.5, -0.8660254));
+        vec3 nk = normalize(vec3(-(slope.x + offset.x), 1.0, -(slope.y + offset.y)));
+        float fk = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-nk, ray)), 5.0);
+        vec3 r = normalize(reflect(ray, nk));
+        r.y = abs(r.y); // reflections never look into the water
+        sum += fk * sky_reflected(r);
+        fresnel_sum += fk;
+    }
+    fresnel = fresnel_sum / 3.0;
+    return sum / max(fresnel_sum, 1e-6);
+#else
+    fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
+    vec3 r = normalize(reflect(ray, n));
+    r.y = abs(r.y); // reflections never look into the water
+    return sky_reflected(r);
+#endif
+}
+
 vec3 water_color(vec3 ray, vec3 hit, float dist)
 {
-    float value;
-    vec3 n = water_normal(hit.xz, u_normal_epsilon, dist * u_lod_angle, value);
+    float value, slope_var;
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, dist * u_lod_angle, value, slope_var);
     // Far away the normal's detail is below a pixel; blending toward "up"
     // removes the shimmer the reference also suppresses this way.
     float smoothing = u_normal_smooth_max *
@@ -45,6 +83,8 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     n = mix(n, vec3(0.0, 1.0, 0.0), smoothing);
     if (u_normalize_smoothed)
         n = normalize(n);
+    // The blend flattens the left-out slopes as it flattens the normal.
+    slope_var *= (1.0 - smoothing) * (1.0 - smoothing);
     float ocean_y = hit.y; // height of the ocean's own waves at the hit
 #ifdef TL_FEATURE_GIANT_WAVE
     // The giant wave is large against a pixel: its slope is added unsmoothed
@@ -55,12 +95,12 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     ocean_y -= giant.height;
 #endif
 
-    float fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
-    vec3 r = normalize(reflect(ray, n));
-    r.y = abs(r.y); // reflections never look into the water
-    vec3 reflection = sky_reflected(r);
+    float fresnel;
+    vec3 reflection = water_sky_reflection(ray, n, slope_var, fresnel);
 #ifdef TL_FEATURE_FOG
     // The sky the water mirrors is seen through the fog above it too.
+    vec3 r = normalize(reflect(ray, n));
+    r.y = abs(r.y);
     reflection = optics_fog(reflection, max(hit.y, 0.0), r, TL_SKY_DEPTH);
 #endif
 #ifdef TL_FEATURE_BOAT

@@ -65,20 +65,58 @@ float waves_value(vec2 p, int octaves, float footprint)
     return sum / weights;
 }
 
+// The mean over a period of (exp(sin x - 1)·cos x)²: an octave's squared
+// slope, per unit of weight times frequency (tl_waves.h has the same).
+const float TL_WAVE_SLOPE_MEAN_SQ = 0.1076346;
+
+// Per axis, the variance of the surface's slope that level of detail took
+// out: the faded share of each octave (1 - detail²) and every octave
+// finer than the last one kept, to TL_MAX_OCTAVES. `raw`: the sum of
+// faded (weight·frequency)² times the mean square; `weights`: the sum
+// the wave value is normalised by.
+float waves_slope_variance(float raw, float weights)
+{
+    float slope_scale = u_depth / weights;
+    return 0.5 * raw * slope_scale * slope_scale;
+}
+
+// The same for waves_value's octaves at this footprint, without the waves
+// (the finite-difference normals' path).
+float waves_faded_slope_variance(int octaves, float footprint)
+{
+    float raw = 0.0;
+#ifdef TL_FEATURE_FILTERED_SHADING
+    if (footprint > 0.0) {
+        int i = 0;
+        for (; i < octaves; i++) {
+            float detail = waves_detail(u_wave[i].z, footprint);
+            if (detail <= 0.0)
+                break;
+            float wk = u_wave_weight[i] * u_wave[i].z;
+            raw += (1.0 - detail * detail) * TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
+        }
+        raw += u_wave_slope_tail[i];
+    }
+#endif
+    return waves_slope_variance(raw, u_wave_weight_tail[0] - u_wave_weight_tail[octaves]);
+}
+
 // waves_value with its gradient (per metre of p) carried through the drag:
 // J is how the dragged position moves with p, so each octave's phase
 // gradient is f·dᵀJ plus the radial shift's. One pass gives what finite
-// differences need three for, and it is exact.
-float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
+// differences need three for, and it is exact. *slope_var: as
+// waves_faded_slope_variance (0 without filtered shading).
+float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad, out float slope_var)
 {
     float shift = waves_radial_shift(p);
     vec2 q = u_radial_dir * u_radial_len + p; // from the world origin
     float ql = length(q);
     vec2 shift_grad = ql > 0.0 ? u_radial_phase * q / ql : vec2(0.0);
     mat2 jac = mat2(1.0);
-    float sum = 0.0, weights = 0.0;
+    float sum = 0.0, weights = 0.0, faded = 0.0;
     vec2 sum_grad = vec2(0.0);
-    for (int i = 0; i < octaves; i++) {
+    int i = 0;
+    for (; i < octaves; i++) {
         vec4 w = u_wave[i];
         float weight = u_wave_weight[i];
         float detail = 1.0;
@@ -91,6 +129,10 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
                 weights += rest;
                 break;
             }
+#ifdef TL_FEATURE_FILTERED_SHADING
+            float wk = weight * w.z;
+            faded += (1.0 - detail * detail) * TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
+#endif
         }
 #endif
         float x = dot(w.xy, p) * w.z + w.w + shift;
@@ -105,6 +147,13 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad)
         sum_grad += (wave * c * weight * detail) * x_grad;
         weights += weight;
     }
+#ifdef TL_FEATURE_FILTERED_SHADING
+    // Octaves i.. were not summed: finer than the pixel, or beyond the
+    // preset's count.
+    slope_var = footprint > 0.0 ? waves_slope_variance(faded + u_wave_slope_tail[i], weights) : 0.0;
+#else
+    slope_var = 0.0;
+#endif
     grad = sum_grad / weights;
     return sum / weights;
 }

@@ -263,8 +263,24 @@ static void test_surface(void)
     CHECK(both > ocean + 5.0);
 }
 
+/* The ocean's constant for filtered shading: an exp(sin) octave's mean
+ * squared slope, integrated here over a period (the midpoint rule is
+ * exact to rounding for a smooth periodic function). */
+static void test_wave_slope_constant(void)
+{
+    const int n = 4096;
+    double sum = 0.0;
+    for (int i = 0; i < n; i++) {
+        double x = 6.283185307179586 * (i + 0.5) / n;
+        double slope = exp(sin(x) - 1.0) * cos(x);
+        sum += slope * slope;
+    }
+    CHECK_NEAR(sum / n, TL_WAVE_SLOPE_MEAN_SQ, 1e-7);
+}
+
 int main(void)
 {
+    test_wave_slope_constant();
     test_jacobian_positive();
     test_clamps();
     test_geometry();

@@ -53,6 +53,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
         {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
         {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
+        {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading},
         {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},

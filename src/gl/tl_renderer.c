@@ -255,6 +255,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform4fv(tl_renderer_loc(p, "u_wave"), u->octaves, &u->wave[0][0]);
     glUniform1fv(tl_renderer_loc(p, "u_wave_weight"), u->octaves, u->wave_weight);
     glUniform1fv(tl_renderer_loc(p, "u_wave_weight_tail"), TL_MAX_OCTAVES + 1, u->wave_weight_tail);
+    glUniform1fv(tl_renderer_loc(p, "u_wave_slope_tail"), TL_MAX_OCTAVES + 1, u->wave_slope_tail);
     glUniform1f(tl_renderer_loc(p, "u_lod_angle"), u->lod_angle);
     glUniform1f(tl_renderer_loc(p, "u_drag"), u->drag);
     glUniform1f(tl_renderer_loc(p, "u_depth"), u->depth);

@@ -13,16 +13,16 @@
 #include "waves/tl_giant.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
-    "TL_FEATURE_SUN_DISC",   "TL_FEATURE_GIANT_WAVE",
-    "TL_FEATURE_BOAT",       "TL_FEATURE_WAKE",
-    "TL_FEATURE_UNDERWATER", "TL_FEATURE_WATERLINE",
-    "TL_FEATURE_FOG",        "TL_FEATURE_SKY_PHYSICAL",
-    "TL_FEATURE_LOD",        "TL_FEATURE_ANALYTIC_NORMALS",
-    "TL_FEATURE_SUPERSAMPLE"};
+    "TL_FEATURE_SUN_DISC",    "TL_FEATURE_GIANT_WAVE",
+    "TL_FEATURE_BOAT",        "TL_FEATURE_WAKE",
+    "TL_FEATURE_UNDERWATER",  "TL_FEATURE_WATERLINE",
+    "TL_FEATURE_FOG",         "TL_FEATURE_SKY_PHYSICAL",
+    "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
+    "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
-    "sun disc",        "giant wave",       "boat",         "wake",
-    "underwater",      "waterline",        "fog",          "physical sky",
-    "level of detail", "analytic normals", "supersampling"};
+    "sun disc",        "giant wave",       "boat",          "wake",
+    "underwater",      "waterline",        "fog",           "physical sky",
+    "level of detail", "analytic normals", "supersampling", "filtered shading"};
 
 const char *tl_feature_define(int index)
 {
@@ -395,11 +395,15 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
         u->wave[i][3] = (float)phase[i];
         u->wave_weight[i] = (float)o->weight;
     }
-    double tail = 0.0;
+    double tail = 0.0, slope_tail = 0.0;
     u->wave_weight_tail[TL_MAX_OCTAVES] = 0.0f;
+    u->wave_slope_tail[TL_MAX_OCTAVES] = 0.0f;
     for (int i = TL_MAX_OCTAVES - 1; i >= 0; i--) {
         tail += w->octave[i].weight;
         u->wave_weight_tail[i] = (float)tail;
+        double wk = w->octave[i].weight * w->octave[i].frequency;
+        slope_tail += TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
+        u->wave_slope_tail[i] = (float)slope_tail;
     }
     u->drag = (float)w->drag;
     u->depth = (float)w->depth;
@@ -416,6 +420,8 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
         u->features |= TL_FEATURE_ANALYTIC_NORMALS;
     if (q->lod) {
         u->features |= TL_FEATURE_LOD;
+        if (q->filtered_shading)
+            u->features |= TL_FEATURE_FILTERED_SHADING;
         u->lod_angle = (float)(2.0 * tan(0.5 * s->camera.vfov) / u->height /
                                sqrt((double)(q->spp < 1 ? 1 : q->spp)));
     }

@@ -31,12 +31,13 @@ typedef enum tl_feature {
     TL_FEATURE_SKY_PHYSICAL = 1u << 7, /* sky.model physical (else the seed's sky) */
     /* Quality knobs whose code is compiled only when on, so that turning
      * one off (as `seed` does) costs nothing per octave: */
-    TL_FEATURE_LOD = 1u << 8,              /* quality.lod */
-    TL_FEATURE_ANALYTIC_NORMALS = 1u << 9, /* quality.analytic_normals */
-    TL_FEATURE_SUPERSAMPLE = 1u << 10,     /* quality.spp > 1 */
+    TL_FEATURE_LOD = 1u << 8,               /* quality.lod */
+    TL_FEATURE_ANALYTIC_NORMALS = 1u << 9,  /* quality.analytic_normals */
+    TL_FEATURE_SUPERSAMPLE = 1u << 10,      /* quality.spp > 1 */
+    TL_FEATURE_FILTERED_SHADING = 1u << 11, /* quality.filtered_shading with quality.lod */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 11
+#define TL_FEATURE_COUNT 12
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -74,6 +75,10 @@ typedef struct tl_frame_uniforms {
      * them, to TL_MAX_OCTAVES), summed in double; its differences
      * normalise the wave sum and stand in for faded octaves. */
     float wave_weight_tail[TL_MAX_OCTAVES + 1];
+    /* wave_slope_tail[i]: the mean square of the slopes of octaves i.. (the
+     * sum of (weight · frequency)² times TL_WAVE_SLOPE_MEAN_SQ, unnormalised):
+     * what level of detail leaves out, for filtered shading. */
+    float wave_slope_tail[TL_MAX_OCTAVES + 1];
     float drag, depth;
 
     /* Quality knobs. */

@@ -31,6 +31,7 @@ typedef struct tl_quality {
     bool normalize_smoothed; /* renormalise the distance-smoothed normal (false: seed) */
     double render_scale;     /* the ocean renders at this share of the output's width and
                                 height, then is upscaled (1: full size) */
+    bool filtered_shading;   /* with lod: the faded octaves' slopes widen the reflection */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

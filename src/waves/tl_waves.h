@@ -12,6 +12,11 @@
 #include "scene/tl_scene.h"
 #include "waves/tl_giant.h"
 
+/* The mean over a period of (exp(sin x - 1) · cos x)²: an octave's mean
+ * squared slope per unit of weight times frequency, before drag
+ * (shaders/waves.glsl has the same; test_giant checks the value). */
+#define TL_WAVE_SLOPE_MEAN_SQ 0.1076346
+
 typedef struct tl_wave_octave {
     double dir_x, dir_z; /* unit travel direction in the xz plane */
     double frequency;    /* radians per metre */
