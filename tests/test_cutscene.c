@@ -143,9 +143,8 @@ static void test_bad_models(void)
         fclose(f);
     }
     CHECK(run("still", tl, "-o", png, "--size", "32x18", "-v", NULL) == 0);
-    CHECK_STR_CONTAINS(
-        tl_run_output,
-        "features: ocean, sun disc, boat, physical sky, level of detail, analytic normals\n");
+    CHECK_STR_CONTAINS(tl_run_output, "features: ocean, sun disc, boat, physical sky, level of "
+                                      "detail, analytic normals, filtered shading\n");
     /* The water plate: the boat still floats but nothing of it is drawn. */
     f = fopen(tl, "a");
     if (f) {
@@ -153,9 +152,8 @@ static void test_bad_models(void)
         fclose(f);
     }
     CHECK(run("still", tl, "-o", png, "--size", "32x18", "-v", NULL) == 0);
-    CHECK_STR_CONTAINS(
-        tl_run_output,
-        "features: ocean, sun disc, physical sky, level of detail, analytic normals\n");
+    CHECK_STR_CONTAINS(tl_run_output, "features: ocean, sun disc, physical sky, level of detail, "
+                                      "analytic normals, filtered shading\n");
     unlink(png);
     unlink(tl);
 }
