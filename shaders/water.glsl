@@ -38,10 +38,10 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value, out float s
 // The sky the water mirrors, times Fresnel, averaged over the normals of a
 // pixel: the mean normal n and, with filtered shading, the slopes the
 // octaves level of detail faded would have added (variance slope_var per
-// axis). Three normals
-// whose slopes sit on a circle of radius sqrt(2·slope_var) around n's match
-// that spread's mean and variance. *fresnel gets the mean Fresnel factor;
-// the result is the reflection it weights.
+// axis). Three normals whose slopes sit on a circle of radius
+// sqrt(2·slope_var) around n's match that spread's mean and variance.
+// *fresnel gets the mean Fresnel factor; the result is the reflection it
+// weights.
 vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, out float fresnel)
 {
 #ifdef TL_FEATURE_FILTERED_SHADING
