@@ -11,7 +11,7 @@
 #define FRAMES 40
 
 typedef struct writer_log {
-    int files[FRAMES];   /* times each frame's files were written */
+    int files[FRAMES];    /* times each frame's files were written */
     long ordered[FRAMES]; /* frame numbers in the order the ordered step saw them */
     int ordered_count;
     long fail_at; /* the frame whose files fail, or -1 */
