@@ -85,7 +85,7 @@ typedef struct render_options {
     int shutter_samples;
     int png_bits;
     int png_compression; /* 0: the writer's default (fast) */
-    int exr_compression; /* 0: the writer's default (fast) */
+    int exr_compression; /* 0: the writer's default (zlib level 4) */
     int writers;         /* 0: tl_writer_default_count() */
     int skip_existing;
     int quiet, verbose;
