@@ -54,7 +54,10 @@ vec4 giant_profile(float s0)
 }
 
 // Solves s = s0 + lambda·D(s0); the map is increasing, so a bracket holds
-// the root and a Newton step that leaves it bisects instead.
+// the root and a Newton step that leaves it bisects instead. Stops once
+// the residual moves the height by less than TL_GIANT_CONVERGED metres (the
+// residual along times the slope dh/ds = lambda·Y'/J); the lanes of a
+// block of pixels leave the loop together once all have converged.
 float giant_invert(float s, float lambda)
 {
     if (lambda <= 0.0 || abs(s) >= u_giant_bounds.x)
@@ -65,11 +68,14 @@ float giant_invert(float s, float lambda)
     for (int i = 0; i < u_giant_iterations; i++) {
         vec4 p = giant_profile(s0);
         float f = s0 + lambda * p.z - s;
+        float jacobian = 1.0 + lambda * p.w;
+        if (abs(f * lambda * p.y) < TL_GIANT_CONVERGED * jacobian)
+            break;
         if (f < 0.0)
             lo = s0;
         else
             hi = s0;
-        float next = s0 - f / (1.0 + lambda * p.w);
+        float next = s0 - f / jacobian;
         s0 = next >= lo && next <= hi ? next : 0.5 * (lo + hi);
     }
     return s0;

@@ -79,15 +79,16 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
 /* The #defines every program shares, plus one per feature bit. */
 void tl_renderer_defines(unsigned features, char *out, size_t size)
 {
-    int n =
-        snprintf(out, size,
-                 "#define TL_MAX_OCTAVES %d\n"
-                 "#define TL_SKY_DEPTH %.1f\n"
-                 "#define TL_FAR 1.0e7\n"
-                 "#define TL_GIANT_SLOPE_BINS %d\n"
-                 "#define TL_WAKE_POINTS %d\n"
-                 "#define TL_MARCH_RELAX 1.6\n",
-                 TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_WAKE_POINTS);
+    int n = snprintf(out, size,
+                     "#define TL_MAX_OCTAVES %d\n"
+                     "#define TL_SKY_DEPTH %.1f\n"
+                     "#define TL_FAR 1.0e7\n"
+                     "#define TL_GIANT_SLOPE_BINS %d\n"
+                     "#define TL_GIANT_CONVERGED %.1e\n"
+                     "#define TL_WAKE_POINTS %d\n"
+                     "#define TL_MARCH_RELAX 1.6\n",
+                     TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
+                     TL_GIANT_CONVERGED, TL_WAKE_POINTS);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
