@@ -148,9 +148,11 @@ float march_water(vec3 ray, float t_min)
         if (t < box.x && next > box.x)
             next = box.x; // enter the box, then step with the slope bound
         t = next;
-        // Below the trough plane outside the box: the surface was crossed.
+        // Below the trough plane outside the box: the surface was crossed
+        // (past the box only if the ray has one: a miss's box.y means
+        // nothing, and the lean program returns t_low there too).
         if (t > t_low && (t < box.x || t > box.y))
-            return t < box.x ? t_low : max(t_low, box.y);
+            return has_box && t > box.y ? max(t_low, box.y) : t_low;
     }
     return march_end(ray, hit, t_start, t_last, above_last, t, above_hit);
 }

@@ -1,7 +1,9 @@
 /* The giant wave on the GPU (llvmpipe on CI): the shader's surface height
  * against the double CPU mirror, fade 0 against the wave switched off, and
  * a frame that looks at the wave (depth, crest against the horizon, hits
- * on the surface, finite pixels). */
+ * on the surface, finite pixels), and the screen rectangle the renderer
+ * draws the wave's program in (it holds every ray that meets the box; the
+ * split frame equals the frame drawn in one program). */
 #include <string.h>
 
 #include "tl_gl_test.h"
@@ -236,6 +238,135 @@ static void test_hits_on_surface(tl_renderer *r)
     }
 }
 
+/* Whether the ray (unit, from the camera) meets the wave's box: the
+ * shader's giant_ray_interval in double, from the same uniforms. */
+static int ray_meets_box(const tl_frame_uniforms *u, const double ray[3])
+{
+    const double d[2] = {u->giant_frame[0], u->giant_frame[1]};
+    const double o[3] = {u->giant_frame[2], u->cam_height, u->giant_frame[3]};
+    const double r[3] = {d[0] * ray[0] + d[1] * ray[2], ray[1], d[1] * ray[0] - d[0] * ray[2]};
+    const double top = (double)u->giant_bounds[3] * u->giant_shape[1];
+    const double lo[3] = {-(double)u->giant_bounds[0], -(double)u->depth - top,
+                          -(double)u->giant_mask[2]};
+    const double hi[3] = {u->giant_bounds[0], top, u->giant_mask[2]};
+    double t0 = 0.0, t1 = 1.0e7;
+    for (int i = 0; i < 3; i++) {
+        if (fabs(r[i]) < 1e-12) {
+            if (o[i] < lo[i] || o[i] > hi[i])
+                return 0;
+            continue;
+        }
+        double a = (lo[i] - o[i]) / r[i], b = (hi[i] - o[i]) / r[i];
+        t0 = fmax(t0, fmin(a, b));
+        t1 = fmin(t1, fmax(a, b));
+    }
+    return t0 <= t1;
+}
+
+/* The pixels that can see the wave's box (u.giant_rect), where the
+ * renderer draws the giant wave's program: every ray through every pixel
+ * outside it, at the pixel's centre, corners and edge midpoints, misses
+ * the box; inside, some ray meets it. Cameras beside, above, facing away
+ * from and inside the box. */
+static void test_screen_rect(void)
+{
+    struct {
+        const char *what;
+        double pos[3], yaw, pitch, roll;
+        int expect; /* 0: empty, 1: part of the frame, 2: all of it */
+    } cases[] = {
+        {"600 m away, the wave off to the left", {0.0, 4.0, -600.0}, 0.45, 0.0, 0.0, 1},
+        {"600 m away, rolled, looking down", {0.0, 4.0, -600.0}, 0.2, -0.15, 0.3, 1},
+        {"300 m above, looking down at it", {60.0, 300.0, -250.0}, 0.3, -0.9, 0.0, 1},
+        {"2 m beside it, looking along it", {132.0, 4.0, -50.0}, 0.0, 0.0, 0.0, 1},
+        {"facing away", {0.0, 4.0, -600.0}, M_PI, 0.0, 0.0, 0},
+        {"inside the box", {5.0, 4.0, -10.0}, 0.0, 0.0, 0.0, 2},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        tl_scene s;
+        facing_scene(&s);
+        memcpy(s.camera.position, cases[c].pos, sizeof s.camera.position);
+        s.camera.yaw = cases[c].yaw;
+        s.camera.pitch = cases[c].pitch;
+        s.camera.roll = cases[c].roll;
+        tl_waves w;
+        tl_waves_init(&w, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &w, &u);
+        CHECK(u.features & TL_FEATURE_GIANT_WAVE);
+        const int *rect = u.giant_rect;
+        double right[3], up[3], fwd[3];
+        tl_scene_camera_basis(&s.camera, right, up, fwd);
+        double th = tan(0.5 * s.camera.vfov), aspect = (double)u.width / u.height;
+        int missed = 0, inside_hits = 0, area = 0;
+        for (int y = 0; y < u.height; y++)
+            for (int x = 0; x < u.width; x++) {
+                int in = x >= rect[0] && x < rect[2] && y >= rect[1] && y < rect[3];
+                area += in;
+                for (int k = 0; k < 9; k++) { /* GL's lower-left origin, as gl_FragCoord */
+                    double nx = (x + 0.5 * (k % 3)) / u.width * 2.0 - 1.0;
+                    double ny = (y + 0.5 * (k / 3)) / u.height * 2.0 - 1.0, ray[3], len = 0.0;
+                    for (int i = 0; i < 3; i++) {
+                        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
+                        len += ray[i] * ray[i];
+                    }
+                    for (int i = 0; i < 3; i++)
+                        ray[i] /= sqrt(len);
+                    int meets = ray_meets_box(&u, ray);
+                    missed += meets && !in;
+                    inside_hits += meets && in;
+                }
+            }
+        int total = u.width * u.height;
+        printf("wave's rectangle, %s: x %d-%d, y %d-%d (%.0f%% of the frame); rays outside it "
+               "that meet the box: %d\n",
+               cases[c].what, rect[0], rect[2], rect[1], rect[3], 100.0 * area / total, missed);
+        CHECK(missed == 0);
+        if (cases[c].expect == 0)
+            CHECK(area == 0);
+        if (cases[c].expect == 1)
+            CHECK(area > 0 && area < total * 3 / 4 && inside_hits > 0);
+        if (cases[c].expect == 2)
+            CHECK(area == total);
+    }
+}
+
+/* The frame drawn in two programs (the lean ocean around the wave's
+ * rectangle) matches the frame drawn all in the giant wave's program. */
+static void test_split_matches_whole(tl_renderer *r)
+{
+    tl_scene s;
+    facing_scene(&s);
+    s.camera.position[2] = -600.0;
+    s.camera.yaw = 0.45;
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    const int w = u.width, h = u.height;
+    int area = (u.giant_rect[2] - u.giant_rect[0]) * (u.giant_rect[3] - u.giant_rect[1]);
+    CHECK(area > 0 && area < w * h / 2);
+    tl_error err;
+    tl_error_clear(&err);
+    tl_frame split, whole;
+    CHECK(tl_frame_alloc(&split, w, h, &err) == 0);
+    CHECK(tl_frame_alloc(&whole, w, h, &err) == 0);
+    CHECK(tl_renderer_render(r, &u, &split, &err) == 0);
+    const int all[4] = {0, 0, w, h};
+    memcpy(u.giant_rect, all, sizeof all);
+    CHECK(tl_renderer_render(r, &u, &whole, &err) == 0);
+    double worst = 0.0;
+    int differ = 0;
+    for (size_t i = 0; i < (size_t)w * h * 4; i++) {
+        double e = fabs((double)split.display[i] - whole.display[i]);
+        worst = fmax(worst, e);
+        differ += e > 0.0;
+    }
+    printf("split against whole: %d of %d display values differ, by at most %.3g\n", differ,
+           w * h * 4, worst);
+    CHECK(worst < 2.0 / 255.0);
+    tl_frame_free(&split);
+    tl_frame_free(&whole);
+}
+
 /* Every extreme the channels allow renders finite, non-negative pixels in
  * bounded time (the march's step budget holds whatever the slope). */
 static void test_extremes(tl_renderer *r)
@@ -283,6 +414,8 @@ int main(void)
     test_wave_in_view(r);
     test_hits_on_surface(r);
     test_extremes(r);
+    test_screen_rect();
+    test_split_matches_whole(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

@@ -500,46 +500,27 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
  * pixel's samples are therefore split over several draws, each kept under
  * the limit by a generous count of the loops one sample can run. On a GPU
  * this costs a few extra draws. */
-static int samples_per_draw(const tl_frame_uniforms *u)
+static int samples_per_draw(const tl_frame_uniforms *u, unsigned features)
 {
     long per_step = u->march_octaves + 1;
-    if (u->features & TL_FEATURE_GIANT_WAVE)
+    if (features & TL_FEATURE_GIANT_WAVE)
         per_step += u->giant_iterations + 40; /* its inversion and slope bins */
     long per_sample = (long)(u->march_steps + u->refine_steps) * per_step +
                       3L * (u->normal_octaves + 1) + TL_WAKE_POINTS + 256;
-    if (u->features & TL_FEATURE_UNDERWATER)
+    if (features & TL_FEATURE_UNDERWATER)
         per_sample *= 2; /* the march below the surface, and the lens */
     long n = 60000 / per_sample;
     int spp = u->spp < 1 ? 1 : u->spp;
     return n < 1 ? 1 : (n > spp ? spp : (int)n);
 }
 
-int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
-                           int write_depth, tl_error *err)
+/* The ocean program for `features`, bound with the frame's uniforms. */
+static GLuint use_ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
+                                tl_error *err)
 {
-    if (u->width != r->scene.width || u->height != r->scene.height)
-        return tl_error_set(err, TL_ERR_RUNTIME, "pass size does not match the frame");
-    /* No mesh, no boat pass (a library user may not have given one). */
-    unsigned features = u->features;
-    if (!r->mesh.vao)
-        features &= ~(unsigned)TL_FEATURE_BOAT;
-    if (features & TL_FEATURE_BOAT) {
-        int rc = draw_boat(r, u, err);
-        if (rc)
-            return rc;
-    }
     GLuint program = ocean_program(r, u, features, err);
     if (!program)
-        return err ? (int)err->status : TL_ERR_RUNTIME;
-    glBindVertexArray(r->vao);
-    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
-    glViewport(0, 0, u->width, u->height);
-    glDisable(GL_DEPTH_TEST);
-    /* Radiance adds up across passes; depth is written by one pass only. */
-    glEnablei(GL_BLEND, 0);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glBlendEquation(GL_FUNC_ADD);
-    glDisablei(GL_BLEND, 1);
+        return 0;
     glUseProgram(program);
     upload_uniforms(program, u);
     if (features & TL_FEATURE_BOAT) {
@@ -557,10 +538,20 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
         glUniform4fv(tl_renderer_loc(program, "u_boat_hull"), 1, u->boat_hull);
         glUniform1f(tl_renderer_loc(program, "u_boat_top"), u->boat_top);
     }
-    /* The pixel's samples in draws of at most `chunk`; each adds its share
-     * of the average. Depth (the nearest surface any sample saw) comes from
-     * the first draw's samples. */
-    int spp = u->spp < 1 ? 1 : u->spp, chunk = samples_per_draw(u);
+    return program;
+}
+
+/* The bound program over the pixels x0 <= x < x1, y0 <= y < y1. A pixel's
+ * samples go in draws of at most `chunk`; each adds its share of the
+ * average. Depth (the nearest surface any sample saw) comes from the first
+ * draw's samples. */
+static void draw_ocean(GLuint program, const tl_frame_uniforms *u, int chunk, float weight,
+                       int write_depth, int x0, int y0, int x1, int y1)
+{
+    if (x0 >= x1 || y0 >= y1)
+        return;
+    glScissor(x0, y0, x1 - x0, y1 - y0);
+    int spp = u->spp < 1 ? 1 : u->spp;
     for (int first = 0; first < spp; first += chunk) {
         int count = spp - first < chunk ? spp - first : chunk;
         int depth = write_depth && first == 0;
@@ -571,8 +562,71 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
                     weight * (float)count / (float)spp);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
+}
+
+int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
+                           int write_depth, tl_error *err)
+{
+    if (u->width != r->scene.width || u->height != r->scene.height)
+        return tl_error_set(err, TL_ERR_RUNTIME, "pass size does not match the frame");
+    /* No mesh, no boat pass (a library user may not have given one). */
+    unsigned features = u->features;
+    if (!r->mesh.vao)
+        features &= ~(unsigned)TL_FEATURE_BOAT;
+    if (features & TL_FEATURE_BOAT) {
+        int rc = draw_boat(r, u, err);
+        if (rc)
+            return rc;
+    }
+    glBindVertexArray(r->vao);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
+    glViewport(0, 0, u->width, u->height);
+    glDisable(GL_DEPTH_TEST);
+    /* Radiance adds up across passes; depth is written by one pass only. */
+    glEnablei(GL_BLEND, 0);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisablei(GL_BLEND, 1);
+    glEnable(GL_SCISSOR_TEST);
+    /* The giant wave's program only over the pixels that can see its box
+     * (u->giant_rect), the lean program, the same image there, around it:
+     * the bands below and above the rectangle, then left and right of it. */
+    const int w = u->width, h = u->height;
+    int rect[4] = {0, 0, w, h};
+    unsigned lean = features;
+    if (features & TL_FEATURE_GIANT_WAVE) {
+        memcpy(rect, u->giant_rect, sizeof rect);
+        lean &= ~(unsigned)TL_FEATURE_GIANT_WAVE;
+    }
+    int whole = rect[0] <= 0 && rect[1] <= 0 && rect[2] >= w && rect[3] >= h;
+    int rc = TL_OK;
+    if (!whole) {
+        GLuint program = use_ocean_program(r, u, lean, err);
+        int chunk = samples_per_draw(u, lean);
+        if (!program) {
+            rc = err ? (int)err->status : TL_ERR_RUNTIME;
+        } else if (rect[0] >= rect[2] || rect[1] >= rect[3]) {
+            draw_ocean(program, u, chunk, weight, write_depth, 0, 0, w, h);
+        } else {
+            draw_ocean(program, u, chunk, weight, write_depth, 0, 0, w, rect[1]);
+            draw_ocean(program, u, chunk, weight, write_depth, 0, rect[3], w, h);
+            draw_ocean(program, u, chunk, weight, write_depth, 0, rect[1], rect[0], rect[3]);
+            draw_ocean(program, u, chunk, weight, write_depth, rect[2], rect[1], w, rect[3]);
+        }
+    }
+    if (!rc && rect[0] < rect[2] && rect[1] < rect[3]) {
+        GLuint program = use_ocean_program(r, u, features, err);
+        if (!program)
+            rc = err ? (int)err->status : TL_ERR_RUNTIME;
+        else
+            draw_ocean(program, u, samples_per_draw(u, features), weight, write_depth, rect[0],
+                       rect[1], rect[2], rect[3]);
+    }
+    glDisable(GL_SCISSOR_TEST);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisablei(GL_BLEND, 0);
+    if (rc)
+        return rc;
     return tl_renderer_check("rendering", err);
 }
 

@@ -111,6 +111,11 @@ typedef struct tl_frame_uniforms {
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */
     int giant_iterations;
+    /* The render target's pixels whose rays can meet the wave's box, as
+     * x0, y0, x1, y1 (x1 and y1 one past the last; GL's lower-left origin);
+     * empty (all 0) when none can. The renderer runs the giant wave's
+     * program only there (giant_screen_rect in tl_prepare.c). */
+    int giant_rect[4];
 
     /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
      * camera-relative metres (the camera at the origin, y too). */
