@@ -86,7 +86,7 @@ void tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_GIANT_SLOPE_BINS %d\n"
                      "#define TL_GIANT_CONVERGED %.1e\n"
                      "#define TL_WAKE_POINTS %d\n"
-                     "#define TL_MARCH_RELAX 1.6\n",
+                     "#define TL_MARCH_RELAX 1.3\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_WAKE_POINTS);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
