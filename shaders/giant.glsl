@@ -161,6 +161,22 @@ vec2 giant_ray_interval(vec3 ray)
     return vec2(t0, t1);
 }
 
+// Streaks down the face: value noise stretched along the travel direction
+// (down the face) and wavering across it, three octaves so that no cell's
+// straight edge shows.
+float giant_streaks(float s0, float w)
+{
+    float waver = 2.5 * foam_noise(vec2(w / 9.0, s0 / 14.0));
+    vec2 p = vec2((w + waver) / 2.5, s0 / 11.0);
+    float sum = 0.0, amp = 0.55;
+    for (int i = 0; i < 3; i++) {
+        sum += amp * foam_noise(p + vec2(7.3, 1.9) * float(i));
+        p *= vec2(2.1, 1.7);
+        amp *= 0.5;
+    }
+    return sum / 0.9625;
+}
+
 // Foam of a breaking crest, a function of this frame's wave only. Where
 // foam can be (its coverage): whitewater capping the crest and where the
 // surface compresses, streaks running down the face, and a trail behind
@@ -175,8 +191,8 @@ float giant_foam(GiantSample g, float ocean_value, out float thickness)
     float top = g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3);
     float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
     float cap = smoothstep(0.9, 1.0, top) * breaking;
-    float streaks = foam_noise(vec2(g.w / 2.0, g.s0 / 16.0));
-    float face = smoothstep(0.5, 0.8, streaks) * smoothstep(0.3, 0.7, top) *
+    float streaks = giant_streaks(g.s0, g.w);
+    float face = 0.85 * smoothstep(0.42, 0.72, streaks) * smoothstep(0.0, 0.8, top) *
                  smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x) * breaking;
     float behind = max(-g.s0, 0.0);
     float trail = breaking * exp(-behind / max(u_giant_foam.y, 1.0e-3)) *
