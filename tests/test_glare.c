@@ -124,6 +124,7 @@ int main(void)
     s.camera.pitch = 0.0;
     s.camera.vfov = 12.0 * DEG;
     s.bloom = 0.5;
+    s.quality.pixel_filter = 0.0; /* the model is per pixel (test_render checks the filter) */
     tl_frame f;
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);

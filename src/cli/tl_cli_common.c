@@ -55,6 +55,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
         {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading},
         {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0},
+        {"tideline/pixel_filter", TL_META_DOUBLE, NULL, q->pixel_filter, 0},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
     };

@@ -225,6 +225,9 @@ void tl_renderer_destroy(tl_renderer *r)
     tl_renderer_target_free(&r->glare);
     if (r->glare_program)
         glDeleteProgram(r->glare_program);
+    tl_renderer_target_free(&r->filtered);
+    if (r->filter_program)
+        glDeleteProgram(r->filter_program);
     tl_renderer_set_mesh(r, NULL, NULL);
     for (int i = 0; i < 4; i++)
         if (r->mesh_program[i])
@@ -354,6 +357,9 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     if (r->glare_program)
         glDeleteProgram(r->glare_program);
     r->glare_program = 0;
+    if (r->filter_program)
+        glDeleteProgram(r->filter_program);
+    r->filter_program = 0;
     for (int i = 0; i < r->program_count; i++)
         glDeleteProgram(r->programs[i].program);
     r->program_count = 0;
@@ -636,7 +642,8 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
     if (!rc)
         rc = tl_renderer_accumulate(r, u, 1.0f, 1, err);
     if (!rc)
-        rc = tl_renderer_finish(r, u->exposure, u->bloom, TL_PLANES_ALL, frame, err);
+        rc = tl_renderer_finish(r, &(tl_display_settings){u->exposure, u->bloom, u->pixel_filter},
+                                TL_PLANES_ALL, frame, err);
     return rc;
 }
 

@@ -16,6 +16,16 @@
 
 typedef struct tl_renderer tl_renderer;
 
+/* How the display pass turns the scene's radiance into the display image. */
+typedef struct tl_display_settings {
+    float exposure; /* linear scale before the tonemap */
+    float bloom;    /* share of the light spread into glare */
+    /* Sigma, in output pixels, of a 3x3 Gaussian over the tonemapped
+     * display values (quality.pixel_filter; 0: none). Not applied when the
+     * scene is upscaled: the bicubic upscale filters it. */
+    float pixel_filter;
+} tl_display_settings;
+
 int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err);
 void tl_renderer_destroy(tl_renderer *r);
 
@@ -43,15 +53,15 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
  * the float target of width x height; each accumulate adds weight x its
  * radiance (weights should sum to 1) and, when write_depth is set, stores
  * its depth; finish runs the display pass at out_width x out_height with
- * `exposure` and `bloom` (the share of light spread into glare: the
- * display plane only, never the colour plane) and reads back the planes
- * asked for. A render smaller than the output (quality.render_scale) is
- * upscaled there: colour and display by Catmull-Rom, distance nearest. */
+ * `display`'s settings (glare and the pixel filter touch the display plane
+ * only, never the colour plane) and reads back the planes asked for. A render smaller than the
+ * output (quality.render_scale) is upscaled there: colour and display by Catmull-Rom, distance
+ * nearest. */
 int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
                       tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
-int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
+int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsigned planes,
                        tl_frame *frame, tl_error *err);
 /* Seconds the last tl_renderer_finish spent reading the planes back (after
  * waiting for the GPU to finish drawing). */
@@ -60,7 +70,7 @@ double tl_renderer_last_readback(const tl_renderer *r);
 /* The display pass alone (finish without the readback), then the display
  * image drawn into the current window's framebuffer of width x height,
  * letterboxed: the live preview. */
-int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err);
+int tl_renderer_display(tl_renderer *r, const tl_display_settings *display, tl_error *err);
 int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err);
 
 /* Evaluates one of the shaders' functions (shaders/probe.frag lists the

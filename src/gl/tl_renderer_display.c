@@ -79,11 +79,46 @@ static int glare_pass(tl_renderer *r, tl_error *err)
     return tl_renderer_check("the glare pass", err);
 }
 
-/* The display pass, writing only the planes in `planes` (the display image
- * always: the window shows it). */
-static int display_pass(tl_renderer *r, float exposure, float bloom, unsigned planes, tl_error *err)
+/* The pixel filter (shaders/filter.frag): the display image through a 3x3
+ * Gaussian of `sigma` pixels into `filtered`. */
+static int filter_pass(tl_renderer *r, float sigma, tl_error *err)
 {
     int w = r->display.width, h = r->display.height;
+    const GLenum format = GL_RGBA32F;
+    int rc = tl_renderer_target_ensure(&r->filtered, w, h, 1, &format, err);
+    if (!rc && !r->filter_program) {
+        char defines[512];
+        tl_renderer_defines(0, defines, sizeof defines);
+        r->filter_program =
+            tl_renderer_build_program(r, "fullscreen.vert", "filter.frag", defines, err);
+        if (!r->filter_program)
+            rc = err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    if (rc)
+        return rc;
+    /* The Gaussian's weight one pixel off the centre, per axis, over the
+     * three taps' sum. */
+    double side = exp(-0.5 / ((double)sigma * sigma));
+    glBindFramebuffer(GL_FRAMEBUFFER, r->filtered.fbo);
+    glViewport(0, 0, w, h);
+    glUseProgram(r->filter_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r->display.tex[0]);
+    glUniform1i(tl_renderer_loc(r->filter_program, "u_display"), 0);
+    glUniform1f(tl_renderer_loc(r->filter_program, "u_filter_side"),
+                (float)(side / (1.0 + 2.0 * side)));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    r->display_filtered = 1;
+    return tl_renderer_check("the pixel filter", err);
+}
+
+/* The display pass, writing only the planes in `planes` (the display image
+ * always: the window shows it). */
+static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned planes,
+                        tl_error *err)
+{
+    int w = r->display.width, h = r->display.height;
+    const float bloom = d->bloom;
     if (bloom > 0.0f) {
         int rc = glare_pass(r, err);
         if (rc)
@@ -112,15 +147,21 @@ static int display_pass(tl_renderer *r, float exposure, float bloom, unsigned pl
     glUniform1i(tl_renderer_loc(program, "u_distance"), 1);
     glUniform1i(tl_renderer_loc(program, "u_glare"), 2);
     glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
-    glUniform1f(tl_renderer_loc(program, "u_exposure"), exposure);
+    glUniform1f(tl_renderer_loc(program, "u_exposure"), d->exposure);
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return tl_renderer_check("the display pass", err);
+    int rc = tl_renderer_check("the display pass", err);
+    /* The pixel filter, where the scene was not upscaled (the upscale
+     * filters it already). */
+    r->display_filtered = 0;
+    if (!rc && !upscale && d->pixel_filter > 0.0f)
+        rc = filter_pass(r, d->pixel_filter, err);
+    return rc;
 }
 
-int tl_renderer_display(tl_renderer *r, float exposure, float bloom, tl_error *err)
+int tl_renderer_display(tl_renderer *r, const tl_display_settings *display, tl_error *err)
 {
-    return display_pass(r, exposure, bloom, TL_PLANE_DISPLAY, err);
+    return display_pass(r, display, TL_PLANE_DISPLAY, err);
 }
 
 int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
@@ -134,20 +175,20 @@ int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err)
     glViewport(0, 0, width, height);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r->display.fbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r->display_filtered ? r->filtered.fbo : r->display.fbo);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glBlitFramebuffer(0, 0, w, h, x0, y0, x0 + dw, y0 + dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return tl_renderer_check("presenting", err);
 }
 
-int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned planes,
+int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsigned planes,
                        tl_frame *frame, tl_error *err)
 {
     int w = r->display.width, h = r->display.height;
     if (frame->width != w || frame->height != h)
         return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
-    int rc = display_pass(r, exposure, bloom, planes, err);
+    int rc = display_pass(r, display, planes, err);
     if (rc)
         return rc;
     float *row = malloc((size_t)w * 4 * sizeof(float));
@@ -164,8 +205,11 @@ int tl_renderer_finish(tl_renderer *r, float exposure, float bloom, unsigned pla
         read_rows(1, w, h, 4, frame->color, row);
     if (planes & TL_PLANE_DEPTH)
         read_rows(2, w, h, 1, frame->depth, row);
-    if (planes & TL_PLANE_DISPLAY)
+    if (planes & TL_PLANE_DISPLAY) {
+        if (r->display_filtered)
+            glBindFramebuffer(GL_FRAMEBUFFER, r->filtered.fbo);
         read_rows(0, w, h, 4, frame->display, row);
+    }
     free(row);
     r->readback_seconds = tl_clock_seconds() - t0;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -51,6 +51,9 @@ struct tl_renderer {
     target mirror;  /* the hull reflected in the water RGBA32F + depth */
     target glare;   /* glare RGBA32F at half the output size (render.bloom) */
     GLuint glare_program;
+    target filtered; /* the display image after the pixel filter (quality.pixel_filter) */
+    GLuint filter_program;
+    int display_filtered;   /* the last display pass left its image in `filtered` */
     GLuint mesh_program[4]; /* per sun disc and sky model */
     GLuint sky_view;        /* the physical sky's sky-view table */
     gpu_mesh mesh;

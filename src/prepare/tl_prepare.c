@@ -543,6 +543,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->normal_smooth_gain = (float)s->water.normal_smooth_gain;
     u->exposure = (float)(s->exposure * exp2(-s->ev));
     u->bloom = (float)s->bloom;
+    u->pixel_filter = (float)s->quality.pixel_filter;
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, &giant, u);

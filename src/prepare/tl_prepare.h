@@ -98,6 +98,7 @@ typedef struct tl_frame_uniforms {
     float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
     float exposure; /* render.exposure × 2^-render.ev: the display's scale */
     float bloom;    /* render.bloom: the display's glare */
+    float pixel_filter; /* quality.pixel_filter: the display's Gaussian, sigma in pixels */
 
     /* The giant wave (TL_FEATURE_GIANT_WAVE), see shaders/giant.glsl:
      * frame = (dir.x, dir.z, s, w of the camera relative to the crest),

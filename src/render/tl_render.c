@@ -269,12 +269,12 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         r->last_features |= u.features;
         rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
+    const tl_display_settings display = {(float)(scene.exposure * exp2(-scene.ev)),
+                                         (float)scene.bloom, (float)scene.quality.pixel_filter};
     if (!rc)
-        rc = out ? tl_renderer_finish(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
-                                      (float)scene.bloom,
+        rc = out ? tl_renderer_finish(r->renderer, &display,
                                       settings->planes ? settings->planes : TL_PLANES_ALL, out, err)
-                 : tl_renderer_display(r->renderer, (float)(scene.exposure * exp2(-scene.ev)),
-                                       (float)scene.bloom, err);
+                 : tl_renderer_display(r->renderer, &display, err);
     if (!rc && scene_out)
         *scene_out = scene;
     if (!rc && out)
