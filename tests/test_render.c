@@ -147,61 +147,54 @@ static void test_device_platform_extensions(void)
 
 /* The pixel filter (quality.pixel_filter): the display image is the 3x3
  * Gaussian of the unfiltered display values, edges clamped, to float
- * rounding, glare included; the colour plane (EXR) keeps the raw radiance;
- * a scene rendered smaller and upscaled is not filtered again. */
+ * rounding, glare included, at full size and after a half-size render's
+ * upscale; the colour plane (EXR) keeps the raw radiance. */
 static void test_pixel_filter(tl_renderer *r)
 {
-    tl_scene s;
-    small_scene(&s);
-    s.bloom = 0.05;
-    s.quality.pixel_filter = 0.0;
-    tl_frame raw, filtered;
-    if (render(r, &s, &raw))
-        return;
-    s.quality.pixel_filter = 0.7;
-    if (render(r, &s, &filtered)) {
+    const double scales[2] = {1.0, 0.5};
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        small_scene(&s);
+        s.bloom = 0.05;
+        s.quality.render_scale = scales[k];
+        s.quality.pixel_filter = 0.0;
+        tl_frame raw, filtered;
+        if (render(r, &s, &raw))
+            return;
+        s.quality.pixel_filter = 0.7;
+        if (render(r, &s, &filtered)) {
+            tl_frame_free(&raw);
+            return;
+        }
+        const int w = s.width, h = s.height;
+        double side = exp(-0.5 / (0.7 * 0.7));
+        side /= 1.0 + 2.0 * side;
+        const double weight[3] = {side, 1.0 - 2.0 * side, side};
+        double worst = 0.0, moved = 0.0;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++)
+                for (int c = 0; c < 3; c++) {
+                    double sum = 0.0;
+                    for (int j = -1; j <= 1; j++)
+                        for (int i = -1; i <= 1; i++) {
+                            int xx = x + i < 0 ? 0 : x + i >= w ? w - 1 : x + i;
+                            int yy = y + j < 0 ? 0 : y + j >= h ? h - 1 : y + j;
+                            sum += weight[i + 1] * weight[j + 1] *
+                                   raw.display[((size_t)yy * w + xx) * 4 + c];
+                        }
+                    size_t at = ((size_t)y * w + x) * 4 + c;
+                    worst = fmax(worst, fabs(sum - filtered.display[at]));
+                    moved = fmax(moved, fabs((double)raw.display[at] - filtered.display[at]));
+                }
+        printf("pixel filter 0.7 px, render scale %.1f: largest difference from the CPU's filter "
+               "%.2g, largest change %.3f\n",
+               scales[k], worst, moved);
+        CHECK(worst < 1e-5);
+        CHECK(moved > 0.02);
+        CHECK(memcmp(raw.color, filtered.color, (size_t)w * h * 4 * sizeof(float)) == 0);
         tl_frame_free(&raw);
-        return;
-    }
-    const int w = s.width, h = s.height;
-    double side = exp(-0.5 / (0.7 * 0.7));
-    side /= 1.0 + 2.0 * side;
-    const double weight[3] = {side, 1.0 - 2.0 * side, side};
-    double worst = 0.0, moved = 0.0;
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++)
-            for (int c = 0; c < 3; c++) {
-                double sum = 0.0;
-                for (int j = -1; j <= 1; j++)
-                    for (int i = -1; i <= 1; i++) {
-                        int xx = x + i < 0 ? 0 : x + i >= w ? w - 1 : x + i;
-                        int yy = y + j < 0 ? 0 : y + j >= h ? h - 1 : y + j;
-                        sum += weight[i + 1] * weight[j + 1] *
-                               raw.display[((size_t)yy * w + xx) * 4 + c];
-                    }
-                size_t at = ((size_t)y * w + x) * 4 + c;
-                worst = fmax(worst, fabs(sum - filtered.display[at]));
-                moved = fmax(moved, fabs((double)raw.display[at] - filtered.display[at]));
-            }
-    printf("pixel filter 0.7 px: largest difference from the CPU's filter %.2g, largest change "
-           "%.3f\n",
-           worst, moved);
-    CHECK(worst < 1e-5);
-    CHECK(moved > 0.02);
-    CHECK(memcmp(raw.color, filtered.color, (size_t)w * h * 4 * sizeof(float)) == 0);
-    tl_frame_free(&raw);
-    tl_frame_free(&filtered);
-
-    s.quality.render_scale = 0.5;
-    s.quality.pixel_filter = 0.0;
-    if (render(r, &s, &raw))
-        return;
-    s.quality.pixel_filter = 0.7;
-    if (!render(r, &s, &filtered)) {
-        CHECK(memcmp(raw.display, filtered.display, (size_t)w * h * 4 * sizeof(float)) == 0);
         tl_frame_free(&filtered);
     }
-    tl_frame_free(&raw);
 }
 
 int main(void)

@@ -21,8 +21,7 @@ typedef struct tl_display_settings {
     float exposure; /* linear scale before the tonemap */
     float bloom;    /* share of the light spread into glare */
     /* Sigma, in output pixels, of a 3x3 Gaussian over the tonemapped
-     * display values (quality.pixel_filter; 0: none). Not applied when the
-     * scene is upscaled: the bicubic upscale filters it. */
+     * display values (quality.pixel_filter; 0: none), after any upscale. */
     float pixel_filter;
 } tl_display_settings;
 

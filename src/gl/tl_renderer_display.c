@@ -151,10 +151,9 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     int rc = tl_renderer_check("the display pass", err);
-    /* The pixel filter, where the scene was not upscaled (the upscale
-     * filters it already). */
+    /* The pixel filter, in output pixels (after any upscale). */
     r->display_filtered = 0;
-    if (!rc && !upscale && d->pixel_filter > 0.0f)
+    if (!rc && d->pixel_filter > 0.0f)
         rc = filter_pass(r, d->pixel_filter, err);
     return rc;
 }

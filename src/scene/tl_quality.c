@@ -12,12 +12,14 @@
  * brings preview and final 0.2-0.5 dB closer. */
 /* The pixel filter's sigma in preview and final: 0.6 px came closest to
  * reference on the five cutscenes (0.7: -0.05 dB, 0.85: -0.26, 1: -0.44;
- * none: -1.78 dB; docs/quality.md). */
+ * none: -1.78 dB). Draft's half-size render, upscaled, gains most from
+ * 0.85 (+0.63 dB on calm and voyage; 1.0 adds 0.04 dB more blur).
+ * docs/quality.md. */
 #define PIXEL_FILTER 0.6
 static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
      * filtered pixel_filter */
-    {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.0},
+    {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85},
     {"preview", 10, 26, 48, 0.01, 0.01, 1, 5, 0, true, true, false, true, 1.0, true, PIXEL_FILTER},
     {"final", 12, 36, 96, 0.005, 0.01, 1, 6, 0, true, true, false, true, 1.0, true, PIXEL_FILTER},
     /* Converged: every octave the normals use is marched too, a hit is

@@ -33,7 +33,7 @@ typedef struct tl_quality {
                                 height, then is upscaled (1: full size) */
     bool filtered_shading;   /* with lod: the faded octaves' slopes widen the reflection */
     double pixel_filter;     /* sigma, in output pixels, of the display image's 3x3 Gaussian
-                                (0: none; render_scale < 1 filters by its upscale instead) */
+                                (0: none) */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */
