@@ -7,7 +7,7 @@
 
 #include "core/tl_error.h"
 
-#define TL_BENCH_MAX_PRESETS 16
+#define TL_BENCH_MAX_PRESETS 24
 #define TL_BENCH_NAME        96 /* a preset, or a variant "final:lod=off" */
 
 typedef struct tl_bench_row {
