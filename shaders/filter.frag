@@ -3,21 +3,22 @@
 // bounds what one aliased glint adds to its neighbours (the same filter
 // over radiance came out 1 dB further from `reference`), and a pass of its
 // own tonemaps each pixel once, not nine times (14 ms of a 640x360 frame
-// on llvmpipe). Edges repeat the border pixel.
-uniform sampler2D u_display;
-uniform float u_filter_side; // a side tap's weight per axis; the centre's is 1 - 2x
+// on llvmpipe).
+//
+// The kernel is separable, (a, 1 - 2a, a) along each axis, and bilinear
+// taps give it exactly from four reads instead of nine: along one axis,
+// taps at -2a and +2a texels, half each, weigh the neighbours a and the
+// centre 1 - 2a. Edges repeat the border pixel (clamp to edge).
+uniform sampler2D u_display; // bilinear
+uniform float u_filter_offset; // 2a, texels
 
 layout(location = 0) out vec4 out_display;
 
 void main()
 {
-    ivec2 last = textureSize(u_display, 0) - 1;
-    vec3 weight = vec3(u_filter_side, 1.0 - 2.0 * u_filter_side, u_filter_side);
-    vec3 sum = vec3(0.0);
-    for (int j = -1; j <= 1; j++)
-        for (int i = -1; i <= 1; i++) {
-            ivec2 p = clamp(ivec2(gl_FragCoord.xy) + ivec2(i, j), ivec2(0), last);
-            sum += weight[i + 1] * weight[j + 1] * texelFetch(u_display, p, 0).rgb;
-        }
-    out_display = vec4(sum, 1.0);
+    vec2 texel = 1.0 / vec2(textureSize(u_display, 0));
+    vec2 at = gl_FragCoord.xy * texel, d = u_filter_offset * texel;
+    vec3 sum = texture(u_display, at + vec2(-d.x, -d.y)).rgb + texture(u_display, at + vec2(d.x, -d.y)).rgb +
+               texture(u_display, at + vec2(-d.x, d.y)).rgb + texture(u_display, at + vec2(d.x, d.y)).rgb;
+    out_display = vec4(0.25 * sum, 1.0);
 }

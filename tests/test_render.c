@@ -146,8 +146,8 @@ static void test_device_platform_extensions(void)
 }
 
 /* The pixel filter (quality.pixel_filter): the display image is the 3x3
- * Gaussian of the unfiltered display values, edges clamped, to float
- * rounding, glare included, at full size and after a half-size render's
+ * Gaussian of the unfiltered display values, edges clamped, glare included
+ * (llvmpipe: to 3e-6), at full size and after a half-size render's
  * upscale; the colour plane (EXR) keeps the raw radiance. */
 static void test_pixel_filter(tl_renderer *r)
 {
@@ -189,7 +189,8 @@ static void test_pixel_filter(tl_renderer *r)
         printf("pixel filter 0.7 px, render scale %.1f: largest difference from the CPU's filter "
                "%.2g, largest change %.3f\n",
                scales[k], worst, moved);
-        CHECK(worst < 1e-5);
+        /* A GPU's bilinear weights have 8-bit fractions: up to a level. */
+        CHECK(worst < 4e-3);
         CHECK(moved > 0.02);
         CHECK(memcmp(raw.color, filtered.color, (size_t)w * h * 4 * sizeof(float)) == 0);
         tl_frame_free(&raw);

@@ -97,16 +97,20 @@ static int filter_pass(tl_renderer *r, float sigma, tl_error *err)
     if (rc)
         return rc;
     /* The Gaussian's weight one pixel off the centre, per axis, over the
-     * three taps' sum. */
+     * three taps' sum: a. The shader's bilinear taps sit 2a texels out. */
     double side = exp(-0.5 / ((double)sigma * sigma));
     glBindFramebuffer(GL_FRAMEBUFFER, r->filtered.fbo);
     glViewport(0, 0, w, h);
     glUseProgram(r->filter_program);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r->display.tex[0]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glUniform1i(tl_renderer_loc(r->filter_program, "u_display"), 0);
-    glUniform1f(tl_renderer_loc(r->filter_program, "u_filter_side"),
-                (float)(side / (1.0 + 2.0 * side)));
+    glUniform1f(tl_renderer_loc(r->filter_program, "u_filter_offset"),
+                (float)(2.0 * side / (1.0 + 2.0 * side)));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     r->display_filtered = 1;
     return tl_renderer_check("the pixel filter", err);
