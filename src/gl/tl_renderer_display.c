@@ -45,21 +45,29 @@ static void read_rows(int index, int width, int height, int channels, float *dst
     }
 }
 
+/* A pass's RGBA32F target at w x h and its program (fragment shader `fs`,
+ * built on first use). */
+static int ensure_pass(tl_renderer *r, target *t, int w, int h, GLuint *program, const char *fs,
+                       tl_error *err)
+{
+    const GLenum format = GL_RGBA32F;
+    int rc = tl_renderer_target_ensure(t, w, h, 1, &format, err);
+    if (!rc && !*program) {
+        char defines[512];
+        tl_renderer_defines(0, defines, sizeof defines);
+        *program = tl_renderer_build_program(r, "fullscreen.vert", fs, defines, err);
+        if (!*program)
+            rc = err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    return rc;
+}
+
 /* The glare image at half the output size (shaders/glare.frag), read
  * bilinearly by the display pass; from the scene's mip chain. */
 static int glare_pass(tl_renderer *r, tl_error *err)
 {
     int w = (r->display.width + 1) / 2, h = (r->display.height + 1) / 2;
-    const GLenum format = GL_RGBA32F;
-    int rc = tl_renderer_target_ensure(&r->glare, w, h, 1, &format, err);
-    if (!rc && !r->glare_program) {
-        char defines[512];
-        tl_renderer_defines(0, defines, sizeof defines);
-        r->glare_program =
-            tl_renderer_build_program(r, "fullscreen.vert", "glare.frag", defines, err);
-        if (!r->glare_program)
-            rc = err ? (int)err->status : TL_ERR_RUNTIME;
-    }
+    int rc = ensure_pass(r, &r->glare, w, h, &r->glare_program, "glare.frag", err);
     if (rc)
         return rc;
     glBindTexture(GL_TEXTURE_2D, r->glare.tex[0]);
@@ -84,16 +92,7 @@ static int glare_pass(tl_renderer *r, tl_error *err)
 static int filter_pass(tl_renderer *r, float sigma, tl_error *err)
 {
     int w = r->display.width, h = r->display.height;
-    const GLenum format = GL_RGBA32F;
-    int rc = tl_renderer_target_ensure(&r->filtered, w, h, 1, &format, err);
-    if (!rc && !r->filter_program) {
-        char defines[512];
-        tl_renderer_defines(0, defines, sizeof defines);
-        r->filter_program =
-            tl_renderer_build_program(r, "fullscreen.vert", "filter.frag", defines, err);
-        if (!r->filter_program)
-            rc = err ? (int)err->status : TL_ERR_RUNTIME;
-    }
+    int rc = ensure_pass(r, &r->filtered, w, h, &r->filter_program, "filter.frag", err);
     if (rc)
         return rc;
     /* The Gaussian's weight one pixel off the centre, per axis, over the
