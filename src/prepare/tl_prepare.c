@@ -108,10 +108,12 @@ static void giant_screen_rect(const tl_scene *s, tl_frame_uniforms *u)
     double lo[3] = {-(double)u->giant_bounds[0], -(double)u->depth - top,
                     -(double)u->giant_mask[2]};
     double hi[3] = {u->giant_bounds[0], top, u->giant_mask[2]};
-    int near_box = 1;
-    for (int i = 0; i < 3; i++)
+    int near_box = 1, finite = 1;
+    for (int i = 0; i < 3; i++) {
         near_box = near_box && cam[i] > lo[i] - margin && cam[i] < hi[i] + margin;
-    if (near_box) {
+        finite = finite && isfinite(cam[i]) && isfinite(lo[i]) && isfinite(hi[i]);
+    }
+    if (near_box || !finite) { /* a box of no finite size is not culled */
         rect[2] = width;
         rect[3] = height;
         return;
@@ -154,9 +156,15 @@ static void giant_screen_rect(const tl_scene *s, tl_frame_uniforms *u)
             y_max = fmax(y_max, py);
         }
     }
+    if (!(x_min <= x_max && y_min <= y_max))
+        return; /* the box lies behind the camera */
     /* Clamped first: a point just past `near` can project far outside. */
-    int x0 = (int)floor(fmax(x_min, -4.0)) - 2, x1 = (int)ceil(fmin(x_max, width + 4.0)) + 2;
-    int y0 = (int)floor(fmax(y_min, -4.0)) - 2, y1 = (int)ceil(fmin(y_max, height + 4.0)) + 2;
+    x_min = fmin(fmax(x_min, -4.0), width + 4.0);
+    x_max = fmin(fmax(x_max, -4.0), width + 4.0);
+    y_min = fmin(fmax(y_min, -4.0), height + 4.0);
+    y_max = fmin(fmax(y_max, -4.0), height + 4.0);
+    int x0 = (int)floor(x_min) - 2, x1 = (int)ceil(x_max) + 2;
+    int y0 = (int)floor(y_min) - 2, y1 = (int)ceil(y_max) + 2;
     x0 = x0 < 0 ? 0 : x0;
     y0 = y0 < 0 ? 0 : y0;
     x1 = x1 > width ? width : x1;
