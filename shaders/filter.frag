@@ -18,7 +18,9 @@ void main()
 {
     vec2 texel = 1.0 / vec2(textureSize(u_display, 0));
     vec2 at = gl_FragCoord.xy * texel, d = u_filter_offset * texel;
-    vec3 sum = texture(u_display, at + vec2(-d.x, -d.y)).rgb + texture(u_display, at + vec2(d.x, -d.y)).rgb +
-               texture(u_display, at + vec2(-d.x, d.y)).rgb + texture(u_display, at + vec2(d.x, d.y)).rgb;
+    vec3 sum = texture(u_display, at + vec2(-d.x, -d.y)).rgb;
+    sum += texture(u_display, at + vec2(d.x, -d.y)).rgb;
+    sum += texture(u_display, at + vec2(-d.x, d.y)).rgb;
+    sum += texture(u_display, at + vec2(d.x, d.y)).rgb;
     out_display = vec4(0.25 * sum, 1.0);
 }
