@@ -67,9 +67,21 @@ float march_water(vec3 ray, float t_min)
     float t_start = t;
     float t_last = t, above_last = -1.0, above_hit = 0.0;
     bool hit = false;
+    // Over-relaxation (u_march_relax > 1, enhanced sphere tracing): a step
+    // of that many heights above the surface stands when the free interval
+    // around the point it reaches overlaps the last point's; otherwise the
+    // march goes back to the last point plus its height, which is always
+    // safe. r_safe: the last point's height after a relaxed step, 1e30
+    // ("nothing to check") after a plain one.
+    float t_safe = 0.0, r_safe = 1e30;
     for (int i = 0; i < u_march_steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
         float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
+        if (t - above > t_safe + r_safe) {
+            t = t_safe + r_safe; // the relaxed step may have crossed the surface
+            r_safe = 1e30;
+            continue;
+        }
         if (above < u_hit_epsilon) {
             hit = true;
             above_hit = above;
@@ -77,7 +89,14 @@ float march_water(vec3 ray, float t_min)
         }
         t_last = t;
         above_last = above;
-        t += above;
+        // A relaxed step ends at the band's far plane at most, where the next
+        // point checks it; only a plain step leaves the band.
+        float next = t + u_march_relax * above;
+        if (next > t_end)
+            next = max(t + above, t_end);
+        t_safe = t;
+        r_safe = next > t + above ? above : 1e30;
+        t = next;
         if (t > t_end)
             return ray.y < 0.0 ? t_end : -1.0;
     }
@@ -101,10 +120,10 @@ float march_water(vec3 ray, float t_min)
     float t_last = t, above_last = -1.0; // the previous point, for refinement
     float above_hit = 0.0;
     bool hit = false;
-    // Over-relaxation inside the box (enhanced sphere tracing): a step of
-    // TL_MARCH_RELAX radii stands when the free interval around the point it
-    // reaches overlaps the last point's; otherwise the march goes back to
-    // one radius past the last point, which is always safe.
+    // Over-relaxation as in the lean march above, over radii: a relaxed step
+    // stands when the free interval around the point it reaches overlaps the
+    // last point's; otherwise the march goes back to one radius past the
+    // last point.
     float t_prev = 0.0, r_prev = 0.0;
     bool relaxed = false; // the step that led to t was over-relaxed
     for (int i = 0; i < u_march_steps; i++) {
@@ -136,17 +155,22 @@ float march_water(vec3 ray, float t_min)
         }
         t_last = t;
         above_last = above;
-        float next = t + radius;
-        relaxed = false;
-        if (in_box) {
-            // Over-relax only while the step stays inside the box.
-            t_prev = t;
-            r_prev = radius;
-            next = t + max(radius, min(TL_MARCH_RELAX * radius, box.y - t));
-            relaxed = next > t + radius;
-        }
+        // Over-relax: inside the box by TL_MARCH_RELAX, staying in it;
+        // outside by the preset's u_march_relax on the way down (a rising
+        // ray's plain step is what tells it has left the band for the sky).
+        float relax = in_box ? TL_MARCH_RELAX : ray.y < 0.0 ? u_march_relax : 1.0;
+        float next = t + relax * radius;
+        if (in_box)
+            next = max(t + radius, min(next, box.y));
         if (t < box.x && next > box.x)
             next = box.x; // enter the box, then step with the slope bound
+        // A relaxed step ends at the trough plane at most, where the next
+        // point checks it; only a plain step goes below.
+        if (next > t_low && (next < box.x || next > box.y))
+            next = max(t + radius, t_low);
+        t_prev = t;
+        r_prev = radius;
+        relaxed = next > t + radius;
         t = next;
         // Below the trough plane outside the box: the surface was crossed
         // (past the box only if the ray has one: a miss's box.y means

@@ -31,7 +31,7 @@ int tl_cli_make_parent_dirs(const char *path, tl_error *err);
  * so a frame records exactly how it was made. Returns the count (14). */
 struct tl_quality;
 struct tl_meta;
-#define TL_CLI_QUALITY_META 16
+#define TL_CLI_QUALITY_META 17
 int tl_cli_quality_meta(const struct tl_quality *q, struct tl_meta *out);
 
 /* Prints err as one line (with file:line:col when it has one). */

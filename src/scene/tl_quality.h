@@ -34,6 +34,7 @@ typedef struct tl_quality {
     bool filtered_shading;   /* with lod: the faded octaves' slopes widen the reflection */
     double pixel_filter;     /* sigma, in output pixels, of the display image's 3x3 Gaussian
                                 (0: none) */
+    double march_relax;      /* over-relaxation of the ocean's march steps (1: plain steps) */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */
