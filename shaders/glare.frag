@@ -3,7 +3,7 @@
 // tent at the level's own texel spacing: the box-filtered chain alone shows
 // its blocks around a bright sun). The finest level is two pixels wide, so
 // half resolution holds it; the display pass reads this image bilinearly.
-// Here, not in the display pass: its 54 taps per pixel cost a quarter as
+// Here, not in the display pass: its taps per pixel cost a quarter as
 // much at a quarter of the pixels.
 
 uniform sampler2D u_hdr;   // the scene's radiance, with its mip chain
@@ -11,20 +11,33 @@ uniform vec2 u_glare_size; // this pass's pixels
 
 layout(location = 0) out vec4 out_glare;
 
+// Along one axis, the tent (1, 2, 1) / 4 of three bilinear reads one texel
+// apart weighs the four texels around the sample (1 - f, 2 - f, 1 + f, f)
+// / 4, f the sample's fraction between texels: exactly two bilinear reads,
+// one in each texel pair, with weights (3 - 2f) / 4 and (1 + 2f) / 4.
+// `src`: the sample in texel units (texel i's centre at i). *pos: the two
+// reads' positions in the same units.
+vec2 tent_reads(float src, out vec2 pos)
+{
+    float n = floor(src), f = src - n;
+    pos = vec2(n - 1.0 + (2.0 - f) / (3.0 - 2.0 * f), n + 1.0 + f / (1.0 + 2.0 * f));
+    return vec2(3.0 - 2.0 * f, 1.0 + 2.0 * f) * 0.25;
+}
+
 void main()
 {
-    vec2 size = vec2(textureSize(u_hdr, 0));
     vec2 uv = gl_FragCoord.xy / u_glare_size;
     vec3 glare = vec3(0.0);
     for (int level = 1; level <= 6; level++) {
-        vec2 texel = exp2(float(level)) / size;
-        vec3 sum = vec3(0.0);
-        for (int j = -1; j <= 1; j++)
-            for (int i = -1; i <= 1; i++) {
-                float w = float((2 - abs(i)) * (2 - abs(j)));
-                sum += w * textureLod(u_hdr, uv + vec2(i, j) * texel, float(level)).rgb;
-            }
-        glare += sum / 16.0;
+        vec2 size = vec2(textureSize(u_hdr, level));
+        vec2 src = uv * size - 0.5;
+        vec2 px, py;
+        vec2 wx = tent_reads(src.x, px), wy = tent_reads(src.y, py);
+        // Four reads for the nine of the 3x3 tent (separable).
+        for (int j = 0; j < 2; j++)
+            for (int i = 0; i < 2; i++)
+                glare += wx[i] * wy[j] *
+                         textureLod(u_hdr, (vec2(px[i], py[j]) + 0.5) / size, float(level)).rgb;
     }
     out_glare = vec4(glare / 6.0, 1.0);
 }
