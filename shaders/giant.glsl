@@ -185,7 +185,7 @@ float giant_streaks(float s0, float w)
 // of it that its coverage allows. The cap and streaks ride with the crest;
 // the trail's texture stays where the crest left it (world coordinates,
 // wrapped every 65536 m on the CPU).
-float giant_foam(GiantSample g, float ocean_value, out float thickness)
+float giant_foam(GiantSample g, float ocean_value, float footprint, out float thickness)
 {
     float breaking = u_giant_foam.w;
     float top = g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3);
@@ -195,13 +195,28 @@ float giant_foam(GiantSample g, float ocean_value, out float thickness)
     float face = 0.85 * smoothstep(0.42, 0.72, streaks) * smoothstep(0.0, 0.8, top) *
                  smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x) * breaking;
     float behind = max(-g.s0, 0.0);
-    float trail = breaking * exp(-behind / max(u_giant_foam.y, 1.0e-3)) *
-                  smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
+    float fresh = exp(-behind / max(u_giant_foam.y, 1.0e-3));
+    float trail = breaking * fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
     float coverage = max(max(compressed, cap), face) * g.lambda;
     vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));
     float lace = 0.75 * foam_lace(at) + 0.25 * ocean_value;
     thickness = lace;
-    float texture_trail = smoothstep(0.55, 0.75, lace);
+    // Behind the crest the foam decays into a web, as spent whitewater
+    // does: thin veins along the middle contours of a lace stretched along
+    // the crest, in drifts with open water between them; fresh foam near
+    // the crest has wider veins and patches. (A threshold of the lace alone
+    // gave soft white blobs.)
+    float trail_lace = 0.8 * foam_lace(at * vec2(1.8, 0.9)) + 0.2 * ocean_value;
+    // A vein narrower than the pixel is drawn a pixel wide and as much
+    // fainter, so that it cannot flicker (the lace changes by about 0.35 a
+    // metre; a vein's core is two half widths).
+    float half_width = mix(0.006, 0.045, fresh);
+    float drawn = max(half_width, 0.2 * footprint);
+    float veins = 1.0 - smoothstep(drawn, 2.0 * drawn, abs(trail_lace - 0.5));
+    veins *= half_width / drawn;
+    veins *= smoothstep(0.3, 0.6, foam_noise(at / 23.0 + vec2(5.2, 1.3))) *
+             (0.55 + 0.45 * foam_noise(at * 0.9 + vec2(2.7, 8.1)));
+    float texture_trail = max(0.8 * veins, smoothstep(0.68, 0.85, trail_lace) * fresh);
     coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
     // Even full coverage leaves holes where the lace is thinnest.
     float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
@@ -232,10 +247,12 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
 }
 
 // Foam and light through the crest over the water's colour.
-vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value)
+// `footprint`: the water a pixel covers there, metres (0: no level of
+// detail).
+vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value, float footprint)
 {
     float thickness;
-    float foam = giant_foam(g, ocean_value, thickness);
+    float foam = giant_foam(g, ocean_value, footprint, thickness);
     color += giant_scatter(g, ray) * (1.0 - foam);
     return foam_shade(color, n, foam, thickness);
 }

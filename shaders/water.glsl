@@ -120,7 +120,10 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #endif
     vec3 color = fresnel * reflection + scattering;
 #ifdef TL_FEATURE_GIANT_WAVE
-    color = giant_shade(color, ray, n, giant, value);
+    // The water a pixel covers (0 without level of detail), more as the
+    // view grazes the surface: the trail foam's veins stay a pixel wide.
+    color = giant_shade(color, ray, n, giant, value,
+                        dist * u_lod_angle / max(abs(dot(ray, n)), 0.2));
 #endif
 #ifdef TL_FEATURE_WAKE
     float thickness;
