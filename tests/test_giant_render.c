@@ -403,6 +403,56 @@ static void test_extremes(tl_renderer *r)
     }
 }
 
+/* The march's over-relaxation outside the wave's box (quality.march_relax;
+ * inside it the slope-bounded steps relax by their own 1.3) steps through
+ * neither the ocean nor the wave: along each water ray the CPU mirror
+ * finds the first point below the surface (10 cm apart) no nearer than
+ * the GPU's hit, at the knob's largest factor. */
+static void test_relaxed_march(tl_renderer *r)
+{
+    tl_scene s;
+    facing_scene(&s);
+    s.width = 64;
+    s.height = 40;
+    s.quality.lod = false; /* the mirror's full-detail surface */
+    s.quality.march_steps = 400;
+    s.quality.march_relax = 2.0;
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    tl_giant giant;
+    tl_giant_prepare(&giant, &s.giant, s.time);
+    tl_waves waves;
+    tl_waves_init(&waves, &s.ocean);
+    int checked = 0, through = 0, on_wave = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            double d = f.depth[(size_t)y * s.width + x];
+            if (d > 160.0)
+                continue; /* sky, and the far ocean */
+            double ray[3], p[3];
+            pixel_ray(&s, x, y, ray);
+            double t = 0.0;
+            for (; t < d - 0.25; t += 0.1) {
+                for (int i = 0; i < 3; i++)
+                    p[i] = s.camera.position[i] + ray[i] * t;
+                if (p[1] < tl_waves_surface_height(&waves, &giant, p[0], p[2], s.time,
+                                                   s.quality.march_octaves,
+                                                   s.quality.giant_iterations))
+                    break;
+            }
+            through += t < d - 0.25;
+            on_wave += d > 100.0;
+            checked++;
+        }
+    printf("march_relax 2.0 before the wave: %d of %d water rays (%d on the wave) cross the "
+           "surface 0.25 m or more before their hit\n",
+           through, checked, on_wave);
+    CHECK(on_wave > 300);
+    CHECK(through == 0);
+    tl_frame_free(&f);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -413,6 +463,7 @@ int main(void)
     test_fade_zero(r);
     test_wave_in_view(r);
     test_hits_on_surface(r);
+    test_relaxed_march(r);
     test_extremes(r);
     test_screen_rect();
     test_split_matches_whole(r);
