@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # tideline preview under Xvfb (llvmpipe): a paused, sharpened screenshot
-# equals `tideline still`; the file is followed as it is edited, a broken
-# file keeps the last good frame and prints its error, fixing it recovers;
+# equals `tideline still`, and refined, `still --spp 16`; the file is
+# followed as it is edited, a broken file keeps the last good frame and
+# prints its error, fixing it recovers;
 # scripted keys move the time exactly and F saves the frame; a high target
-# frame rate lowers the render scale; no display is a one-line error.
+# frame rate lowers the render scale; no display is a one-line error; a bad
+# --refine is a usage error.
 # ARGS: the tideline binary, the timelines folder. Prints "N passed, M failed".
 set -u
 bin=$1
@@ -35,14 +37,28 @@ wait_for() {
   return 1
 }
 
-# 1. The same renderer: paused at 5 s, sharpened, equals `still`.
-"$bin" preview "$timelines/calm.tl" --paused --time 5 --size 320x180 --quality final \
+# 1. The same renderer: paused at 5 s, sharpened, equals `still`; refined
+# (the default, 16 samples a pixel added one a frame), `still --spp 16`.
+psnr_of() {
+  ffmpeg -hide_banner -i "$1" -i "$2" -lavfi psnr -f null - 2>&1 |
+    sed -nE 's/.*average:([0-9.a-z]+).*/\1/p' | tail -1
+}
+"$bin" preview "$timelines/calm.tl" --paused --time 5 --size 320x180 --quality final --refine 1 \
   --screenshot "$work/preview.png" --exit-after-frames 12 >"$work/out1" 2>&1
 "$bin" still "$timelines/calm.tl" --time 5 --size 320x180 --quality final -o "$work/still.png"
-psnr=$(ffmpeg -hide_banner -i "$work/preview.png" -i "$work/still.png" -lavfi psnr -f null - 2>&1 |
-  sed -nE 's/.*average:([0-9.a-z]+).*/\1/p' | tail -1)
-echo "screenshot against still: PSNR $psnr dB"
+psnr=$(psnr_of "$work/preview.png" "$work/still.png")
+echo "screenshot (--refine 1) against still: PSNR $psnr dB"
 check "screenshot PSNR >= 40 dB" awk -v p="$psnr" 'BEGIN { exit !(p == "inf" || p >= 40) }'
+"$bin" preview "$timelines/calm.tl" --paused --time 5 --size 320x180 --quality final \
+  --screenshot "$work/refined.png" --exit-after-frames 40 >"$work/out1b" 2>&1
+"$bin" still "$timelines/calm.tl" --time 5 --size 320x180 --quality final --spp 16 \
+  -o "$work/still16.png"
+psnr=$(psnr_of "$work/refined.png" "$work/still16.png")
+echo "refined screenshot against still --spp 16: PSNR $psnr dB"
+check "refined screenshot PSNR >= 40 dB" awk -v p="$psnr" 'BEGIN { exit !(p == "inf" || p >= 40) }'
+psnr=$(psnr_of "$work/refined.png" "$work/still.png")
+echo "refined screenshot against still (1 sample): PSNR $psnr dB"
+check "refining changes the frame" awk -v p="$psnr" 'BEGIN { exit !(p != "inf" && p < 40) }'
 
 # 2. Hot reload: edit, break, fix.
 cp "$timelines/calm.tl" "$work/edit.tl"
@@ -94,6 +110,12 @@ env -u DISPLAY -u WAYLAND_DISPLAY "$bin" preview "$timelines/calm.tl" >"$work/ou
 status=$?
 check "no display exits 1" test $status -eq 1
 check "no display names DISPLAY and one line" bash -c "grep -q DISPLAY '$work/out5' && [ \$(wc -l <'$work/out5') -eq 1 ]"
+
+# 6. A bad --refine is a usage error that names the flag, before any window.
+"$bin" preview "$timelines/calm.tl" --refine 0 >"$work/out7" 2>&1
+status=$?
+check "--refine 0 exits 2" test $status -eq 2
+check "--refine 0 names the flag" grep -q "refine: '0' is not a sample count in 1..1024" "$work/out7"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

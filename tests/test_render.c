@@ -254,6 +254,45 @@ static void test_relaxed_march(tl_renderer *r)
     }
 }
 
+/* Progressive refinement (tl_renderer_refine, the paused preview): samples
+ * 0..7 added one at a time into a running mean give the frame one pass of
+ * all 8 gives, colour and display; depth is sample 0's. */
+static void test_refine(tl_renderer *r)
+{
+    tl_scene s;
+    small_scene(&s);
+    s.quality.spp = 8;
+    tl_frame whole, steps;
+    if (render(r, &s, &whole))
+        return;
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_frame_alloc(&steps, s.width, s.height, &err) == 0);
+    int rc = tl_renderer_begin(r, u.width, u.height, u.out_width, u.out_height, &err);
+    for (int k = 0; !rc && k < 8; k++)
+        rc = tl_renderer_refine(r, &u, k, &err);
+    if (!rc)
+        rc = tl_renderer_finish(r, &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
+                                TL_PLANES_ALL, &steps, &err);
+    CHECK(rc == 0);
+    CHECK(tl_renderer_refine(r, &u, 8, &err) != 0); /* past the last sample */
+    size_t n = (size_t)s.width * s.height;
+    double color = 0.0, display = 0.0;
+    for (size_t i = 0; i < n * 4; i++) {
+        color = fmax(color, fabs(steps.color[i] - whole.color[i]) / fmax(whole.color[i], 1e-3));
+        display = fmax(display, fabs(steps.display[i] - whole.display[i]));
+    }
+    printf("8 samples refined one by one against one pass: colour %.2g (relative), display "
+           "%.2g\n",
+           color, display);
+    CHECK(color <= 1e-5);
+    CHECK(display <= 1e-5);
+    tl_frame_free(&whole);
+    tl_frame_free(&steps);
+}
+
 int main(void)
 {
     test_device_platform_extensions();
@@ -266,6 +305,7 @@ int main(void)
     test_sun_disc(r);
     test_pixel_filter(r);
     test_relaxed_march(r);
+    test_refine(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

@@ -28,7 +28,8 @@ static const char usage[] =
     "Play a timeline in a window and follow the file as it is edited. It renders\n"
     "with the same renderer and shaders as 'still' and 'render'; while playing it\n"
     "lowers the resolution to hold the frame rate, and while paused it sharpens to\n"
-    "exactly the frame 'tideline still' renders.\n"
+    "exactly the frame 'tideline still' renders, then refines it one sample per\n"
+    "pixel a frame until it is the frame 'tideline still --spp N' renders.\n"
     "\n"
     "Options:\n"
     "  --time T              start at this time (2.5, 2.5s, 60f); default 0\n"
@@ -37,8 +38,10 @@ static const char usage[] =
     "  --size WxH            frame size (default: the timeline's, at most 1280x720)\n"
     "  --scale S             fixed render scale in (0, 1] (default: adapt to --target-fps)\n"
     "  --target-fps F        frame rate to hold while playing (default 24)\n"
+    "  --refine N            samples per pixel a paused frame refines to, 1..1024\n"
+    "                        (default 16; 1: no refinement)\n"
     "  --screenshot PATH     write PATH (PNG or EXR, atomically) each time the displayed\n"
-    "                        frame has fully sharpened\n"
+    "                        frame has fully sharpened and refined\n"
     "  --exit-after-frames N quit after N displayed frames\n"
     "  --keys LIST           play keys, one per frame: space,left,right,shift+left,\n"
     "                        shift+right,home,end,[,],1,2,3,4,c,p,f,r,l,h,esc\n"
@@ -61,6 +64,7 @@ typedef struct options {
     int width, height;
     double scale, target_fps, watch_interval;
     long exit_after;
+    int refine; /* samples per pixel a paused frame refines to */
 } options;
 
 static volatile sig_atomic_t stop_signal = 0;
@@ -78,6 +82,7 @@ static int parse(int argc, char **argv, options *o, int *help, tl_error *err)
     o->target_fps = 24.0;
     o->watch_interval = 0.25;
     o->exit_after = -1;
+    o->refine = 16;
     tl_quality_preset("preview", &o->quality, err);
     while (!tl_args_done(&a)) {
         const char *pos;
@@ -111,6 +116,14 @@ static int parse(int argc, char **argv, options *o, int *help, tl_error *err)
             if (!rc && !(o->target_fps >= 0.1 && o->target_fps <= 1000.0))
                 rc = tl_error_set(err, TL_ERR_USAGE, "--target-fps: '%s' is outside 0.1..1000",
                                   a.value);
+        } else if (tl_args_match(&a, "--refine", NULL, true, err)) {
+            double n = 0;
+            rc = a.value ? tl_args_double("--refine", a.value, &n, err) : TL_ERR_USAGE;
+            if (!rc && !(n >= 1 && n <= TL_MAX_SPP && n == floor(n)))
+                rc =
+                    tl_error_set(err, TL_ERR_USAGE, "--refine: '%s' is not a sample count in 1..%d",
+                                 a.value, TL_MAX_SPP);
+            o->refine = (int)n;
         } else if (tl_args_match(&a, "--watch-interval", NULL, true, err)) {
             rc = a.value ? tl_args_double("--watch-interval", a.value, &o->watch_interval, err)
                          : TL_ERR_USAGE;
@@ -262,6 +275,7 @@ typedef struct preview {
     char last_shot[96]; /* the state of the last screenshot */
     int sharp;          /* the displayed frame is fully sharpened */
     int broken;         /* rendering failed: wait for a change before trying again */
+    int refined;        /* samples per pixel the paused frame holds so far (0: not refining) */
     long *shot_starts;  /* the first frame of each shot (cuts), for the title */
     int shots;
 } preview;
@@ -468,15 +482,25 @@ static void fly(preview *p, tl_gl_window *w, double dt)
         p->cam.position[i] += move[i] * speed;
 }
 
+/* Samples per pixel a paused frame refines to: --refine, when that is more
+ * than the quality takes in one frame (0: no refinement). */
+static int refine_target(const preview *p)
+{
+    int spp = p->quality.spp < 1 ? 1 : p->quality.spp;
+    return p->o->refine > spp ? p->o->refine : 0;
+}
+
 static void update_title(preview *p, tl_gl_window *w)
 {
-    char title[1024];
+    char title[1024], refine[48] = "";
     long frame = frame_of(p);
+    if (!p->playing && p->refined > 0)
+        snprintf(refine, sizeof refine, "  %d/%d spp", p->refined, refine_target(p));
     snprintf(title, sizeof title,
              "tideline preview - %s  t %.3f s  frame %ld/%ld  shot %d/%d  %.1f fps  scale %.2f  "
-             "%s%s%s%s%s",
+             "%s%s%s%s%s%s",
              p->o->timeline, p->t, frame, tl_timeline_frame_count(&p->tl), shot_of(p, frame),
-             p->shots, p->fps, p->scale, p->quality.name, p->playing ? "" : "  [paused]",
+             p->shots, p->fps, p->scale, p->quality.name, p->playing ? "" : "  [paused]", refine,
              p->free_cam ? "  [free camera]" : "", p->problem[0] ? "  ERROR: " : "", p->problem);
     tl_gl_window_set_title(w, title);
 }
@@ -610,8 +634,12 @@ int tl_cli_preview(int argc, char **argv)
                  p.cam.position[2], p.cam.yaw, p.cam.pitch);
         if (!p.playing && o.scale <= 0.0 && p.scale < 1.0)
             p.scale = fmin(1.0, p.scale * 1.6);
-        if (((!p.playing && p.sharp && strcmp(state, shown_state) == 0) || p.broken) &&
-            script_pos >= script_len) {
+        /* Paused and sharp: add a sample per pixel each frame until the
+         * refinement's target (progressive refinement). */
+        int still = !p.playing && p.sharp && strcmp(state, shown_state) == 0;
+        int target = refine_target(&p);
+        int refining = still && !p.broken && p.refined < target && script_pos >= script_len;
+        if (((still && !refining) || p.broken) && script_pos >= script_len) {
             /* The same frame stays on screen: it counts as shown. */
             struct timespec rest = {0, 10000000};
             nanosleep(&rest, NULL);
@@ -625,11 +653,18 @@ int tl_cli_preview(int argc, char **argv)
         settings.width = (int)fmax(16.0, floor(width * p.scale + 0.5));
         settings.height = (int)fmax(9.0, floor(height * p.scale + 0.5));
         int sharp = settings.width == width && settings.height == height;
-        int want_shot = o.screenshot && sharp && strcmp(state, p.last_shot) != 0;
+        /* The screenshot is the frame once it is final: sharp, and refined. */
+        int want_shot = o.screenshot && sharp && strcmp(state, p.last_shot) != 0 &&
+                        (refining ? p.refined == target - 1 : target == 0);
         tl_error_clear(&err);
         double start = tl_gl_window_time();
-        rc = tl_render_timeline_frame(p.render, &p.tl, frame_of(&p), &settings,
-                                      want_shot ? &shot : NULL, NULL, &err);
+        if (refining)
+            rc = tl_render_timeline_refine(p.render, &p.tl, frame_of(&p), &settings, p.refined,
+                                           target, want_shot ? &shot : NULL, &err);
+        else
+            rc = tl_render_timeline_frame(p.render, &p.tl, frame_of(&p), &settings,
+                                          want_shot ? &shot : NULL, NULL, &err);
+        p.refined = refining ? p.refined + 1 : 0;
         if (!rc)
             rc = tl_render_present(p.render, &err);
         if (rc) { /* a shader that does not compile: say so, keep the last frame */

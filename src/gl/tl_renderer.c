@@ -551,28 +551,31 @@ static GLuint use_ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsi
 /* The bound program over the pixels x0 <= x < x1, y0 <= y < y1. A pixel's
  * samples go in draws of at most `chunk`; each adds its share of the
  * average. Depth (the nearest surface any sample saw) comes from the first
- * draw's samples. */
+ * draw's samples. `only` >= 0: that sample alone, at the full weight. */
 static void draw_ocean(GLuint program, const tl_frame_uniforms *u, int chunk, float weight,
-                       int write_depth, int x0, int y0, int x1, int y1)
+                       int write_depth, int only, int x0, int y0, int x1, int y1)
 {
     if (x0 >= x1 || y0 >= y1)
         return;
     glScissor(x0, y0, x1 - x0, y1 - y0);
     int spp = u->spp < 1 ? 1 : u->spp;
-    for (int first = 0; first < spp; first += chunk) {
-        int count = spp - first < chunk ? spp - first : chunk;
-        int depth = write_depth && first == 0;
+    int begin = only >= 0 ? only : 0, end = only >= 0 ? only + 1 : spp;
+    for (int first = begin; first < end; first += chunk) {
+        int count = end - first < chunk ? end - first : chunk;
+        int depth = write_depth && first == begin;
         glColorMaski(1, depth, depth, depth, depth);
         glUniform1i(tl_renderer_loc(program, "u_sample_first"), first);
         glUniform1i(tl_renderer_loc(program, "u_sample_count"), count);
         glUniform1f(tl_renderer_loc(program, "u_sample_weight"),
-                    weight * (float)count / (float)spp);
+                    only >= 0 ? weight : weight * (float)count / (float)spp);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
 }
 
-int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
-                           int write_depth, tl_error *err)
+/* The frame's passes into the float target with the blending the caller
+ * set: the boat's, then the ocean's (all samples, or sample `only`). */
+static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight, int write_depth,
+                       int only, tl_error *err)
 {
     if (u->width != r->scene.width || u->height != r->scene.height)
         return tl_error_set(err, TL_ERR_RUNTIME, "pass size does not match the frame");
@@ -589,9 +592,7 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
     glViewport(0, 0, u->width, u->height);
     glDisable(GL_DEPTH_TEST);
-    /* Radiance adds up across passes; depth is written by one pass only. */
-    glEnablei(GL_BLEND, 0);
-    glBlendFunc(GL_ONE, GL_ONE);
+    glEnablei(GL_BLEND, 0); /* radiance blends; depth is written, by one pass */
     glBlendEquation(GL_FUNC_ADD);
     glDisablei(GL_BLEND, 1);
     glEnable(GL_SCISSOR_TEST);
@@ -613,12 +614,12 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
         if (!program) {
             rc = err ? (int)err->status : TL_ERR_RUNTIME;
         } else if (rect[0] >= rect[2] || rect[1] >= rect[3]) {
-            draw_ocean(program, u, chunk, weight, write_depth, 0, 0, w, h);
+            draw_ocean(program, u, chunk, weight, write_depth, only, 0, 0, w, h);
         } else {
-            draw_ocean(program, u, chunk, weight, write_depth, 0, 0, w, rect[1]);
-            draw_ocean(program, u, chunk, weight, write_depth, 0, rect[3], w, h);
-            draw_ocean(program, u, chunk, weight, write_depth, 0, rect[1], rect[0], rect[3]);
-            draw_ocean(program, u, chunk, weight, write_depth, rect[2], rect[1], w, rect[3]);
+            draw_ocean(program, u, chunk, weight, write_depth, only, 0, 0, w, rect[1]);
+            draw_ocean(program, u, chunk, weight, write_depth, only, 0, rect[3], w, h);
+            draw_ocean(program, u, chunk, weight, write_depth, only, 0, rect[1], rect[0], rect[3]);
+            draw_ocean(program, u, chunk, weight, write_depth, only, rect[2], rect[1], w, rect[3]);
         }
     }
     if (!rc && rect[0] < rect[2] && rect[1] < rect[3]) {
@@ -626,8 +627,8 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
         if (!program)
             rc = err ? (int)err->status : TL_ERR_RUNTIME;
         else
-            draw_ocean(program, u, samples_per_draw(u, features), weight, write_depth, rect[0],
-                       rect[1], rect[2], rect[3]);
+            draw_ocean(program, u, samples_per_draw(u, features), weight, write_depth, only,
+                       rect[0], rect[1], rect[2], rect[3]);
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -635,6 +636,28 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
     if (rc)
         return rc;
     return tl_renderer_check("rendering", err);
+}
+
+int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
+                           int write_depth, tl_error *err)
+{
+    glBlendFunc(GL_ONE, GL_ONE); /* radiance adds up across passes */
+    return draw_passes(r, u, weight, write_depth, -1, err);
+}
+
+int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, tl_error *err)
+{
+    int spp = u->spp < 1 ? 1 : u->spp;
+    if (sample < 0 || sample >= spp)
+        return tl_error_set(err, TL_ERR_RUNTIME, "refine: sample %d of %d", sample, spp);
+    if (sample == 0) { /* into the cleared target, with its depth */
+        glBlendFunc(GL_ONE, GL_ONE);
+        return draw_passes(r, u, 1.0f, 1, 0, err);
+    }
+    /* The running mean: old * (1 - a) + new * a, a = 1 / (samples so far). */
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+    glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / (float)(sample + 1));
+    return draw_passes(r, u, 1.0f, 0, sample, err);
 }
 
 int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)

@@ -62,6 +62,12 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsigned planes,
                        tl_frame *frame, tl_error *err);
+/* Progressive refinement (the preview, paused): sample `sample` of u->spp
+ * alone, into the running mean of the samples before it, so that after
+ * samples 0..spp-1 the float target holds what one accumulate of all of
+ * them gives. Sample 0 goes into a target begin has just cleared and
+ * writes the depth. Then finish or display. */
+int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, tl_error *err);
 /* Seconds the last tl_renderer_finish spent reading the planes back (after
  * waiting for the GPU to finish drawing). */
 double tl_renderer_last_readback(const tl_renderer *r);

@@ -283,6 +283,45 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     return rc;
 }
 
+int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
+                              const tl_render_settings *settings, int sample, int samples,
+                              tl_frame *out, tl_error *err)
+{
+    double t0 = tl_clock_seconds();
+    r->render_seconds = r->readback_seconds = 0.0;
+    tl_render_settings pass = *settings;
+    pass.spp = samples;
+    tl_scene scene;
+    tl_render_frame_scene(tl, tl_timeline_frame_time(tl, frame), &pass, &scene);
+    int rc = tl_scene_validate(&scene, err);
+    if (!rc && out)
+        rc = ensure_frame(out, scene.width, scene.height, err);
+    int rw, rh;
+    tl_prepare_render_size(&scene, &rw, &rh);
+    if (!rc && sample == 0)
+        rc = tl_renderer_begin(r->renderer, rw, rh, scene.width, scene.height, err);
+    tl_frame_uniforms u;
+    if (!rc) {
+        tl_prepare_frame(&scene, waves_for(r, &scene.ocean), &u);
+        rc = prepare_sky(r, &scene, &u, err);
+    }
+    if (!rc) {
+        u.seed = 0; /* the pattern tl_render_timeline_frame's one pass uses */
+        r->last_features = u.features;
+        rc = tl_renderer_refine(r->renderer, &u, sample, err);
+    }
+    const tl_display_settings display = {(float)(scene.exposure * exp2(-scene.ev)),
+                                         (float)scene.bloom, (float)scene.quality.pixel_filter};
+    if (!rc)
+        rc = out ? tl_renderer_finish(r->renderer, &display,
+                                      settings->planes ? settings->planes : TL_PLANES_ALL, out, err)
+                 : tl_renderer_display(r->renderer, &display, err);
+    if (!rc && out)
+        r->readback_seconds = tl_renderer_last_readback(r->renderer);
+    r->render_seconds = tl_clock_seconds() - t0 - r->readback_seconds;
+    return rc;
+}
+
 void tl_render_last_timing(const tl_render *r, double *render_seconds, double *readback_seconds)
 {
     *render_seconds = r->render_seconds;

@@ -78,6 +78,16 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err);
 
+/* Progressive refinement of frame `frame` (no shutter): its sample
+ * `sample` of `samples` stratified ones per pixel is added to the running
+ * mean of the samples before it (sample 0 starts it afresh), then shown or
+ * read back as tl_render_timeline_frame does. After samples 0..samples-1
+ * the frame is the one tl_render_timeline_frame renders with
+ * settings->spp = samples, but for the depth, which is sample 0's. */
+int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
+                              const tl_render_settings *settings, int sample, int samples,
+                              tl_frame *out, tl_error *err);
+
 /* Where the last tl_render_timeline_frame spent its time: preparing and
  * drawing until the GPU finished (render), and reading the planes back. */
 void tl_render_last_timing(const tl_render *r, double *render_seconds, double *readback_seconds);
