@@ -59,6 +59,13 @@ static void test_probe(tl_renderer *r)
     CHECK(height > 20.0f);
 }
 
+/* The double-precision mirror of the scene's surface. */
+static void cpu_mirror(const tl_scene *s, tl_giant *giant, tl_waves *waves)
+{
+    tl_giant_prepare(giant, &s->giant, s->time);
+    tl_waves_init(waves, &s->ocean);
+}
+
 /* A camera 120 m in front of a 20 m wave that travels toward it. */
 static void facing_scene(tl_scene *s)
 {
@@ -204,9 +211,8 @@ static void test_hits_on_surface(tl_renderer *r)
         if (render(r, &s, &f))
             return;
         tl_giant giant;
-        tl_giant_prepare(&giant, &s.giant, s.time);
         tl_waves waves;
-        tl_waves_init(&waves, &s.ocean);
+        cpu_mirror(&s, &giant, &waves);
         int hits = 0, off = 0;
         double worst = 0.0;
         for (int y = 0; y < s.height; y++)
@@ -421,9 +427,8 @@ static void test_relaxed_march(tl_renderer *r)
     if (render(r, &s, &f))
         return;
     tl_giant giant;
-    tl_giant_prepare(&giant, &s.giant, s.time);
     tl_waves waves;
-    tl_waves_init(&waves, &s.ocean);
+    cpu_mirror(&s, &giant, &waves);
     int checked = 0, through = 0, on_wave = 0;
     for (int y = 0; y < s.height; y++)
         for (int x = 0; x < s.width; x++) {

@@ -214,6 +214,22 @@ void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutte
     *close = b;
 }
 
+/* The display pass with the scene's settings, then the planes read back
+ * into `out`, or (out NULL) the frame left on the GPU for the window. */
+static int show_or_read(tl_render *r, const tl_scene *scene, const tl_render_settings *settings,
+                        tl_frame *out, tl_error *err)
+{
+    const tl_display_settings display = {(float)(scene->exposure * exp2(-scene->ev)),
+                                         (float)scene->bloom, (float)scene->quality.pixel_filter};
+    if (!out)
+        return tl_renderer_display(r->renderer, &display, err);
+    int rc = tl_renderer_finish(r->renderer, &display,
+                                settings->planes ? settings->planes : TL_PLANES_ALL, out, err);
+    if (!rc)
+        r->readback_seconds = tl_renderer_last_readback(r->renderer);
+    return rc;
+}
+
 int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err)
@@ -269,16 +285,10 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         r->last_features |= u.features;
         rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
-    const tl_display_settings display = {(float)(scene.exposure * exp2(-scene.ev)),
-                                         (float)scene.bloom, (float)scene.quality.pixel_filter};
     if (!rc)
-        rc = out ? tl_renderer_finish(r->renderer, &display,
-                                      settings->planes ? settings->planes : TL_PLANES_ALL, out, err)
-                 : tl_renderer_display(r->renderer, &display, err);
+        rc = show_or_read(r, &scene, settings, out, err);
     if (!rc && scene_out)
         *scene_out = scene;
-    if (!rc && out)
-        r->readback_seconds = tl_renderer_last_readback(r->renderer);
     r->render_seconds = tl_clock_seconds() - t0 - r->readback_seconds;
     return rc;
 }
@@ -310,14 +320,8 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
         r->last_features = u.features;
         rc = tl_renderer_refine(r->renderer, &u, sample, err);
     }
-    const tl_display_settings display = {(float)(scene.exposure * exp2(-scene.ev)),
-                                         (float)scene.bloom, (float)scene.quality.pixel_filter};
     if (!rc)
-        rc = out ? tl_renderer_finish(r->renderer, &display,
-                                      settings->planes ? settings->planes : TL_PLANES_ALL, out, err)
-                 : tl_renderer_display(r->renderer, &display, err);
-    if (!rc && out)
-        r->readback_seconds = tl_renderer_last_readback(r->renderer);
+        rc = show_or_read(r, &scene, settings, out, err);
     r->render_seconds = tl_clock_seconds() - t0 - r->readback_seconds;
     return rc;
 }
