@@ -27,9 +27,13 @@ vec2 tent_reads(float src, out vec2 pos)
 void main()
 {
     vec2 uv = gl_FragCoord.xy / u_glare_size;
+    vec2 base = vec2(textureSize(u_hdr, 0));
     vec3 glare = vec3(0.0);
     for (int level = 1; level <= 6; level++) {
-        vec2 size = vec2(textureSize(u_hdr, level));
+        // The level's size by GL's rule, from the base: textureSize of a
+        // level past a small image's last one is undefined (textureLod
+        // reads the last one there, which this size then matches).
+        vec2 size = max(floor(base / exp2(float(level))), vec2(1.0));
         vec2 src = uv * size - 0.5;
         vec2 px, py;
         vec2 wx = tent_reads(src.x, px), wy = tent_reads(src.y, py);

@@ -179,6 +179,24 @@ int main(void)
     CHECK(spread > 0.0);
     tl_frame_free(&f);
     free(half.rgb);
+
+    /* A frame smaller than the glare's coarsest level (the preview's
+     * smallest scale): finite, in range, and the sun still glares. */
+    s.width = 12;
+    s.height = 7;
+    if (render(r, &s, &f))
+        return 1;
+    int in_range = 1;
+    double darkest = 1.0;
+    for (int i = 0; i < 12 * 7 * 4; i++)
+        in_range &= f.display[i] >= 0.0f && f.display[i] <= 1.0f;
+    for (int i = 0; i < 12 * 7; i++)
+        darkest = fmin(darkest, luminance(f.display + i * 4));
+    printf("12x7 frame with glare: display in [0, 1]: %s, darkest pixel %.3f\n",
+           in_range ? "yes" : "no", darkest);
+    CHECK(in_range);
+    CHECK(darkest > 0.0);
+    tl_frame_free(&f);
     for (int l = 0; l < LEVELS; l++)
         free(mips[l].rgb);
     tl_renderer_destroy(r);

@@ -28,7 +28,8 @@ int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 
 /* Writes the effective quality knobs (preset name and every value the
  * preset or the overrides set) as image metadata entries into out[0..13],
- * so a frame records exactly how it was made. Returns the count (14). */
+ * so a frame records exactly how it was made. Returns the count
+ * (TL_CLI_QUALITY_META). */
 struct tl_quality;
 struct tl_meta;
 #define TL_CLI_QUALITY_META 17
