@@ -390,6 +390,8 @@ static void save_frame(preview *p)
     tl_error_clear(&err);
     tl_image_options opt = {0};
     int rc = tl_render_timeline_frame(p->render, &p->tl, frame, &settings, &f, NULL, &err);
+    /* That frame took the renderer's targets: refinement starts again. */
+    p->refined = 0;
     if (!rc)
         rc = tl_image_write(exr, &f, &opt, &err);
     if (!rc)
