@@ -592,9 +592,12 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
     glViewport(0, 0, u->width, u->height);
     glDisable(GL_DEPTH_TEST);
-    glEnablei(GL_BLEND, 0); /* radiance blends; depth is written, by one pass */
-    glBlendEquation(GL_FUNC_ADD);
-    glDisablei(GL_BLEND, 1);
+    /* Radiance blends as the caller set; a distance keeps the nearest any
+     * pass wrote (the target starts at TL_SKY_DEPTH). */
+    glEnablei(GL_BLEND, 0);
+    glEnablei(GL_BLEND, 1);
+    glBlendEquationi(0, GL_FUNC_ADD);
+    glBlendEquationi(1, GL_MIN);
     glEnable(GL_SCISSOR_TEST);
     /* The giant wave's program only over the pixels that can see its box
      * (u->giant_rect), the lean program, the same image there, around it:
@@ -633,6 +636,8 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisablei(GL_BLEND, 0);
+    glDisablei(GL_BLEND, 1);
+    glBlendEquation(GL_FUNC_ADD);
     if (rc)
         return rc;
     return tl_renderer_check("rendering", err);
@@ -643,6 +648,16 @@ int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float wei
 {
     glBlendFunc(GL_ONE, GL_ONE); /* radiance adds up across passes */
     return draw_passes(r, u, weight, write_depth, -1, err);
+}
+
+int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, float weight,
+                                  int write_depth, int sample, tl_error *err)
+{
+    int spp = u->spp < 1 ? 1 : u->spp;
+    if (sample < 0 || sample >= spp)
+        return tl_error_set(err, TL_ERR_RUNTIME, "pass of sample %d of %d", sample, spp);
+    glBlendFunc(GL_ONE, GL_ONE);
+    return draw_passes(r, u, weight, write_depth, sample, err);
 }
 
 int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, tl_error *err)
@@ -657,7 +672,7 @@ int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, t
     /* The running mean: old * (1 - a) + new * a, a = 1 / (samples so far). */
     glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
     glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / (float)(sample + 1));
-    return draw_passes(r, u, 1.0f, 0, sample, err);
+    return draw_passes(r, u, 1.0f, 1, sample, err);
 }
 
 int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *frame, tl_error *err)

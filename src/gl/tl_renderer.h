@@ -50,23 +50,29 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
 
 /* A frame built from several passes (motion blur sub-frames): begin clears
  * the float target of width x height; each accumulate adds weight x its
- * radiance (weights should sum to 1) and, when write_depth is set, stores
- * its depth; finish runs the display pass at out_width x out_height with
- * `display`'s settings (glare and the pixel filter touch the display plane
- * only, never the colour plane) and reads back the planes asked for. A render smaller than the
- * output (quality.render_scale) is upscaled there: colour and display by Catmull-Rom, distance
- * nearest. */
+ * radiance (weights should sum to 1) and, when write_depth is set, keeps
+ * the nearer of its depth and the target's (begin starts it at the sky's); finish runs the display
+ * pass at out_width x out_height with `display`'s settings (glare and the pixel filter touch the
+ * display plane only, never the colour plane) and reads back the planes asked for. A render smaller
+ * than the output (quality.render_scale) is upscaled there: colour and display by Catmull-Rom,
+ * distance nearest. */
 int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
                       tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsigned planes,
                        tl_frame *frame, tl_error *err);
+/* One of u->spp samples per pixel as its own pass, adding weight x its
+ * radiance (accumulate with a boat in view: each sample's pass draws the
+ * hull shifted by that sample's offset, tl_prepare_boat_sample, so its
+ * edges are anti-aliased too). Distances keep the nearest any pass wrote. */
+int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, float weight,
+                                  int write_depth, int sample, tl_error *err);
 /* Progressive refinement (the preview, paused): sample `sample` of u->spp
  * alone, into the running mean of the samples before it, so that after
  * samples 0..spp-1 the float target holds what one accumulate of all of
- * them gives. Sample 0 goes into a target begin has just cleared and
- * writes the depth. Then finish or display. */
+ * them gives. Sample 0 goes into a target begin has just cleared. Then
+ * finish or display. */
 int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, tl_error *err);
 /* Seconds the last tl_renderer_finish spent reading the planes back (after
  * waiting for the GPU to finish drawing). */

@@ -458,6 +458,21 @@ void tl_prepare_render_size(const tl_scene *s, int *width, int *height)
     *height = (int)fmax(1.0, floor(s->height * k + 0.5));
 }
 
+void tl_prepare_boat_sample(tl_frame_uniforms *u, int sample)
+{
+    int n = u->spp < 1 ? 1 : u->spp;
+    /* The stratum's centre in pixels from the pixel's (ocean.frag's
+     * sample_offset with its jitter at 0.5). */
+    double ox = (sample + 0.5) / n - 0.5, oy = ((sample * u->spp_step) % n + 0.5) / n - 0.5;
+    /* A pixel shows what lies `o` from its centre: the image moves by -o,
+     * 2o/size in normalised device coordinates (clip x, y less that times w). */
+    float dx = (float)(-2.0 * ox / u->width), dy = (float)(-2.0 * oy / u->height);
+    for (int c = 0; c < 4; c++) {
+        u->view_proj[c * 4 + 0] += dx * u->view_proj[c * 4 + 3];
+        u->view_proj[c * 4 + 1] += dy * u->view_proj[c * 4 + 3];
+    }
+}
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);

@@ -188,4 +188,10 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
  * built from scene->ocean; it is passed in so callers reuse it per shot. */
 void tl_prepare_frame(const tl_scene *scene, const tl_waves *waves, tl_frame_uniforms *u);
 
+/* Shifts the boat's projection (u->view_proj) by the centre of sample
+ * `sample`'s stratum, of u->spp: where the ocean's N-rooks sample of that
+ * index looks, less its per-pixel jitter. Drawn once per sample, the
+ * hull's edges are then anti-aliased as the water's are. */
+void tl_prepare_boat_sample(tl_frame_uniforms *u, int sample);
+
 #endif

@@ -152,6 +152,25 @@ static int ensure_frame(tl_frame *frame, int width, int height, tl_error *err)
     return tl_frame_alloc(frame, width, height, err);
 }
 
+/* One (sub-)frame's passes. With the boat in view and several samples a
+ * pixel, a pass per sample, the hull drawn at each sample's offset: its
+ * edges are then anti-aliased like the water's (one pass would draw it at
+ * the pixels' centres for every sample). */
+static int accumulate(tl_render *r, const tl_frame_uniforms *u, float weight, int write_depth,
+                      tl_error *err)
+{
+    if (!(u->features & TL_FEATURE_BOAT) || u->spp <= 1)
+        return tl_renderer_accumulate(r->renderer, u, weight, write_depth, err);
+    int rc = TL_OK;
+    for (int s = 0; !rc && s < u->spp; s++) {
+        tl_frame_uniforms pass = *u;
+        tl_prepare_boat_sample(&pass, s);
+        rc = tl_renderer_accumulate_sample(r->renderer, &pass, weight / (float)u->spp, write_depth,
+                                           s, err);
+    }
+    return rc;
+}
+
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err)
 {
     int rc = tl_scene_validate(scene, err);
@@ -163,7 +182,15 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
     rc = prepare_sky(r, scene, &u, err);
-    return rc ? rc : tl_renderer_render(r->renderer, &u, frame, err);
+    if (!rc)
+        rc = tl_renderer_begin(r->renderer, u.width, u.height, u.out_width, u.out_height, err);
+    if (!rc)
+        rc = accumulate(r, &u, 1.0f, 1, err);
+    if (!rc)
+        rc = tl_renderer_finish(r->renderer,
+                                &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
+                                TL_PLANES_ALL, frame, err);
+    return rc;
 }
 
 void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_settings *settings,
@@ -283,7 +310,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
             break;
         u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
         r->last_features |= u.features;
-        rc = tl_renderer_accumulate(r->renderer, &u, 1.0f / (float)samples, k == depth_sample, err);
+        rc = accumulate(r, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
     if (!rc)
         rc = show_or_read(r, &scene, settings, out, err);
@@ -318,6 +345,8 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     if (!rc) {
         u.seed = 0; /* the pattern tl_render_timeline_frame's one pass uses */
         r->last_features = u.features;
+        if (u.features & TL_FEATURE_BOAT)
+            tl_prepare_boat_sample(&u, sample); /* as accumulate draws it */
         rc = tl_renderer_refine(r->renderer, &u, sample, err);
     }
     if (!rc)

@@ -83,7 +83,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
  * mean of the samples before it (sample 0 starts it afresh), then shown or
  * read back as tl_render_timeline_frame does. After samples 0..samples-1
  * the frame is the one tl_render_timeline_frame renders with
- * settings->spp = samples, but for the depth, which is sample 0's. */
+ * settings->spp = samples. */
 int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
                               const tl_render_settings *settings, int sample, int samples,
                               tl_frame *out, tl_error *err);
