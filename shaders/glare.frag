@@ -1,7 +1,9 @@
 // Glare (render.bloom), at half the output's resolution: the scene's
-// light over its mip levels 1 to 6 (box averages, each smoothed by a 3x3
-// tent at the level's own texel spacing: the box-filtered chain alone shows
-// its blocks around a bright sun). The finest level is two pixels wide, so
+// light over its mip levels 1 to 6 (box averages, each read through a
+// cubic B-spline of its texels: the box-filtered chain alone shows its
+// blocks around a bright sun, and a tent of bilinear reads, only
+// continuous, still showed the coarsest level's square as a lit box on the
+// dark face under a sun behind the giant wave). The finest level is two pixels wide, so
 // half resolution holds it; the display pass reads this image bilinearly.
 // Here, not in the display pass: its taps per pixel cost a quarter as
 // much at a quarter of the pixels.
@@ -11,17 +13,19 @@ uniform vec2 u_glare_size; // this pass's pixels
 
 layout(location = 0) out vec4 out_glare;
 
-// Along one axis, the tent (1, 2, 1) / 4 of three bilinear reads one texel
-// apart weighs the four texels around the sample (1 - f, 2 - f, 1 + f, f)
-// / 4, f the sample's fraction between texels: exactly two bilinear reads,
-// one in each texel pair, with weights (3 - 2f) / 4 and (1 + 2f) / 4.
-// `src`: the sample in texel units (texel i's centre at i). *pos: the two
-// reads' positions in the same units.
-vec2 tent_reads(float src, out vec2 pos)
+// Along one axis, the cubic B-spline through the level's texels at the
+// sample's fraction f between them: weights (1-f)^3, 3f^3-6f^2+4,
+// -3f^3+3f^2+3f+1, f^3 (over 6) on the four texels around it, all
+// positive, so two bilinear reads give them exactly.
+vec2 bspline_reads(float src, out vec2 pos)
 {
     float n = floor(src), f = src - n;
-    pos = vec2(n - 1.0 + (2.0 - f) / (3.0 - 2.0 * f), n + 1.0 + f / (1.0 + 2.0 * f));
-    return vec2(3.0 - 2.0 * f, 1.0 + 2.0 * f) * 0.25;
+    float f2 = f * f, f3 = f2 * f;
+    vec4 w = vec4(1.0 - 3.0 * f + 3.0 * f2 - f3, 3.0 * f3 - 6.0 * f2 + 4.0,
+                  -3.0 * f3 + 3.0 * f2 + 3.0 * f + 1.0, f3) / 6.0;
+    vec2 g = vec2(w.x + w.y, w.z + w.w);
+    pos = vec2(n - 1.0 + w.y / g.x, n + 1.0 + w.w / g.y);
+    return g;
 }
 
 void main()
@@ -36,8 +40,8 @@ void main()
         vec2 size = max(floor(base / exp2(float(level))), vec2(1.0));
         vec2 src = uv * size - 0.5;
         vec2 px, py;
-        vec2 wx = tent_reads(src.x, px), wy = tent_reads(src.y, py);
-        // Four reads for the nine of the 3x3 tent (separable).
+        vec2 wx = bspline_reads(src.x, px), wy = bspline_reads(src.y, py);
+        // Four reads for the sixteen texels (separable).
         for (int j = 0; j < 2; j++)
             for (int i = 0; i < 2; i++)
                 glare += wx[i] * wy[j] *

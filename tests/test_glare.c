@@ -1,8 +1,7 @@
 /* Glare (render.bloom) against a CPU model of its definition: the scene's
  * colour plane (which never carries glare) is box-filtered into mip levels
- * 1..6, each level sampled bilinearly with a 3x3 tent at its own texel
- * spacing; the GPU evaluates that at half the output's resolution and the
- * display pass reads it bilinearly, then mixes it in and tonemaps. The
+ * 1..6, each level read through a cubic B-spline of its texels; the GPU evaluates that at half the
+ * output's resolution and the display pass reads it bilinearly, then mixes it in and tonemaps. The
  * frame's display plane must match the model of that within a few 8-bit
  * levels, and the model of the half-resolution image must stay close to
  * the definition evaluated at every output pixel (what glare was before it
@@ -66,19 +65,34 @@ static void bilinear(const image *m, double u, double v, double out[3])
     }
 }
 
-/* The glare's definition at uv. */
+/* The cubic B-spline's weights of the four texels around a sample at
+ * fraction f between the middle two. */
+static void bspline(double f, double w[4])
+{
+    w[0] = (1.0 - f) * (1.0 - f) * (1.0 - f) / 6.0;
+    w[1] = (3.0 * f * f * f - 6.0 * f * f + 4.0) / 6.0;
+    w[2] = (-3.0 * f * f * f + 3.0 * f * f + 3.0 * f + 1.0) / 6.0;
+    w[3] = f * f * f / 6.0;
+}
+
+/* The glare's definition at uv: each level's B-spline, clamped to the edge. */
 static void glare_at(double u, double v, double out[3])
 {
     for (int c = 0; c < 3; c++)
         out[c] = 0.0;
     for (int l = 1; l <= 6; l++) {
-        double tu = (double)(1 << l) / W, tv = (double)(1 << l) / H;
-        for (int j = -1; j <= 1; j++)
-            for (int i = -1; i <= 1; i++) {
-                double s[3], w = (2 - abs(i)) * (2 - abs(j)) / 16.0;
-                bilinear(&mips[l], u + i * tu, v + j * tv, s);
+        const image *m = &mips[l];
+        double x = u * m->w - 0.5, y = v * m->h - 0.5;
+        double fx = floor(x), fy = floor(y), wx[4], wy[4];
+        bspline(x - fx, wx);
+        bspline(y - fy, wy);
+        for (int j = 0; j < 4; j++)
+            for (int i = 0; i < 4; i++) {
+                int xi = (int)fx - 1 + i, yi = (int)fy - 1 + j;
+                xi = xi < 0 ? 0 : xi >= m->w ? m->w - 1 : xi;
+                yi = yi < 0 ? 0 : yi >= m->h ? m->h - 1 : yi;
                 for (int c = 0; c < 3; c++)
-                    out[c] += w * s[c] / 6.0;
+                    out[c] += wx[i] * wy[j] * m->rgb[(yi * m->w + xi) * 3 + c] / 6.0;
             }
     }
 }
