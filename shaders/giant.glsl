@@ -238,7 +238,10 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
     float mu = dot(ray, u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);
-    float moved = sqrt(clamp(abs(g.displacement) / reach, 0.0, 1.0));
+    // |D| with a floor of 0.3 of its largest: D changes sign on the face,
+    // and the glow fell to nothing along that line (a dark crease in the
+    // lit band of a distant backlit wave).
+    float moved = sqrt(clamp(length(vec2(g.displacement, 0.3 * reach)) / reach, 0.0, 1.0));
     float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
     float thin = smoothstep(0.35, 0.95, top);
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
