@@ -663,12 +663,8 @@ int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, fl
 int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, tl_error *err)
 {
     int spp = u->spp < 1 ? 1 : u->spp;
-    if (sample < 0 || sample >= spp)
-        return tl_error_set(err, TL_ERR_RUNTIME, "refine: sample %d of %d", sample, spp);
-    if (sample == 0) { /* into the cleared target, with its depth */
-        glBlendFunc(GL_ONE, GL_ONE);
-        return draw_passes(r, u, 1.0f, 1, 0, err);
-    }
+    if (sample <= 0 || sample >= spp) /* sample 0 goes into the cleared target */
+        return tl_renderer_accumulate_sample(r, u, 1.0f, 1, sample, err);
     /* The running mean: old * (1 - a) + new * a, a = 1 / (samples so far). */
     glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
     glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / (float)(sample + 1));
