@@ -99,6 +99,9 @@ static void test_errors(void)
     expect_error("", "is a folder");
     expect_error("empty.obj", "the file is empty");
     expect_error("corrupt.glb", "cannot be read");
+    /* A chunk that declares 1.6 GB in a 200-byte file: refused before
+     * assimp, which would allocate it. */
+    expect_error("oversized_chunk.glb", "a chunk declares more bytes than the file has");
     expect_error("lines_only.obj", "has no triangles");
     expect_error("crate.mtl", "unknown format (use .glb, .gltf or .obj)");
 }

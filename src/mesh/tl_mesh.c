@@ -127,6 +127,40 @@ static int known_format(const char *path)
     return !strcasecmp(dot, ".glb") || !strcasecmp(dot, ".gltf") || !strcasecmp(dot, ".obj");
 }
 
+static uint32_t le32(const unsigned char *b)
+{
+    return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+}
+
+/* A binary glTF's header and chunk lengths against the file's size, before
+ * assimp reads it: assimp 5.2 allocates a chunk's declared length first,
+ * so 20 bytes that declare 1.6 GB exhausted the memory (a fuzzer's find).
+ * Returns NULL when they fit, else what is wrong. */
+static const char *glb_problem(const char *path, long long file_size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return "cannot be opened";
+    unsigned char head[12];
+    const char *why = NULL;
+    if (fread(head, 1, 12, f) != 12 || memcmp(head, "glTF", 4) != 0)
+        why = "not a binary glTF (no 'glTF' header)";
+    else if (le32(head + 8) > file_size)
+        why = "its header declares more bytes than the file has";
+    /* Every chunk: 8 bytes of length and type, then its data. */
+    for (long long at = 12; !why && at < file_size;) {
+        unsigned char chunk[8];
+        if (fseek(f, (long)at, SEEK_SET) != 0 || fread(chunk, 1, 8, f) != 8)
+            why = "a chunk's header is cut short";
+        else if ((long long)le32(chunk) > file_size - at - 8)
+            why = "a chunk declares more bytes than the file has";
+        else
+            at += 8 + (long long)le32(chunk);
+    }
+    fclose(f);
+    return why;
+}
+
 int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -140,6 +174,10 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
                             "boat model %s: unknown format (use .glb, .gltf or .obj)", path);
     if (st.st_size == 0)
         return tl_error_set(err, TL_ERR_USAGE, "boat model %s: the file is empty", path);
+    const char *dot = strrchr(path, '.');
+    const char *bad = !strcasecmp(dot, ".glb") ? glb_problem(path, (long long)st.st_size) : NULL;
+    if (bad)
+        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: cannot be read: %s", path, bad);
 
     /* Triangles only (points and lines dropped), one flat list of meshes
      * with their node transforms applied. */
