@@ -10,6 +10,170 @@
 // slope wherever the step could reach, so that even its steepest face
 // cannot be stepped through.
 
+// The pixel (continuous, full-resolution) of the ray being marched, set by
+// the caller: where the march looks up its neighbours in the prepass.
+vec2 g_pixel;
+
+#ifdef TL_MARCH_HINT
+// The march prepass (quality.march_prepass) marched one ray per 2x2
+// pixels, at each block's centre, with this same march. The four prepass
+// rays around a pixel's ray tell where it meets the water. Where they agree
+// (a smooth stretch of water: the nearest at least TL_HINT_SMOOTH of the
+// farthest) the hit lies between them, the bracket widened by 1% each way:
+// if the bracket holds a crossing, TL_HINT_REFINE regula falsi steps find
+// it; if its far end is still above the water, the march goes on from
+// there. Where they disagree (a crest against far water) the march starts
+// 1% short of the nearest. Wherever that first point is already under the
+// surface (a crest between the prepass rays), the march starts over.
+uniform sampler2D u_march_hint;
+uniform float u_hint_pixel; // this pass's pixel, in the frame's pixels (the prepass's are larger)
+#define TL_HINT_SMOOTH 0.9
+#define TL_HINT_WIDEN 0.01
+#define TL_HINT_EDGE_WIDEN 0.1
+#ifndef TL_HINT_REFINE
+#define TL_HINT_REFINE 4
+#endif
+
+// The nearest and farthest of the four prepass distances around this
+// pixel, the sky as 1e30.
+vec2 march_hint()
+{
+    ivec2 last = textureSize(u_march_hint, 0) - 1;
+    ivec2 j = ivec2(floor((g_pixel / u_hint_pixel - 1.0) * 0.5));
+    vec2 range = vec2(1e30, 0.0);
+    for (int y = 0; y < 2; y++)
+        for (int x = 0; x < 2; x++) {
+            float t = texelFetch(u_march_hint, clamp(j + ivec2(x, y), ivec2(0), last), 0).r;
+            range = vec2(t > 0.0 ? min(range.x, t) : range.x, t > 0.0 ? max(range.y, t) : 1e30);
+        }
+    return range;
+}
+
+// The walk through the prepass's bracket, inside the march's own loop:
+// llvmpipe runs a loop's body at least once for every pixel, so a second
+// loop would cost every pixel a surface evaluation. stage 1: at the
+// bracket's near end (or the start short of a silhouette), 2: at its far
+// end, 3 + k: after k regula falsi steps; 0: marching.
+struct hint_walk {
+    int stage, side;
+    bool bracket;
+    float b0, c0, b1, c1; // the bracket's ends and the heights above the surface there
+};
+
+// The walk for a march that would start at t: moves t to its first point
+// and gives the march the walk's steps.
+hint_walk hint_begin(inout float t, inout int steps)
+{
+    hint_walk w = hint_walk(0, 0, false, 0.0, 0.0, 0.0, 0.0);
+    vec2 hint = march_hint();
+    // Next to the sky (the horizon, a crest's silhouette) the ray may clip
+    // the crest nearer than any of the four saw water: it starts further
+    // short of the nearest.
+    float short_of = hint.x * (1.0 - (hint.y >= 1e30 ? TL_HINT_EDGE_WIDEN : TL_HINT_WIDEN));
+    if (hint.x < 1e30 && short_of > t) {
+        w.bracket = hint.x >= TL_HINT_SMOOTH * hint.y;
+        w.b0 = short_of;
+        w.b1 = hint.y * (1.0 + TL_HINT_WIDEN);
+        w.stage = 1;
+        t = w.b0;
+        steps += 3 + TL_HINT_REFINE;
+    }
+    return w;
+}
+
+const int HINT_MARCH = 0; // march on from t with this height
+const int HINT_NEXT = 1;  // evaluate the next t
+const int HINT_FOUND = 2; // t is the hit
+
+// One point of the walk, `above` the surface at t; t_start: where the
+// march would have started without the prepass.
+int hint_step(inout hint_walk w, float above, inout float t, float t_start)
+{
+    if (w.stage == 0)
+        return HINT_MARCH;
+    if (w.stage == 1) {
+        if (!(above > 0.0)) { // under a crest between the prepass rays
+            w.stage = 0;
+            t = t_start;
+            return HINT_NEXT;
+        }
+        if (!w.bracket) {
+            w.stage = 0; // march on from short of the silhouette
+            return HINT_MARCH;
+        }
+        w.c0 = above;
+        w.stage = 2;
+        t = w.b1;
+        return HINT_NEXT;
+    }
+    if (abs(above) < u_hit_epsilon) {
+        w.stage = 0;
+        return HINT_FOUND; // within the hit epsilon of the surface
+    }
+    if (w.stage == 2) {
+        if (above > 0.0) {
+            // No crossing at the bracket's ends: there may be two between
+            // them (a crest the ray clips), so the march goes on from the
+            // near end, where nothing was skipped.
+            w.stage = 0;
+            t = w.b0;
+            return HINT_NEXT;
+        }
+        w.stage = 0;
+        if (!(above <= 0.0)) { // NaN: start over
+            t = t_start;
+            return HINT_NEXT;
+        }
+        w.c1 = above;
+        w.stage = 3;
+    } else if (w.stage == 3 + TL_HINT_REFINE) {
+        w.stage = 0; // not converged (a steep face): march on from the bracket's near end
+        t = w.b0;
+        return HINT_NEXT;
+    } else if (above > 0.0) { // Illinois: the bracket always holds the crossing
+        w.b0 = t;
+        w.c0 = above;
+        w.c1 *= w.side == 1 ? 0.5 : 1.0;
+        w.side = 1;
+        w.stage++;
+    } else {
+        w.b1 = t;
+        w.c1 = above;
+        w.c0 *= w.side == -1 ? 0.5 : 1.0;
+        w.side = -1;
+        w.stage++;
+    }
+    t = w.b1 + w.c1 * (w.b1 - w.b0) / (w.c0 - w.c1);
+    return HINT_NEXT;
+}
+#endif
+
+#ifdef TL_MARCH_PREPASS
+// A prepass ray stands for a block of pixels. Where it passes within about
+// a block of a crest and then rises away from the water (the crest's
+// silhouette, against far water or the sky), the pixels around it may clip
+// that crest: it reports the crest's distance instead of its own hit, so
+// that they start in front of the crest rather than past it. Grazing rays
+// over open water come ever closer to the surface and never rise: they
+// report their hit.
+#define TL_PREPASS_REACH 2.0
+float g_pass_near = -1.0; // where the ray first came within reach of the surface
+bool g_pass_rose = false; // and rose out of reach after it
+
+void march_note_pass(float t, float above)
+{
+    float pixel = 2.0 * u_tan_half_vfov / u_resolution.y; // radians
+    if (above < TL_PREPASS_REACH * u_prepass_scale * pixel * t)
+        g_pass_near = g_pass_near < 0.0 ? t : g_pass_near;
+    else if (g_pass_near >= 0.0)
+        g_pass_rose = true;
+}
+#else
+void march_note_pass(float t, float above)
+{
+}
+#endif
+
 // Secant steps from the march's last two points (t0, a0) and (t1, a1),
 // a = height above the surface, toward a = 0: the march stops anywhere
 // within the hit epsilon above the surface, which for a grazing ray is a
@@ -74,14 +238,26 @@ float march_water(vec3 ray, float t_min)
     // safe. r_safe: the last point's height after a relaxed step, 1e30
     // ("nothing to check") after a plain one.
     float t_safe = 0.0, r_safe = 1e30;
-    for (int i = 0; i < u_march_steps; i++) {
+    int steps = u_march_steps;
+#ifdef TL_MARCH_HINT
+    hint_walk walk = hint_begin(t, steps);
+#endif
+    for (int i = 0; i < steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
         float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
+#ifdef TL_MARCH_HINT
+        int act = hint_step(walk, above, t, t_start);
+        if (act == HINT_FOUND)
+            return t;
+        if (act == HINT_NEXT)
+            continue;
+#endif
         if (t - above > t_safe + r_safe) {
             t = t_safe + r_safe; // the relaxed step may have crossed the surface
             r_safe = 1e30;
             continue;
         }
+        march_note_pass(t, above);
         if (above < u_hit_epsilon) {
             hit = true;
             above_hit = above;
@@ -126,12 +302,20 @@ float march_water(vec3 ray, float t_min)
     // last point.
     float t_prev = 0.0, r_prev = 0.0;
     bool relaxed = false; // the step that led to t was over-relaxed
-    for (int i = 0; i < u_march_steps; i++) {
+    int steps = u_march_steps;
+#ifdef TL_MARCH_HINT
+    hint_walk walk = hint_begin(t, steps);
+#endif
+    for (int i = 0; i < steps; i++) {
         bool in_box = t >= box.x && t <= box.y;
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
         // Rays leaving the ocean band upward see the sky (camera in the
         // band), unless the wave's box still lies ahead of them.
-        if (ray.y >= 0.0 && pos.y > 0.0 && !in_box) {
+        bool walking = false; // still in the prepass's bracket: no shortcut to the sky
+#ifdef TL_MARCH_HINT
+        walking = walk.stage != 0;
+#endif
+        if (ray.y >= 0.0 && pos.y > 0.0 && !in_box && !walking) {
             if (t > box.y)
                 return -1.0;
             t = box.x;
@@ -139,6 +323,13 @@ float march_water(vec3 ray, float t_min)
             continue;
         }
         float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
+#ifdef TL_MARCH_HINT
+        int act = hint_step(walk, above, t, t_start);
+        if (act == HINT_FOUND)
+            return t;
+        if (act == HINT_NEXT)
+            continue;
+#endif
         float radius = above; // how far along the ray is surely free
         // A step no longer than `above` moves at most above·ray_along in s.
         if (in_box)
@@ -148,6 +339,7 @@ float march_water(vec3 ray, float t_min)
             relaxed = false;
             continue;
         }
+        march_note_pass(t, above);
         if (above < u_hit_epsilon) {
             hit = true;
             above_hit = above;

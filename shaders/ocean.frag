@@ -10,6 +10,9 @@
 #include "giant.glsl"
 #endif
 #include "surface.glsl"
+#ifdef TL_MARCH_PREPASS
+uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
+#endif
 #include "march.glsl"
 #ifdef TL_FEATURE_UNDERWATER
 #include "lens.glsl"
@@ -41,8 +44,13 @@ uniform int u_sample_first;
 uniform int u_sample_count;
 uniform float u_sample_weight;
 
+#ifdef TL_MARCH_PREPASS
+layout(location = 0) out float out_hint;
+#else
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
+#endif
+
 
 uint hash_u32(uint x)
 {
@@ -127,6 +135,16 @@ vec3 trace(vec3 ray, out float dist)
     return color;
 }
 
+#ifdef TL_MARCH_PREPASS
+// A level of the march prepass: the march alone, one ray at the centre of
+// each block of u_prepass_scale x u_prepass_scale pixels.
+void main()
+{
+    g_pixel = u_prepass_scale * gl_FragCoord.xy;
+    float t = march_water(camera_ray(g_pixel), 0.0);
+    out_hint = g_pass_rose ? g_pass_near : t;
+}
+#else
 void main()
 {
 #ifdef TL_FEATURE_SUPERSAMPLE
@@ -137,7 +155,8 @@ void main()
     for (int k = 0; k < max(u_sample_count, 1); k++) {
         int s = u_sample_first + k;
         float dist;
-        vec3 c = trace(camera_ray(gl_FragCoord.xy + sample_offset(s)), dist);
+        g_pixel = gl_FragCoord.xy + sample_offset(s);
+        vec3 c = trace(camera_ray(g_pixel), dist);
         // Last guard: no NaN or Inf may reach a pixel. A bad sample is
         // dropped alone, so one stray sample cannot blacken a pixel.
         if (any(isnan(c)) || any(isinf(c)))
@@ -151,7 +170,8 @@ void main()
     // One sample at the pixel's centre, without the loop: around the whole
     // trace it costs llvmpipe a sixth of the frame.
     float depth;
-    vec3 color = trace(camera_ray(gl_FragCoord.xy), depth);
+    g_pixel = gl_FragCoord.xy;
+    vec3 color = trace(camera_ray(g_pixel), depth);
     if (any(isnan(color)) || any(isinf(color))) { // the same last guard
         color = vec3(0.0);
         depth = TL_SKY_DEPTH;
@@ -160,3 +180,4 @@ void main()
     out_color = vec4(color, 1.0) * u_sample_weight;
     out_depth = depth;
 }
+#endif

@@ -458,6 +458,79 @@ static void test_relaxed_march(tl_renderer *r)
     tl_frame_free(&f);
 }
 
+/* Pixels whose ray crosses the surface 0.25 m or more before the distance
+ * the frame reports (the sky: within 400 m), walked on the CPU 5 cm at a
+ * time. Only pixels next to a jump in distance (an edge of the wave) are
+ * walked: that is where a march that starts from its neighbours'
+ * distances could step over a crest. */
+static int stepped_over(const tl_scene *s, const tl_frame *f, int *walked)
+{
+    tl_giant giant;
+    tl_waves waves;
+    cpu_mirror(s, &giant, &waves);
+    int over = 0;
+    *walked = 0;
+    for (int y = 1; y + 1 < s->height; y++)
+        for (int x = 1; x + 1 < s->width; x++) {
+            double d = f->depth[(size_t)y * s->width + x], lo = d, hi = d;
+            for (int j = -1; j <= 1; j++)
+                for (int i = -1; i <= 1; i++) {
+                    double n = f->depth[(size_t)(y + j) * s->width + x + i];
+                    lo = fmin(lo, n);
+                    hi = fmax(hi, n);
+                }
+            if (lo > 0.8 * hi || lo > 400.0)
+                continue; /* no edge here, or only far water */
+            double ray[3], until = fmin(d, 400.0) - 0.25;
+            pixel_ray(s, x, y, ray);
+            for (double t = 0.0; t < until; t += 0.05) {
+                double p[3];
+                for (int i = 0; i < 3; i++)
+                    p[i] = s->camera.position[i] + ray[i] * t;
+                if (p[1] > s->giant.height + 2.0)
+                    continue; /* above everything */
+                if (p[1] < tl_waves_surface_height(&waves, &giant, p[0], p[2], s->time,
+                                                   s->quality.march_octaves,
+                                                   s->quality.giant_iterations)) {
+                    over++;
+                    break;
+                }
+            }
+            (*walked)++;
+        }
+    return over;
+}
+
+/* The march prepass (quality.march_prepass) keeps the wave's silhouette:
+ * the scene's rays start from the distances coarser rays found, and a
+ * crest edge thinner than those rays' spacing must not be stepped over.
+ * Facing the wave from near the water (its crest against the sky) and
+ * from above it (against the sea beyond), no pixel along its edges
+ * reports a surface behind one its ray crosses. */
+static void test_prepass_silhouette(tl_renderer *r)
+{
+    const double heights[2] = {4.0, 30.0}, pitches[2] = {0.0, -8.0};
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        facing_scene(&s);
+        s.camera.position[1] = heights[k];
+        s.camera.pitch = pitches[k] * M_PI / 180.0;
+        s.quality.lod = false; /* the CPU mirror's full-detail surface */
+        s.quality.march_steps = 400;
+        s.quality.march_prepass = true;
+        tl_frame f;
+        if (render(r, &s, &f))
+            return;
+        int walked = 0, over = stepped_over(&s, &f, &walked);
+        printf("march prepass, camera %.0f m up: %d of %d pixels along the wave's edges cross "
+               "the surface before their hit\n",
+               heights[k], over, walked);
+        CHECK(walked > 100);
+        CHECK(over == 0);
+        tl_frame_free(&f);
+    }
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -469,6 +542,7 @@ int main(void)
     test_wave_in_view(r);
     test_hits_on_surface(r);
     test_relaxed_march(r);
+    test_prepass_silhouette(r);
     test_extremes(r);
     test_screen_rect();
     test_split_matches_whole(r);

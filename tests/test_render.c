@@ -198,6 +198,24 @@ static void test_pixel_filter(tl_renderer *r)
     }
 }
 
+/* The first point below the surface along pixel (x, y)'s ray, walked on
+ * the CPU 5 cm at a time from the crest plane up to `until`; `until` when
+ * there is none before it. */
+static double first_crossing(const tl_scene *s, const tl_waves *waves, int x, int y, double until)
+{
+    double ray[3];
+    pixel_ray(s, x, y, ray);
+    double t = -s->camera.position[1] / ray[1];
+    for (; t < until; t += 0.05) {
+        double px = s->camera.position[0] + ray[0] * t;
+        double pz = s->camera.position[2] + ray[2] * t;
+        double py = s->camera.position[1] + ray[1] * t;
+        if (py < tl_waves_height(waves, px, pz, s->time, s->quality.march_octaves))
+            return t;
+    }
+    return until;
+}
+
 /* The march's over-relaxation (quality.march_relax) never steps through a
  * wave: along each water pixel's ray the CPU mirror finds the first point
  * below the surface (5 cm apart) no nearer than the hit the GPU reports.
@@ -220,6 +238,7 @@ static void test_relaxed_march(tl_renderer *r)
         s.quality.lod = false; /* the mirror's full-detail surface */
         s.quality.march_steps = 400;
         s.quality.march_relax = factors[k];
+        s.quality.march_prepass = false; /* the march alone */
         tl_frame f;
         if (render(r, &s, &f))
             return;
@@ -231,18 +250,7 @@ static void test_relaxed_march(tl_renderer *r)
                 double d = f.depth[(size_t)y * s.width + x];
                 if (d > 40.0)
                     continue; /* sky, and far water the walk would take long over */
-                double ray[3];
-                pixel_ray(&s, x, y, ray);
-                /* From where the ray enters the crest plane y = 0. */
-                double t = -s.camera.position[1] / ray[1];
-                for (; t < d - 0.25; t += 0.05) {
-                    double px = s.camera.position[0] + ray[0] * t;
-                    double pz = s.camera.position[2] + ray[2] * t;
-                    double py = s.camera.position[1] + ray[1] * t;
-                    if (py < tl_waves_height(&waves, px, pz, s.time, s.quality.march_octaves))
-                        break;
-                }
-                through += t < d - 0.25;
+                through += first_crossing(&s, &waves, x, y, d - 0.25) < d - 0.25;
                 checked++;
             }
         printf("march_relax %.1f: %d of %d water rays cross the surface 0.25 m or more before "
@@ -252,6 +260,58 @@ static void test_relaxed_march(tl_renderer *r)
         CHECK(through == 0);
         tl_frame_free(&f);
     }
+}
+
+/* The march prepass (quality.march_prepass): pixels that start from their
+ * neighbours' distances find the same first crossing of the surface as the
+ * march alone. On a steep sea seen at grazing angles, against the CPU's
+ * walk along each ray: no hit lies 0.25 m or more past the first crossing,
+ * and the hits agree with the march alone's to its hit epsilon. */
+static void test_march_prepass(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = 96;
+    s.height = 54;
+    s.time = 3.0;
+    s.camera.pitch = -4.0 * M_PI / 180.0;
+    s.ocean.depth = 2.0;
+    s.quality.lod = false;
+    s.quality.march_steps = 400;
+    s.quality.march_prepass = false;
+    tl_frame alone, hinted;
+    if (render(r, &s, &alone))
+        return;
+    s.quality.march_prepass = true;
+    if (render(r, &s, &hinted)) {
+        tl_frame_free(&alone);
+        return;
+    }
+    tl_waves waves;
+    tl_waves_init(&waves, &s.ocean);
+    int checked = 0, through = 0, moved = 0, sky = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            size_t at = (size_t)y * s.width + x;
+            double a = alone.depth[at], d = hinted.depth[at];
+            sky += (a >= TL_FRAME_SKY_DEPTH) != (d >= TL_FRAME_SKY_DEPTH);
+            if (d > 40.0)
+                continue;
+            through += first_crossing(&s, &waves, x, y, d - 0.25) < d - 0.25;
+            /* The march alone stops within its epsilon above the surface,
+             * which along a ray at a few degrees is up to ~0.2 m. */
+            moved += fabs(a - d) > 0.02 * a + 0.25;
+            checked++;
+        }
+    printf("march prepass: %d of %d water rays hit 0.25 m or more past the first crossing, %d "
+           "moved from the march alone's hit, %d changed between water and sky\n",
+           through, checked, moved, sky);
+    CHECK(checked > 1500);
+    CHECK(through == 0);
+    CHECK(moved <= checked / 100);
+    CHECK(sky == 0);
+    tl_frame_free(&alone);
+    tl_frame_free(&hinted);
 }
 
 /* Progressive refinement (tl_renderer_refine, the paused preview): samples
@@ -305,6 +365,7 @@ int main(void)
     test_sun_disc(r);
     test_pixel_filter(r);
     test_relaxed_march(r);
+    test_march_prepass(r);
     test_refine(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);

@@ -169,11 +169,12 @@ static void test_seed_unchanged(tl_renderer *r)
     s.height = 54;
     s.time = 3.0;
     s.sky.model = TL_SKY_SEED;
-    /* The reference predates level of detail, analytic normals and the
-     * march's over-relaxation. */
+    /* The reference predates level of detail, analytic normals, the
+     * march's over-relaxation and its prepass. */
     s.quality.lod = false;
     s.quality.analytic_normals = false;
     s.quality.march_relax = 1.0;
+    s.quality.march_prepass = false;
     tl_frame f, ref, again;
     if (render(r, &s, &f))
         return;

@@ -57,6 +57,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0},
         {"tideline/pixel_filter", TL_META_DOUBLE, NULL, q->pixel_filter, 0},
         {"tideline/march_relax", TL_META_DOUBLE, NULL, q->march_relax, 0},
+        {"tideline/march_prepass", TL_META_INT, NULL, 0, q->march_prepass},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
     };

@@ -111,8 +111,9 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
     tl_renderer_defines(features, defines, sizeof defines);
     size_t n = strlen(defines);
     snprintf(defines + n, sizeof defines - n,
-             "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n", key.march_octaves,
-             key.normal_octaves);
+             "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s", key.march_octaves,
+             key.normal_octaves, features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
+             features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "");
     key.program = tl_renderer_build_program(r, "fullscreen.vert", "ocean.frag", defines, err);
     if (!key.program)
         return 0;
@@ -223,6 +224,8 @@ void tl_renderer_destroy(tl_renderer *r)
     tl_renderer_target_free(&r->boat);
     tl_renderer_target_free(&r->mirror);
     tl_renderer_target_free(&r->glare);
+    for (int i = 0; i < TL_PREPASS_LEVELS; i++)
+        tl_renderer_target_free(&r->hint[i]);
     if (r->glare_program)
         glDeleteProgram(r->glare_program);
     tl_renderer_target_free(&r->filtered);
@@ -522,8 +525,8 @@ static int samples_per_draw(const tl_frame_uniforms *u, unsigned features)
 }
 
 /* The ocean program for `features`, bound with the frame's uniforms. */
-static GLuint use_ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
-                                tl_error *err)
+GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
+                             tl_error *err)
 {
     GLuint program = ocean_program(r, u, features, err);
     if (!program)
@@ -544,6 +547,10 @@ static GLuint use_ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsi
                            u->boat_to_model);
         glUniform4fv(tl_renderer_loc(program, "u_boat_hull"), 1, u->boat_hull);
         glUniform1f(tl_renderer_loc(program, "u_boat_top"), u->boat_top);
+    }
+    if (features & TL_PASS_HINTED) { /* the prepass's finest level (tl_renderer_prepass) */
+        glUniform1i(tl_renderer_loc(program, "u_march_hint"), 5);
+        glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), 1.0f);
     }
     return program;
 }
@@ -589,8 +596,23 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
             return rc;
     }
     glBindVertexArray(r->vao);
+    /* The giant wave's program only over the pixels that can see its box
+     * (u->giant_rect), the lean program, the same image there, around it. */
+    const int w = u->width, h = u->height;
+    int rect[4] = {0, 0, 0, 0};
+    unsigned lean = features & ~(unsigned)TL_FEATURE_GIANT_WAVE;
+    if (features & TL_FEATURE_GIANT_WAVE)
+        memcpy(rect, u->giant_rect, sizeof rect);
+    int rc = TL_OK;
+    if (tl_renderer_prepass_wanted(u, features)) {
+        rc = tl_renderer_prepass(r, u, features, rect, err);
+        if (rc)
+            return rc;
+        lean |= TL_PASS_HINTED;
+        features |= TL_PASS_HINTED;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
-    glViewport(0, 0, u->width, u->height);
+    glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
     /* Radiance blends as the caller set; a distance keeps the nearest any
      * pass wrote (the target starts at TL_SKY_DEPTH). */
@@ -599,34 +621,19 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     glBlendEquationi(0, GL_FUNC_ADD);
     glBlendEquationi(1, GL_MIN);
     glEnable(GL_SCISSOR_TEST);
-    /* The giant wave's program only over the pixels that can see its box
-     * (u->giant_rect), the lean program, the same image there, around it:
-     * the bands below and above the rectangle, then left and right of it. */
-    const int w = u->width, h = u->height;
-    int rect[4] = {0, 0, w, h};
-    unsigned lean = features;
-    if (features & TL_FEATURE_GIANT_WAVE) {
-        memcpy(rect, u->giant_rect, sizeof rect);
-        lean &= ~(unsigned)TL_FEATURE_GIANT_WAVE;
-    }
-    int whole = rect[0] <= 0 && rect[1] <= 0 && rect[2] >= w && rect[3] >= h;
-    int rc = TL_OK;
-    if (!whole) {
-        GLuint program = use_ocean_program(r, u, lean, err);
+    int bands[4][4], has_rect;
+    int n = tl_renderer_split(w, h, rect, bands, &has_rect);
+    if (n) {
+        GLuint program = tl_renderer_use_ocean(r, u, lean, err);
         int chunk = samples_per_draw(u, lean);
-        if (!program) {
+        if (!program)
             rc = err ? (int)err->status : TL_ERR_RUNTIME;
-        } else if (rect[0] >= rect[2] || rect[1] >= rect[3]) {
-            draw_ocean(program, u, chunk, weight, write_depth, only, 0, 0, w, h);
-        } else {
-            draw_ocean(program, u, chunk, weight, write_depth, only, 0, 0, w, rect[1]);
-            draw_ocean(program, u, chunk, weight, write_depth, only, 0, rect[3], w, h);
-            draw_ocean(program, u, chunk, weight, write_depth, only, 0, rect[1], rect[0], rect[3]);
-            draw_ocean(program, u, chunk, weight, write_depth, only, rect[2], rect[1], w, rect[3]);
-        }
+        for (int i = 0; i < n && !rc; i++)
+            draw_ocean(program, u, chunk, weight, write_depth, only, bands[i][0], bands[i][1],
+                       bands[i][2], bands[i][3]);
     }
-    if (!rc && rect[0] < rect[2] && rect[1] < rect[3]) {
-        GLuint program = use_ocean_program(r, u, features, err);
+    if (!rc && has_rect) {
+        GLuint program = tl_renderer_use_ocean(r, u, features, err);
         if (!program)
             rc = err ? (int)err->status : TL_ERR_RUNTIME;
         else

@@ -1,5 +1,6 @@
 /* What the renderer's files share (not part of its interface): the
  * renderer's state and the GL helpers. tl_renderer.c draws the scene,
+ * tl_renderer_prepass.c the march prepass its rays start from,
  * tl_renderer_display.c turns it into the planes that leave the GPU. */
 #ifndef TL_RENDERER_INTERNAL_H
 #define TL_RENDERER_INTERNAL_H
@@ -10,6 +11,13 @@
 #include "gl/tl_renderer.h"
 
 #define MAX_PROGRAMS 16
+/* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
+#define TL_PREPASS_LEVELS 2
+
+/* Ocean program variants beyond the frame's features (bits above them):
+ * a march prepass level, and a pass that starts from a coarser level's
+ * distances. */
+enum { TL_PASS_PREPASS = 1u << 30, TL_PASS_HINTED = 1u << 29 };
 
 typedef struct cached_program {
     unsigned features;
@@ -49,6 +57,9 @@ struct tl_renderer {
     target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
     target mirror;  /* the hull reflected in the water RGBA32F + depth */
+    /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
+     * render size (tl_renderer_prepass.c). */
+    target hint[TL_PREPASS_LEVELS];
     target glare;   /* glare RGBA32F at half the output size (render.bloom) */
     GLuint glare_program;
     target filtered; /* the display image after the pixel filter (quality.pixel_filter) */
@@ -72,6 +83,22 @@ GLint tl_renderer_loc(GLuint p, const char *name);
 int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
                               const GLenum *formats, tl_error *err);
 void tl_renderer_target_free(target *t);
+
+/* The ocean program for `features` (frame features and TL_PASS_* bits),
+ * bound, with the frame's uniforms uploaded. */
+GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
+                             tl_error *err);
+/* The frame split around `rect` (x0 y0 x1 y1): up to four bands around it
+ * (below, above, left, right), returned with their count, and whether
+ * `rect` itself holds any pixel (without one, the one band is the frame). */
+int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has_rect);
+
+/* Whether the frame's ocean passes start from the march prepass. */
+int tl_renderer_prepass_wanted(const tl_frame_uniforms *u, unsigned features);
+/* Runs the march prepass for the frame (the giant wave's program over
+ * `rect`) and binds its finest level for the passes with TL_PASS_HINTED. */
+int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
+                        const int rect[4], tl_error *err);
 
 /* The display pass's program for `variant` (TL_PRESENT_*), built on first
  * use; tl_renderer_build_present builds one afresh. */

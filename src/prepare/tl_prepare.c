@@ -531,6 +531,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->refine_steps = q->refine_steps;
     u->miss_at_start = q->miss_at_start;
     u->march_relax = (float)q->march_relax;
+    u->march_prepass = q->march_prepass;
     u->normalize_smoothed = q->normalize_smoothed;
     if (q->analytic_normals)
         u->features |= TL_FEATURE_ANALYTIC_NORMALS;

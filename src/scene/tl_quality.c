@@ -24,20 +24,22 @@
 #define RELAX 1.3
 static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
-     * filtered pixel_filter relax */
-    {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85, RELAX},
+     * filtered pixel_filter relax prepass */
+    {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85, RELAX,
+     true},
     {"preview", 10, 26, 48, 0.01, 0.01, 1, 5, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX},
+     RELAX, true},
     {"final", 12, 36, 96, 0.005, 0.01, 1, 6, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX},
+     RELAX, true},
     /* Converged: every octave the normals use is marched too, a hit is
      * 0.1 mm, refined, normals exact, and 16 stratified samples average
      * the pixel (no level of detail: it is the brute-force answer LOD
      * approximates; plain march steps). */
     {"reference", 48, 48, 1000, 0.0001, 0.002, 16, 10, 4, false, true, false, true, 1.0, false, 0.0,
-     1.0},
+     1.0, false},
     /* The reference shader has no giant wave: it gets final's inversion. */
-    {"seed", 12, 36, 64, 0.01, 0.01, 1, 6, 0, false, false, true, false, 1.0, false, 0.0, 1.0},
+    {"seed", 12, 36, 64, 0.01, 0.01, 1, 6, 0, false, false, true, false, 1.0, false, 0.0, 1.0,
+     false},
 };
 
 int tl_quality_preset(const char *name, tl_quality *out, tl_error *err)

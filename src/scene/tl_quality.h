@@ -35,6 +35,8 @@ typedef struct tl_quality {
     double pixel_filter;     /* sigma, in output pixels, of the display image's 3x3 Gaussian
                                 (0: none) */
     double march_relax;      /* over-relaxation of the ocean's march steps (1: plain steps) */
+    bool march_prepass;      /* march one ray per 2x2 pixels first; the pixels then solve for
+                                the hit between their four neighbours' */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */
