@@ -605,7 +605,9 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
         memcpy(rect, u->giant_rect, sizeof rect);
     int rc = TL_OK;
     if (tl_renderer_prepass_wanted(u, features)) {
-        rc = tl_renderer_prepass(r, u, features, rect, err);
+        /* A later sample of the same pass (a per-sample boat pass, the
+         * preview's refinement) starts from the prepass its first ran. */
+        rc = tl_renderer_prepass(r, u, features, rect, only > 0, err);
         if (rc)
             return rc;
         lean |= TL_PASS_HINTED;

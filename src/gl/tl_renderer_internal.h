@@ -96,9 +96,11 @@ int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has
 /* Whether the frame's ocean passes start from the march prepass. */
 int tl_renderer_prepass_wanted(const tl_frame_uniforms *u, unsigned features);
 /* Runs the march prepass for the frame (the giant wave's program over
- * `rect`) and binds its finest level for the passes with TL_PASS_HINTED. */
+ * `rect`) and binds its finest level for the passes with TL_PASS_HINTED.
+ * `reuse`: the frame's last prepass still holds (another sample of the same
+ * pass); only bound again, unless its size does not match. */
 int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
-                        const int rect[4], tl_error *err);
+                        const int rect[4], int reuse, tl_error *err);
 
 /* The display pass's program for `variant` (TL_PRESENT_*), built on first
  * use; tl_renderer_build_present builds one afresh. */

@@ -91,8 +91,16 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
 }
 
 int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
-                        const int rect[4], tl_error *err)
+                        const int rect[4], int reuse, tl_error *err)
 {
+    const target *finest = &r->hint[0];
+    if (reuse && finest->fbo && finest->width == (u->width + 1) / 2 &&
+        finest->height == (u->height + 1) / 2) {
+        glActiveTexture(GL_TEXTURE5);
+        glBindTexture(GL_TEXTURE_2D, finest->tex[0]);
+        glActiveTexture(GL_TEXTURE0);
+        return TL_OK;
+    }
     glDisable(GL_DEPTH_TEST);
     glDisablei(GL_BLEND, 0);
     glEnable(GL_SCISSOR_TEST);
