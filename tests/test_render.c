@@ -216,6 +216,20 @@ static double first_crossing(const tl_scene *s, const tl_waves *waves, int x, in
     return until;
 }
 
+/* A steep sea (twice the default's slopes) seen at grazing angles, over
+ * the full-detail surface the CPU mirror computes, with steps to spare. */
+static void steep_sea(tl_scene *s)
+{
+    tl_scene_defaults(s);
+    s->width = 96;
+    s->height = 54;
+    s->time = 3.0;
+    s->camera.pitch = -4.0 * M_PI / 180.0;
+    s->ocean.depth = 2.0;
+    s->quality.lod = false;
+    s->quality.march_steps = 400;
+}
+
 /* The march's over-relaxation (quality.march_relax) never steps through a
  * wave: along each water pixel's ray the CPU mirror finds the first point
  * below the surface (5 cm apart) no nearer than the hit the GPU reports.
@@ -225,18 +239,11 @@ static void test_relaxed_march(tl_renderer *r)
 {
     const double factors[] = {1.3, 2.0};
     for (int k = 0; k < 2; k++) {
+        /* Without the check that takes a relaxed step back, 150 of these
+         * rays step through a crest at 2.0; at the default's depth of
+         * 1 m, none. */
         tl_scene s;
-        tl_scene_defaults(&s);
-        s.width = 96;
-        s.height = 54;
-        s.time = 3.0;
-        s.camera.pitch = -4.0 * M_PI / 180.0;
-        /* A steep sea (twice the default's slopes): without the check
-         * that takes a relaxed step back, 150 of these rays step through
-         * a crest at 2.0; at 1 m, none. */
-        s.ocean.depth = 2.0;
-        s.quality.lod = false; /* the mirror's full-detail surface */
-        s.quality.march_steps = 400;
+        steep_sea(&s);
         s.quality.march_relax = factors[k];
         s.quality.march_prepass = false; /* the march alone */
         tl_frame f;
@@ -270,14 +277,7 @@ static void test_relaxed_march(tl_renderer *r)
 static void test_march_prepass(tl_renderer *r)
 {
     tl_scene s;
-    tl_scene_defaults(&s);
-    s.width = 96;
-    s.height = 54;
-    s.time = 3.0;
-    s.camera.pitch = -4.0 * M_PI / 180.0;
-    s.ocean.depth = 2.0;
-    s.quality.lod = false;
-    s.quality.march_steps = 400;
+    steep_sea(&s);
     s.quality.march_prepass = false;
     tl_frame alone, hinted;
     if (render(r, &s, &alone))
