@@ -15,16 +15,17 @@
 vec2 g_pixel;
 
 #ifdef TL_MARCH_HINT
-// The march prepass (quality.march_prepass) marched one ray per 2x2
-// pixels, at each block's centre, with this same march. The four prepass
-// rays around a pixel's ray tell where it meets the water. Where they agree
-// (a smooth stretch of water: the nearest at least TL_HINT_SMOOTH of the
-// farthest) the hit lies between them, the bracket widened by 1% each way:
-// if the bracket holds a crossing, TL_HINT_REFINE regula falsi steps find
-// it; if its far end is still above the water, the march goes on from
-// there. Where they disagree (a crest against far water) the march starts
-// 1% short of the nearest. Wherever that first point is already under the
-// surface (a crest between the prepass rays), the march starts over.
+// The march prepass (quality.march_prepass) marched this same march at a
+// quarter and then half the render's size (src/gl/tl_renderer_prepass.c);
+// the four coarser rays around a ray tell where it meets the water. Where
+// they agree (a smooth stretch of water: the nearest at least
+// TL_HINT_SMOOTH of the farthest) the hit lies between them, the bracket
+// widened by 1% each way: if the bracket holds a crossing, up to
+// TL_HINT_REFINE regula falsi steps find it. Otherwise (no crossing at the
+// bracket's ends, the four disagree, regula falsi has not converged) the
+// march starts 1% short of the nearest, 10% next to the sky, where it takes
+// no bracket. Wherever that first point is already under the surface (a
+// crest between the coarser rays), the march starts over.
 uniform sampler2D u_march_hint;
 uniform float u_hint_pixel; // this pass's pixel, in the frame's pixels (the prepass's are larger)
 #define TL_HINT_SMOOTH 0.9

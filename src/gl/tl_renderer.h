@@ -65,7 +65,10 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
 /* One of u->spp samples per pixel as its own pass, adding weight x its
  * radiance (accumulate with a boat in view: each sample's pass draws the
  * hull shifted by that sample's offset, tl_prepare_boat_sample, so its
- * edges are anti-aliased too). Distances keep the nearest any pass wrote. */
+ * edges are anti-aliased too). Distances keep the nearest any pass wrote.
+ * Samples after 0 start from the march prepass sample 0 ran
+ * (quality.march_prepass): a frame's samples come in order, 0 first, with
+ * the same uniforms but the boat's. Refinement below likewise. */
 int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                                   int write_depth, int sample, tl_error *err);
 /* Progressive refinement (the preview, paused): sample `sample` of u->spp
