@@ -51,7 +51,6 @@ layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
 #endif
 
-
 uint hash_u32(uint x)
 {
     x ^= x >> 16;

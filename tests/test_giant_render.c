@@ -88,6 +88,16 @@ static void facing_scene(tl_scene *s)
     s->giant.arrival = 7.0; /* crest on the centre, the world origin */
 }
 
+/* facing_scene over the full-detail surface the CPU mirror computes (level
+ * of detail would smooth the far ocean the march sees, by design), with a
+ * budget of march steps. */
+static void facing_mirror_scene(tl_scene *s, int steps)
+{
+    facing_scene(s);
+    s->quality.lod = false;
+    s->quality.march_steps = steps;
+}
+
 /* fade 0 is the ocean without the wave, byte for byte: the same program
  * (no giant feature bit) and the same uniforms. */
 static void test_fade_zero(tl_renderer *r)
@@ -202,11 +212,7 @@ static void test_hits_on_surface(tl_renderer *r)
     const int budgets[] = {96, 400};
     for (int k = 0; k < 2; k++) {
         tl_scene s;
-        facing_scene(&s);
-        s.quality.march_steps = budgets[k];
-        /* The full-detail surface the CPU mirror computes (level of detail
-         * would smooth the far ocean the march sees, by design). */
-        s.quality.lod = false;
+        facing_mirror_scene(&s, budgets[k]);
         tl_frame f;
         if (render(r, &s, &f))
             return;
@@ -417,11 +423,9 @@ static void test_extremes(tl_renderer *r)
 static void test_relaxed_march(tl_renderer *r)
 {
     tl_scene s;
-    facing_scene(&s);
+    facing_mirror_scene(&s, 400);
     s.width = 64;
     s.height = 40;
-    s.quality.lod = false; /* the mirror's full-detail surface */
-    s.quality.march_steps = 400;
     s.quality.march_relax = 2.0;
     tl_frame f;
     if (render(r, &s, &f))
@@ -512,11 +516,9 @@ static void test_prepass_silhouette(tl_renderer *r)
     const double heights[2] = {4.0, 30.0}, pitches[2] = {0.0, -8.0};
     for (int k = 0; k < 2; k++) {
         tl_scene s;
-        facing_scene(&s);
+        facing_mirror_scene(&s, 400);
         s.camera.position[1] = heights[k];
         s.camera.pitch = pitches[k] * M_PI / 180.0;
-        s.quality.lod = false; /* the CPU mirror's full-detail surface */
-        s.quality.march_steps = 400;
         s.quality.march_prepass = true;
         tl_frame f;
         if (render(r, &s, &f))

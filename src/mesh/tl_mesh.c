@@ -136,7 +136,7 @@ static uint32_t le32(const unsigned char *b)
  * assimp reads it: assimp 5.2 allocates a chunk's declared length first,
  * so 20 bytes that declare 1.6 GB exhausted the memory (a fuzzer's find).
  * Returns NULL when they fit, else what is wrong. */
-static const char *glb_problem(const char *path, long long file_size)
+static const char *binary_gltf_problem(const char *path, long long file_size)
 {
     FILE *f = fopen(path, "rb");
     if (!f)
@@ -144,7 +144,7 @@ static const char *glb_problem(const char *path, long long file_size)
     unsigned char head[12];
     const char *why = NULL;
     if (fread(head, 1, 12, f) != 12 || memcmp(head, "glTF", 4) != 0)
-        why = "not a binary glTF (no 'glTF' header)";
+        why = "not a binary glTF file: no 'glTF' header";
     else if (le32(head + 8) > file_size)
         why = "its header declares more bytes than the file has";
     /* Every chunk: 8 bytes of length and type, then its data. */
@@ -175,7 +175,8 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
     if (st.st_size == 0)
         return tl_error_set(err, TL_ERR_USAGE, "boat model %s: the file is empty", path);
     const char *dot = strrchr(path, '.');
-    const char *bad = !strcasecmp(dot, ".glb") ? glb_problem(path, (long long)st.st_size) : NULL;
+    const char *bad =
+        !strcasecmp(dot, ".glb") ? binary_gltf_problem(path, (long long)st.st_size) : NULL;
     if (bad)
         return tl_error_set(err, TL_ERR_USAGE, "boat model %s: cannot be read: %s", path, bad);
 
