@@ -8,7 +8,7 @@
 // Here, not in the display pass: its taps per pixel cost a quarter as
 // much at a quarter of the pixels.
 
-uniform sampler2D u_hdr;   // the scene's radiance, with its mip chain
+uniform sampler2D u_hdr;   // the scene's radiance (radiance.glsl), with its mip chain
 uniform vec2 u_glare_size; // this pass's pixels
 
 layout(location = 0) out vec4 out_glare;
@@ -32,7 +32,9 @@ void main()
 {
     vec2 uv = gl_FragCoord.xy / u_glare_size;
     vec2 base = vec2(textureSize(u_hdr, 0));
-    vec3 glare = vec3(0.0);
+    // Premultiplied sums: the weights of the good samples among the texels
+    // read, six levels' worth where all were good (radiance.glsl).
+    vec4 glare = vec4(0.0);
     for (int level = 1; level <= 6; level++) {
         // The level's size by GL's rule, from the base: textureSize of a
         // level past a small image's last one is undefined (textureLod
@@ -45,7 +47,7 @@ void main()
         for (int j = 0; j < 2; j++)
             for (int i = 0; i < 2; i++)
                 glare += wx[i] * wy[j] *
-                         textureLod(u_hdr, (vec2(px[i], py[j]) + 0.5) / size, float(level)).rgb;
+                         textureLod(u_hdr, (vec2(px[i], py[j]) + 0.5) / size, float(level));
     }
-    out_glare = vec4(glare / 6.0, 1.0);
+    out_glare = vec4(glare.a > 0.0 ? glare.rgb / glare.a : vec3(0.0), 1.0);
 }

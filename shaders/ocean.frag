@@ -157,26 +157,28 @@ void main()
         g_pixel = gl_FragCoord.xy + sample_offset(s);
         vec3 c = trace(camera_ray(g_pixel), dist);
         // Last guard: no NaN or Inf may reach a pixel. A bad sample is
-        // dropped alone, so one stray sample cannot blacken a pixel.
+        // dropped alone, here and across the pixel's other passes
+        // (radiance.glsl): one stray sample cannot blacken a pixel.
         if (any(isnan(c)) || any(isinf(c)))
             continue;
         sum += c;
         good++;
         depth = min(depth, dist);
     }
-    vec3 color = good > 0 ? sum / float(good) : vec3(0.0);
+    // Premultiplied (radiance.glsl): alpha is the share of good samples.
+    vec4 color = vec4(sum, float(good)) / float(max(u_sample_count, 1));
 #else
     // One sample at the pixel's centre, without the loop: around the whole
     // trace it costs llvmpipe a sixth of the frame.
     float depth;
     g_pixel = gl_FragCoord.xy;
-    vec3 color = trace(camera_ray(g_pixel), depth);
+    vec4 color = vec4(trace(camera_ray(g_pixel), depth), 1.0);
     if (any(isnan(color)) || any(isinf(color))) { // the same last guard
-        color = vec3(0.0);
+        color = vec4(0.0);
         depth = TL_SKY_DEPTH;
     }
 #endif
-    out_color = vec4(color, 1.0) * u_sample_weight;
+    out_color = color * u_sample_weight;
     out_depth = depth;
 }
 #endif

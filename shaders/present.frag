@@ -10,6 +10,7 @@
 // The upscale (TL_PRESENT_UPSCALE) and the glare (TL_PRESENT_GLARE) are
 // compiled in only when a frame uses them: llvmpipe runs an `if` body for
 // every pixel whether taken or not.
+#include "radiance.glsl"
 #include "tonemap.glsl"
 
 uniform sampler2D u_hdr;
@@ -42,7 +43,7 @@ vec3 upscaled(vec2 uv)
     for (int j = 0; j < 4; j++)
         for (int i = 0; i < 4; i++) {
             ivec2 p = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), size - 1);
-            sum += wx[i] * wy[j] * texelFetch(u_hdr, p, 0).rgb;
+            sum += wx[i] * wy[j] * scene_radiance(texelFetch(u_hdr, p, 0));
         }
     return max(sum, vec3(0.0));
 }
@@ -56,7 +57,7 @@ void main()
     vec3 hdr = upscaled(uv);
     out_depth = texelFetch(u_distance, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).r;
 #else
-    vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+    vec3 hdr = scene_radiance(texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0));
     out_depth = texelFetch(u_distance, ivec2(gl_FragCoord.xy), 0).r;
 #endif
     out_color = vec4(hdr, 1.0);

@@ -3,6 +3,7 @@
  * rendered still (finite, sky above water, sun disc where it projects). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "tl_gl_test.h"
 
@@ -353,6 +354,121 @@ static void test_refine(tl_renderer *r)
     tl_frame_free(&steps);
 }
 
+/* A renderer on the embedded shaders written into `dir`, with ocean.frag's
+ * sample trace line replaced by `trace`; NULL if that fails. */
+static const char TRACE_LINE[] = "        vec3 c = trace(camera_ray(g_pixel), dist);\n";
+
+static tl_renderer *patched_renderer(const char *dir, const char *trace)
+{
+    for (int i = 0; i < tl_embedded_shader_count; i++) {
+        const tl_shader_file *f = &tl_embedded_shaders[i];
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%s", dir, f->name);
+        FILE *out = fopen(path, "w");
+        if (!out)
+            return NULL;
+        const char *at = strcmp(f->name, "ocean.frag") == 0 ? strstr(f->text, TRACE_LINE) : NULL;
+        if (at) {
+            fwrite(f->text, 1, (size_t)(at - f->text), out);
+            fputs(trace, out);
+            fputs(at + strlen(TRACE_LINE), out);
+        } else {
+            fputs(f->text, out);
+        }
+        if (fclose(out) || (strcmp(f->name, "ocean.frag") == 0 && !at))
+            return NULL;
+    }
+    tl_shader_lib lib;
+    tl_error err;
+    tl_error_clear(&err);
+    tl_renderer *r = NULL;
+    if (tl_shader_lib_from_dir(&lib, dir, &err) || tl_renderer_create(&r, &lib, &err)) {
+        fprintf(stderr, "patched renderer: %s\n", err.message);
+        return NULL;
+    }
+    return r;
+}
+
+/* Frame `s` through `path`: 0 one pass of all samples, 1 a pass per sample
+ * (as with the boat), 2 the preview's refinement, a sample at a time. */
+static int render_path(tl_renderer *r, const tl_scene *s, int path, tl_frame *f)
+{
+    tl_frame_uniforms u;
+    gl_test_prepare(r, s, &u);
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_frame_alloc(f, s->width, s->height, &err))
+        return 1;
+    int rc = tl_renderer_begin(r, u.width, u.height, u.out_width, u.out_height, &err);
+    for (int k = 0; !rc && k < (path ? u.spp : 1); k++)
+        rc = path == 0   ? tl_renderer_accumulate(r, &u, 1.0f, 1, &err)
+             : path == 1 ? tl_renderer_accumulate_sample(r, &u, 1.0f / (float)u.spp, 1, k, &err)
+                         : tl_renderer_refine(r, &u, k, &err);
+    if (!rc)
+        rc = tl_renderer_finish(r, &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
+                                TL_PLANES_ALL, f, &err);
+    if (rc)
+        fprintf(stderr, "render path %d: %s\n", path, err.message);
+    return rc;
+}
+
+/* A non-finite sample is dropped alone, whichever pass takes it: with every
+ * odd sample made NaN, each pixel is the mean of its even samples, as when
+ * every odd sample retraces the even one before it. (A pass per sample and
+ * the refinement once averaged a bad sample in as black.) */
+static void test_bad_samples(tl_renderer *plain)
+{
+    char nan_dir[] = "/tmp/tl_nan_XXXXXX", dup_dir[] = "/tmp/tl_dup_XXXXXX";
+    CHECK(mkdtemp(nan_dir) && mkdtemp(dup_dir));
+    tl_renderer *nan =
+        patched_renderer(nan_dir, "        vec3 c = trace(camera_ray(g_pixel), dist);\n"
+                                  "        if (s % 2 == 1)\n"
+                                  "            c = vec3(uintBitsToFloat(0x7fc00000u));\n");
+    tl_renderer *dup =
+        patched_renderer(dup_dir, "        if (s % 2 == 1)\n"
+                                  "            g_pixel = gl_FragCoord.xy + sample_offset(s - 1);\n"
+                                  "        vec3 c = trace(camera_ray(g_pixel), dist);\n");
+    CHECK(nan && dup);
+    tl_scene s;
+    small_scene(&s);
+    s.quality.spp = 4;
+    const char *const names[] = {"one pass", "a pass per sample", "refinement"};
+    for (int path = 0; nan && dup && path < 3; path++) {
+        tl_frame a, b, all;
+        if (render_path(nan, &s, path, &a) || render_path(dup, &s, path, &b) ||
+            render_path(plain, &s, path, &all)) {
+            CHECK(!"render");
+            return;
+        }
+        size_t n = (size_t)s.width * s.height * 4;
+        double color = 0.0, display = 0.0, patched = 0.0;
+        int finite = 1;
+        for (size_t i = 0; i < n; i++) {
+            finite &= isfinite(a.color[i]) && isfinite(a.display[i]);
+            color = fmax(color, fabs(a.color[i] - b.color[i]) / fmax(b.color[i], 1e-3));
+            display = fmax(display, fabs(a.display[i] - b.display[i]));
+            patched = fmax(patched, fabs(b.display[i] - all.display[i]));
+        }
+        printf("%s, odd samples NaN against odd samples repeated: colour %.2g (relative), "
+               "display %.2g; all samples differ by %.2g\n",
+               names[path], color, display, patched);
+        CHECK(finite);
+        CHECK(color <= 1e-4);
+        CHECK(display <= 1e-4);
+        CHECK(patched > 0.01); /* the patch took: the even samples alone are another image */
+        tl_frame_free(&a);
+        tl_frame_free(&b);
+        tl_frame_free(&all);
+    }
+    if (nan)
+        tl_renderer_destroy(nan);
+    if (dup)
+        tl_renderer_destroy(dup);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s %s", nan_dir, dup_dir);
+    CHECK(system(cmd) == 0);
+}
+
 int main(void)
 {
     test_device_platform_extensions();
@@ -367,6 +483,7 @@ int main(void)
     test_relaxed_march(r);
     test_march_prepass(r);
     test_refine(r);
+    test_bad_samples(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();
