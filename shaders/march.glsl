@@ -21,18 +21,26 @@ vec2 g_pixel;
 // they agree (a smooth stretch of water: the nearest at least
 // TL_HINT_SMOOTH of the farthest) the hit lies between them, the bracket
 // widened by 1% each way: if the bracket holds a crossing, up to
-// TL_HINT_REFINE regula falsi steps find it. Otherwise (no crossing at the
-// bracket's ends, the four disagree, regula falsi has not converged) the
-// march starts 1% short of the nearest, 10% next to the sky, where it takes
-// no bracket. Wherever that first point is already under the surface (a
-// crest between the coarser rays), the march starts over.
+// TL_HINT_REFINE regula falsi steps find it. Where the four disagree (a
+// crest's silhouette, or rays grazing the far sea, whose distances spread
+// by the view's geometry alone) the march starts 1% short of the nearest,
+// where it finds a crest the ray clips within its first steps; after
+// quality.prepass_budget steps without a hit, regula falsi searches the rest of
+// the bracket from the last point marched (grazing rays close on the
+// surface slowly: marched to the end, they took 40% of a calm frame's
+// surface evaluations). Where the walk fails (no crossing at the
+// bracket's ends, regula falsi has not converged) the march goes on from
+// its last proven point: the bracket's near end or the budget's last
+// step. Next to the sky the march starts 10% short of the nearest and
+// takes no bracket. Wherever the first point is already under the surface
+// (a crest between the coarser rays), the march starts over.
 uniform sampler2D u_march_hint;
 uniform float u_hint_pixel; // this pass's pixel, in the frame's pixels (the prepass's are larger)
 #define TL_HINT_SMOOTH 0.9
 #define TL_HINT_WIDEN 0.01
 #define TL_HINT_EDGE_WIDEN 0.1
 #ifndef TL_HINT_REFINE
-#define TL_HINT_REFINE 4
+#define TL_HINT_REFINE 8
 #endif
 
 // The nearest and farthest of the four prepass distances around this
@@ -56,16 +64,17 @@ vec2 march_hint()
 // bracket's near end (or the start short of a silhouette), 2: at its far
 // end, 3 + k: after k regula falsi steps; 0: marching.
 struct hint_walk {
-    int stage, side;
+    int stage, side, budget;
     bool bracket;
     float b0, c0, b1, c1; // the bracket's ends and the heights above the surface there
+    float resume;         // where the march goes on from if the walk fails
 };
 
 // The walk for a march that would start at t: moves t to its first point
 // and gives the march the walk's steps.
-hint_walk hint_begin(inout float t, inout int steps)
+hint_walk hint_begin(inout float t, inout int steps, bool budget)
 {
-    hint_walk w = hint_walk(0, 0, false, 0.0, 0.0, 0.0, 0.0);
+    hint_walk w = hint_walk(0, 0, 0, false, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec2 hint = march_hint();
     // Next to the sky (the horizon, a crest's silhouette) the ray may clip
     // the crest nearer than any of the four saw water: it starts further
@@ -74,12 +83,32 @@ hint_walk hint_begin(inout float t, inout int steps)
     if (hint.x < 1e30 && short_of > t) {
         w.bracket = hint.x >= TL_HINT_SMOOTH * hint.y;
         w.b0 = short_of;
+        w.resume = short_of;
         w.b1 = hint.y * (1.0 + TL_HINT_WIDEN);
         w.stage = 1;
         t = w.b0;
         steps += 3 + TL_HINT_REFINE;
+        if (budget && u_prepass_budget > 0 && !w.bracket && hint.y < 1e30) {
+            w.budget = u_prepass_budget;
+            steps += 1 + TL_HINT_REFINE;
+        }
     }
     return w;
+}
+
+// The march's point t, `above` the surface, with nothing skipped before
+// it: after the budget's last step, regula falsi takes over from t to the
+// bracket's far end (a crossing there) or the march goes on from t.
+bool hint_give_up(inout hint_walk w, inout float t, float above)
+{
+    if (w.budget <= 0 || --w.budget > 0 || !(w.b1 > t))
+        return false;
+    w.b0 = t;
+    w.c0 = above;
+    w.resume = t;
+    w.stage = 2;
+    t = w.b1;
+    return true;
 }
 
 const int HINT_MARCH = 0; // march on from t with this height
@@ -117,7 +146,7 @@ int hint_step(inout hint_walk w, float above, inout float t, float t_start)
             // them (a crest the ray clips), so the march goes on from the
             // near end, where nothing was skipped.
             w.stage = 0;
-            t = w.b0;
+            t = w.resume;
             return HINT_NEXT;
         }
         w.stage = 0;
@@ -128,8 +157,8 @@ int hint_step(inout hint_walk w, float above, inout float t, float t_start)
         w.c1 = above;
         w.stage = 3;
     } else if (w.stage == 3 + TL_HINT_REFINE) {
-        w.stage = 0; // not converged (a steep face): march on from the bracket's near end
-        t = w.b0;
+        w.stage = 0; // not converged (a steep face): march on from the last proven point
+        t = w.resume;
         return HINT_NEXT;
     } else if (above > 0.0) { // Illinois: the bracket always holds the crossing
         w.b0 = t;
@@ -241,7 +270,7 @@ float march_water(vec3 ray, float t_min)
     float t_safe = 0.0, r_safe = 1e30;
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps);
+    hint_walk walk = hint_begin(t, steps, true);
 #endif
     for (int i = 0; i < steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
@@ -264,6 +293,10 @@ float march_water(vec3 ray, float t_min)
             above_hit = above;
             break;
         }
+#ifdef TL_MARCH_HINT
+        if (hint_give_up(walk, t, above))
+            continue;
+#endif
         t_last = t;
         above_last = above;
         // A relaxed step ends at the band's far plane at most, where the next
@@ -305,7 +338,7 @@ float march_water(vec3 ray, float t_min)
     bool relaxed = false; // the step that led to t was over-relaxed
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps);
+    hint_walk walk = hint_begin(t, steps, !has_box);
 #endif
     for (int i = 0; i < steps; i++) {
         bool in_box = t >= box.x && t <= box.y;
@@ -346,6 +379,10 @@ float march_water(vec3 ray, float t_min)
             above_hit = above;
             break;
         }
+#ifdef TL_MARCH_HINT
+        if (hint_give_up(walk, t, above))
+            continue;
+#endif
         t_last = t;
         above_last = above;
         // Over-relax: inside the box by TL_MARCH_RELAX, staying in it;

@@ -39,6 +39,7 @@ uniform float u_normal_epsilon;
 uniform int u_refine_steps;       // secant steps after a hit
 uniform bool u_miss_at_start;     // out of steps: the march's start (seed shader)
 uniform float u_march_relax;      // over-relaxation of the ocean's steps (1: plain)
+uniform int u_prepass_budget;     // march steps before regula falsi where the prepass disagrees
 uniform bool u_normalize_smoothed; // renormalise the smoothed normal (not the seed)
 
 uniform vec3 u_sun_dir;

@@ -274,6 +274,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1i(tl_renderer_loc(p, "u_refine_steps"), u->refine_steps);
     glUniform1i(tl_renderer_loc(p, "u_miss_at_start"), u->miss_at_start);
     glUniform1f(tl_renderer_loc(p, "u_march_relax"), u->march_relax);
+    glUniform1i(tl_renderer_loc(p, "u_prepass_budget"), u->prepass_budget);
     glUniform1i(tl_renderer_loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
     glUniform3fv(tl_renderer_loc(p, "u_sun_dir"), 1, u->sun_dir);
     glUniform1f(tl_renderer_loc(p, "u_sun_intensity"), u->sun_intensity);

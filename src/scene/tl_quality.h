@@ -37,6 +37,9 @@ typedef struct tl_quality {
     double march_relax;      /* over-relaxation of the ocean's march steps (1: plain steps) */
     bool march_prepass;      /* march one ray per 2x2 pixels first; the pixels then solve for
                                 the hit between their four neighbours' */
+    int prepass_budget;      /* with the prepass: march steps a ray whose four neighbours
+                                disagree takes before regula falsi searches the rest of
+                                their bracket (0: it marches to the end) */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

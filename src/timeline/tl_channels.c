@@ -204,6 +204,10 @@ static const tl_channel channels[] = {
     {"quality.march_prepass", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
      offsetof(tl_scene, quality.march_prepass), NULL,
      "march one ray per 2x2 pixels first, then solve each pixel's hit between its neighbours'"},
+    {"quality.prepass_budget", TL_CH_INT, 1, TL_UNIT_NONE, 0, 1000, false,
+     offsetof(tl_scene, quality.prepass_budget), NULL,
+     "with the prepass: march steps before regula falsi where the neighbours disagree (0: "
+     "march to the end)"},
     {"quality.miss_at_start", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
      offsetof(tl_scene, quality.miss_at_start), NULL,
      "a ray out of march steps ends where its march began (the seed shader's way)"},
