@@ -25,15 +25,18 @@ vec2 g_pixel;
 // crest's silhouette, or rays grazing the far sea, whose distances spread
 // by the view's geometry alone) the march starts 1% short of the nearest,
 // where it finds a crest the ray clips within its first steps; after
-// quality.prepass_budget steps without a hit, regula falsi searches the rest of
-// the bracket from the last point marched (grazing rays close on the
-// surface slowly: marched to the end, they took 40% of a calm frame's
+// quality.prepass_budget steps without a hit, regula falsi searches the
+// rest of the bracket from the last point marched (grazing rays close on
+// the surface slowly: marched to the end, they took 40% of a calm frame's
 // surface evaluations). Where the walk fails (no crossing at the
 // bracket's ends, regula falsi has not converged) the march goes on from
 // its last proven point: the bracket's near end or the budget's last
 // step. Next to the sky the march starts 10% short of the nearest and
-// takes no bracket. Wherever the first point is already under the surface
-// (a crest between the coarser rays), the march starts over.
+// takes no bracket (the budget's far end there is the trough plane).
+// Where the march's own start lies past the nearest (a grazing ray whose
+// lower neighbours meet the water before it enters the band), the walk
+// starts there. Wherever the first point is already under the surface (a
+// crest between the coarser rays), the march starts over.
 uniform sampler2D u_march_hint;
 uniform float u_hint_pixel; // this pass's pixel, in the frame's pixels (the prepass's are larger)
 #define TL_HINT_SMOOTH 0.9
@@ -71,8 +74,10 @@ struct hint_walk {
 };
 
 // The walk for a march that would start at t: moves t to its first point
-// and gives the march the walk's steps.
-hint_walk hint_begin(inout float t, inout int steps, bool budget)
+// and gives the march the walk's steps. budget: whether the march may
+// give up on a disagreeing bracket; t_far: the bracket's far end next to
+// the sky (where the ray meets the trough plane; 0 for a rising ray).
+hint_walk hint_begin(inout float t, inout int steps, bool budget, float t_far)
 {
     hint_walk w = hint_walk(0, 0, 0, false, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec2 hint = march_hint();
@@ -80,15 +85,17 @@ hint_walk hint_begin(inout float t, inout int steps, bool budget)
     // the crest nearer than any of the four saw water: it starts further
     // short of the nearest.
     float short_of = hint.x * (1.0 - (hint.y >= 1e30 ? TL_HINT_EDGE_WIDEN : TL_HINT_WIDEN));
-    if (hint.x < 1e30 && short_of > t) {
+    if (hint.x < 1e30 && hint.y * (1.0 + TL_HINT_WIDEN) > t) {
         w.bracket = hint.x >= TL_HINT_SMOOTH * hint.y;
-        w.b0 = short_of;
-        w.resume = short_of;
+        w.b0 = max(short_of, t);
+        w.resume = w.b0;
         w.b1 = hint.y * (1.0 + TL_HINT_WIDEN);
         w.stage = 1;
         t = w.b0;
         steps += 3 + TL_HINT_REFINE;
-        if (budget && u_prepass_budget > 0 && !w.bracket && hint.y < 1e30) {
+        if (hint.y >= 1e30)
+            w.b1 = t_far;
+        if (budget && u_prepass_budget > 0 && !w.bracket) {
             w.budget = u_prepass_budget;
             steps += 1 + TL_HINT_REFINE;
         }
@@ -270,7 +277,7 @@ float march_water(vec3 ray, float t_min)
     float t_safe = 0.0, r_safe = 1e30;
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps, true);
+    hint_walk walk = hint_begin(t, steps, true, ray.y < 0.0 ? t_end : 0.0);
 #endif
     for (int i = 0; i < steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
@@ -338,7 +345,7 @@ float march_water(vec3 ray, float t_min)
     bool relaxed = false; // the step that led to t was over-relaxed
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps, !has_box);
+    hint_walk walk = hint_begin(t, steps, !has_box, ray.y < 0.0 ? t_low : 0.0);
 #endif
     for (int i = 0; i < steps; i++) {
         bool in_box = t >= box.x && t <= box.y;

@@ -293,8 +293,8 @@ static double clip_depth(const tl_scene *s, const tl_waves *waves, int x, int y,
  * hit lies 0.25 m or more past the first crossing, and the hits agree with
  * the march alone's to its hit epsilon. With the presets' budget, a ray
  * may pass a crest tip it clips after its budget's steps: few do, and by
- * less than a pixel (on this sea, twice the default's slopes, 2/3 of one
- * at most; a third of that at the default's). */
+ * less than a pixel (on this sea, twice the default's slopes, 0.71 of one
+ * at most; 0.29 at the default's). */
 static void test_march_prepass(tl_renderer *r)
 {
     tl_scene s;

@@ -24,12 +24,12 @@
 #define RELAX 1.3
 /* With the prepass, a ray whose four coarser neighbours disagree marches
  * 12 steps, then regula falsi searches the rest of their bracket: calm's
- * frames took 18% less time at final, 17% at preview, for the same PSNR
- * against reference (grazing rays close on the water slowly; marched to
- * the end they took 40% of a calm frame's surface evaluations). What it
- * may skip is a crest tip the ray clips after those steps: on a sea twice
- * as steep as the default, at most 2/3 of a pixel deep (docs/rendering.md,
- * test_render). */
+ * frames took a third less time at final, a fifth at preview, for the
+ * same PSNR against reference (grazing rays close on the water slowly;
+ * marched to the end they took 40% of a calm frame's surface
+ * evaluations). What it may skip is a crest tip the ray clips after those
+ * steps: on a sea twice as steep as the default, at most 0.71 of a pixel
+ * deep (docs/rendering.md, test_render). */
 #define BUDGET 12
 static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
