@@ -131,6 +131,7 @@ int hint_step(inout hint_walk w, float above, inout float t, float t_start)
     if (w.stage == 1) {
         if (!(above > 0.0)) { // under a crest between the prepass rays
             w.stage = 0;
+            w.budget = 0; // the crest lies before the bracket: march all the way
             t = t_start;
             return HINT_NEXT;
         }
