@@ -470,11 +470,14 @@ static void test_bad_samples(tl_renderer *plain)
     s.quality.spp = 4;
     const char *const names[] = {"one pass", "a pass per sample", "refinement"};
     for (int path = 0; nan && dup && path < 3; path++) {
-        tl_frame a, b, all;
+        tl_frame a = {0}, b = {0}, all = {0};
         if (render_path(nan, &s, path, &a) || render_path(dup, &s, path, &b) ||
             render_path(plain, &s, path, &all)) {
             CHECK(!"render");
-            return;
+            tl_frame_free(&a);
+            tl_frame_free(&b);
+            tl_frame_free(&all);
+            break;
         }
         size_t n = (size_t)s.width * s.height * 4;
         double color = 0.0, display = 0.0, patched = 0.0;
