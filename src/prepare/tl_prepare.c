@@ -18,11 +18,13 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_UNDERWATER",  "TL_FEATURE_WATERLINE",
     "TL_FEATURE_FOG",         "TL_FEATURE_SKY_PHYSICAL",
     "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
-    "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING"};
+    "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
+    "TL_FEATURE_REFINE"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
     "sun disc",        "giant wave",       "boat",          "wake",
     "underwater",      "waterline",        "fog",           "physical sky",
-    "level of detail", "analytic normals", "supersampling", "filtered shading"};
+    "level of detail", "analytic normals", "supersampling", "filtered shading",
+    "root refinement"};
 
 const char *tl_feature_define(int index)
 {
@@ -529,6 +531,8 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->hit_epsilon = (float)q->hit_epsilon;
     u->normal_epsilon = (float)q->normal_epsilon;
     u->refine_steps = q->refine_steps;
+    if (q->refine_steps > 0)
+        u->features |= TL_FEATURE_REFINE;
     u->miss_at_start = q->miss_at_start;
     u->march_relax = (float)q->march_relax;
     u->march_prepass = q->march_prepass;
