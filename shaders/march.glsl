@@ -261,7 +261,16 @@ float march_end(vec3 ray, bool hit, float t_start, float t_last, float above_las
 
 // Distance along `ray` to the surface, or a negative value for a miss;
 // the view starts t_min along the ray.
-#ifndef TL_FEATURE_GIANT_WAVE
+#if defined(TL_SKY_ONLY)
+// The rows above the horizon (tl_frame_uniforms.sky_rows): every ray
+// rises from a camera above the water and meets nothing the lean march
+// below could (it returns the same -1 for them), without the march's
+// loop, which llvmpipe charges even a ray that skips it.
+float march_water(vec3 ray, float t_min)
+{
+    return -1.0;
+}
+#elif !defined(TL_FEATURE_GIANT_WAVE)
 // The ocean alone: the ray is marched from where it enters the band to
 // where it leaves it, through the trough plane (a hit, held finite for rays
 // that graze the horizon) or up through the crest plane (the sky). Each

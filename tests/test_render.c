@@ -508,6 +508,127 @@ static void test_bad_samples(tl_renderer *plain)
     CHECK(system(cmd) == 0);
 }
 
+/* Whether every ray through row `row` (counted from the bottom, as GL
+ * does) rises, wherever in its pixel a sample lies: its four corners'
+ * rays, which bound the rest. */
+static int row_rises(const tl_scene *s, int row)
+{
+    double right[3], up[3], fwd[3];
+    tl_scene_camera_basis(&s->camera, right, up, fwd);
+    double th = tan(0.5 * s->camera.vfov), aspect = (double)s->width / s->height;
+    for (int c = 0; c < 4; c++) {
+        double nx = c & 1 ? 1.0 : -1.0, ny = (row + (c & 2 ? 1.0 : 0.0)) / s->height * 2.0 - 1.0;
+        if (!(fwd[1] + nx * aspect * th * right[1] + ny * th * up[1] > 0.0))
+            return 0;
+    }
+    return 1;
+}
+
+/* The rows above the horizon are shaded with the sky alone
+ * (tl_frame_uniforms.sky_rows): every ray there rises, nearly every row
+ * that rises is counted, and the frame is bit for bit the frame the march
+ * gives everywhere: with and without the prepass, supersampled, rolled,
+ * and at half the render size. A camera under the water, upside down or
+ * looking straight down gets none. */
+static void test_sky_rows(tl_renderer *r)
+{
+    const char *const names[] = {"final", "roll 20 deg", "4 spp, no prepass", "draft"};
+    for (int k = 0; k < 4; k++) {
+        tl_scene s;
+        small_scene(&s);
+        s.camera.pitch = 0.1;
+        if (k == 1)
+            s.camera.roll = 0.35;
+        if (k == 2) {
+            s.quality.spp = 4;
+            s.quality.march_prepass = false;
+        }
+        tl_error err;
+        tl_error_clear(&err);
+        if (k == 3)
+            CHECK(tl_quality_preset("draft", &s.quality, &err) == 0);
+        tl_frame_uniforms u;
+        gl_test_prepare(r, &s, &u);
+        tl_scene at_render = s; /* rows of the render target, not the output */
+        at_render.width = u.width;
+        at_render.height = u.height;
+        int rising = 0;
+        for (int row = u.height - 1; row >= 0 && row_rises(&at_render, row); row--)
+            rising++;
+        int wrong = 0;
+        for (int row = u.height - u.sky_rows; row < u.height; row++) /* GL's rows */
+            wrong += !row_rises(&at_render, row);
+        tl_frame split, marched;
+        CHECK(tl_frame_alloc(&split, s.width, s.height, &err) == 0);
+        CHECK(tl_frame_alloc(&marched, s.width, s.height, &err) == 0);
+        CHECK(tl_renderer_render(r, &u, &split, &err) == 0);
+        const int sky_rows = u.sky_rows;
+        u.sky_rows = 0;
+        CHECK(tl_renderer_render(r, &u, &marched, &err) == 0);
+        size_t n = (size_t)s.width * s.height;
+        int same = memcmp(split.color, marched.color, n * 4 * sizeof(float)) == 0 &&
+                   memcmp(split.display, marched.display, n * 4 * sizeof(float)) == 0 &&
+                   memcmp(split.depth, marched.depth, n * sizeof(float)) == 0;
+        printf("sky rows, %s: %d of %d rows (%d rise), %d wrong; frame %s the march's\n", names[k],
+               sky_rows, u.height, rising, wrong, same ? "is" : "is not");
+        CHECK(wrong == 0);
+        CHECK(sky_rows >= rising - 1 && sky_rows > u.height / 4);
+        CHECK(same);
+        tl_frame_free(&split);
+        tl_frame_free(&marched);
+    }
+    /* The sky's own program draws exactly those rows: marked, they are
+     * the top sky_rows rows of the frame and no others. */
+    char dir[] = "/tmp/tl_sky_XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    tl_renderer *marked =
+        patched_renderer(dir, "        vec3 c = trace(camera_ray(g_pixel), dist);\n"
+                              "#ifdef TL_SKY_ONLY\n"
+                              "        c = vec3(1000.0, 0.0, 0.0);\n"
+                              "#endif\n");
+    CHECK(marked != NULL);
+    if (marked) {
+        tl_scene s;
+        small_scene(&s);
+        s.camera.pitch = 0.1;
+        s.quality.spp = 4;
+        tl_frame_uniforms u;
+        gl_test_prepare(marked, &s, &u);
+        tl_frame f;
+        tl_error err;
+        tl_error_clear(&err);
+        CHECK(tl_frame_alloc(&f, s.width, s.height, &err) == 0);
+        CHECK(tl_renderer_render(marked, &u, &f, &err) == 0);
+        int misplaced = 0; /* frame rows run top down */
+        for (int y = 0; y < s.height; y++)
+            for (int x = 0; x < s.width; x++)
+                misplaced +=
+                    (f.color[((size_t)y * s.width + x) * 4] == 1000.0f) != (y < u.sky_rows);
+        printf("sky rows, marked: %d pixels misplaced\n", misplaced);
+        CHECK(u.sky_rows > 0 && misplaced == 0);
+        tl_frame_free(&f);
+        tl_renderer_destroy(marked);
+    }
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    CHECK(system(cmd) == 0);
+    const char *const none[] = {"under the water", "upside down", "looking down"};
+    for (int k = 0; k < 3; k++) {
+        tl_scene s;
+        small_scene(&s);
+        if (k == 0)
+            s.camera.position[1] = -2.0;
+        if (k == 1)
+            s.camera.roll = M_PI;
+        if (k == 2)
+            s.camera.pitch = -1.2;
+        tl_frame_uniforms u;
+        gl_test_prepare(r, &s, &u);
+        printf("sky rows, %s: %d\n", none[k], u.sky_rows);
+        CHECK(u.sky_rows == 0);
+    }
+}
+
 int main(void)
 {
     test_device_platform_extensions();
@@ -523,6 +644,7 @@ int main(void)
     test_march_prepass(r);
     test_refine(r);
     test_bad_samples(r);
+    test_sky_rows(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

@@ -114,6 +114,10 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
              "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s", key.march_octaves,
              key.normal_octaves, features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
              features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "");
+    if (features & TL_PASS_SKY) {
+        n = strlen(defines);
+        snprintf(defines + n, sizeof defines - n, "#define TL_SKY_ONLY 1\n");
+    }
     key.program = tl_renderer_build_program(r, "fullscreen.vert", "ocean.frag", defines, err);
     if (!key.program)
         return 0;
@@ -626,14 +630,25 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     glEnable(GL_SCISSOR_TEST);
     int bands[4][4], has_rect;
     int n = tl_renderer_split(w, h, rect, bands, &has_rect);
-    if (n) {
-        GLuint program = tl_renderer_use_ocean(r, u, lean, err);
+    /* Above the horizon, outside the wave's rectangle, the sky alone. */
+    const int sky = tl_renderer_sky_from(u, 1, h);
+    for (int part = 0; part < 2 && n && !rc; part++) {
+        if (part == 1 && sky >= h)
+            break;
+        unsigned f = part == 0 ? lean : (lean & ~(unsigned)TL_PASS_HINTED) | TL_PASS_SKY;
+        GLuint program = tl_renderer_use_ocean(r, u, f, err);
         int chunk = samples_per_draw(u, lean);
         if (!program)
             rc = err ? (int)err->status : TL_ERR_RUNTIME;
-        for (int i = 0; i < n && !rc; i++)
-            draw_ocean(program, u, chunk, weight, write_depth, only, bands[i][0], bands[i][1],
-                       bands[i][2], bands[i][3]);
+        for (int i = 0; i < n && !rc; i++) {
+            const int *b = bands[i];
+            if (part == 0)
+                draw_ocean(program, u, chunk, weight, write_depth, only, b[0], b[1], b[2],
+                           b[3] < sky ? b[3] : sky);
+            else
+                draw_ocean(program, u, chunk, weight, write_depth, only, b[0],
+                           b[1] > sky ? b[1] : sky, b[2], b[3]);
+        }
     }
     if (!rc && has_rect) {
         GLuint program = tl_renderer_use_ocean(r, u, features, err);

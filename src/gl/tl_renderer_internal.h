@@ -10,14 +10,15 @@
 
 #include "gl/tl_renderer.h"
 
-#define MAX_PROGRAMS 16
+#define MAX_PROGRAMS 24
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
 #define TL_PREPASS_LEVELS 2
 
 /* Ocean program variants beyond the frame's features (bits above them):
- * a march prepass level, and a pass that starts from a coarser level's
- * distances. */
-enum { TL_PASS_PREPASS = 1u << 30, TL_PASS_HINTED = 1u << 29 };
+ * a march prepass level, a pass that starts from a coarser level's
+ * distances, and the sky alone (the rows above the horizon,
+ * tl_frame_uniforms.sky_rows). */
+enum { TL_PASS_PREPASS = 1u << 30, TL_PASS_HINTED = 1u << 29, TL_PASS_SKY = 1u << 28 };
 
 typedef struct cached_program {
     unsigned features;
@@ -92,6 +93,9 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
  * (below, above, left, right), returned with their count, and whether
  * `rect` itself holds any pixel (without one, the one band is the frame). */
 int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has_rect);
+/* The first row (GL's y) of a target `h` rows high, each row standing for
+ * `scale` of the render's, whose rays all rise (u->sky_rows); h if none. */
+int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h);
 
 /* Whether the frame's ocean passes start from the march prepass. */
 int tl_renderer_prepass_wanted(const tl_frame_uniforms *u, unsigned features);

@@ -27,6 +27,16 @@ int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has
     return n;
 }
 
+int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h)
+{
+    if (u->sky_rows <= 0)
+        return h;
+    /* A row j's ray passes through the render's row scale * (j + 0.5). */
+    int from = u->height - u->sky_rows;
+    int j = (2 * from + scale - 1) / (2 * scale);
+    return j < 0 ? 0 : j > h ? h : j;
+}
+
 /* Under water the ocean's march is another (the lens, the surface from
  * below): no prepass there. */
 int tl_renderer_prepass_wanted(const tl_frame_uniforms *u, unsigned features)
@@ -71,6 +81,17 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
         march |= TL_PASS_HINTED;
     int bands[4][4], has_rect;
     int n = tl_renderer_split(w, h, low, bands, &has_rect);
+    /* Above the horizon, outside the wave's rectangle, every ray misses:
+     * what the march would write there (-1) without the march. */
+    const int sky = tl_renderer_sky_from(u, scale, h);
+    const GLfloat miss[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+    for (int i = 0; i < n; i++)
+        if (bands[i][3] > sky && bands[i][2] > bands[i][0]) {
+            int y0 = bands[i][1] > sky ? bands[i][1] : sky;
+            glScissor(bands[i][0], y0, bands[i][2] - bands[i][0], bands[i][3] - y0);
+            glClearBufferfv(GL_COLOR, 0, miss);
+            bands[i][3] = y0;
+        }
     for (int pass = 0; pass < 2; pass++) {
         if (pass == 1 && !has_rect)
             break;
@@ -83,6 +104,8 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
             bind_hint(program, coarser, (float)scale);
         for (int i = 0; i < (pass == 0 ? n : 1); i++) {
             const int *b = pass == 0 ? bands[i] : low;
+            if (b[1] >= b[3])
+                continue;
             glScissor(b[0], b[1], b[2] - b[0], b[3] - b[1]);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }

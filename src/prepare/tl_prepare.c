@@ -451,6 +451,38 @@ static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
     to_float3(s->fog.color, u->fog_color);
 }
 
+/* The top rows whose every ray rises (u->sky_rows). From a camera above
+ * the water such a ray meets neither the ocean, whose crests lie at
+ * y <= 0, nor the boat (composited from its own pass) nor anything else
+ * the lean program marches; the giant wave's box has its own rectangle.
+ * The rays are built as shaders/ocean.frag builds them, from the same
+ * float uniforms, over each row's whole span (a supersampled ray lies
+ * anywhere in its pixel); one rising by less than TL_SKY_MARGIN stays
+ * with the march. Worth it because llvmpipe charges a ray that skips the
+ * march one pass of its loop anyway: a surface evaluation per sky pixel. */
+#define TL_SKY_MARGIN 1e-4
+static void sky_rows(tl_frame_uniforms *u)
+{
+    u->sky_rows = 0;
+    if (!(u->cam_height > 0.0f) || (u->features & TL_FEATURE_UNDERWATER) || !(u->cam_up[1] > 0.0f))
+        return;
+    double ty = u->tan_half_vfov, tx = ty * u->width / u->height;
+    /* With the camera's up above the horizontal, a ray rises more the
+     * higher its row: count down from the top until a row has a ray that
+     * does not rise (enough) at its lower edge, left or right. */
+    for (int row = u->height - 1; row >= 0; row--) {
+        double ny = 2.0 * row / u->height - 1.0;
+        for (int side = -1; side <= 1; side += 2) {
+            double d[3];
+            for (int i = 0; i < 3; i++)
+                d[i] = u->cam_forward[i] + side * tx * u->cam_right[i] + ny * ty * u->cam_up[i];
+            if (!(d[1] >= TL_SKY_MARGIN * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
+                return;
+        }
+        u->sky_rows = u->height - row;
+    }
+}
+
 void tl_prepare_render_size(const tl_scene *s, int *width, int *height)
 {
     double k = s->quality.render_scale > 0.0 && s->quality.render_scale < 1.0
@@ -582,4 +614,5 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     prepare_water_body(s, w, &giant, u);
     prepare_fog(s, u);
     prepare_sky(s, u);
+    sky_rows(u);
 }

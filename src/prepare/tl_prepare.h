@@ -121,6 +121,11 @@ typedef struct tl_frame_uniforms {
      * empty (all 0) when none can. The renderer runs the giant wave's
      * program only there (giant_screen_rect in tl_prepare.c). */
     int giant_rect[4];
+    /* Rows at the top of the render target (GL's y from height - sky_rows
+     * up) where every ray rises from a camera above the water: outside
+     * giant_rect they meet nothing, and the renderer shades them with the
+     * sky alone (sky_rows in tl_prepare.c). 0: none. */
+    int sky_rows;
 
     /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
      * camera-relative metres (the camera at the origin, y too). */
