@@ -18,6 +18,7 @@ uniform vec3 u_giant_scatter_color;
 uniform int u_giant_iterations;
 uniform vec2 u_giant_world; // the crest's world (s, w), wrapped every 65536 m
 uniform float u_giant_slope[TL_GIANT_SLOPE_BINS]; // slope bound per bin of s
+uniform vec2 u_giant_rise; // s where the wave reaches the camera's height (empty: none)
 
 struct GiantSample {
     float height;       // metres added to the ocean
@@ -138,7 +139,10 @@ float giant_slope_near(float s, float radius)
 
 // The part of the ray inside the wave's bounding box: s within the reach,
 // |w| within the half width, y between the deepest trough and the highest
-// crest. Returns (t_in, t_out); t_in > t_out when the ray misses it.
+// crest. A rising ray never comes lower than the camera, so its box holds
+// only the s where the wave reaches that high (u_giant_rise, from the
+// wave's height bound per bin): the sky above a wave lower than the camera
+// marches nothing. Returns (t_in, t_out); t_in > t_out when the ray misses.
 vec2 giant_ray_interval(vec3 ray)
 {
     vec2 d = u_giant_frame.xy;
@@ -147,6 +151,12 @@ vec2 giant_ray_interval(vec3 ray)
     float top = u_giant_bounds.w * u_giant_shape.y;
     vec3 lo = vec3(-u_giant_bounds.x, -u_depth - top, -u_giant_mask.z);
     vec3 hi = vec3(u_giant_bounds.x, top, u_giant_mask.z);
+    if (ray.y >= 0.0) {
+        if (u_giant_rise.x >= u_giant_rise.y)
+            return vec2(1.0, 0.0);
+        lo.x = max(lo.x, u_giant_rise.x);
+        hi.x = min(hi.x, u_giant_rise.y);
+    }
     float t0 = 0.0, t1 = TL_FAR;
     for (int i = 0; i < 3; i++) {
         if (abs(r[i]) < 1.0e-12) {

@@ -216,7 +216,8 @@ static void test_inversion_and_slope(void)
 
     /* Slope: finite differences against the analytic gradient, and against
      * the bound of the bin the point falls in (what the march relies on). */
-    double worst_slope = 0.0, worst_grad = 0.0, worst_ratio = 0.0;
+    double worst_slope = 0.0, worst_grad = 0.0, worst_ratio = 0.0, worst_height = -1e9;
+    double crest_bound = 0.0;
     const double e = 1e-4, bin = 2.0 * g.reach_along / TL_GIANT_SLOPE_BINS;
     for (int j = 0; j <= 60; j++)
         for (int i = 0; i <= 1200; i++) {
@@ -237,7 +238,17 @@ static void test_inversion_and_slope(void)
             int b = (int)floor((s + g.reach_along) / bin);
             b = b < 0 ? 0 : b >= TL_GIANT_SLOPE_BINS ? TL_GIANT_SLOPE_BINS - 1 : b;
             worst_ratio = fmax(worst_ratio, slope / fmax(g.slope_bin[b], 1e-12));
+            /* The height bound of the bin (what a rising ray's box relies on). */
+            worst_height = fmax(worst_height, smp.height - g.height_bin[b]);
         }
+    for (int b = 0; b < TL_GIANT_SLOPE_BINS; b++)
+        crest_bound = fmax(crest_bound, g.height_bin[b]);
+    printf("height: worst height over its bin's bound %.3g m; the highest bound %.3f m for a %.1f m "
+           "crest\n",
+           worst_height, crest_bound, g.fade * g.amplitude);
+    CHECK(worst_height <= 0.0);
+    /* Not a loose bound: the crest's bin is bounded within 5% of its height. */
+    CHECK(crest_bound <= 1.05 * g.fade * g.amplitude);
     printf("slope: max %.3f, bound %.3f, worst slope / its bin's bound %.3f; analytic gradient vs "
            "finite differences: %.2g\n",
            worst_slope, g.max_slope, worst_ratio, worst_grad);

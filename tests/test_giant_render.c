@@ -533,6 +533,76 @@ static void test_prepass_silhouette(tl_renderer *r)
     }
 }
 
+/* A rising ray stays at or above the camera, so its part of the wave's box
+ * holds only the s where the wave reaches the camera's height
+ * (tl_frame_uniforms.giant_rise). A camera below the crest, facing it and
+ * looking a little up: the range is the crest's alone, and on the CPU
+ * no rising ray the frame calls sky crosses the surface, and every rising
+ * ray that goes a metre under it is a hit. A camera above the crest gets
+ * no range, one under the still water the whole reach. */
+static void test_rising_rays(tl_renderer *r)
+{
+    tl_scene s;
+    facing_mirror_scene(&s, 400);
+    s.camera.position[1] = 12.0; /* the crest is 20 m */
+    s.camera.pitch = 0.05;
+    s.width = 96;
+    s.height = 60;
+    tl_waves waves;
+    tl_frame_uniforms u;
+    tl_waves_init(&waves, &s.ocean);
+    tl_prepare_frame(&s, &waves, &u);
+    const double reach = u.giant_bounds[0];
+    printf("rising rays, camera 12 m up: the box's s from %.1f to %.1f m (the reach: %.1f m)\n",
+           u.giant_rise[0], u.giant_rise[1], reach);
+    CHECK(u.giant_rise[0] < u.giant_rise[1]);
+    CHECK(u.giant_rise[1] - u.giant_rise[0] < reach);
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    tl_giant giant;
+    cpu_mirror(&s, &giant, &waves);
+    int rising = 0, hits = 0, missed = 0, false_sky = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            double ray[3];
+            pixel_ray(&s, x, y, ray);
+            if (ray[1] < 0.0)
+                continue;
+            rising++;
+            double deepest = 0.0; /* how far under the surface the ray goes */
+            for (double t = 0.0; t < 400.0; t += 0.05) {
+                double p[3];
+                for (int i = 0; i < 3; i++)
+                    p[i] = s.camera.position[i] + ray[i] * t;
+                if (p[1] > s.giant.height + 2.0)
+                    break;
+                deepest = fmax(deepest, tl_waves_surface_height(&waves, &giant, p[0], p[2], s.time,
+                                                                s.quality.march_octaves,
+                                                                s.quality.giant_iterations) -
+                                            p[1]);
+            }
+            int sky = f.depth[(size_t)y * s.width + x] >= TL_FRAME_SKY_DEPTH;
+            hits += !sky;
+            false_sky += sky && deepest > 0.0;
+            missed += sky && deepest > 1.0;
+        }
+    printf("rising rays: %d, %d of them on the wave; %d the frame calls sky cross the surface, %d "
+           "by a metre or more\n",
+           rising, hits, false_sky, missed);
+    CHECK(rising > 1000 && hits > 200);
+    CHECK(missed == 0);
+    CHECK(false_sky <= rising / 100);
+    tl_frame_free(&f);
+
+    s.camera.position[1] = 30.0;
+    tl_prepare_frame(&s, &waves, &u);
+    CHECK(u.giant_rise[0] >= u.giant_rise[1]);
+    s.camera.position[1] = -3.0;
+    tl_prepare_frame(&s, &waves, &u);
+    CHECK(u.giant_rise[0] <= -reach + 1e-3 && u.giant_rise[1] >= reach - 1e-3);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -545,6 +615,7 @@ int main(void)
     test_hits_on_surface(r);
     test_relaxed_march(r);
     test_prepass_silhouette(r);
+    test_rising_rays(r);
     test_extremes(r);
     test_screen_rect();
     test_split_matches_whole(r);

@@ -305,6 +305,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform1i(tl_renderer_loc(p, "u_giant_iterations"), u->giant_iterations);
         glUniform1fv(tl_renderer_loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
         glUniform2fv(tl_renderer_loc(p, "u_giant_world"), 1, u->giant_world);
+        glUniform2fv(tl_renderer_loc(p, "u_giant_rise"), 1, u->giant_rise);
     }
     if (u->features & TL_FEATURE_UNDERWATER) {
         glUniform3fv(tl_renderer_loc(p, "u_water_sigma"), 1, u->water_sigma);

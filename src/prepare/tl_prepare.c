@@ -215,6 +215,20 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
     u->giant_iterations = s->quality.giant_iterations;
     for (int i = 0; i < TL_GIANT_SLOPE_BINS; i++)
         u->giant_slope[i] = (float)g.slope_bin[i];
+    /* A rising ray stays at or above the camera; the ocean's crests are at
+     * 0, so it can meet the surface only in bins where the wave alone
+     * reaches the camera's height (a centimetre of margin for the float
+     * camera height). */
+    const double cam_y = s->camera.position[1], bin = 2.0 * g.reach_along / TL_GIANT_SLOPE_BINS;
+    int first = 0, last = TL_GIANT_SLOPE_BINS - 1;
+    if (cam_y > 0.0) {
+        while (first < TL_GIANT_SLOPE_BINS && g.height_bin[first] < cam_y - 0.01)
+            first++;
+        while (last >= first && g.height_bin[last] < cam_y - 0.01)
+            last--;
+    }
+    u->giant_rise[0] = first > last ? 0.0f : (float)(-g.reach_along + first * bin);
+    u->giant_rise[1] = first > last ? 0.0f : (float)(-g.reach_along + (last + 1) * bin);
     /* World-fixed texture coordinates for foam left behind, reduced in
      * double so the GPU sees small numbers wherever the wave is. */
     double along = g.dir[0] * g.origin[0] + g.dir[1] * g.origin[1];

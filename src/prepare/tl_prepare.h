@@ -115,6 +115,10 @@ typedef struct tl_frame_uniforms {
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */
+    /* The s (crest-relative, as giant_frame's) between which the wave can
+     * rise to the camera's height: a rising ray meets nothing outside it.
+     * The whole reach when the camera is at or under the still water. */
+    float giant_rise[2];
     int giant_iterations;
     /* The render target's pixels whose rays can meet the wave's box, as
      * x0, y0, x1, y1 (x1 and y1 one past the last; GL's lower-left origin);

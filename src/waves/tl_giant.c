@@ -100,7 +100,7 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
      * mask's slope is at most 1.5 / falloff_across. */
     const double bin = 2.0 * g->reach_along / TL_GIANT_SLOPE_BINS, spacing = 2.0 * reach / n;
     for (int b = 0; b < TL_GIANT_SLOPE_BINS; b++)
-        g->slope_bin[b] = 0.0;
+        g->slope_bin[b] = g->height_bin[b] = 0.0;
     for (int i = 0; i <= n; i++) {
         double s0 = -reach + 2.0 * reach * i / n;
         tl_giant_profile(g, s0, &y, &dy, &d, &dd);
@@ -108,11 +108,17 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
         double along = fabs(F * dy) / j;
         double across = F * 1.5 / g->falloff_across * (fabs(y) + fabs(F * dy * d) / j);
         double slope = hypot(along, across);
+        /* Its height, lambda·Y for lambda in [0, F], is at most F·Y or 0;
+         * what lies between samples, at most a sample's spacing up the
+         * slope (along s, where the samples are spaced). */
+        double height = fmax(F * y, 0.0) + (fabs(F * dy) / j) * spacing;
         double lo = s0 + fmin(0.0, F * d) - spacing, hi = s0 + fmax(0.0, F * d) + spacing;
         int b0 = (int)floor((lo + g->reach_along) / bin),
             b1 = (int)floor((hi + g->reach_along) / bin);
-        for (int b = b0 < 0 ? 0 : b0; b <= b1 && b < TL_GIANT_SLOPE_BINS; b++)
+        for (int b = b0 < 0 ? 0 : b0; b <= b1 && b < TL_GIANT_SLOPE_BINS; b++) {
             g->slope_bin[b] = fmax(g->slope_bin[b], slope);
+            g->height_bin[b] = fmax(g->height_bin[b], height);
+        }
     }
     /* 5% margin for what falls between the profile samples. */
     g->max_slope = 0.0;

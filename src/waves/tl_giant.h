@@ -66,6 +66,9 @@ typedef struct tl_giant {
     /* slope_bin[i] bounds |grad height| for s in [-reach_along + i·bin,
      * -reach_along + (i + 1)·bin), bin = 2·reach_along / TL_GIANT_SLOPE_BINS. */
     double slope_bin[TL_GIANT_SLOPE_BINS];
+    /* height_bin[i] bounds the wave's height (metres added to the ocean)
+     * over the same bins: a ray that stays higher cannot meet it there. */
+    double height_bin[TL_GIANT_SLOPE_BINS];
 } tl_giant;
 
 /* The wave of `p` at time t (seconds). Inactive waves evaluate to zero. */
