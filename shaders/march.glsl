@@ -74,10 +74,12 @@ struct hint_walk {
 };
 
 // The walk for a march that would start at t: moves t to its first point
-// and gives the march the walk's steps. budget: whether the march may
-// give up on a disagreeing bracket; t_far: the bracket's far end next to
-// the sky (where the ray meets the trough plane; 0 for a rising ray).
-hint_walk hint_begin(inout float t, inout int steps, bool budget, float t_far)
+// and gives the march the walk's steps. budget_from: the march may give
+// up on a disagreeing bracket that starts there or later (past the giant
+// wave's box, whose crest a budget could pass); t_far: the bracket's far
+// end next to the sky (where the ray meets the trough plane; 0 for a
+// rising ray).
+hint_walk hint_begin(inout float t, inout int steps, float budget_from, float t_far)
 {
     hint_walk w = hint_walk(0, 0, 0, false, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec2 hint = march_hint();
@@ -95,7 +97,7 @@ hint_walk hint_begin(inout float t, inout int steps, bool budget, float t_far)
         steps += 3 + TL_HINT_REFINE;
         if (hint.y >= 1e30)
             w.b1 = t_far;
-        if (budget && u_prepass_budget > 0 && !w.bracket) {
+        if (w.b0 >= budget_from && u_prepass_budget > 0 && !w.bracket) {
             w.budget = u_prepass_budget;
             steps += 1 + TL_HINT_REFINE;
         }
@@ -294,7 +296,7 @@ float march_water(vec3 ray, float t_min)
     float t_safe = 0.0, r_safe = 1e30;
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps, true, ray.y < 0.0 ? t_end : 0.0);
+    hint_walk walk = hint_begin(t, steps, 0.0, ray.y < 0.0 ? t_end : 0.0);
 #endif
     for (int i = 0; i < steps; i++) {
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
@@ -362,7 +364,7 @@ float march_water(vec3 ray, float t_min)
     bool relaxed = false; // the step that led to t was over-relaxed
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps, !has_box, ray.y < 0.0 ? t_low : 0.0);
+    hint_walk walk = hint_begin(t, steps, has_box ? box.y : 0.0, ray.y < 0.0 ? t_low : 0.0);
 #endif
     for (int i = 0; i < steps; i++) {
         bool in_box = t >= box.x && t <= box.y;
