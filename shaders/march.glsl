@@ -45,6 +45,9 @@ uniform float u_hint_pixel; // this pass's pixel, in the frame's pixels (the pre
 #ifndef TL_HINT_REFINE
 #define TL_HINT_REFINE 8
 #endif
+#ifndef TL_GIANT_GENTLE
+#define TL_GIANT_GENTLE 0.25
+#endif
 
 // The nearest and farthest of the four prepass distances around this
 // pixel, the sky as 1e30.
@@ -365,6 +368,16 @@ float march_water(vec3 ray, float t_min)
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
     hint_walk walk = hint_begin(t, steps, has_box ? box.y : 0.0, ray.y < 0.0 ? t_low : 0.0);
+    // A bracket that lies where the wave is gentle (its slope bound over
+    // the bracket's s below TL_GIANT_GENTLE, a swell on the sea's own
+    // slopes) takes the budget too: no crest lies there to pass.
+    if (has_box && walk.stage == 1 && !walk.bracket && walk.budget == 0 && u_prepass_budget > 0) {
+        float s0 = giant_coords(ray.xz * walk.b0).x, s1 = giant_coords(ray.xz * walk.b1).x;
+        if (giant_slope_near(0.5 * (s0 + s1), 0.5 * abs(s1 - s0)) < TL_GIANT_GENTLE) {
+            walk.budget = u_prepass_budget;
+            steps += 1 + TL_HINT_REFINE;
+        }
+    }
 #endif
     for (int i = 0; i < steps; i++) {
         bool in_box = t >= box.x && t <= box.y;
