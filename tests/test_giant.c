@@ -243,9 +243,10 @@ static void test_inversion_and_slope(void)
         }
     for (int b = 0; b < TL_GIANT_SLOPE_BINS; b++)
         crest_bound = fmax(crest_bound, g.height_bin[b]);
-    printf("height: worst height over its bin's bound %.3g m; the highest bound %.3f m for a %.1f m "
-           "crest\n",
-           worst_height, crest_bound, g.fade * g.amplitude);
+    printf(
+        "height: worst height over its bin's bound %.3g m; the highest bound %.3f m for a %.1f m "
+        "crest\n",
+        worst_height, crest_bound, g.fade * g.amplitude);
     CHECK(worst_height <= 0.0);
     /* Not a loose bound: the crest's bin is bounded within 5% of its height. */
     CHECK(crest_bound <= 1.05 * g.fade * g.amplitude);

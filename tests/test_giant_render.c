@@ -457,8 +457,8 @@ static void test_relaxed_march(tl_renderer *r)
                         break;
                 }
                 through += t < d - 0.25;
-                wave += t < d - 0.25 &&
-                        fabs(tl_giant_height(&giant, p[0], p[2], s.quality.giant_iterations)) > 1e-3;
+                wave += t < d - 0.25 && fabs(tl_giant_height(&giant, p[0], p[2],
+                                                             s.quality.giant_iterations)) > 1e-3;
                 on_wave += d > 100.0;
                 checked++;
             }
