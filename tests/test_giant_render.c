@@ -66,6 +66,17 @@ static void cpu_mirror(const tl_scene *s, tl_giant *giant, tl_waves *waves)
     tl_waves_init(waves, &s->ocean);
 }
 
+/* Renders `s` into `f` and prepares its CPU mirror; non-zero if the render
+ * failed (then `f` holds nothing). */
+static int render_mirrored(tl_renderer *r, const tl_scene *s, tl_frame *f, tl_giant *giant,
+                           tl_waves *waves)
+{
+    if (render(r, s, f))
+        return 1;
+    cpu_mirror(s, giant, waves);
+    return 0;
+}
+
 /* A camera 120 m in front of a 20 m wave that travels toward it. */
 static void facing_scene(tl_scene *s)
 {
@@ -214,11 +225,10 @@ static void test_hits_on_surface(tl_renderer *r)
         tl_scene s;
         facing_mirror_scene(&s, budgets[k]);
         tl_frame f;
-        if (render(r, &s, &f))
-            return;
         tl_giant giant;
         tl_waves waves;
-        cpu_mirror(&s, &giant, &waves);
+        if (render_mirrored(r, &s, &f, &giant, &waves))
+            return;
         int hits = 0, off = 0;
         double worst = 0.0;
         for (int y = 0; y < s.height; y++)
@@ -434,11 +444,10 @@ static void test_relaxed_march(tl_renderer *r)
         if (pass == 0)
             s.quality.prepass_budget = 0;
         tl_frame f;
-        if (render(r, &s, &f))
-            return;
         tl_giant giant;
         tl_waves waves;
-        cpu_mirror(&s, &giant, &waves);
+        if (render_mirrored(r, &s, &f, &giant, &waves))
+            return;
         int checked = 0, through = 0, wave = 0, on_wave = 0;
         for (int y = 0; y < s.height; y++)
             for (int x = 0; x < s.width; x++) {
