@@ -10,6 +10,7 @@
 
 uniform sampler2D u_hdr;   // the scene's radiance (radiance.glsl), with its mip chain
 uniform vec2 u_glare_size; // this pass's pixels
+uniform float u_glare_shift; // log2 of the output over the scene's size, rounded
 
 layout(location = 0) out vec4 out_glare;
 
@@ -39,7 +40,11 @@ void main()
         // The level's size by GL's rule, from the base: textureSize of a
         // level past a small image's last one is undefined (textureLod
         // reads the last one there, which this size then matches).
-        vec2 size = max(floor(base / exp2(float(level))), vec2(1.0));
+        // A scene rendered at half the output's size holds at its level k
+        // what a full-size one holds at k + 1: the glare reads the level
+        // whose texels are as wide in output pixels (render_scale).
+        float lod = max(float(level) - u_glare_shift, 0.0);
+        vec2 size = max(floor(base / exp2(lod)), vec2(1.0));
         vec2 src = uv * size - 0.5;
         vec2 px, py;
         vec2 wx = bspline_reads(src.x, px), wy = bspline_reads(src.y, py);
@@ -47,7 +52,7 @@ void main()
         for (int j = 0; j < 2; j++)
             for (int i = 0; i < 2; i++)
                 glare += wx[i] * wy[j] *
-                         textureLod(u_hdr, (vec2(px[i], py[j]) + 0.5) / size, float(level));
+                         textureLod(u_hdr, (vec2(px[i], py[j]) + 0.5) / size, lod);
     }
     out_glare = vec4(glare.a > 0.0 ? glare.rgb / glare.a : vec3(0.0), 1.0);
 }

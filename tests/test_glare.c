@@ -194,6 +194,39 @@ int main(void)
     tl_frame_free(&f);
     free(half.rgb);
 
+    /* The same frame rendered at half the output's size (draft's
+     * render_scale) glares as far: the glare reads the half-size scene's
+     * levels one lower, whose texels are as wide in output pixels. Exposed
+     * low, so that nothing clips, the glare's light in the top rows (away
+     * from the horizon and the sun) is the frame with glare less the frame
+     * without, at each scale. */
+    double reach[2];
+    const double exposure = s.exposure, bloom = s.bloom;
+    s.exposure = 0.02 * exposure;
+    for (int k = 0; k < 2; k++) {
+        s.quality.render_scale = k ? 0.5 : 1.0;
+        reach[k] = 0.0;
+        for (int g = 0; g < 2; g++) {
+            tl_frame f2;
+            s.bloom = g ? bloom : 0.0;
+            if (render(r, &s, &f2))
+                return 1;
+            for (int y = 0; y < H / 8; y++)
+                for (int x = 0; x < W; x++)
+                    reach[k] +=
+                        (g ? 1.0 : -1.0) * luminance(f2.display + ((size_t)y * W + x) * 4) * 255.0;
+            tl_frame_free(&f2);
+        }
+        reach[k] /= W * (H / 8);
+    }
+    s.exposure = exposure;
+    s.bloom = bloom;
+    s.quality.render_scale = 1.0;
+    printf("glare in the top rows, exposed low: %.2f levels at render scale 1, %.2f at 0.5\n",
+           reach[0], reach[1]);
+    CHECK(reach[0] > 1.0);
+    CHECK(fabs(reach[1] - reach[0]) <= 0.15 * reach[0]);
+
     /* A frame smaller than the glare's coarsest level (the preview's
      * smallest scale): finite, in range, and the sun still glares. */
     s.width = 12;

@@ -86,6 +86,10 @@ static int glare_pass(tl_renderer *r, tl_error *err)
     glUseProgram(r->glare_program);
     glUniform1i(tl_renderer_loc(r->glare_program, "u_hdr"), 0);
     glUniform2f(tl_renderer_loc(r->glare_program, "u_glare_size"), (float)w, (float)h);
+    /* The scene at render_scale < 1: its levels are that much wider. */
+    double shift = round(log2((double)r->display.height / r->scene.height));
+    glUniform1f(tl_renderer_loc(r->glare_program, "u_glare_shift"),
+                (float)(shift > 0.0 ? shift : 0.0));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return tl_renderer_check("the glare pass", err);
 }
