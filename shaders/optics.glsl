@@ -62,9 +62,16 @@ vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist)
     float toward_sun = pow(max(dot(ray, u_sun_dir), 0.0), 8.0);
 #ifdef TL_FEATURE_SKY_PHYSICAL
     // The haze is lit by the same sky and sun: fog.color tints their light
-    // (a grey fog of albedo 1 scatters the hemisphere's mean and the sun's
-    // light with a lobe toward it), so it darkens as the sun sets.
-    vec3 haze = u_fog_color * (sky_ambient() + sky_sun_light() * (0.05 + 0.5 * toward_sun));
+    // (a grey fog of albedo 1 scatters the sun's light with a lobe toward
+    // it), so it darkens as the sun sets. Haze scatters mostly forward:
+    // three quarters of the sky's light it sends on comes from the sky just
+    // behind it along the ray (the horizon, for a ray that meets the water;
+    // after sunset, the glow where the sun went down), a quarter from the
+    // hemisphere's mean. Lit by the
+    // mean alone it hid that glow behind a dark band (docs/rendering.md).
+    vec3 behind = sky_atmosphere(normalize(vec3(ray.x, max(ray.y, 0.0) + 1.0e-6, ray.z)), u_sun_dir);
+    vec3 haze = u_fog_color * (0.25 * sky_ambient() + 0.75 * behind +
+                               sky_sun_light() * (0.05 + 0.5 * toward_sun));
 #else
     vec3 haze = u_fog_color * (1.0 + 1.5 * toward_sun * smoothstep(-0.05, 0.1, u_sun_dir.y));
 #endif

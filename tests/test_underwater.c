@@ -227,6 +227,68 @@ static void test_fog_transmittance(tl_renderer *r)
     CHECK_NEAR(out[4 * (2 * ND + 3)], level, 1e-5);
 }
 
+/* Each row's mean luminance over the frame's width, top row first; the
+ * first row of water. */
+static int row_luminance(const tl_scene *s, const tl_frame *f, double *row)
+{
+    int horizon = -1;
+    for (int y = 0; y < s->height; y++) {
+        row[y] = 0.0;
+        for (int x = 0; x < s->width; x++)
+            row[y] += luminance(f->color + ((size_t)y * s->width + (size_t)x) * 4) / s->width;
+        if (horizon < 0 && f->depth[(size_t)y * s->width] < TL_FRAME_SKY_DEPTH)
+            horizon = y;
+    }
+    return horizon;
+}
+
+/* Haze after sunset (dusk.tl's fog): looking toward where the sun went
+ * down, the haze glows with the horizon behind it. Lit by the hemisphere's
+ * mean alone it hid that glow behind a dark band: the sky's rows within
+ * 5 deg of the horizon fell to 0.15 of the same rows without fog (0.47 now). */
+static void test_haze_after_sunset(tl_renderer *r)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = 16;
+    s.height = 180;
+    s.camera.position[1] = 3.0;
+    s.camera.yaw = 0.0;
+    s.camera.pitch = 0.0;
+    s.camera.vfov = 20.0 * DEG;
+    s.sky.model = TL_SKY_PHYSICAL;
+    s.sun.elevation = -3.0 * DEG;
+    s.sun.azimuth = 0.0;
+    tl_scene fogged = s;
+    fogged.fog.density = 0.002;
+    fogged.fog.height = 40.0;
+    fogged.fog.color[0] = 0.62;
+    fogged.fog.color[1] = 0.52;
+    fogged.fog.color[2] = 0.45;
+    tl_frame clear, hazy;
+    if (render(r, &s, &clear))
+        return;
+    if (render(r, &fogged, &hazy)) {
+        tl_frame_free(&clear);
+        return;
+    }
+    double a[180], b[180];
+    int horizon = row_luminance(&s, &clear, a);
+    CHECK(row_luminance(&fogged, &hazy, b) == horizon);
+    double focal = 0.5 * s.height / tan(0.5 * s.camera.vfov);
+    int up5 = (int)(0.5 * s.height - focal * tan(5.0 * DEG));
+    CHECK(horizon > up5 && horizon < s.height);
+    double least = INFINITY;
+    for (int y = up5; y < horizon; y++)
+        least = fmin(least, b[y] / a[y]);
+    printf("haze after sunset: the sky within 5 deg of the horizon at >= %.2f of its light "
+           "without fog\n",
+           least);
+    CHECK(least >= 0.4);
+    tl_frame_free(&clear);
+    tl_frame_free(&hazy);
+}
+
 /* A camera at the surface: the frame straddles it, every pixel is finite,
  * and the waterline (the sign change of each pixel's lens gap) is one
  * connected curve across the frame. */
@@ -370,6 +432,7 @@ int main(void)
     test_snell_window(r);
     test_water_transmittance(r);
     test_fog_transmittance(r);
+    test_haze_after_sunset(r);
     test_waterline(r);
     test_auto_flip(r);
     test_no_fog(r);
