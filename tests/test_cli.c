@@ -413,8 +413,11 @@ static void test_filtered_shading(void)
             printf("%s frame 60 against reference: %.2f dB final, %.2f without filtered shading, "
                    "%.2f without the pixel filter\n",
                    names[k], both, unshaded, unfiltered);
-            CHECK(both > unshaded + 1.0);   /* measured +1.8 and +5.9 dB */
-            CHECK(both > unfiltered + 0.2); /* measured +0.98 and +0.42 dB */
+            /* Measured +0.49 and +4.84 dB (+1.8 and +5.9 while the glare
+             * read llvmpipe's own mip levels, docs/rendering.md), and
+             * +1.04 and +0.56 dB. */
+            CHECK(both > unshaded + 0.3);
+            CHECK(both > unfiltered + 0.2);
         }
         for (int i = 0; i < 4; i++)
             tl_frame_free(&img[i]);

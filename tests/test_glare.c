@@ -1,19 +1,23 @@
 /* Glare (render.bloom) against a CPU model of its definition: the scene's
  * colour plane (which never carries glare) is box-filtered into mip levels
- * 1..6, each level read through a cubic B-spline of its texels; the GPU evaluates that at half the
- * output's resolution and the display pass reads it bilinearly, then mixes it in and tonemaps. The
- * frame's display plane must match the model of that within a few 8-bit
- * levels, and the model of the half-resolution image must stay close to
- * the definition evaluated at every output pixel (what glare was before it
- * moved to its own pass). */
+ * 1..6 (each texel the mean of the 2x2 under it), each level read through a cubic B-spline of its
+ * texels; the GPU evaluates that at half the output's resolution and the display pass reads it
+ * bilinearly, then mixes it in and tonemaps. The frame's display plane must match the model of that
+ * within a few 8-bit levels, and the model of the half-resolution image must stay close to the
+ * definition evaluated at every output pixel (what glare was before it moved to its own pass). */
 #include <stdlib.h>
 #include <string.h>
 
 #include "tl_gl_test.h"
 
 #define DEG    (M_PI / 180.0)
-#define W      128 /* powers of two: every mip level is an exact 2x2 box */
-#define H      64
+/* Not powers of two, as frames are: the levels halve 176x90 down to 2x1,
+ * and three of them (45 -> 22, 11 -> 5 rows, 11 -> 5 columns) leave out an
+ * odd last row or column (shaders/mip.frag). The driver's own mipmaps
+ * filter odd sizes as they like: llvmpipe's lost most of the coarsest
+ * level's light. */
+#define W      176
+#define H      90
 #define LEVELS 7
 
 typedef struct image {
@@ -30,9 +34,12 @@ static void build_mips(const float *color)
         mips[l].h = H >> l;
         mips[l].rgb = calloc((size_t)mips[l].w * mips[l].h * 3, sizeof(double));
     }
-    for (int i = 0; i < W * H; i++)
-        for (int c = 0; c < 3; c++)
-            mips[0].rgb[i * 3 + c] = color[i * 4 + c];
+    /* In GL's order, bottom row first: a level drops its odd last row at
+     * the top of the image. */
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            for (int c = 0; c < 3; c++)
+                mips[0].rgb[(y * W + x) * 3 + c] = color[((H - 1 - y) * W + x) * 4 + c];
     for (int l = 1; l < LEVELS; l++) {
         const image *a = &mips[l - 1];
         image *b = &mips[l];
@@ -146,7 +153,8 @@ int main(void)
         return 1;
     build_mips(f.color);
 
-    /* The half-resolution image at its pixel centres, as the GPU makes it. */
+    /* The half-resolution image at its pixel centres, as the GPU makes it
+     * (bottom row first). */
     const int gw = W / 2, gh = H / 2;
     image half = {gw, gh, calloc((size_t)gw * gh * 3, sizeof(double))};
     for (int y = 0; y < gh; y++)
@@ -156,9 +164,9 @@ int main(void)
     double worst = 0.0, sum = 0.0, approx_sq = 0.0, spread = 0.0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
-            /* The frame's planes run top first and GL's uv bottom first;
-             * every filter here is symmetric, so the model works top first. */
-            double u_ = (x + 0.5) / W, v_ = (y + 0.5) / H;
+            /* The frame's planes run top first, the model (as GL) bottom
+             * first. */
+            double u_ = (x + 0.5) / W, v_ = 1.0 - (y + 0.5) / H;
             const float *hdr_px = f.color + ((size_t)y * W + x) * 4;
             double g[3], exact[3], mixed[3], mixed_exact[3], want[3], want_exact[3];
             bilinear(&half, u_, v_, g);

@@ -232,6 +232,10 @@ void tl_renderer_destroy(tl_renderer *r)
         tl_renderer_target_free(&r->hint[i]);
     if (r->glare_program)
         glDeleteProgram(r->glare_program);
+    if (r->mip_program)
+        glDeleteProgram(r->mip_program);
+    if (r->mip_fbo)
+        glDeleteFramebuffers(1, &r->mip_fbo);
     tl_renderer_target_free(&r->filtered);
     if (r->filter_program)
         glDeleteProgram(r->filter_program);
@@ -367,6 +371,9 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     if (r->glare_program)
         glDeleteProgram(r->glare_program);
     r->glare_program = 0;
+    if (r->mip_program)
+        glDeleteProgram(r->mip_program);
+    r->mip_program = 0;
     if (r->filter_program)
         glDeleteProgram(r->filter_program);
     r->filter_program = 0;

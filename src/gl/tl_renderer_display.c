@@ -62,6 +62,57 @@ static int ensure_pass(tl_renderer *r, target *t, int w, int h, GLuint *program,
     return rc;
 }
 
+/* The scene colour's mip levels 1..TL_GLARE_LEVELS (fewer for a small
+ * scene), each the 2x2 mean of the one above, by a pass per level
+ * (shaders/mip.frag). glGenerateMipmap leaves the filter to the driver:
+ * where a size is odd llvmpipe's lost most of the coarse levels' light and
+ * NVIDIA's kept it, so the two drivers' frames differed by 31-34 dB
+ * (docs/rendering.md, "Glare"). While a level is drawn the texture's base
+ * and top level are the one above it, so the pass reads no level it
+ * writes. */
+#define TL_GLARE_LEVELS 6
+static int mip_chain(tl_renderer *r, tl_error *err)
+{
+    target *t = &r->scene;
+    int top = 0;
+    while (top < TL_GLARE_LEVELS && (t->width >> (top + 1) > 0 || t->height >> (top + 1) > 0))
+        top++;
+    if (!r->mip_program) {
+        char defines[512];
+        tl_renderer_defines(0, defines, sizeof defines);
+        r->mip_program = tl_renderer_build_program(r, "fullscreen.vert", "mip.frag", defines, err);
+        if (!r->mip_program)
+            return err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    if (!r->mip_fbo)
+        glGenFramebuffers(1, &r->mip_fbo);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, t->tex[0]);
+    if (t->mip_levels != top) { /* a new scene target: its levels' storage */
+        for (int k = 1; k <= top; k++) {
+            int w = t->width >> k, h = t->height >> k;
+            glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA32F, w > 0 ? w : 1, h > 0 ? h : 1, 0, GL_RGBA,
+                         GL_FLOAT, NULL);
+        }
+        t->mip_levels = top;
+    }
+    glBindVertexArray(r->vao);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->mip_fbo);
+    glUseProgram(r->mip_program);
+    glUniform1i(tl_renderer_loc(r->mip_program, "u_src"), 0);
+    for (int k = 1; k <= top; k++) {
+        int w = t->width >> k, h = t->height >> k;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, k - 1);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, k - 1);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t->tex[0], k);
+        glViewport(0, 0, w > 0 ? w : 1, h > 0 ? h : 1);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, top);
+    return tl_renderer_check("the glare's mip levels", err);
+}
+
 /* The glare image at half the output size (shaders/glare.frag), read
  * bilinearly by the display pass; from the scene's mip chain. */
 static int glare_pass(tl_renderer *r, tl_error *err)
@@ -73,13 +124,15 @@ static int glare_pass(tl_renderer *r, tl_error *err)
     glBindTexture(GL_TEXTURE_2D, r->glare.tex[0]);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    rc = mip_chain(r, err);
+    if (rc)
+        return rc;
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
     /* glare.frag reads whole levels (an integer lod): a blend between two
      * levels would weigh the second by 0, and llvmpipe would fetch it
      * anyway (3-4 ms of a 640x360 frame). */
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    glGenerateMipmap(GL_TEXTURE_2D);
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->glare.fbo);
     glViewport(0, 0, w, h);

@@ -34,6 +34,7 @@ typedef struct target {
     GLuint depth; /* renderbuffer, 0 when none */
     int attachments;
     int width, height;
+    int mip_levels; /* levels past 0 allocated for tex[0] (the scene's, for the glare) */
 } target;
 
 /* The boat's mesh on the GPU: interleaved position, normal, colour. */
@@ -63,6 +64,8 @@ struct tl_renderer {
     target hint[TL_PREPASS_LEVELS];
     target glare;   /* glare RGBA32F at half the output size (render.bloom) */
     GLuint glare_program;
+    GLuint mip_program; /* the scene's mip levels (mip.frag) */
+    GLuint mip_fbo;     /* one level of the scene's colour at a time */
     target filtered; /* the display image after the pixel filter (quality.pixel_filter) */
     GLuint filter_program;
     int display_filtered;   /* the last display pass left its image in `filtered` */
