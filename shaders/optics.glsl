@@ -67,9 +67,10 @@ vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist)
     // three quarters of the sky's light it sends on comes from the sky just
     // behind it along the ray (the horizon, for a ray that meets the water;
     // after sunset, the glow where the sun went down), a quarter from the
-    // hemisphere's mean. Lit by the
-    // mean alone it hid that glow behind a dark band (docs/rendering.md).
-    vec3 behind = sky_atmosphere(normalize(vec3(ray.x, max(ray.y, 0.0) + 1.0e-6, ray.z)), u_sun_dir);
+    // hemisphere's mean. Lit by the mean alone it hid that glow behind a
+    // dark band (docs/rendering.md, "Fog").
+    vec3 behind_dir = normalize(vec3(ray.x, max(ray.y, 0.0) + 1.0e-6, ray.z));
+    vec3 behind = sky_atmosphere(behind_dir, u_sun_dir);
     vec3 haze = u_fog_color * (0.25 * sky_ambient() + 0.75 * behind +
                                sky_sun_light() * (0.05 + 0.5 * toward_sun));
 #else
