@@ -133,6 +133,10 @@ static int glare_pass(tl_renderer *r, tl_error *err)
      * levels would weigh the second by 0, and llvmpipe would fetch it
      * anyway (3-4 ms of a 640x360 frame). */
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    /* Level 0 too is read bilinearly (a half-size scene's first glare
+     * level, u_glare_shift): at lod 0 GL magnifies, and the target's own
+     * NEAREST made that level blocky. */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->glare.fbo);
     glViewport(0, 0, w, h);
