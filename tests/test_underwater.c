@@ -1,7 +1,8 @@
 /* Under water and fog on the GPU (llvmpipe on CI): Snell's window in a
  * frame, the exact Fresnel reflectance from the water side, Beer-Lambert
- * and fog transmittance against exp(-sigma d), the waterline of a frame
- * across the surface, the auto mode's flip, and fog 0 as no fog. */
+ * and fog transmittance against exp(-sigma d), the haze at the horizon
+ * after sunset, the waterline of a frame across the surface, the auto
+ * mode's flip, and fog 0 as no fog. */
 #include <string.h>
 
 #include "optics/tl_optics.h"
