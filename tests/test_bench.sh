@@ -45,6 +45,30 @@ grep -q '^| draft | [0-9.]* | [0-9.]* | [0-9.]* | [0-9.]* | | | | |$' "$work/t.m
 awk -F, 'NR == 2 { if ($1 != "draft" || !($6 > 0) || $10 != "" || $15 != 0) exit 1 } END { if (NR != 2) exit 1 }' \
   "$work/t.csv" || fail "--time-only CSV: $(cat "$work/t.csv")"
 
+# --passes: a second table of the median frame's passes. voyage's frame 120
+# has the boat and the giant wave in view, calm's frame none of them, so
+# their columns are > 0 for the one and 0 for the other; the passes add up
+# to their total, which the frame's render time holds.
+"$tideline" bench "$timelines/voyage.tl" --size 64x36 --frames 120 --presets draft,seed --repeat 1 \
+  --time-only --passes -q >"$work/p.md"
+"$tideline" bench "$timelines/calm.tl" --size 64x36 --frames 120 --presets draft --repeat 1 \
+  --time-only --passes -q >>"$work/p.md"
+cat "$work/p.md"
+[ "$(grep -c '^| preset | boat | prepass | ocean | giant wave | glare | display | filter | all passes | render | frame |$' "$work/p.md")" -eq 2 ] ||
+  fail "--passes header"
+awk -F' *[|] *' '$2 ~ /^(draft|seed)$/ && NF == 13 {
+  rows++
+  sum = 0
+  for (i = 3; i <= 9; i++) { if ($i !~ /^[0-9]+\.[0-9]$/) { print "field " i ": " $0; bad = 1 }; sum += $i }
+  if (sum < $10 - 0.4 || sum > $10 + 0.4) { print "sum " sum ": " $0; bad = 1 }
+  if (!($11 >= $10 - 0.1)) { print "render: " $0; bad = 1 }
+  if ($12 == "voyage.tl:120" && !($3 > 0 && $6 > 0)) { print "voyage boat/giant: " $0; bad = 1 }
+  if ($12 == "calm.tl:120" && !($3 == 0 && $6 == 0)) { print "calm boat/giant: " $0; bad = 1 }
+  if ($2 == "draft" && !($4 > 0)) { print "draft prepass: " $0; bad = 1 }
+  if ($2 == "seed" && $4 != 0) { print "seed prepass: " $0; bad = 1 }
+} END { if (rows != 3) { print "rows " rows; bad = 1 }; exit bad }' "$work/p.md" || fail "--passes table"
+grep -q '^| preset | boat' "$work/t.md" && fail "a passes table without --passes"
+
 # Usage errors: status 2, a message naming the flag, nothing written.
 expect_usage() {
   local want=$1; shift

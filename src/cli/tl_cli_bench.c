@@ -45,6 +45,10 @@ static const char usage[] =
     "                    columns (to time a change quickly)\n"
     "  --shader-dir DIR  render with the shaders in DIR instead of the built-in\n"
     "                    copies (to measure a shader edit before rebuilding)\n"
+    "  --passes          also print where each preset's render time goes: the ms\n"
+    "                    of each kind of pass in its median frame (boat, march\n"
+    "                    prepass, ocean, giant wave, glare, display, pixel\n"
+    "                    filter, all of them), each pass fenced with glFinish\n"
     "  --csv FILE        write the table as CSV (one row per preset)\n"
     "  --plot FILE.png   plot PSNR against ms per frame with the Pareto front\n"
     "                    (needs gnuplot: Debian package gnuplot-nox)\n"
@@ -62,7 +66,7 @@ typedef struct bench_options {
     int timeline_count;
     const char *frames, *csv, *plot, *shader_dir;
     char presets[1024];
-    int width, height, repeat, quiet, time_only;
+    int width, height, repeat, quiet, time_only, passes;
 } bench_options;
 
 static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *err)
@@ -90,6 +94,8 @@ static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *e
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 100, &o->repeat, err) : 0;
         } else if (tl_args_match(&a, "--time-only", NULL, false, err)) {
             o->time_only = 1;
+        } else if (tl_args_match(&a, "--passes", NULL, false, err)) {
+            o->passes = 1;
         } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
             o->shader_dir = a.value;
         } else if (tl_args_match(&a, "--csv", NULL, true, err)) {
@@ -267,26 +273,57 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/* The passes of the median frame by all passes together (the lower of
+ * the middle two), so that they add up: a median per pass would mix
+ * frames with and without a boat or a giant wave. pass[i][k]: frame k's
+ * time in pass i, pass[TL_BENCH_PASSES][k] its sum. */
+static int median_frame_passes(double *const *pass, int n, double *out)
+{
+    int pick = 0, below_target = (n - 1) / 2;
+    for (int k = 0; k < n; k++) {
+        int below = 0, equal_before = 0;
+        for (int j = 0; j < n; j++) {
+            below += pass[TL_BENCH_PASSES][j] < pass[TL_BENCH_PASSES][k];
+            equal_before += j < k && pass[TL_BENCH_PASSES][j] == pass[TL_BENCH_PASSES][k];
+        }
+        if (below + equal_before == below_target) {
+            pick = k;
+            break;
+        }
+    }
+    for (int i = 0; i <= TL_BENCH_PASSES; i++)
+        out[i] = pass[i][pick];
+    return pick;
+}
+
 /* Renders every shot `repeat` times with q, timing each part, and scores
  * the shot (every render of it is the same) against the reference. */
 static int measure(bench_state *s, const tl_quality *q, const char *name, int repeat,
                    tl_bench_row *row, tl_error *err)
 {
     int n = s->shot_count * repeat;
-    double *t[4];
-    for (int i = 0; i < 4; i++)
-        t[i] = calloc((size_t)n, sizeof(double));
+    /* total, render, readback, encode; then each kind of pass, all passes */
+    enum { PARTS = 4 + TL_BENCH_PASSES + 1 };
+    double *t[PARTS];
+    int rc = TL_OK;
+    for (int i = 0; i < PARTS; i++)
+        if (!(t[i] = calloc((size_t)n, sizeof(double))))
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     tl_frame frame = {0};
-    int rc = (!t[0] || !t[1] || !t[2] || !t[3]) ? tl_error_set(err, TL_ERR_RUNTIME, "out of memory")
-                                                : TL_OK;
+    int timed_passes = 1;
     double psnr_sum = 0.0, ssim_sum = 0.0;
     row->worst_psnr = TL_METRICS_PSNR_MAX + 1.0;
     char png[128];
     snprintf(png, sizeof png, "%s/frame.png", s->scratch);
     for (int k = 0, i0 = 0; !rc && k < s->shot_count; k++, i0 += repeat) {
-        /* The renders back to back, then the encodes: a GPU left idle
-         * while the CPU encodes lowers its clock (an H100 timed 16 ms a
-         * frame back to back and up to 77 ms with encodes in between). */
+        /* A render first, untimed: each preset compiles its own programs
+         * (octave counts are compiled in) and each shot its feature set,
+         * and the sky's tables follow the shot's sun. Then the renders back
+         * to back, then the encodes: a GPU left idle while the CPU encodes
+         * lowers its clock (an H100 timed 16 ms a frame back to back and up
+         * to 77 ms with encodes in between). */
+        progress(s, name, k, 0);
+        rc = render_shot(s, k, q, &frame, err);
         for (int r = 0; !rc && r < repeat; r++) {
             progress(s, name, k, r);
             rc = render_shot(s, k, q, &frame, err);
@@ -294,6 +331,12 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
             tl_render_last_timing(s->render, &render, &readback);
             t[1][i0 + r] = render * 1e3;
             t[2][i0 + r] = readback * 1e3;
+            double pass[TL_BENCH_PASSES];
+            timed_passes = tl_render_pass_seconds(s->render, pass) && timed_passes;
+            for (int i = 0; i < TL_BENCH_PASSES; i++) {
+                t[4 + i][i0 + r] = pass[i] * 1e3;
+                t[4 + TL_BENCH_PASSES][i0 + r] += pass[i] * 1e3;
+            }
         }
         for (int r = 0; !rc && r < repeat; r++) {
             double t0 = tl_clock_seconds();
@@ -323,11 +366,19 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
         row->ms_render = median(t[1], n);
         row->ms_readback = median(t[2], n);
         row->ms_encode = median(t[3], n);
+        row->has_passes = s->o->passes && timed_passes;
+        if (row->has_passes) {
+            int pick = median_frame_passes(t + 4, n, row->ms_pass);
+            const bench_shot *b = &s->shots[pick / repeat];
+            row->ms_pass_render = t[1][pick];
+            snprintf(row->pass_shot, sizeof row->pass_shot, "%s:%ld",
+                     base_name(s->o->timelines[b->timeline]), b->frame);
+        }
         row->psnr = s->o->time_only ? NAN : psnr_sum / s->shot_count;
         row->ssim = s->o->time_only ? NAN : ssim_sum / s->shot_count;
     }
     tl_frame_free(&frame);
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < PARTS; i++)
         free(t[i]);
     return rc;
 }
@@ -400,19 +451,13 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
                char names[][TL_BENCH_NAME], int preset_count, tl_error *err)
 {
     int rc = tl_render_open(&s->render, &s->lib, err);
+    if (!rc && s->o->passes)
+        tl_render_time_passes(s->render, 1);
     if (!rc && !mkdtemp(strcpy(s->scratch, "/tmp/tideline-bench-XXXXXX")))
         rc = tl_error_set(err, TL_ERR_RUNTIME, "cannot create a scratch folder in /tmp");
     if (!rc && !s->o->quiet)
         fprintf(stderr, "bench: %d frames at %dx%d on %s\n", s->shot_count, s->o->width,
                 s->o->height, tl_render_describe(s->render));
-    /* Warm-up: every shot once, so each feature set's program is compiled
-     * and every buffer allocated before anything is timed. */
-    tl_frame frame = {0};
-    for (int k = 0; !rc && k < s->shot_count; k++) {
-        progress(s, "warm-up", k, 0);
-        rc = render_shot(s, k, &presets[0], &frame, err);
-    }
-    tl_frame_free(&frame);
     int first = s->o->time_only ? 0 : 1; /* row 0: `reference`, when measured */
     if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
@@ -489,6 +534,8 @@ int tl_cli_bench(int argc, char **argv)
     if (!status) {
         tl_bench_mark_front(rows, row_count);
         tl_bench_print_table(stdout, rows, row_count);
+        if (o.passes)
+            tl_bench_print_passes(stdout, rows, row_count);
         if (o.csv && tl_bench_write_csv(o.csv, rows, row_count, o.width, o.height, s.shot_count,
                                         o.repeat, &err)) {
             tl_cli_print_error("bench", &err);

@@ -6,9 +6,11 @@
 #include <stdio.h>
 
 #include "core/tl_error.h"
+#include "render/tl_render.h"
 
 #define TL_BENCH_MAX_PRESETS 24
 #define TL_BENCH_NAME        96 /* a preset, or a variant "final:lod=off" */
+#define TL_BENCH_PASSES      TL_RENDER_PASSES
 
 typedef struct tl_bench_row {
     char preset[TL_BENCH_NAME];
@@ -21,6 +23,13 @@ typedef struct tl_bench_row {
     double worst_psnr;    /* the lowest PSNR of any frame, */
     char worst_shot[160]; /* and that frame: "voyage.tl:120" */
     int on_front;         /* no other preset is both faster and closer */
+    /* --passes: ms of each kind of pass (tl_render_pass_name), then
+     * of all of them, in the median frame by all of them; that frame's
+     * render time, and the frame */
+    int has_passes;
+    double ms_pass[TL_BENCH_PASSES + 1];
+    double ms_pass_render;
+    char pass_shot[160];
 } tl_bench_row;
 
 /* Marks the Pareto front among the non-reference rows: a row is on it when
@@ -29,6 +38,9 @@ typedef struct tl_bench_row {
 void tl_bench_mark_front(tl_bench_row *rows, int count);
 /* A Markdown table (it pastes into docs as it is). */
 void tl_bench_print_table(FILE *to, const tl_bench_row *rows, int count);
+/* A Markdown table of where each preset's GPU time goes (rows measured
+ * with --passes; the others are left out). */
+void tl_bench_print_passes(FILE *to, const tl_bench_row *rows, int count);
 /* One row per preset, with a header; written atomically. */
 int tl_bench_write_csv(const char *path, const tl_bench_row *rows, int count, int width, int height,
                        int frames, int repeat, tl_error *err);

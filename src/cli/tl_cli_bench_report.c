@@ -52,6 +52,26 @@ void tl_bench_print_table(FILE *to, const tl_bench_row *rows, int count)
     }
 }
 
+void tl_bench_print_passes(FILE *to, const tl_bench_row *rows, int count)
+{
+    fprintf(to, "\n| preset |");
+    for (int i = 0; i < TL_BENCH_PASSES; i++)
+        fprintf(to, " %s |", tl_render_pass_name(i));
+    fprintf(to, " all passes | render | frame |\n| --- |");
+    for (int i = 0; i <= TL_BENCH_PASSES + 1; i++)
+        fprintf(to, " ---: |");
+    fprintf(to, " --- |\n");
+    for (int k = 0; k < count; k++) {
+        const tl_bench_row *r = &rows[k];
+        if (!r->has_passes)
+            continue;
+        fprintf(to, "| %s |", r->preset);
+        for (int i = 0; i <= TL_BENCH_PASSES; i++)
+            fprintf(to, " %.1f |", r->ms_pass[i]);
+        fprintf(to, " %.1f | %s |\n", r->ms_pass_render, r->pass_shot);
+    }
+}
+
 int tl_bench_write_csv(const char *path, const tl_bench_row *rows, int count, int width, int height,
                        int frames, int repeat, tl_error *err)
 {

@@ -354,6 +354,7 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
     const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, sky);
+    tl_timers_begin_frame(&r->timers);
     return tl_renderer_check("frame setup", err);
 }
 
@@ -604,7 +605,9 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     if (!r->mesh.vao)
         features &= ~(unsigned)TL_FEATURE_BOAT;
     if (features & TL_FEATURE_BOAT) {
+        tl_timers_start(&r->timers, TL_TIMED_BOAT);
         int rc = draw_boat(r, u, err);
+        tl_timers_stop(&r->timers);
         if (rc)
             return rc;
     }
@@ -620,7 +623,9 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     if (tl_renderer_prepass_wanted(u, features)) {
         /* A later sample of the same pass (a per-sample boat pass, the
          * preview's refinement) starts from the prepass its first ran. */
+        tl_timers_start(&r->timers, TL_TIMED_PREPASS);
         rc = tl_renderer_prepass(r, u, features, rect, only > 0, err);
+        tl_timers_stop(&r->timers);
         if (rc)
             return rc;
         lean |= TL_PASS_HINTED;
@@ -640,6 +645,7 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     int n = tl_renderer_split(w, h, rect, bands, &has_rect);
     /* Above the horizon, outside the wave's rectangle, the sky alone. */
     const int sky = tl_renderer_sky_from(u, 1, h);
+    tl_timers_start(&r->timers, TL_TIMED_OCEAN);
     for (int part = 0; part < 2 && n && !rc; part++) {
         if (part == 1 && sky >= h)
             break;
@@ -658,13 +664,16 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            b[1] > sky ? b[1] : sky, b[2], b[3]);
         }
     }
+    tl_timers_stop(&r->timers);
     if (!rc && has_rect) {
+        tl_timers_start(&r->timers, TL_TIMED_GIANT);
         GLuint program = tl_renderer_use_ocean(r, u, features, err);
         if (!program)
             rc = err ? (int)err->status : TL_ERR_RUNTIME;
         else
             draw_ocean(program, u, samples_per_draw(u, features), weight, write_depth, only,
                        rect[0], rect[1], rect[2], rect[3]);
+        tl_timers_stop(&r->timers);
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -81,6 +81,29 @@ int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, t
  * waiting for the GPU to finish drawing). */
 double tl_renderer_last_readback(const tl_renderer *r);
 
+/* The kinds of pass tl_renderer_pass_seconds reports: the boat's hull and
+ * mirror image, the march prepass, the ocean outside and inside the giant
+ * wave's rectangle, the glare (its mip levels and its pass), the display
+ * pass (tonemap, upscale) and the pixel filter. */
+enum {
+    TL_TIMED_BOAT,
+    TL_TIMED_PREPASS,
+    TL_TIMED_OCEAN,
+    TL_TIMED_GIANT,
+    TL_TIMED_GLARE,
+    TL_TIMED_DISPLAY,
+    TL_TIMED_FILTER,
+    TL_TIMED_COUNT
+};
+/* Times each pass from the next frame on, fenced with glFinish on both
+ * sides (off by default: a GPU idles at the fences; only the bench asks). */
+void tl_renderer_time_passes(tl_renderer *r, int on);
+/* The seconds each kind of pass took in the last frame that
+ * tl_renderer_finish read back, summed over its draws. Returns 1 with
+ * them, 0 (and zeros) while timing is off or no frame has finished. */
+int tl_renderer_pass_seconds(const tl_renderer *r, double out[TL_TIMED_COUNT]);
+const char *tl_renderer_pass_name(int pass);
+
 /* The display pass alone (finish without the readback), then the display
  * image drawn into the current window's framebuffer of width x height,
  * letterboxed: the live preview. */

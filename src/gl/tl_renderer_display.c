@@ -187,7 +187,9 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     int w = r->display.width, h = r->display.height;
     const float bloom = d->bloom;
     if (bloom > 0.0f) {
+        tl_timers_start(&r->timers, TL_TIMED_GLARE);
         int rc = glare_pass(r, err);
+        tl_timers_stop(&r->timers);
         if (rc)
             return rc;
     }
@@ -216,12 +218,17 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
     glUniform1f(tl_renderer_loc(program, "u_exposure"), d->exposure);
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
+    tl_timers_start(&r->timers, TL_TIMED_DISPLAY);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    tl_timers_stop(&r->timers);
     int rc = tl_renderer_check("the display pass", err);
     /* The pixel filter, in output pixels (after any upscale). */
     r->display_filtered = 0;
-    if (!rc && d->pixel_filter > 0.0f)
+    if (!rc && d->pixel_filter > 0.0f) {
+        tl_timers_start(&r->timers, TL_TIMED_FILTER);
         rc = filter_pass(r, d->pixel_filter, err);
+        tl_timers_stop(&r->timers);
+    }
     return rc;
 }
 
@@ -263,6 +270,7 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
     /* Wait for the GPU here (the readback would anyway), so the time the
      * transfers take can be told from the time the drawing took. */
     glFinish();
+    tl_timers_collect(&r->timers);
     double t0 = tl_clock_seconds();
     /* Each plane is a transfer and a row flip: only the ones asked for.
      * All three come from the display pass, at the output size. */

@@ -37,6 +37,15 @@ typedef struct target {
     int mip_levels; /* levels past 0 allocated for tex[0] (the scene's, for the glare) */
 } target;
 
+/* The frame's passes, timed (tl_renderer_timers.c). */
+typedef struct pass_timers {
+    int on;         /* tl_renderer_time_passes */
+    int open;       /* the TL_TIMED_* pass being timed, -1 when none */
+    int valid;      /* seconds hold a whole frame (tl_renderer_finish collected them) */
+    double started; /* when the open pass started */
+    double seconds[TL_TIMED_COUNT];
+} pass_timers;
+
 /* The boat's mesh on the GPU: interleaved position, normal, colour. */
 typedef struct gpu_mesh {
     GLuint vao, vbo, ibo;
@@ -73,6 +82,7 @@ struct tl_renderer {
     GLuint sky_view;        /* the physical sky's sky-view table */
     gpu_mesh mesh;
     double readback_seconds; /* of the last tl_renderer_finish */
+    pass_timers timers;
 };
 
 /* An OpenGL error since the last check, as an error naming `what`. */
@@ -87,6 +97,14 @@ GLint tl_renderer_loc(GLuint p, const char *name);
 int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
                               const GLenum *formats, tl_error *err);
 void tl_renderer_target_free(target *t);
+
+/* Pass timing, no-ops while it is off: begin_frame empties the sums,
+ * start/stop time one pass of kind TL_TIMED_* (start stops a running one),
+ * collect ends the frame's timing. */
+void tl_timers_begin_frame(pass_timers *t);
+void tl_timers_start(pass_timers *t, int pass);
+void tl_timers_stop(pass_timers *t);
+void tl_timers_collect(pass_timers *t);
 
 /* The ocean program for `features` (frame features and TL_PASS_* bits),
  * bound, with the frame's uniforms uploaded. */

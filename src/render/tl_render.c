@@ -360,3 +360,20 @@ void tl_render_last_timing(const tl_render *r, double *render_seconds, double *r
     *render_seconds = r->render_seconds;
     *readback_seconds = r->readback_seconds;
 }
+
+_Static_assert(TL_RENDER_PASSES == TL_TIMED_COUNT, "tl_render.h's pass count is the renderer's");
+
+void tl_render_time_passes(tl_render *r, int on)
+{
+    tl_renderer_time_passes(r->renderer, on);
+}
+
+int tl_render_pass_seconds(const tl_render *r, double out[TL_RENDER_PASSES])
+{
+    return tl_renderer_pass_seconds(r->renderer, out);
+}
+
+const char *tl_render_pass_name(int pass)
+{
+    return tl_renderer_pass_name(pass);
+}

@@ -92,4 +92,16 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
  * drawing until the GPU finished (render), and reading the planes back. */
 void tl_render_last_timing(const tl_render *r, double *render_seconds, double *readback_seconds);
 
+/* The kinds of pass whose time tl_render_pass_seconds reports (the
+ * renderer's TL_TIMED_*: boat, prepass, ocean, giant wave, glare, display,
+ * filter; tl_render_pass_name names them). */
+#define TL_RENDER_PASSES 7
+/* Times each pass from the next frame on, fenced with glFinish (off by
+ * default; tideline bench --passes). */
+void tl_render_time_passes(tl_render *r, int on);
+/* The seconds of each kind of pass in the last frame read back; 1 with
+ * them, 0 (and zeros) while timing is off. */
+int tl_render_pass_seconds(const tl_render *r, double out[TL_RENDER_PASSES]);
+const char *tl_render_pass_name(int pass);
+
 #endif
