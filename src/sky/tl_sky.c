@@ -1,7 +1,9 @@
 #include "tl_sky.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <string.h>
+#include <unistd.h>
 
 #define PI 3.14159265358979323846
 
@@ -27,8 +29,7 @@ void tl_sky_atmosphere_of(const tl_scene *s, tl_atmosphere *a)
 }
 
 /* Scattering and extinction coefficients at height h above the ground. */
-static void medium(const tl_atmosphere *a, double h, double ray_s[3], double *mie_s,
-                   double ext[3])
+static void medium(const tl_atmosphere *a, double h, double ray_s[3], double *mie_s, double ext[3])
 {
     double dr = exp(-h / a->rayleigh_height), dm = exp(-h / a->mie_height);
     double dozone = fmax(0.0, 1.0 - fabs(h - a->ozone_center) / a->ozone_width);
@@ -86,17 +87,47 @@ static void transmittance_uv(const tl_atmosphere *a, double r, double mu, double
     *v = rho / H;
 }
 
-static void bilinear(const float *table, int w, int h, double u, double v, double out[3])
+/* x held in [0, hi], NaN to 0 (as fmin(fmax(x, 0), hi), which libm does
+ * not inline: it was a tenth of a sky-view table's time). */
+static double clamp_index(double x, double hi)
 {
-    double x = fmin(fmax(u * w - 0.5, 0.0), w - 1.0), y = fmin(fmax(v * h - 0.5, 0.0), h - 1.0);
-    int x0 = (int)x, y0 = (int)y;
-    int x1 = x0 + 1 < w ? x0 + 1 : x0, y1 = y0 + 1 < h ? y0 + 1 : y0;
-    double fx = x - x0, fy = y - y0;
+    x = x > 0.0 ? x : 0.0;
+    return x < hi ? x : hi;
+}
+
+/* Where v falls between a table's rows: computed once where many lookups
+ * share a row (the sky-view table's steps). */
+typedef struct lut_row {
+    int y0, y1;
+    double fy;
+} lut_row;
+
+static lut_row lut_row_at(int h, double v)
+{
+    double y = clamp_index(v * h - 0.5, h - 1.0);
+    lut_row r = {(int)y, 0, 0.0};
+    r.y1 = r.y0 + 1 < h ? r.y0 + 1 : r.y0;
+    r.fy = y - r.y0;
+    return r;
+}
+
+static void bilinear_row(const float *table, int w, const lut_row *row, double u, double out[3])
+{
+    double x = clamp_index(u * w - 0.5, w - 1.0);
+    int x0 = (int)x, x1 = x0 + 1 < w ? x0 + 1 : x0;
+    double fx = x - x0, fy = row->fy;
+    const float *r0 = table + row->y0 * w * 3, *r1 = table + row->y1 * w * 3;
     for (int c = 0; c < 3; c++) {
-        double a = table[(y0 * w + x0) * 3 + c], b = table[(y0 * w + x1) * 3 + c];
-        double d = table[(y1 * w + x0) * 3 + c], e = table[(y1 * w + x1) * 3 + c];
+        double a = r0[x0 * 3 + c], b = r0[x1 * 3 + c];
+        double d = r1[x0 * 3 + c], e = r1[x1 * 3 + c];
         out[c] = (a * (1 - fx) + b * fx) * (1 - fy) + (d * (1 - fx) + e * fx) * fy;
     }
+}
+
+static void bilinear(const float *table, int w, int h, double u, double v, double out[3])
+{
+    lut_row row = lut_row_at(h, v);
+    bilinear_row(table, w, &row, u, out);
 }
 
 static void lut_transmittance(const tl_sky_luts *l, double r, double mu, double out[3])
@@ -110,26 +141,74 @@ static void lut_transmittance(const tl_sky_luts *l, double r, double mu, double 
     bilinear(&l->transmittance[0][0][0], TL_SKY_TRANSMITTANCE_W, TL_SKY_TRANSMITTANCE_H, u, v, out);
 }
 
-static void build_transmittance(tl_sky_luts *l)
+/* ---- the tables' rows, over the machine's cores ---- */
+
+/* Every table's rows are independent, and the tables are built while the
+ * GPU waits for them: the sky-view table whenever the sun or the camera's
+ * height moves (every frame of most cutscenes), all three at the first
+ * frame and whenever the atmosphere changes. Rows go to one thread per
+ * core, interleaved (a table's costly rows lie together), and each row's
+ * result is the same whatever the number of threads. */
+#define SKY_MAX_THREADS 16
+
+typedef void (*row_fn)(void *ctx, int row);
+
+typedef struct row_job {
+    row_fn fn;
+    void *ctx;
+    int rows, first, stride;
+} row_job;
+
+static void *run_rows(void *arg)
 {
+    const row_job *job = arg;
+    for (int j = job->first; j < job->rows; j += job->stride)
+        job->fn(job->ctx, j);
+    return NULL;
+}
+
+static void parallel_rows(int rows, row_fn fn, void *ctx)
+{
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    int threads = cores < 1 ? 1 : cores > SKY_MAX_THREADS ? SKY_MAX_THREADS : (int)cores;
+    row_job jobs[SKY_MAX_THREADS];
+    pthread_t ids[SKY_MAX_THREADS];
+    int started[SKY_MAX_THREADS] = {0};
+    for (int k = 0; k < threads; k++) {
+        jobs[k] = (row_job){fn, ctx, rows, k, threads};
+        /* The calling thread takes job 0, and any whose thread could
+         * not start (below). */
+        if (k > 0)
+            started[k] = pthread_create(&ids[k], NULL, run_rows, &jobs[k]) == 0;
+    }
+    run_rows(&jobs[0]);
+    for (int k = 1; k < threads; k++) {
+        if (started[k])
+            pthread_join(ids[k], NULL);
+        else
+            run_rows(&jobs[k]);
+    }
+}
+
+static void transmittance_row(void *ctx, int j)
+{
+    tl_sky_luts *l = ctx;
     const tl_atmosphere *a = &l->atmosphere;
     double H = sqrt(a->top_radius * a->top_radius - a->ground_radius * a->ground_radius);
-    for (int j = 0; j < TL_SKY_TRANSMITTANCE_H; j++) {
-        double rho = H * (j + 0.5) / TL_SKY_TRANSMITTANCE_H;
-        double r = sqrt(rho * rho + a->ground_radius * a->ground_radius);
-        for (int i = 0; i < TL_SKY_TRANSMITTANCE_W; i++) {
-            double d_min = a->top_radius - r, d_max = rho + H;
-            double d = d_min + (i + 0.5) / TL_SKY_TRANSMITTANCE_W * (d_max - d_min);
-            double mu = d == 0.0 ? 1.0 : (H * H - rho * rho - d * d) / (2.0 * r * d);
-            mu = fmin(fmax(mu, -1.0), 1.0);
-            /* Just above the horizon: never the ground's shadow here. */
-            double t[3], disc = r * r * (mu * mu - 1.0) + a->ground_radius * a->ground_radius;
-            if (mu < 0.0 && disc >= 0.0)
-                mu = -sqrt(fmax(0.0, 1.0 - a->ground_radius * a->ground_radius / (r * r))) + 1e-9;
-            tl_sky_transmittance(a, r, mu, 64, t);
-            for (int c = 0; c < 3; c++)
-                l->transmittance[j][i][c] = (float)t[c];
-        }
+    double rho = H * (j + 0.5) / TL_SKY_TRANSMITTANCE_H;
+    double r = sqrt(rho * rho + a->ground_radius * a->ground_radius);
+    for (int i = 0; i < TL_SKY_TRANSMITTANCE_W; i++) {
+        double d_min = a->top_radius - r, d_max = rho + H;
+        double d = d_min + (i + 0.5) / TL_SKY_TRANSMITTANCE_W * (d_max - d_min);
+        double mu = d == 0.0 ? 1.0 : (H * H - rho * rho - d * d) / (2.0 * r * d);
+        mu = fmin(fmax(mu, -1.0), 1.0);
+        /* Just above the horizon: never the ground's shadow here. */
+        double t[3], disc = r * r * (mu * mu - 1.0) + a->ground_radius * a->ground_radius;
+        if (mu < 0.0 && disc >= 0.0)
+            mu = -sqrt(fmax(0.0, 1.0 - a->ground_radius * a->ground_radius / (r * r))) + 1e-9;
+        tl_sky_transmittance(a, r, mu, 64, t);
+        for (int c = 0; c < 3; c++)
+            l->transmittance[j][i][c] = (float)t[c];
     }
 }
 
@@ -161,73 +240,110 @@ static void add_ground(const tl_atmosphere *a, transmittance_fn tr, const void *
         L[c] += exp(-depth[c]) * ts[c] * fmax(mu_g, 0.0) * a->ground_albedo / PI;
 }
 
-/* psi_ms at radius r with the sun at cos-zenith mu_s: the second order of
- * scattering with an isotropic phase, over a sphere of directions, divided
- * by (1 - f_ms) for all orders beyond (a geometric series). */
-static void psi_ms(const tl_atmosphere *a, double r, double mu_s, transmittance_fn tr,
-                   const void *ctx, int dirs, int steps, double out[3])
+/* psi_ms at radius r (below): its rays over a sphere of directions and
+ * what they gather that does not depend on the sun, traced once for all
+ * the sun angles at that radius (a row of the table). */
+#define MS_MAX_DIRS  64
+#define MS_MAX_STEPS 24
+
+typedef struct ms_rays {
+    double r;
+    int dirs, steps;
+    struct {
+        double dir[3], dist, dt, depth[3]; /* depth: optical depth to its end */
+        int ground;                        /* it ends on the ground */
+    } ray[MS_MAX_DIRS];
+    struct {
+        double p[3], rp, lit[3]; /* the step's point; transmittance × scattering */
+    } step[MS_MAX_DIRS][MS_MAX_STEPS];
+    double f[3]; /* the share of light a scattering event passes on, summed */
+} ms_rays;
+
+static void ms_trace(const tl_atmosphere *a, double r, int dirs, int steps, ms_rays *m)
 {
-    const double iso = 1.0 / (4.0 * PI);
-    double L[3] = {0, 0, 0}, f[3] = {0, 0, 0};
-    double sun[3] = {sqrt(fmax(0.0, 1.0 - mu_s * mu_s)), mu_s, 0.0};
+    m->r = r;
+    m->dirs = dirs;
+    m->steps = steps;
+    m->f[0] = m->f[1] = m->f[2] = 0.0;
     for (int k = 0; k < dirs; k++) {
         /* Fibonacci sphere. */
         double y = 1.0 - 2.0 * (k + 0.5) / dirs, rad = sqrt(fmax(0.0, 1.0 - y * y));
         double phi = k * 2.399963229728653;
-        double dir[3] = {rad * cos(phi), y, rad * sin(phi)};
-        double mu = dir[1];
-        double ground = to_ground(a, r, mu);
-        double d = ground >= 0.0 ? ground : to_top(a, r, mu);
-        double depth[3] = {0, 0, 0};
-        double dt = d / steps;
+        double *dir = m->ray[k].dir, *depth = m->ray[k].depth;
+        dir[0] = rad * cos(phi);
+        dir[1] = y;
+        dir[2] = rad * sin(phi);
+        double ground = to_ground(a, r, y);
+        m->ray[k].ground = ground >= 0.0;
+        double d = ground >= 0.0 ? ground : to_top(a, r, y), dt = d / steps;
+        m->ray[k].dist = d;
+        m->ray[k].dt = dt;
+        depth[0] = depth[1] = depth[2] = 0.0;
         for (int i = 0; i < steps; i++) {
             double t = (i + 0.5) * dt;
-            double p[3] = {dir[0] * t, r + dir[1] * t, dir[2] * t};
+            double *p = m->step[k][i].p;
+            p[0] = dir[0] * t;
+            p[1] = r + dir[1] * t;
+            p[2] = dir[2] * t;
             double rp = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-            double rs[3], ms, ext[3], ts[3];
+            m->step[k][i].rp = rp;
+            double rs[3], ms, ext[3];
             medium(a, rp - a->ground_radius, rs, &ms, ext);
-            double mu_sp = (p[0] * sun[0] + p[1] * sun[1] + p[2] * sun[2]) / rp;
-            tr(ctx, rp, mu_sp, ts);
             for (int c = 0; c < 3; c++) {
                 double seg = exp(-(depth[c] + 0.5 * ext[c] * dt));
                 double scat = rs[c] + ms;
-                L[c] += seg * scat * ts[c] * iso * dt;
-                f[c] += seg * scat * dt;
+                m->step[k][i].lit[c] = seg * scat;
+                m->f[c] += seg * scat * dt;
                 depth[c] += ext[c] * dt;
             }
         }
-        if (ground >= 0.0)
-            add_ground(a, tr, ctx, dir, r, d, sun, depth, L);
+    }
+}
+
+/* psi_ms with the sun at cos-zenith mu_s: the second order of scattering
+ * with an isotropic phase, over the traced sphere of directions, divided by
+ * (1 - f_ms) for all orders beyond (a geometric series). */
+static void ms_sum(const tl_atmosphere *a, const ms_rays *m, double mu_s, transmittance_fn tr,
+                   const void *ctx, double out[3])
+{
+    const double iso = 1.0 / (4.0 * PI);
+    double L[3] = {0, 0, 0};
+    double sun[3] = {sqrt(fmax(0.0, 1.0 - mu_s * mu_s)), mu_s, 0.0};
+    for (int k = 0; k < m->dirs; k++) {
+        double dt = m->ray[k].dt;
+        for (int i = 0; i < m->steps; i++) {
+            const double *p = m->step[k][i].p, rp = m->step[k][i].rp;
+            double mu_sp = (p[0] * sun[0] + p[1] * sun[1] + p[2] * sun[2]) / rp, ts[3];
+            tr(ctx, rp, mu_sp, ts);
+            for (int c = 0; c < 3; c++)
+                L[c] += m->step[k][i].lit[c] * ts[c] * iso * dt;
+        }
+        if (m->ray[k].ground)
+            add_ground(a, tr, ctx, m->ray[k].dir, m->r, m->ray[k].dist, sun, m->ray[k].depth, L);
     }
     /* Both are means over the sphere of directions; f is the share of
      * light a scattering event passes on (< 1 in any real atmosphere). */
     for (int c = 0; c < 3; c++)
-        out[c] = L[c] / dirs / (1.0 - fmin(f[c] / dirs, 0.999));
+        out[c] = L[c] / m->dirs / (1.0 - fmin(m->f[c] / m->dirs, 0.999));
 }
 
-static void build_ms(tl_sky_luts *l)
+/* One row of the multiple-scattering table: psi_ms at one height for each
+ * sun angle, its rays traced once. */
+static void ms_row(void *ctx, int j)
 {
+    tl_sky_luts *l = ctx;
     const tl_atmosphere *a = &l->atmosphere;
-    for (int j = 0; j < TL_SKY_MS_SIZE; j++) {
-        /* v = sqrt(h / H): rows crowd near the ground, where it changes. */
-        double v = (j + 0.5) / TL_SKY_MS_SIZE;
-        double h = v * v * (a->top_radius - a->ground_radius);
-        for (int i = 0; i < TL_SKY_MS_SIZE; i++) {
-            /* mu_s = x·|x|: columns crowd where the sun sets, where it changes. */
-            double x = 2.0 * (i + 0.5) / TL_SKY_MS_SIZE - 1.0, mu_s = x * fabs(x), v[3];
-            psi_ms(a, a->ground_radius + h, mu_s, table_transmittance, l, 64, 20, v);
-            for (int c = 0; c < 3; c++)
-                l->ms[j][i][c] = (float)v[c];
-        }
+    /* v = sqrt(h / H): rows crowd near the ground, where it changes. */
+    double v = (j + 0.5) / TL_SKY_MS_SIZE;
+    ms_rays m;
+    ms_trace(a, a->ground_radius + v * v * (a->top_radius - a->ground_radius), 64, 20, &m);
+    for (int i = 0; i < TL_SKY_MS_SIZE; i++) {
+        /* mu_s = x·|x|: columns crowd where the sun sets, where it changes. */
+        double x = 2.0 * (i + 0.5) / TL_SKY_MS_SIZE - 1.0, out[3];
+        ms_sum(a, &m, x * fabs(x), table_transmittance, l, out);
+        for (int c = 0; c < 3; c++)
+            l->ms[j][i][c] = (float)out[c];
     }
-}
-
-static void lut_ms(const tl_sky_luts *l, double r, double mu_s, double out[3])
-{
-    const tl_atmosphere *a = &l->atmosphere;
-    double u = 0.5 + 0.5 * (mu_s < 0.0 ? -sqrt(-mu_s) : sqrt(mu_s));
-    double v = sqrt(fmax(r - a->ground_radius, 0.0) / (a->top_radius - a->ground_radius));
-    bilinear(&l->ms[0][0][0], TL_SKY_MS_SIZE, TL_SKY_MS_SIZE, u, v, out);
 }
 
 /* ---- radiance along a view ray ---- */
@@ -245,14 +361,11 @@ static double phase_mie(double c, double g) /* Cornette-Shanks */
 
 typedef void (*ms_fn)(const void *ctx, double r, double mu_s, double out[3]);
 
-static void table_ms(const void *ctx, double r, double mu_s, double out[3])
-{
-    lut_ms(ctx, r, mu_s, out);
-}
-
 static void direct_ms(const void *ctx, double r, double mu_s, double out[3])
 {
-    psi_ms(ctx, r, mu_s, direct_transmittance, ctx, 48, 24, out);
+    ms_rays m;
+    ms_trace(ctx, r, 48, 24, &m);
+    ms_sum(ctx, &m, mu_s, direct_transmittance, ctx, out);
 }
 
 /* Radiance toward the eye at radius r looking along (elevation, azimuth
@@ -313,25 +426,131 @@ static double camera_radius(const tl_atmosphere *a, double altitude)
     return a->ground_radius + fmin(fmax(altitude, 1.0), a->top_radius - a->ground_radius - 1.0);
 }
 
-static void build_view(tl_sky_luts *l, double sun_elevation, double altitude)
+/* One step of a sky-view row's rays: what is the same for every ray of
+ * the row. The row's rays share their elevation, so they pass the same
+ * heights at the same distances: the air there, the optical depth from
+ * the eye, and the lookups' coordinates that depend on the height alone.
+ * Only the sun's angle to each point differs with the azimuth. */
+typedef struct view_step {
+    double rp;             /* radius of the step's midpoint */
+    double dt;             /* the step's length */
+    double rs[3], msc;     /* Rayleigh and Mie scattering there */
+    double seg[3];         /* transmittance from the eye to the midpoint */
+    double sun_a, sun_b;   /* p·sun = sun_a + sun_b·cos(azimuth) */
+    double t_dmin, t_span; /* transmittance_uv's mapping at rp */
+    lut_row t_row;         /* and its row there */
+    lut_row ms_row;        /* the multiple-scattering table's row at rp (build_ms's v) */
+} view_step;
+
+#define VIEW_STEPS 40
+
+/* The sky-view table's row j (radiance() for each azimuth, with what the
+ * row's rays share computed once), its hemisphere sum into sum/weight. */
+static void build_view_row(tl_sky_luts *l, double r, double sun_elevation, int j, double sum[3],
+                           double *weight)
 {
     const tl_atmosphere *a = &l->atmosphere;
-    double r = camera_radius(a, altitude);
-    double sum[3] = {0, 0, 0}, weight = 0.0;
-    for (int j = 0; j < TL_SKY_VIEW_H; j++) {
-        double lat = view_latitude((j + 0.5) / TL_SKY_VIEW_H);
-        for (int i = 0; i < TL_SKY_VIEW_W; i++) {
-            double az = PI * (i + 0.5) / TL_SKY_VIEW_W, L[3];
-            radiance(a, table_transmittance, table_ms, l, r, sun_elevation, lat, az, 40, L);
-            for (int c = 0; c < 3; c++)
-                l->view[j][i][c] = (float)L[c];
-            if (lat > 0.0) { /* cosine-free mean over the hemisphere's solid angle */
-                double w = cos(lat);
-                for (int c = 0; c < 3; c++)
-                    sum[c] += w * L[c];
-                weight += w;
+    const double lat = view_latitude((j + 0.5) / TL_SKY_VIEW_H);
+    const double mu = sin(lat), cos_lat = cos(lat);
+    const double sin_s = sin(sun_elevation), cos_s = cos(sun_elevation);
+    const double ground = to_ground(a, r, mu);
+    const double d = ground >= 0.0 ? ground : to_top(a, r, mu);
+    const double H = sqrt(a->top_radius * a->top_radius - a->ground_radius * a->ground_radius);
+    view_step st[VIEW_STEPS];
+    double depth[3] = {0, 0, 0}, prev = 0.0;
+    for (int i = 0; i < VIEW_STEPS; i++) {
+        /* Denser near the eye, where the air is densest along the ray. */
+        double x = (i + 1.0) / VIEW_STEPS, t1 = d * x * x, dt = t1 - prev;
+        double t = prev + 0.5 * dt;
+        prev = t1;
+        view_step *k = &st[i];
+        double along = r + mu * t, flat = cos_lat * t;
+        k->rp = sqrt(flat * flat + along * along);
+        k->dt = dt;
+        double ext[3];
+        medium(a, k->rp - a->ground_radius, k->rs, &k->msc, ext);
+        for (int c = 0; c < 3; c++) {
+            k->seg[c] = exp(-(depth[c] + 0.5 * ext[c] * dt));
+            depth[c] += ext[c] * dt;
+        }
+        k->sun_a = along * sin_s;
+        k->sun_b = flat * cos_s;
+        double rho = sqrt(fmax(k->rp * k->rp - a->ground_radius * a->ground_radius, 0.0));
+        k->t_dmin = a->top_radius - k->rp;
+        k->t_span = rho + H - k->t_dmin;
+        k->t_row = lut_row_at(TL_SKY_TRANSMITTANCE_H, rho / H);
+        k->ms_row = lut_row_at(TL_SKY_MS_SIZE, sqrt(fmax(k->rp - a->ground_radius, 0.0) /
+                                                    (a->top_radius - a->ground_radius)));
+    }
+    const double top2 = a->top_radius * a->top_radius,
+                 ground2 = a->ground_radius * a->ground_radius;
+    for (int i = 0; i < TL_SKY_VIEW_W; i++) {
+        double az = PI * (i + 0.5) / TL_SKY_VIEW_W, cos_az = cos(az);
+        double dir[3] = {cos_lat * sin(az), mu, cos_lat * cos_az};
+        double sun[3] = {0.0, sin_s, cos_s};
+        double cos_sun = mu * sin_s + cos_lat * cos_az * cos_s;
+        double pr = phase_rayleigh(cos_sun), pm = phase_mie(cos_sun, a->mie_g);
+        double L[3] = {0, 0, 0};
+        for (int n = 0; n < VIEW_STEPS; n++) {
+            const view_step *k = &st[n];
+            double mu_s = (k->sun_a + k->sun_b * cos_az) / k->rp;
+            double ts[3] = {0, 0, 0}, psi[3];
+            /* lut_transmittance: none where the sun is behind the planet;
+             * then its table at transmittance_uv's u */
+            double r2 = k->rp * k->rp;
+            if (!(mu_s < 0.0 && r2 * (mu_s * mu_s - 1.0) + ground2 >= 0.0)) {
+                double to =
+                    fmax(0.0, -k->rp * mu_s + sqrt(fmax(r2 * (mu_s * mu_s - 1.0) + top2, 0.0)));
+                double u = k->t_span > 0.0 ? (to - k->t_dmin) / k->t_span : 0.0;
+                bilinear_row(&l->transmittance[0][0][0], TL_SKY_TRANSMITTANCE_W, &k->t_row, u, ts);
+            }
+            /* the multiple-scattering table at build_ms's u */
+            double mu_u = 0.5 + 0.5 * (mu_s < 0.0 ? -sqrt(-mu_s) : sqrt(mu_s));
+            bilinear_row(&l->ms[0][0][0], TL_SKY_MS_SIZE, &k->ms_row, mu_u, psi);
+            for (int c = 0; c < 3; c++) {
+                double source =
+                    (k->rs[c] * pr + k->msc * pm) * ts[c] + (k->rs[c] + k->msc) * psi[c];
+                L[c] += k->seg[c] * source * k->dt;
             }
         }
+        if (ground >= 0.0)
+            add_ground(a, table_transmittance, l, dir, r, d, sun, depth, L);
+        for (int c = 0; c < 3; c++)
+            l->view[j][i][c] = (float)L[c];
+        if (lat > 0.0) { /* cosine-free mean over the hemisphere's solid angle */
+            double w = cos(lat);
+            for (int c = 0; c < 3; c++)
+                sum[c] += w * L[c];
+            *weight += w;
+        }
+    }
+}
+
+/* A sky-view build: each row keeps its own hemisphere sum, added up in
+ * row order afterwards, so the mean is the same whatever the threads. */
+typedef struct view_build {
+    tl_sky_luts *l;
+    double r, sun_elevation;
+    double sum[TL_SKY_VIEW_H][4]; /* per row: R, G, B, weight */
+} view_build;
+
+static void view_row(void *ctx, int j)
+{
+    view_build *b = ctx;
+    double *row = b->sum[j];
+    row[0] = row[1] = row[2] = row[3] = 0.0;
+    build_view_row(b->l, b->r, b->sun_elevation, j, row, &row[3]);
+}
+
+static void build_view(tl_sky_luts *l, double sun_elevation, double altitude)
+{
+    view_build b = {l, camera_radius(&l->atmosphere, altitude), sun_elevation, {{0}}};
+    parallel_rows(TL_SKY_VIEW_H, view_row, &b);
+    double sum[3] = {0, 0, 0}, weight = 0.0;
+    for (int j = 0; j < TL_SKY_VIEW_H; j++) {
+        for (int c = 0; c < 3; c++)
+            sum[c] += b.sum[j][c];
+        weight += b.sum[j][3];
     }
     for (int c = 0; c < 3; c++)
         l->ambient[c] = weight > 0.0 ? sum[c] / weight : 0.0;
@@ -345,13 +564,12 @@ void tl_sky_luts_update(tl_sky_luts *l, const tl_atmosphere *a, double sun_eleva
 {
     if (!l->valid || memcmp(&l->atmosphere, a, sizeof *a) != 0) {
         l->atmosphere = *a;
-        build_transmittance(l);
-        build_ms(l);
+        parallel_rows(TL_SKY_TRANSMITTANCE_H, transmittance_row, l);
+        parallel_rows(TL_SKY_MS_SIZE, ms_row, l); /* reads the transmittance table */
         l->valid = 1;
         l->view_valid = 0;
     }
-    if (!l->view_valid || l->view_sun_elevation != sun_elevation ||
-        l->view_altitude != altitude)
+    if (!l->view_valid || l->view_sun_elevation != sun_elevation || l->view_altitude != altitude)
         build_view(l, sun_elevation, altitude);
 }
 
