@@ -1,12 +1,15 @@
-// Glare (render.bloom), at half the output's resolution: the scene's
-// light over its mip levels 1 to 6 (box averages, each read through a
-// cubic B-spline of its texels: the box-filtered chain alone shows its
-// blocks around a bright sun, and a tent of bilinear reads, only
-// continuous, still showed the coarsest level's square as a lit box on the
-// dark face under a sun behind the giant wave). The finest level is two pixels wide, so
-// half resolution holds it; the display pass reads this image bilinearly.
-// Here, not in the display pass: its taps per pixel cost a quarter as
-// much at a quarter of the pixels.
+// Glare (render.bloom), at a quarter of the output's resolution
+// (TL_GLARE_DIVISOR): the scene's light over its mip levels 1 to 6 (box
+// averages, each read through a cubic B-spline of its texels: the
+// box-filtered chain alone shows its blocks around a bright sun, and a
+// tent of bilinear reads, only continuous, still showed the coarsest
+// level's square as a lit box on the dark face under a sun behind the
+// giant wave). Even the finest level's B-spline, two output pixels a
+// texel and smooth, is as good as whole at a quarter of the resolution
+// once the display pass reads this image bilinearly: 61 dB from the image
+// at half resolution, and the same PSNR against `reference`, for 3-4 ms
+// less a 640x360 frame on llvmpipe. Here, not in the display pass: its
+// taps per pixel cost a sixteenth as much at a sixteenth of the pixels.
 
 uniform sampler2D u_hdr;   // the scene's radiance (radiance.glsl), with its mip chain
 uniform vec2 u_glare_size; // this pass's pixels

@@ -1,10 +1,11 @@
 /* Glare (render.bloom) against a CPU model of its definition: the scene's
  * colour plane (which never carries glare) is box-filtered into mip levels
  * 1..6 (each texel the mean of the 2x2 under it), each level read through a cubic B-spline of its
- * texels; the GPU evaluates that at half the output's resolution and the display pass reads it
- * bilinearly, then mixes it in and tonemaps. The frame's display plane must match the model of that
- * within a few 8-bit levels, and the model of the half-resolution image must stay close to the
- * definition evaluated at every output pixel (what glare was before it moved to its own pass). */
+ * texels; the GPU evaluates that at 1 / TL_GLARE_DIVISOR of the output's resolution and the
+ * display pass reads it bilinearly, then mixes it in and tonemaps. The frame's display plane must
+ * match the model of that within a few 8-bit levels, and the model of the smaller image must stay
+ * close to the definition evaluated at every output pixel (what glare was before it moved to its
+ * own pass). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -153,13 +154,14 @@ int main(void)
         return 1;
     build_mips(f.color);
 
-    /* The half-resolution image at its pixel centres, as the GPU makes it
-     * (bottom row first). */
-    const int gw = W / 2, gh = H / 2;
-    image half = {gw, gh, calloc((size_t)gw * gh * 3, sizeof(double))};
+    /* The glare image at its pixel centres, as the GPU makes it (bottom
+     * row first; the renderer's size, rounded up). */
+    const int gw = (W + TL_GLARE_DIVISOR - 1) / TL_GLARE_DIVISOR;
+    const int gh = (H + TL_GLARE_DIVISOR - 1) / TL_GLARE_DIVISOR;
+    image small = {gw, gh, calloc((size_t)gw * gh * 3, sizeof(double))};
     for (int y = 0; y < gh; y++)
         for (int x = 0; x < gw; x++)
-            glare_at((x + 0.5) / gw, (y + 0.5) / gh, half.rgb + (y * gw + x) * 3);
+            glare_at((x + 0.5) / gw, (y + 0.5) / gh, small.rgb + (y * gw + x) * 3);
 
     double worst = 0.0, sum = 0.0, approx_sq = 0.0, spread = 0.0;
     for (int y = 0; y < H; y++)
@@ -169,7 +171,7 @@ int main(void)
             double u_ = (x + 0.5) / W, v_ = 1.0 - (y + 0.5) / H;
             const float *hdr_px = f.color + ((size_t)y * W + x) * 4;
             double g[3], exact[3], mixed[3], mixed_exact[3], want[3], want_exact[3];
-            bilinear(&half, u_, v_, g);
+            bilinear(&small, u_, v_, g);
             glare_at(u_, v_, exact);
             for (int k = 0; k < 3; k++) {
                 mixed[k] = hdr_px[k] + s.bloom * (g[k] - hdr_px[k]);
@@ -193,14 +195,15 @@ int main(void)
     double mean = sum / (3.0 * W * H);
     double approx_psnr = 10.0 * log10(255.0 * 255.0 / fmax(approx_sq / (3.0 * W * H), 1e-12));
     printf("display against the model: worst %.2f levels, mean %.3f levels\n", worst, mean);
-    printf("half-resolution glare against the full-resolution definition: %.1f dB\n", approx_psnr);
+    printf("glare at 1/%d resolution against the full-resolution definition: %.1f dB\n",
+           TL_GLARE_DIVISOR, approx_psnr);
     printf("glare light in the top rows: %.4g\n", spread);
     CHECK(worst <= 3.0);
     CHECK(mean <= 0.3);
     CHECK(approx_psnr >= 45.0);
     CHECK(spread > 0.0);
     tl_frame_free(&f);
-    free(half.rgb);
+    free(small.rgb);
 
     /* The same frame rendered at half the output's size (draft's
      * render_scale) glares as far: the glare reads the half-size scene's

@@ -81,6 +81,10 @@ int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, t
  * waiting for the GPU to finish drawing). */
 double tl_renderer_last_readback(const tl_renderer *r);
 
+/* The glare image (render.bloom) is this many times smaller than the
+ * output on each side (rounded up), read back bilinearly. */
+#define TL_GLARE_DIVISOR 4
+
 /* The kinds of pass tl_renderer_pass_seconds reports: the boat's hull and
  * mirror image, the march prepass, the ocean outside and inside the giant
  * wave's rectangle, the glare (its mip levels and its pass), the display

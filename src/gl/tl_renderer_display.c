@@ -113,11 +113,12 @@ static int mip_chain(tl_renderer *r, tl_error *err)
     return tl_renderer_check("the glare's mip levels", err);
 }
 
-/* The glare image at half the output size (shaders/glare.frag), read
- * bilinearly by the display pass; from the scene's mip chain. */
+/* The glare image at a quarter of the output size (shaders/glare.frag),
+ * read bilinearly by the display pass; from the scene's mip chain. */
 static int glare_pass(tl_renderer *r, tl_error *err)
 {
-    int w = (r->display.width + 1) / 2, h = (r->display.height + 1) / 2;
+    const int d = TL_GLARE_DIVISOR;
+    int w = (r->display.width + d - 1) / d, h = (r->display.height + d - 1) / d;
     int rc = ensure_pass(r, &r->glare, w, h, &r->glare_program, "glare.frag", err);
     if (rc)
         return rc;

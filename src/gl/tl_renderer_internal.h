@@ -71,7 +71,7 @@ struct tl_renderer {
     /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
      * render size (tl_renderer_prepass.c). */
     target hint[TL_PREPASS_LEVELS];
-    target glare;   /* glare RGBA32F at half the output size (render.bloom) */
+    target glare; /* glare RGBA32F at 1 / TL_GLARE_DIVISOR of the output size (render.bloom) */
     GLuint glare_program;
     GLuint mip_program; /* the scene's mip levels (mip.frag) */
     GLuint mip_fbo;     /* one level of the scene's colour at a time */
