@@ -40,9 +40,11 @@ float foam_lace(vec2 p)
 // Foam over the water's colour: a white diffuse layer lit by the sky's
 // hemisphere and the sun, with a wrapped term for light through the foam.
 // Thin foam (thickness near 0) lets the water through and looks greyer.
-vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness)
+// `sunlit`: the share of the sun that reaches it (0 in the giant wave's
+// shadow, where the wrapped term lit foam on a dark face).
+vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness, float sunlit)
 {
-    vec3 sun = sky_sun_light() * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
+    vec3 sun = sky_sun_light() * sunlit * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
     return mix(color, albedo * (sky_ambient() + sun), foam);
 }

@@ -89,6 +89,16 @@ vec2 giant_coords(vec2 p)
     return u_giant_frame.zw + vec2(dot(d, p), dot(vec2(d.y, -d.x), p));
 }
 
+// The fade times the width mask at w across, and its derivative in *dl.
+float giant_lambda(float w, out float dl)
+{
+    float ds;
+    float fw = u_giant_mask.w;
+    float mask = 1.0 - giant_smooth((abs(w) - (u_giant_mask.z - fw)) / fw, ds);
+    dl = -u_giant_bounds.w * ds / fw * (w < 0.0 ? -1.0 : 1.0);
+    return u_giant_bounds.w * mask;
+}
+
 GiantSample giant_sample(vec2 p)
 {
     GiantSample g = GiantSample(0.0, vec2(0.0), 0.0, 0.0, 0.0, 1.0, 0.0);
@@ -97,11 +107,8 @@ GiantSample giant_sample(vec2 p)
     g.w = sw.y;
     if (abs(sw.x) >= u_giant_bounds.x || abs(sw.y) >= u_giant_mask.z)
         return g;
-    float ds;
-    float fw = u_giant_mask.w;
-    float mask = 1.0 - giant_smooth((abs(sw.y) - (u_giant_mask.z - fw)) / fw, ds);
-    float lambda = u_giant_bounds.w * mask;
-    float dlambda = -u_giant_bounds.w * ds / fw * (sw.y < 0.0 ? -1.0 : 1.0);
+    float dlambda;
+    float lambda = giant_lambda(sw.y, dlambda);
     float s0 = giant_invert(sw.x, lambda);
     vec4 pr = giant_profile(s0);
     // Guard: the CPU's clamps keep J >= 0.1 on the scanned profile.
@@ -122,6 +129,36 @@ GiantSample giant_sample(vec2 p)
 float giant_height(vec2 p)
 {
     return giant_sample(p).height;
+}
+
+// How much of the sun a point of the water at camera-relative p and
+// height y sees past the wave's crest: 0 in its shadow, 1 in the open.
+// The crest is the line across the travel where s0 = 0: at s = lambda·C/k
+// (the curl's push, D(0) = C/k) and lambda·A high. The ray toward the sun
+// is followed to that line, lambda taken where it crosses it; the shadow's
+// edge is soft over a penumbra that widens with the distance (the sun's
+// half degree, and a rounded crest). Light through the crest
+// (giant_scatter) is not shadowed: it is the light that came through.
+float giant_sunlit(vec2 p, float y)
+{
+    vec3 sun = u_sun_dir;
+    float flat_len = length(sun.xz);
+    vec2 d = u_giant_frame.xy;
+    float along = flat_len > 1.0e-4 ? dot(d, sun.xz) / flat_len : 0.0;
+    float across = flat_len > 1.0e-4 ? dot(vec2(d.y, -d.x), sun.xz) / flat_len : 0.0;
+    if (sun.y <= 0.0 || abs(along) < 1.0e-4)
+        return 1.0; // no light to shadow, or a crest in line with the sun
+    vec2 sw = giant_coords(p);
+    float k = u_giant_shape.x, A = u_giant_shape.y, C = u_giant_shape.w, dl;
+    float crest = giant_lambda(sw.y, dl) * C / k;
+    float dist = (crest - sw.x) / along; // metres toward the sun to the crest line
+    if (dist <= 0.0)
+        return 1.0; // the sun's side of the crest
+    float w = sw.y + dist * across;
+    float crest_height = abs(w) < u_giant_mask.z ? giant_lambda(w, dl) * A : 0.0;
+    float ray_height = y + dist * sun.y / flat_len;
+    float soft = 0.3 + 0.01 * dist + 0.08 * crest_height;
+    return smoothstep(-soft, soft, ray_height - crest_height);
 }
 
 // Bound on the wave's slope for s within `radius` of `s`.
@@ -261,11 +298,15 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
 
 // Foam and light through the crest over the water's colour.
 // `footprint`: the water a pixel covers there, metres (0: no level of
-// detail).
-vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value, float footprint)
+// detail); `sunlit`: the share of the sun the foam sees (giant_sunlit).
+vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value, float footprint,
+                 float sunlit)
 {
     float thickness;
     float foam = giant_foam(g, ocean_value, footprint, thickness);
     color += giant_scatter(g, ray) * (1.0 - foam);
-    return foam_shade(color, n, foam, thickness);
+    // The lip is thin: whitewater on the top fifth of the crest still sees
+    // the sun through it when the face below is in the crest's shadow.
+    float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    return foam_shade(color, n, foam, thickness, max(sunlit, smoothstep(0.8, 1.0, top)));
 }

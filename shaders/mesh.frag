@@ -10,6 +10,7 @@ in vec3 v_normal;
 in vec3 v_color;
 
 uniform vec3 u_eye; // the camera (the origin), or its mirror image for the reflection
+uniform float u_sunlit; // the share of the sun the hull sees past the giant wave's crest
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
@@ -21,7 +22,7 @@ void main()
     // Two-sided: models may be open or wound either way.
     if (dot(n, view) > 0.0)
         n = -n;
-    vec3 sun = sky_sun_light();
+    vec3 sun = sky_sun_light() * u_sunlit;
     float lambert = max(dot(n, u_sun_dir), 0.0);
     // The sky lights what faces up more than what faces down.
     vec3 ambient = sky_ambient() * (0.6 + 0.4 * n.y);

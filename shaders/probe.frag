@@ -11,6 +11,9 @@
 //   mode 6: the surface's slope d height / d (x, z) at camera-relative
 //           (x, z) as the analytic normal sees it (the ocean's carried
 //           gradient plus the giant wave's) in .xy, that path's height in .z
+//   mode 7: the share of the sun the water at camera-relative (x, z) sees
+//           past the giant wave's crest, at the surface's height there
+//           (tl_giant_sunlit)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -65,6 +68,10 @@ void main()
         result.xyz += vec3(g.grad, g.height);
 #endif
     }
+#ifdef TL_FEATURE_GIANT_WAVE
+    else if (u_probe_mode == 7)
+        result.x = giant_sunlit(p, surface_height(p, u_probe_octaves, 0.0));
+#endif
 #ifdef TL_FEATURE_FOG
     else if (u_probe_mode == 3)
         result.x = exp(-optics_fog_depth(u_cam_height, p.y, p.x));

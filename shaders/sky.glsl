@@ -52,10 +52,12 @@ vec3 sky_color(vec3 dir)
 
 // The sky the water mirrors: the sun's disc widened to 1.5 deg at least, so
 // its glitter on the waves is a few pixels, not single flickering ones (the
-// same light, spread; a documented anti-aliasing clamp).
-vec3 sky_reflected(vec3 dir)
+// same light, spread; a documented anti-aliasing clamp). `sunlit`: the
+// share of the sun that reaches the water there (the giant wave's shadow).
+vec3 sky_reflected(vec3 dir, float sunlit)
 {
-    return sky_atmosphere(dir, u_sun_dir) + sky_disc(dir, min(u_sun_cos_radius, 0.99966));
+    return sky_atmosphere(dir, u_sun_dir) +
+           sunlit * sky_disc(dir, min(u_sun_cos_radius, 0.99966));
 }
 
 // The sun's light on a surface facing it.
@@ -106,9 +108,9 @@ vec3 sky_color(vec3 dir)
     return sky_atmosphere(dir, u_sun_dir) + vec3(sky_sun(dir));
 }
 
-vec3 sky_reflected(vec3 dir)
+vec3 sky_reflected(vec3 dir, float sunlit)
 {
-    return sky_color(dir);
+    return sky_atmosphere(dir, u_sun_dir) + vec3(sunlit * sky_sun(dir));
 }
 
 // Irradiance on a surface facing the sun: the integral of the sun lobe

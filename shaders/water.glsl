@@ -41,8 +41,8 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value, out float s
 // axis). Three normals whose slopes sit on a circle of radius
 // sqrt(2·slope_var) around n's match that spread's mean and variance.
 // *fresnel gets the mean Fresnel factor; the result is the reflection it
-// weights.
-vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, out float fresnel)
+// weights. `sunlit`: the share of the sun that reaches the water there.
+vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out float fresnel)
 {
 #ifdef TL_FEATURE_FILTERED_SHADING
     float radius = sqrt(2.0 * slope_var);
@@ -57,7 +57,7 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, out float fresnel)
         float fk = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-nk, ray)), 5.0);
         vec3 r = normalize(reflect(ray, nk));
         r.y = abs(r.y); // reflections never look into the water
-        sum += fk * sky_reflected(r);
+        sum += fk * sky_reflected(r, sunlit);
         fresnel_sum += fk;
     }
     fresnel = fresnel_sum / 3.0;
@@ -66,7 +66,7 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, out float fresnel)
     fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
-    return sky_reflected(r);
+    return sky_reflected(r, sunlit);
 #endif
 }
 
@@ -86,7 +86,9 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // The blend flattens the left-out slopes as it flattens the normal.
     slope_var *= (1.0 - smoothing) * (1.0 - smoothing);
     float ocean_y = hit.y; // height of the ocean's own waves at the hit
+    float sunlit = 1.0;    // the share of the sun that reaches the hit
 #ifdef TL_FEATURE_GIANT_WAVE
+    sunlit = giant_sunlit(hit.xz, hit.y);
     // The giant wave is large against a pixel: its slope is added unsmoothed
     // (slopes of summed height fields add).
     GiantSample giant = giant_sample(hit.xz);
@@ -96,7 +98,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #endif
 
     float fresnel;
-    vec3 reflection = water_sky_reflection(ray, n, slope_var, fresnel);
+    vec3 reflection = water_sky_reflection(ray, n, slope_var, sunlit, fresnel);
 #ifdef TL_FEATURE_FOG
     // The sky the water mirrors is seen through the fog above it too.
     vec3 r = normalize(reflect(ray, n));
@@ -116,14 +118,15 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // Light scattered out of the water is light that went in: scale by the
     // irradiance on the surface (sun + sky), 1 for the default sun at 10 deg
     // so the water keeps the seed's look there, dark in the blue hour.
-    scattering *= (sky_sun_light() * max(u_sun_dir.y, 0.0) + 3.1415927 * sky_ambient()) / 1.4;
+    scattering *=
+        (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + 3.1415927 * sky_ambient()) / 1.4;
 #endif
     vec3 color = fresnel * reflection + scattering;
 #ifdef TL_FEATURE_GIANT_WAVE
     // The water a pixel covers (0 without level of detail), more as the
     // view grazes the surface: the trail foam's veins stay a pixel wide.
     color = giant_shade(color, ray, n, giant, value,
-                        dist * u_lod_angle / max(abs(dot(ray, n)), 0.2));
+                        dist * u_lod_angle / max(abs(dot(ray, n)), 0.2), sunlit);
 #endif
 #ifdef TL_FEATURE_WAKE
     float thickness;
@@ -132,7 +135,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // The giant wave sweeps the wake away: none on its face.
     wake *= 1.0 - smoothstep(1.0, 4.0, abs(giant.height));
 #endif
-    color = foam_shade(color, n, wake, thickness);
+    color = foam_shade(color, n, wake, thickness, sunlit);
 #endif
     return color;
 }

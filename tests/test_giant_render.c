@@ -631,6 +631,80 @@ static void test_rising_rays(tl_renderer *r)
     CHECK(u.giant_rise[0] <= -reach + 1e-3 && u.giant_rise[1] >= reach - 1e-3);
 }
 
+/* The crest's shadow (giant_sunlit, probe mode 7) against its double
+ * mirror along the wave's centre line, and what it must be: with a low sun
+ * behind a 20 m wave, the water in front of the crest is in its shadow out
+ * to about height / tan(elevation) and in the sun beyond, and behind the
+ * crest it is in the sun; with the sun in front of the wave the back near
+ * the crest is in the shadow and the front in the sun; with the sun set,
+ * nothing is shadowed (there is no sunlight to take away). */
+static void test_sun_shadow(tl_renderer *r)
+{
+    const double cam[3] = {3.0, 6.0, -4.0}, elevation = 8.0 * M_PI / 180.0;
+    const double azimuths[2] = {0.3 + M_PI, 0.3}; /* behind the wave, in front of it */
+    enum { N = 64 };
+    for (int k = 0; k < 3; k++) {
+        tl_scene s;
+        wave_scene(&s, 20.0, 10.0, cam);
+        s.giant.fade = 1.0;
+        s.sun.azimuth = azimuths[k == 1];
+        s.sun.elevation = k == 2 ? -3.0 * M_PI / 180.0 : elevation;
+        tl_waves w;
+        tl_waves_init(&w, &s.ocean);
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &w, &u);
+        double sun[3];
+        tl_scene_sun_direction(&s.sun, sun);
+        double crest = g.fade * g.curl / g.k; /* s of the crest line on the centre line */
+        double reach = 20.0 / tan(elevation);
+        /* s from 60 m behind the crest to 2.5 shadow lengths in front */
+        float xz[2 * N], gpu[4 * N];
+        double at[N];
+        for (int i = 0; i < N; i++) {
+            at[i] = crest - 60.0 + (60.0 + 2.5 * reach) * i / (N - 1);
+            xz[2 * i] = (float)(g.origin[0] + g.dir[0] * at[i] - cam[0]);
+            xz[2 * i + 1] = (float)(g.origin[1] + g.dir[1] * at[i] - cam[2]);
+        }
+        tl_error err;
+        tl_error_clear(&err);
+        CHECK(tl_renderer_probe(r, &u, 7, xz, N, s.quality.march_octaves, gpu, &err) == 0);
+        /* the least and most sun seen in front of the crest (5 m to half
+         * the shadow's length), and behind it (5 to 40 m) */
+        double worst = 0.0, front_min = 1.0, front_max = 0.0, back_min = 1.0, back_max = 0.0;
+        double front_far = 0.0;
+        for (int i = 0; i < N; i++) {
+            double x = cam[0] + (double)xz[2 * i], z = cam[2] + (double)xz[2 * i + 1];
+            double y = tl_waves_surface_height(&w, &g, x, z, s.time, s.quality.march_octaves,
+                                               s.quality.giant_iterations);
+            double cpu = tl_giant_sunlit(&g, x, z, y, sun);
+            worst = fmax(worst, fabs(cpu - gpu[4 * i]));
+            double ahead = at[i] - crest, lit = gpu[4 * i];
+            if (ahead > 5.0 && ahead < 0.5 * reach) {
+                front_min = fmin(front_min, lit);
+                front_max = fmax(front_max, lit);
+            }
+            if (ahead < -5.0 && ahead > -40.0) {
+                back_min = fmin(back_min, lit);
+                back_max = fmax(back_max, lit);
+            }
+            if (ahead > 1.5 * reach)
+                front_far = fmax(front_far, 1.0 - lit);
+        }
+        printf("sun shadow, sun %s: |gpu-cpu| <= %.4f; sun seen in front %.3f..%.3f, behind "
+               "%.3f..%.3f, beyond 1.5 shadow lengths >= %.3f\n",
+               k == 0   ? "behind the wave"
+               : k == 1 ? "in front of it"
+                        : "set",
+               worst, front_min, front_max, back_min, back_max, 1.0 - front_far);
+        CHECK(worst <= 0.02);
+        CHECK(front_far <= 0.01);
+        CHECK(k == 0 ? front_max <= 0.05 : front_min >= 0.99);
+        CHECK(k == 1 ? back_max <= 0.05 : back_min >= 0.99);
+    }
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -644,6 +718,7 @@ int main(void)
     test_relaxed_march(r);
     test_prepass_silhouette(r);
     test_rising_rays(r);
+    test_sun_shadow(r);
     test_extremes(r);
     test_screen_rect();
     test_split_matches_whole(r);

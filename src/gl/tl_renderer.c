@@ -511,6 +511,7 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
     upload_uniforms(*program, u);
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
+    glUniform1f(tl_renderer_loc(*program, "u_sunlit"), u->boat_sunlit);
     draw_mesh(r, *program, &r->boat, u, 0);
     draw_mesh(r, *program, &r->mirror, u, 1);
     glDisable(GL_DEPTH_TEST);
@@ -727,7 +728,7 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
 int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
                       int count, int octaves, float *out4, tl_error *err)
 {
-    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 6)
+    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 7)
         return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad mode, point or octave count");
     /* The features that change what the probe computes. */
     unsigned features =

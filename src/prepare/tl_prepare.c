@@ -253,8 +253,10 @@ static int sphere_in_view(const tl_scene *s, const double c[3], double r)
 }
 
 /* The boat's matrices in camera-relative space, and its feature bit when
- * its bounding sphere is in view. */
-static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
+ * its bounding sphere is in view; how much of the sun its hull sees past
+ * the giant wave's crest, at the hull's centre (the shadow's edge is soft
+ * over metres, the hull is a few long). */
+static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_uniforms *u)
 {
     const tl_boat *b = &s->boat;
     if (!b->enabled || !b->visible)
@@ -310,6 +312,11 @@ static void prepare_boat(const tl_scene *s, tl_frame_uniforms *u)
     u->boat_hull[3] = (float)(0.47 * (b->model_max[2] - b->model_min[2]));
     u->boat_top = (float)b->model_max[1];
     u->boat_water = (float)rel[1];
+    double sun[3];
+    tl_scene_sun_direction(&s->sun, sun);
+    u->boat_sunlit =
+        (float)tl_giant_sunlit(giant, cw[0] + s->camera.position[0], cw[2] + s->camera.position[2],
+                               cw[1] + s->camera.position[1], sun);
 }
 
 /* The wake's past positions relative to the camera, and its feature bit
@@ -623,7 +630,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, &giant, u);
-    prepare_boat(s, u);
+    prepare_boat(s, &giant, u);
     prepare_wake(s, u);
     prepare_water_body(s, w, &giant, u);
     prepare_fog(s, u);

@@ -139,6 +139,7 @@ typedef struct tl_frame_uniforms {
     float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
     float boat_top;          /* model y of the hull's top */
     float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
+    float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */

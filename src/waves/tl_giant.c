@@ -223,3 +223,29 @@ double tl_giant_height(const tl_giant *g, double x, double z, int iterations)
     tl_giant_sample_at(g, x, z, iterations, &smp);
     return smp.height;
 }
+
+double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const double sun[3])
+{
+    double flat = hypot(sun[0], sun[2]);
+    if (!g->active || !(sun[1] > 0.0) || flat < 1e-4)
+        return 1.0;
+    double along = (g->dir[0] * sun[0] + g->dir[1] * sun[2]) / flat;
+    double across = (g->across[0] * sun[0] + g->across[1] * sun[2]) / flat;
+    if (fabs(along) < 1e-4)
+        return 1.0; /* a crest in line with the sun */
+    double rx = x - g->origin[0], rz = z - g->origin[1];
+    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
+    double dm, crest = g->fade * tl_giant_width_mask(g, w, &dm) * g->curl / g->k;
+    double dist = (crest - s) / along; /* metres toward the sun to the crest line */
+    if (dist <= 0.0)
+        return 1.0; /* the sun's side of the crest */
+    double wc = w + dist * across;
+    double crest_height =
+        fabs(wc) < g->half_width ? g->fade * tl_giant_width_mask(g, wc, &dm) * g->amplitude : 0.0;
+    double ray_height = y + dist * sun[1] / flat;
+    /* The penumbra: the sun's half degree over the distance, and the thin
+     * lip near the top of a tall crest, through which light still comes. */
+    double soft = 0.3 + 0.01 * dist + 0.08 * crest_height;
+    double x01 = fmin(fmax((ray_height - crest_height + soft) / (2.0 * soft), 0.0), 1.0);
+    return x01 * x01 * (3.0 - 2.0 * x01);
+}

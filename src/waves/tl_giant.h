@@ -101,4 +101,11 @@ void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations,
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
 
+/* How much of the sun (unit direction `sun`, toward it) a point at world
+ * (x, z) and height y sees past the wave's crest: 0 in its shadow, 1 in
+ * the open, soft in between. The crest is the line where s0 = 0, at
+ * s = lambda·curl/k and lambda·amplitude high; the ray toward the sun is
+ * followed to it. shaders/giant.glsl's giant_sunlit is the same rule. */
+double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const double sun[3]);
+
 #endif
