@@ -2,8 +2,9 @@
 // at the output size; it also carries the colour (EXR, without glare) and
 // the distance planes to that size. A scene rendered smaller than the
 // output (quality.render_scale < 1) is upscaled here: Catmull-Rom for
-// radiance (held at >= 0: its negative lobes can ring below zero beside the
-// sun), nearest for distance (an average of two distances is neither).
+// radiance, the second of its two axes (upscale.frag did x; held at >= 0:
+// its negative lobes can ring below zero beside the sun), nearest for
+// distance (an average of two distances is neither).
 // Glare first: a share u_bloom of the light is spread over the image's mip
 // levels 1 to 6 (glare.frag; the spread keeps the energy), so a small, very
 // bright sun still reads as bright once the tonemap clips it.
@@ -12,8 +13,11 @@
 // every pixel whether taken or not.
 #include "radiance.glsl"
 #include "tonemap.glsl"
+#ifdef TL_PRESENT_UPSCALE
+#include "upscale.glsl"
+#endif
 
-uniform sampler2D u_hdr;
+uniform sampler2D u_hdr; // the scene's radiance, or with the upscale upscale.frag's rows
 uniform sampler2D u_distance;
 uniform sampler2D u_glare; // glare.frag's image (TL_PRESENT_GLARE)
 uniform ivec2 u_out_size; // the output, pixels
@@ -25,26 +29,20 @@ layout(location = 1) out vec4 out_color;
 layout(location = 2) out float out_depth;
 
 #ifdef TL_PRESENT_UPSCALE
-// Catmull-Rom weights of the four texels around a sample at fraction t.
-vec4 catmull_rom(float t)
-{
-    return vec4(t * (-0.5 + t * (1.0 - 0.5 * t)), 1.0 + t * t * (-2.5 + 1.5 * t),
-                t * (0.5 + t * (2.0 - 1.5 * t)), t * t * (-0.5 + 0.5 * t));
-}
-
-// The scene's radiance at output position `uv` (0..1), bicubic.
+// The scene's radiance at output position `uv` (0..1), bicubic: along y
+// through upscale.frag's rows, which hold the output's columns already.
 vec3 upscaled(vec2 uv)
 {
     ivec2 size = textureSize(u_hdr, 0);
-    vec2 src = uv * vec2(size) - 0.5;
-    vec2 base = floor(src);
-    vec4 wx = catmull_rom(src.x - base.x), wy = catmull_rom(src.y - base.y);
+    float src = uv.y * float(size.y) - 0.5;
+    float base = floor(src);
+    vec4 w = catmull_rom(src - base);
+    int x = int(gl_FragCoord.x);
     vec3 sum = vec3(0.0);
-    for (int j = 0; j < 4; j++)
-        for (int i = 0; i < 4; i++) {
-            ivec2 p = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), size - 1);
-            sum += wx[i] * wy[j] * scene_radiance(texelFetch(u_hdr, p, 0));
-        }
+    for (int j = 0; j < 4; j++) {
+        int y = clamp(int(base) + j - 1, 0, size.y - 1);
+        sum += w[j] * texelFetch(u_hdr, ivec2(x, y), 0).rgb;
+    }
     return max(sum, vec3(0.0));
 }
 #endif
@@ -52,7 +50,7 @@ vec3 upscaled(vec2 uv)
 void main()
 {
 #ifdef TL_PRESENT_UPSCALE
-    ivec2 size = textureSize(u_hdr, 0);
+    ivec2 size = textureSize(u_distance, 0);
     vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
     vec3 hdr = upscaled(uv);
     out_depth = texelFetch(u_distance, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).r;

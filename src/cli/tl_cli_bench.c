@@ -362,10 +362,7 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
         }
     }
     if (!rc) {
-        row->ms_total = median(t[0], n);
-        row->ms_render = median(t[1], n);
-        row->ms_readback = median(t[2], n);
-        row->ms_encode = median(t[3], n);
+        /* Before the medians below, which sort their arrays. */
         row->has_passes = s->o->passes && timed_passes;
         if (row->has_passes) {
             int pick = median_frame_passes(t + 4, n, row->ms_pass);
@@ -374,6 +371,10 @@ static int measure(bench_state *s, const tl_quality *q, const char *name, int re
             snprintf(row->pass_shot, sizeof row->pass_shot, "%s:%ld",
                      base_name(s->o->timelines[b->timeline]), b->frame);
         }
+        row->ms_total = median(t[0], n);
+        row->ms_render = median(t[1], n);
+        row->ms_readback = median(t[2], n);
+        row->ms_encode = median(t[3], n);
         row->psnr = s->o->time_only ? NAN : psnr_sum / s->shot_count;
         row->ssim = s->o->time_only ? NAN : ssim_sum / s->shot_count;
     }

@@ -239,6 +239,9 @@ void tl_renderer_destroy(tl_renderer *r)
     tl_renderer_target_free(&r->filtered);
     if (r->filter_program)
         glDeleteProgram(r->filter_program);
+    tl_renderer_target_free(&r->upscaled);
+    if (r->upscale_program)
+        glDeleteProgram(r->upscale_program);
     tl_renderer_set_mesh(r, NULL, NULL);
     for (int i = 0; i < 4; i++)
         if (r->mesh_program[i])
@@ -378,6 +381,9 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     if (r->filter_program)
         glDeleteProgram(r->filter_program);
     r->filter_program = 0;
+    if (r->upscale_program)
+        glDeleteProgram(r->upscale_program);
+    r->upscale_program = 0;
     for (int i = 0; i < r->program_count; i++)
         glDeleteProgram(r->programs[i].program);
     r->program_count = 0;

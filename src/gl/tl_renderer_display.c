@@ -180,6 +180,26 @@ static int filter_pass(tl_renderer *r, float sigma, tl_error *err)
     return tl_renderer_check("the pixel filter", err);
 }
 
+/* The first axis of the upscale (shaders/upscale.frag): the scene's
+ * radiance along x to the output's width, at the scene's height. */
+static int upscale_rows(tl_renderer *r, tl_error *err)
+{
+    int w = r->display.width, h = r->scene.height;
+    int rc = ensure_pass(r, &r->upscaled, w, h, &r->upscale_program, "upscale.frag", err);
+    if (rc)
+        return rc;
+    glBindVertexArray(r->vao);
+    glBindFramebuffer(GL_FRAMEBUFFER, r->upscaled.fbo);
+    glViewport(0, 0, w, h);
+    glUseProgram(r->upscale_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
+    glUniform1i(tl_renderer_loc(r->upscale_program, "u_hdr"), 0);
+    glUniform1i(tl_renderer_loc(r->upscale_program, "u_out_width"), w);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return tl_renderer_check("the upscale's rows", err);
+}
+
 /* The display pass, writing only the planes in `planes` (the display image
  * always: the window shows it). */
 static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned planes,
@@ -194,6 +214,13 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
         if (rc)
             return rc;
     }
+    int upscale = r->scene.width != w || r->scene.height != h;
+    tl_timers_start(&r->timers, TL_TIMED_DISPLAY);
+    if (upscale) {
+        int rc = upscale_rows(r, err);
+        if (rc)
+            return rc;
+    }
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
     const GLenum draw[3] = {GL_COLOR_ATTACHMENT0,
@@ -201,7 +228,6 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
                             (planes & TL_PLANE_DEPTH) ? GL_COLOR_ATTACHMENT2 : GL_NONE};
     glDrawBuffers(3, draw);
     glViewport(0, 0, w, h);
-    int upscale = r->scene.width != w || r->scene.height != h;
     GLuint program = tl_renderer_present_program(
         r, (upscale ? TL_PRESENT_UPSCALE : 0) | (bloom > 0.0f ? TL_PRESENT_GLARE : 0), err);
     if (!program)
@@ -212,14 +238,13 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[1]);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
+    glBindTexture(GL_TEXTURE_2D, upscale ? r->upscaled.tex[0] : r->scene.tex[0]);
     glUniform1i(tl_renderer_loc(program, "u_hdr"), 0);
     glUniform1i(tl_renderer_loc(program, "u_distance"), 1);
     glUniform1i(tl_renderer_loc(program, "u_glare"), 2);
     glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
     glUniform1f(tl_renderer_loc(program, "u_exposure"), d->exposure);
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
-    tl_timers_start(&r->timers, TL_TIMED_DISPLAY);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     tl_timers_stop(&r->timers);
     int rc = tl_renderer_check("the display pass", err);

@@ -75,6 +75,8 @@ struct tl_renderer {
     GLuint glare_program;
     GLuint mip_program; /* the scene's mip levels (mip.frag) */
     GLuint mip_fbo;     /* one level of the scene's colour at a time */
+    target upscaled;    /* radiance upscaled along x only (upscale.frag; render_scale < 1) */
+    GLuint upscale_program;
     target filtered; /* the display image after the pixel filter (quality.pixel_filter) */
     GLuint filter_program;
     int display_filtered;   /* the last display pass left its image in `filtered` */
