@@ -98,6 +98,13 @@ if [ -n "$before" ]; then
   done
 fi
 echo
+echo "## Pass by pass: each preset's median frame on the targets' scenes (ms)"
+for t in calm voyage; do
+  echo
+  "$tl" bench "$scratch/$t.tl" --size $size --frames 60,180 --repeat 3 -q --time-only --passes \
+    --presets draft,preview,final,seed | sed -n '/^| preset | boat/,$p'
+done
+echo
 echo "\`tideline render\` of the seed's scene to PNG (render and write overlap), steady"
 echo "frames (the time of 28 frames less that of 4, over 24), against the shader timed"
 echo "just before and after:"
