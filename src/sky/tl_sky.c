@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <signal.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -174,6 +175,11 @@ static void parallel_rows(int rows, row_fn fn, void *ctx)
     row_job jobs[SKY_MAX_THREADS];
     pthread_t ids[SKY_MAX_THREADS];
     int started[SKY_MAX_THREADS] = {0};
+    /* Signals stay with the calling thread (tideline render's SIGINT and
+     * SIGTERM stop the run from there), as with render's writers. */
+    sigset_t all, old;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &old);
     for (int k = 0; k < threads; k++) {
         jobs[k] = (row_job){fn, ctx, rows, k, threads};
         /* The calling thread takes job 0, and any whose thread could
@@ -181,6 +187,7 @@ static void parallel_rows(int rows, row_fn fn, void *ctx)
         if (k > 0)
             started[k] = pthread_create(&ids[k], NULL, run_rows, &jobs[k]) == 0;
     }
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
     run_rows(&jobs[0]);
     for (int k = 1; k < threads; k++) {
         if (started[k])
