@@ -53,6 +53,7 @@ void tl_renderer_time_passes(tl_renderer *r, int on)
 {
     tl_timers_stop(&r->timers);
     r->timers.on = on != 0;
+    r->timers.open = -1; /* none until a pass starts (a new renderer's is 0) */
     r->timers.valid = 0;
 }
 
