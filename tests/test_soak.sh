@@ -80,8 +80,16 @@ while :; do
         echo "run $runs: SIG$signal at ${delay_ms} ms -> exit $status, $files frames," \
             "$temps temporaries"
         # SIGTERM: 130 once the handler is installed, 143 during start-up.
+        # 0: the run finished its last frame between the check above and
+        # the signal (only with every frame there); it ends the soak.
         case $signal:$status in
         KILL:137 | TERM:130 | TERM:143) ;;
+        *:0)
+            [ "$(ls "$work/soak" | wc -l)" -eq "$frames" ] ||
+                fail "run $runs: SIG$signal gave exit status 0 with frames missing"
+            echo "run $runs: finished as its kill was sent"
+            break
+            ;;
         *) fail "run $runs: SIG$signal gave exit status $status: $(tail -2 "$log")" ;;
         esac
     else
