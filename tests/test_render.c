@@ -146,6 +146,31 @@ static void test_device_platform_extensions(void)
     CHECK(!tl_gl_egl_lists_devices(""));
 }
 
+/* A compiler's log names source strings by number; tideline names them by
+ * file, the same way for Mesa's "0:12(5): " and NVIDIA's "0(12) : ". */
+static void test_shader_log_names(void)
+{
+    tl_shader_source src = {.file_count = 2};
+    snprintf(src.files[0], sizeof src.files[0], "ocean.frag");
+    snprintf(src.files[1], sizeof src.files[1], "water.glsl");
+    const char *logs[][2] = {
+        {"0:12(5): error: x\n1:3(1): error: y\n",
+         "ocean.frag:12(5): error: x\nwater.glsl:3(1): error: y\n"},
+        {"1(142) : error C0000: syntax error\n0(7) : warning C7050: z",
+         "water.glsl:142: error C0000: syntax error\nocean.frag:7: warning C7050: z"},
+        /* Not a known string number, or not a location: left as it is. */
+        {"2(4) : error\nerror: no location\n1(x) : odd\n",
+         "2(4) : error\nerror: no location\nwater.glsl(x) : odd\n"},
+    };
+    for (size_t i = 0; i < sizeof logs / sizeof logs[0]; i++) {
+        char *got = tl_shader_annotate_log(&src, logs[i][0]);
+        CHECK(got != NULL);
+        if (got)
+            CHECK_STR_EQ(got, logs[i][1]);
+        free(got);
+    }
+}
+
 /* The pixel filter (quality.pixel_filter): the display image is the 3x3
  * Gaussian of the unfiltered display values, edges clamped, glare included
  * (llvmpipe: to 3e-6), at full size and after a half-size render's
@@ -632,6 +657,7 @@ static void test_sky_rows(tl_renderer *r)
 int main(void)
 {
     test_device_platform_extensions();
+    test_shader_log_names();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)

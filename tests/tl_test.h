@@ -42,6 +42,17 @@ static int tl_test_checks = 0;
         }                                                                                          \
     } while (0)
 
+#define CHECK_STR_EQ(got, want)                                                                    \
+    do {                                                                                           \
+        const char *tl_g_ = (got), *tl_w_ = (want);                                                \
+        tl_test_checks++;                                                                          \
+        if (!tl_g_ || strcmp(tl_g_, tl_w_) != 0) {                                                 \
+            tl_test_failures++;                                                                    \
+            fprintf(stderr, "%s:%d: expected \"%s\", got \"%s\"\n", __FILE__, __LINE__, tl_w_,     \
+                    tl_g_ ? tl_g_ : "(null)");                                                     \
+        }                                                                                          \
+    } while (0)
+
 /* Ends main(): prints a summary and returns the process status. */
 #define TEST_END()                                                                                 \
     do {                                                                                           \

@@ -197,12 +197,19 @@ char *tl_shader_annotate_log(const tl_shader_source *src, const char *log)
     const char *p = log;
     while (*p) {
         /* Drivers print "<string>:<line>" at the start of a message line
-         * (Mesa: "0:12(5): error", NVIDIA: "0(12) : error"). */
+         * (Mesa: "0:12(5): error"; NVIDIA: "0(12) : error", rewritten to
+         * Mesa's "name:12: error" so every message reads file:line). */
         char *end = NULL;
         long index = strtol(p, &end, 10);
         if (end != p && (*end == ':' || *end == '(') && index >= 0 && index < src->file_count) {
             buf_append(&b, src->files[index], strlen(src->files[index]));
             p = end;
+            char *close = NULL;
+            long line = *p == '(' ? strtol(p + 1, &close, 10) : -1;
+            if (line >= 0 && close != p + 1 && strncmp(close, ") : ", 4) == 0) {
+                buf_printf(&b, ":%ld: ", line);
+                p = close + 4;
+            }
         }
         const char *eol = strchr(p, '\n');
         size_t len = eol ? (size_t)(eol - p) + 1 : strlen(p);
