@@ -11,6 +11,10 @@
 // The upscale (TL_PRESENT_UPSCALE) and the glare (TL_PRESENT_GLARE) are
 // compiled in only when a frame uses them: llvmpipe runs an `if` body for
 // every pixel whether taken or not.
+// The planes are written top row first (image order), so that the readback
+// needs no row flip: target row r is the image's row r from the top, which
+// is GL row (height - 1 - r) of the scene. frag_xy() is that pixel's centre
+// in the scene's GL coordinates.
 #include "radiance.glsl"
 #include "tonemap.glsl"
 #ifdef TL_PRESENT_UPSCALE
@@ -27,6 +31,11 @@ uniform float u_bloom;
 layout(location = 0) out vec4 out_display;
 layout(location = 1) out vec4 out_color;
 layout(location = 2) out float out_depth;
+
+vec2 frag_xy()
+{
+    return vec2(gl_FragCoord.x, float(u_out_size.y) - gl_FragCoord.y);
+}
 
 #ifdef TL_PRESENT_UPSCALE
 // The scene's radiance at output position `uv` (0..1), bicubic: along y
@@ -51,16 +60,16 @@ void main()
 {
 #ifdef TL_PRESENT_UPSCALE
     ivec2 size = textureSize(u_distance, 0);
-    vec2 uv = gl_FragCoord.xy / vec2(u_out_size);
+    vec2 uv = frag_xy() / vec2(u_out_size);
     vec3 hdr = upscaled(uv);
     out_depth = texelFetch(u_distance, clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1), 0).r;
 #else
-    vec3 hdr = scene_radiance(texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0));
-    out_depth = texelFetch(u_distance, ivec2(gl_FragCoord.xy), 0).r;
+    vec3 hdr = scene_radiance(texelFetch(u_hdr, ivec2(frag_xy()), 0));
+    out_depth = texelFetch(u_distance, ivec2(frag_xy()), 0).r;
 #endif
     out_color = vec4(hdr, 1.0);
 #ifdef TL_PRESENT_GLARE
-    hdr = mix(hdr, texture(u_glare, gl_FragCoord.xy / vec2(u_out_size)).rgb, u_bloom);
+    hdr = mix(hdr, texture(u_glare, frag_xy() / vec2(u_out_size)).rgb, u_bloom);
 #endif
     out_display = vec4(tonemap_srgb_encode(tonemap_aces(hdr * u_exposure)), 1.0);
 }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # tideline preview under Xvfb (llvmpipe): a paused, sharpened screenshot
-# equals `tideline still`, and refined, `still --spp 16`; the file is
-# followed as it is edited, a broken file keeps the last good frame and
-# prints its error, fixing it recovers;
+# equals `tideline still`, and refined, `still --spp 16`; the window shows
+# that frame upright; the file is followed as it is edited, a broken file
+# keeps the last good frame and prints its error, fixing it recovers;
 # scripted keys move the time exactly and F saves the frame; a high target
 # frame rate lowers the render scale; no display is a one-line error; a bad
 # --refine is a usage error.
@@ -69,6 +69,21 @@ cp "$timelines/calm.tl" "$work/edit.tl"
 pid=$!
 check "first screenshot" wait_for 60 test -s "$work/shot.png"
 first=$(md5 "$work/shot.png")
+# The window shows that frame the right way up: the display image is kept
+# top row first, and the blit to the window turns it over (upside down it
+# scores 8 dB). Without a window manager the window sits at 0,0.
+window_psnr() {
+  ffmpeg -hide_banner -loglevel error -y -f x11grab -video_size 160x90 -i "$DISPLAY+0,0" \
+    -frames:v 1 "$work/window.png" && psnr_of "$work/window.png" "$work/shot.png"
+}
+at_least_40() { awk -v p="$1" 'BEGIN { exit !(p == "inf" || p >= 40) }'; }
+for _ in 1 2 3 4 5; do # the screenshot is written before the buffers swap
+  psnr=$(window_psnr)
+  at_least_40 "$psnr" && break
+  sleep 0.5
+done
+echo "the window against its screenshot: PSNR $psnr dB"
+check "the window shows the frame, upright" at_least_40 "$psnr"
 sed -i 's/^  0s    2deg/  0s    25deg/' "$work/edit.tl"
 check "an edit reloads" wait_for 30 bash -c "[ \"\$(md5sum '$work/shot.png' | cut -d' ' -f1)\" != $first ]"
 edited=$(md5 "$work/shot.png")

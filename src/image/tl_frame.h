@@ -1,7 +1,8 @@
 /* tl_frame: one rendered frame in CPU memory.
  *
  * Rows are stored top row first (image order, as EXR and PNG want them);
- * the renderer flips GL's bottom-up rows when it reads back. */
+ * the renderer's display pass writes its planes that way up, so the
+ * readback needs no flip. */
 #ifndef TL_FRAME_H
 #define TL_FRAME_H
 
