@@ -2,8 +2,8 @@
 // Snell's window and the fog all call, so they agree.
 //
 // TL_FEATURE_SKY_PHYSICAL: Rayleigh + Mie + ozone with multiple scattering
-// (src/sky/tl_sky.c builds the sky-view table on the CPU; here it is read
-// back), and the sun as a disc of its real size with limb darkening, its
+// (sky_view.frag draws the sky-view table each time the sun moves; here it
+// is read), and the sun as a disc of its real size with limb darkening, its
 // colour from the air along its path. Without it: the reference shader's
 // "extra cheap atmosphere" and its sun lobe, exactly as they were.
 

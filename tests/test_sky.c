@@ -151,6 +151,63 @@ static void test_sun(tl_renderer *r)
     tl_frame_free(&f);
 }
 
+/* The sky-view table the GPU draws (shaders/sky_view.frag, in float)
+ * against the CPU's build of the same table (tl_sky.c, in double), texel
+ * by texel, and the ambient derived from each: suns from below the horizon
+ * to high, cameras at sea level, 2 km and 30 km up. Where the radiance is
+ * not negligible (1e-4 of the table's brightest), within 0.5%. */
+static void test_view_table(tl_renderer *r)
+{
+    const double suns[] = {60, 10, 2, 0.3, -4};
+    const double heights[] = {3, 2000, 30000};
+    static tl_sky_luts gpu, cpu; /* ~0.5 MB each */
+    double worst = 0.0, worst_ambient = 0.0;
+    long bad = 0; /* non-finite or negative texels */
+    for (int k = 0; k < 5; k++)
+        for (int h = 0; h < 3; h++) {
+            tl_scene s;
+            tl_scene_defaults(&s);
+            s.sun.elevation = suns[k] * DEG;
+            s.camera.position[1] = heights[h];
+            tl_frame_uniforms u;
+            tl_waves w;
+            tl_waves_init(&w, &s.ocean);
+            tl_prepare_frame(&s, &w, &u);
+            tl_error err;
+            tl_error_clear(&err);
+            CHECK(tl_renderer_prepare_sky(r, &s, &gpu, &u, &err) == 0);
+            tl_atmosphere a;
+            tl_sky_atmosphere_of(&s, &a);
+            tl_sky_luts_update(&cpu, &a, s.sun.elevation, tl_prepare_sky_altitude(&s));
+            float peak = 0.0f;
+            for (int j = 0; j < TL_SKY_VIEW_H; j++)
+                for (int i = 0; i < TL_SKY_VIEW_W; i++)
+                    for (int c = 0; c < 3; c++)
+                        peak = fmaxf(peak, cpu.view[j][i][c]);
+            double e = 0.0;
+            for (int j = 0; j < TL_SKY_VIEW_H; j++)
+                for (int i = 0; i < TL_SKY_VIEW_W; i++)
+                    for (int c = 0; c < 3; c++) {
+                        double want = cpu.view[j][i][c], got = gpu.view[j][i][c];
+                        if (want > 1e-4 * peak)
+                            e = fmax(e, fabs(got - want) / want);
+                        bad += !(isfinite(got) && got >= 0.0);
+                    }
+            double ea = 0.0;
+            for (int c = 0; c < 3; c++)
+                ea = fmax(ea, fabs(gpu.ambient[c] - cpu.ambient[c]) / cpu.ambient[c]);
+            printf("sun %4.1f deg, camera %5.0f m: table %.3g%%, ambient %.3g%%\n", suns[k],
+                   heights[h], 100.0 * e, 100.0 * ea);
+            worst = fmax(worst, e);
+            worst_ambient = fmax(worst_ambient, ea);
+        }
+    printf("sky-view table, GPU against CPU: worst relative difference %.3g%%, ambient %.3g%%\n",
+           100.0 * worst, 100.0 * worst_ambient);
+    CHECK(bad == 0);
+    CHECK(worst < 5e-3);
+    CHECK(worst_ambient < 1e-3);
+}
+
 /* sky.model seed renders what the renderer rendered before the physical
  * sky: the reference (the default scene at 3 s, 96x54) was written by the
  * commit before it. Compared through the same EXR writer. */
@@ -218,6 +275,7 @@ int main(int argc, char **argv)
         return 1;
     on_llvmpipe = strstr(tl_gl_context_describe(ctx), "llvmpipe") != NULL;
     test_against_reference(r);
+    test_view_table(r);
     test_sun(r);
     test_seed_unchanged(r);
     tl_renderer_destroy(r);

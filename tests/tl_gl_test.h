@@ -107,15 +107,17 @@ static inline double luminance(const float *rgb)
 }
 
 /* Prepares `scene` as tl_render does: uniforms, and the physical sky's
- * tables uploaded when they changed. */
+ * tables brought up to date. */
 static inline void gl_test_prepare(tl_renderer *r, const tl_scene *scene, tl_frame_uniforms *u)
 {
     static tl_sky_luts luts; /* ~0.5 MB: kept between calls like tl_render's */
     tl_waves w;
     tl_waves_init(&w, &scene->ocean);
     tl_prepare_frame(scene, &w, u);
-    if (tl_prepare_sky_tables(scene, &luts, u))
-        tl_renderer_set_sky_view(r, &luts.view[0][0][0], TL_SKY_VIEW_W, TL_SKY_VIEW_H, NULL);
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_prepare_sky(r, scene, &luts, u, &err))
+        fprintf(stderr, "the sky's tables: %s\n", err.message);
 }
 
 /* Renders `scene` in one pass into `f` (allocated here). */

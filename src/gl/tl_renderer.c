@@ -246,8 +246,7 @@ void tl_renderer_destroy(tl_renderer *r)
     for (int i = 0; i < 4; i++)
         if (r->mesh_program[i])
             glDeleteProgram(r->mesh_program[i]);
-    if (r->sky_view)
-        glDeleteTextures(1, &r->sky_view);
+    tl_renderer_free_sky(r);
     glDeleteVertexArrays(1, &r->vao);
     free(r);
 }
@@ -328,7 +327,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform3fv(tl_renderer_loc(p, "u_sun_light"), 1, u->sun_light);
         glUniform1f(tl_renderer_loc(p, "u_sun_cos_radius"), u->sun_cos_radius);
         glUniform3fv(tl_renderer_loc(p, "u_sky_ambient"), 1, u->sky_ambient);
-        glUniform1i(tl_renderer_loc(p, "u_sky_view"), 4); /* bound by tl_renderer_set_sky_view */
+        glUniform1i(tl_renderer_loc(p, "u_sky_view"), 4); /* bound by tl_renderer_prepare_sky */
     }
     if (u->features & TL_FEATURE_FOG) {
         glUniform2fv(tl_renderer_loc(p, "u_fog"), 1, u->fog);
@@ -384,6 +383,9 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     if (r->upscale_program)
         glDeleteProgram(r->upscale_program);
     r->upscale_program = 0;
+    if (r->sky_view_program)
+        glDeleteProgram(r->sky_view_program);
+    r->sky_view_program = 0;
     for (int i = 0; i < r->program_count; i++)
         glDeleteProgram(r->programs[i].program);
     r->program_count = 0;
@@ -396,24 +398,6 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
             r->mesh_program[i] = 0;
         }
     return tl_renderer_check("reloading shaders", err);
-}
-
-int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int height, tl_error *err)
-{
-    if (!r->sky_view) {
-        glGenTextures(1, &r->sky_view);
-        glBindTexture(GL_TEXTURE_2D, r->sky_view);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    }
-    glActiveTexture(GL_TEXTURE4);
-    glBindTexture(GL_TEXTURE_2D, r->sky_view);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, width, height, 0, GL_RGB, GL_FLOAT, rgb);
-    glActiveTexture(GL_TEXTURE0);
-    return tl_renderer_check("uploading the sky", err);
 }
 
 int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)

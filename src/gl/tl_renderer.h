@@ -33,11 +33,15 @@ void tl_renderer_destroy(tl_renderer *r);
  * at once and, if it fails, everything is kept as it was. */
 int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err);
 
-/* Uploads the physical sky's sky-view table (RGB floats, rows of
- * increasing latitude, see src/sky/tl_sky.h); it stays bound to texture
- * unit 4, where frames with TL_FEATURE_SKY_PHYSICAL read it. */
-int tl_renderer_set_sky_view(tl_renderer *r, const float *rgb, int width, int height,
-                             tl_error *err);
+/* For frames with TL_FEATURE_SKY_PHYSICAL: brings the physical sky's
+ * tables up to date for the scene (the atmosphere's two on the CPU when
+ * the air changed; the sky-view table drawn here, shaders/sky_view.frag,
+ * when the sun or the altitude step moved, and read back into
+ * luts->view) and fills u->sky_ambient. The table stays bound to texture
+ * unit 4, where those frames read it. Nothing for other frames. */
+struct tl_sky_luts;
+int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, struct tl_sky_luts *luts,
+                            tl_frame_uniforms *u, tl_error *err);
 
 /* Uploads the boat's mesh (replacing any before it; NULL removes it). Frames
  * whose uniforms carry TL_FEATURE_BOAT draw it; without a mesh they do not. */

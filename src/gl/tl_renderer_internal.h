@@ -1,7 +1,8 @@
 /* What the renderer's files share (not part of its interface): the
  * renderer's state and the GL helpers. tl_renderer.c draws the scene,
  * tl_renderer_prepass.c the march prepass its rays start from,
- * tl_renderer_display.c turns it into the planes that leave the GPU. */
+ * tl_renderer_display.c turns it into the planes that leave the GPU,
+ * tl_renderer_sky.c draws the physical sky's sky-view table. */
 #ifndef TL_RENDERER_INTERNAL_H
 #define TL_RENDERER_INTERNAL_H
 
@@ -9,6 +10,7 @@
 #include <stddef.h>
 
 #include "gl/tl_renderer.h"
+#include "sky/tl_sky.h"
 
 #define MAX_PROGRAMS 24
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
@@ -81,11 +83,22 @@ struct tl_renderer {
     GLuint filter_program;
     int display_filtered;   /* the last display pass left its image in `filtered` */
     GLuint mesh_program[4]; /* per sun disc and sky model */
-    GLuint sky_view;        /* the physical sky's sky-view table */
+    /* The physical sky (tl_renderer_sky.c): the sky-view table, drawn
+     * here for the sun and altitude below, and the atmosphere's two tables
+     * it is drawn from, uploaded for sky_atmosphere. */
+    target sky_view;
+    GLuint sky_view_program;
+    GLuint sky_transmittance, sky_ms;
+    tl_atmosphere sky_atmosphere;
+    int sky_tables_valid, sky_view_valid;
+    double sky_view_sun, sky_view_altitude;
     gpu_mesh mesh;
     double readback_seconds; /* of the last tl_renderer_finish */
     pass_timers timers;
 };
+
+/* Frees the sky's textures and program (tl_renderer_sky.c). */
+void tl_renderer_free_sky(tl_renderer *r);
 
 /* An OpenGL error since the last check, as an error naming `what`. */
 int tl_renderer_check(const char *what, tl_error *err);

@@ -425,19 +425,23 @@ double tl_prepare_sky_altitude(const tl_scene *s)
     return 100.0 * floor(fmax(s->camera.position[1], 0.0) / 100.0);
 }
 
-int tl_prepare_sky_tables(const tl_scene *s, tl_sky_luts *luts, tl_frame_uniforms *u)
+int tl_prepare_sky_tables(const tl_scene *s, tl_sky_luts *luts, const tl_frame_uniforms *u,
+                          double *sun_elevation, double *altitude)
 {
     if (!(u->features & TL_FEATURE_SKY_PHYSICAL))
         return 0;
     tl_atmosphere a;
     tl_sky_atmosphere_of(s, &a);
-    double altitude = tl_prepare_sky_altitude(s);
-    int stale = !luts->view_valid || memcmp(&luts->atmosphere, &a, sizeof a) != 0 ||
-                luts->view_sun_elevation != s->sun.elevation || luts->view_altitude != altitude;
-    tl_sky_luts_update(luts, &a, s->sun.elevation, altitude);
+    tl_sky_luts_update_atmosphere(luts, &a);
+    *sun_elevation = s->sun.elevation;
+    *altitude = tl_prepare_sky_altitude(s);
+    return 1;
+}
+
+void tl_prepare_sky_ambient(const tl_scene *s, const tl_sky_luts *luts, tl_frame_uniforms *u)
+{
     for (int c = 0; c < 3; c++)
         u->sky_ambient[c] = (float)(luts->ambient[c] * s->sky.sun_illuminance);
-    return stale;
 }
 
 /* The physical sky: the sun's light at the camera and its disc. */

@@ -168,12 +168,17 @@ typedef struct tl_frame_uniforms {
     float sky_ambient[3]; /* mean sky radiance over the upper hemisphere */
 } tl_frame_uniforms;
 
-/* For frames with TL_FEATURE_SKY_PHYSICAL: brings `luts` up to date for
- * the scene (tables built only when the air, the sun's elevation or the
- * altitude step changed) and fills u->sky_ambient. Returns 1 when the
- * sky-view table changed and must be uploaded again, else 0. */
+/* For frames with TL_FEATURE_SKY_PHYSICAL (else it returns 0): brings the
+ * atmosphere's tables in `luts` up to date for the scene (rebuilt only
+ * when the air changed) and gives the sun's elevation and the altitude the
+ * sky-view table must be built for. Returns 1. The renderer builds that
+ * table (tl_renderer_prepare_sky), then tl_prepare_sky_ambient. */
 struct tl_sky_luts;
-int tl_prepare_sky_tables(const tl_scene *s, struct tl_sky_luts *luts, tl_frame_uniforms *u);
+int tl_prepare_sky_tables(const tl_scene *s, struct tl_sky_luts *luts, const tl_frame_uniforms *u,
+                          double *sun_elevation, double *altitude);
+/* u->sky_ambient from the sky-view table in `luts`. */
+void tl_prepare_sky_ambient(const tl_scene *s, const struct tl_sky_luts *luts,
+                            tl_frame_uniforms *u);
 
 /* The altitude the sky-view table is built for: the camera's, in steps of
  * 100 m (the sky changes little below that), so every frame of a shot can

@@ -135,15 +135,6 @@ static const tl_waves *waves_for(tl_render *r, const tl_ocean *ocean)
     return &r->waves;
 }
 
-/* The physical sky's tables for this scene, uploaded when they changed. */
-static int prepare_sky(tl_render *r, const tl_scene *scene, tl_frame_uniforms *u, tl_error *err)
-{
-    if (!tl_prepare_sky_tables(scene, r->sky, u))
-        return TL_OK;
-    return tl_renderer_set_sky_view(r->renderer, &r->sky->view[0][0][0], TL_SKY_VIEW_W,
-                                    TL_SKY_VIEW_H, err);
-}
-
 static int ensure_frame(tl_frame *frame, int width, int height, tl_error *err)
 {
     if (frame->width == width && frame->height == height && frame->color)
@@ -181,7 +172,7 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     tl_frame_uniforms u;
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
-    rc = prepare_sky(r, scene, &u, err);
+    rc = tl_renderer_prepare_sky(r->renderer, scene, r->sky, &u, err);
     if (!rc)
         rc = tl_renderer_begin(r->renderer, u.width, u.height, u.out_width, u.out_height, err);
     if (!rc)
@@ -305,7 +296,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
             break;
         tl_frame_uniforms u;
         tl_prepare_frame(&sub, waves_for(r, &sub.ocean), &u);
-        rc = prepare_sky(r, &sub, &u, err);
+        rc = tl_renderer_prepare_sky(r->renderer, &sub, r->sky, &u, err);
         if (rc)
             break;
         u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
@@ -340,7 +331,7 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     tl_frame_uniforms u;
     if (!rc) {
         tl_prepare_frame(&scene, waves_for(r, &scene.ocean), &u);
-        rc = prepare_sky(r, &scene, &u, err);
+        rc = tl_renderer_prepare_sky(r->renderer, &scene, r->sky, &u, err);
     }
     if (!rc) {
         u.seed = 0; /* the pattern tl_render_timeline_frame's one pass uses */

@@ -451,10 +451,10 @@ typedef struct view_step {
 
 #define VIEW_STEPS 40
 
-/* The sky-view table's row j (radiance() for each azimuth, with what the
- * row's rays share computed once), its hemisphere sum into sum/weight. */
-static void build_view_row(tl_sky_luts *l, double r, double sun_elevation, int j, double sum[3],
-                           double *weight)
+/* The sky-view table's row j: radiance() for each azimuth, with what the
+ * row's rays share computed once. The renderer builds the same table on the
+ * GPU (shaders/sky_view.frag); this is its reference. */
+static void build_view_row(tl_sky_luts *l, double r, double sun_elevation, int j)
 {
     const tl_atmosphere *a = &l->atmosphere;
     const double lat = view_latitude((j + 0.5) / TL_SKY_VIEW_H);
@@ -524,40 +524,57 @@ static void build_view_row(tl_sky_luts *l, double r, double sun_elevation, int j
             add_ground(a, table_transmittance, l, dir, r, d, sun, depth, L);
         for (int c = 0; c < 3; c++)
             l->view[j][i][c] = (float)L[c];
-        if (lat > 0.0) { /* cosine-free mean over the hemisphere's solid angle */
-            double w = cos(lat);
-            for (int c = 0; c < 3; c++)
-                sum[c] += w * L[c];
-            *weight += w;
-        }
     }
 }
 
-/* A sky-view build: each row keeps its own hemisphere sum, added up in
- * row order afterwards, so the mean is the same whatever the threads. */
+/* A sky-view build on the CPU: rows over the cores. */
 typedef struct view_build {
     tl_sky_luts *l;
     double r, sun_elevation;
-    double sum[TL_SKY_VIEW_H][4]; /* per row: R, G, B, weight */
 } view_build;
 
 static void view_row(void *ctx, int j)
 {
     view_build *b = ctx;
-    double *row = b->sum[j];
-    row[0] = row[1] = row[2] = row[3] = 0.0;
-    build_view_row(b->l, b->r, b->sun_elevation, j, row, &row[3]);
+    build_view_row(b->l, b->r, b->sun_elevation, j);
 }
 
-static void build_view(tl_sky_luts *l, double sun_elevation, double altitude)
+double tl_sky_camera_height(const tl_atmosphere *a, double altitude)
 {
-    view_build b = {l, camera_radius(&l->atmosphere, altitude), sun_elevation, {{0}}};
-    parallel_rows(TL_SKY_VIEW_H, view_row, &b);
+    return camera_radius(a, altitude) - a->ground_radius;
+}
+
+int tl_sky_luts_update_atmosphere(tl_sky_luts *l, const tl_atmosphere *a)
+{
+    if (l->valid && memcmp(&l->atmosphere, a, sizeof *a) == 0)
+        return 0;
+    l->atmosphere = *a;
+    parallel_rows(TL_SKY_TRANSMITTANCE_H, transmittance_row, l);
+    parallel_rows(TL_SKY_MS_SIZE, ms_row, l); /* reads the transmittance table */
+    l->valid = 1;
+    l->view_valid = 0;
+    return 1;
+}
+
+int tl_sky_view_stale(const tl_sky_luts *l, double sun_elevation, double altitude)
+{
+    return !l->view_valid || l->view_sun_elevation != sun_elevation || l->view_altitude != altitude;
+}
+
+void tl_sky_view_built(tl_sky_luts *l, double sun_elevation, double altitude)
+{
+    /* The mean over the upper hemisphere's solid angle: each row above the
+     * horizon weighted by cos(latitude), its texels alike. */
     double sum[3] = {0, 0, 0}, weight = 0.0;
     for (int j = 0; j < TL_SKY_VIEW_H; j++) {
-        for (int c = 0; c < 3; c++)
-            sum[c] += b.sum[j][c];
-        weight += b.sum[j][3];
+        double lat = view_latitude((j + 0.5) / TL_SKY_VIEW_H);
+        if (!(lat > 0.0))
+            continue;
+        double w = cos(lat);
+        for (int i = 0; i < TL_SKY_VIEW_W; i++)
+            for (int c = 0; c < 3; c++)
+                sum[c] += w * l->view[j][i][c];
+        weight += w * TL_SKY_VIEW_W;
     }
     for (int c = 0; c < 3; c++)
         l->ambient[c] = weight > 0.0 ? sum[c] / weight : 0.0;
@@ -569,15 +586,12 @@ static void build_view(tl_sky_luts *l, double sun_elevation, double altitude)
 void tl_sky_luts_update(tl_sky_luts *l, const tl_atmosphere *a, double sun_elevation,
                         double altitude)
 {
-    if (!l->valid || memcmp(&l->atmosphere, a, sizeof *a) != 0) {
-        l->atmosphere = *a;
-        parallel_rows(TL_SKY_TRANSMITTANCE_H, transmittance_row, l);
-        parallel_rows(TL_SKY_MS_SIZE, ms_row, l); /* reads the transmittance table */
-        l->valid = 1;
-        l->view_valid = 0;
-    }
-    if (!l->view_valid || l->view_sun_elevation != sun_elevation || l->view_altitude != altitude)
-        build_view(l, sun_elevation, altitude);
+    tl_sky_luts_update_atmosphere(l, a);
+    if (!tl_sky_view_stale(l, sun_elevation, altitude))
+        return;
+    view_build b = {l, camera_radius(&l->atmosphere, altitude), sun_elevation};
+    parallel_rows(TL_SKY_VIEW_H, view_row, &b);
+    tl_sky_view_built(l, sun_elevation, altitude);
 }
 
 void tl_sky_view_lookup(const tl_sky_luts *l, double elevation, double azimuth, double out[3])

@@ -6,7 +6,9 @@
  * and Atmosphere Rendering Technique": a transmittance table, a table of
  * the multiple scattering's contribution (his isotropic psi_ms
  * approximation of all orders beyond the first), and a per-frame sky-view
- * table the shader samples. Also a slow reference that integrates the same
+ * table the shader samples (drawn on the GPU by the renderer,
+ * shaders/sky_view.frag; built here too, as its reference). Also a slow
+ * reference that integrates the same
  * equations without the tables, for the tests, and the sun's colour at the
  * camera. Radiance is in scene units: the sun's illuminance at the top of
  * the atmosphere is sky.sun_illuminance. docs/rendering.md has the model. */
@@ -52,10 +54,25 @@ typedef struct tl_sky_luts {
 
 /* Builds the atmosphere's tables (when the atmosphere differs from the one
  * they hold) and the sky-view table (when that or the sun's elevation or
- * the camera's altitude changed). Radiance for a top-of-atmosphere sun of
- * illuminance 1; the shader scales by sky.sun_illuminance. */
+ * the camera's altitude changed), all on the CPU. Radiance for a
+ * top-of-atmosphere sun of illuminance 1; the shader scales by
+ * sky.sun_illuminance. The renderer builds the sky-view table on the GPU
+ * instead (the three calls below); this is its reference. */
 void tl_sky_luts_update(tl_sky_luts *l, const tl_atmosphere *a, double sun_elevation,
                         double altitude);
+
+/* The transmittance and multiple-scattering tables alone, rebuilt when the
+ * atmosphere differs from theirs (which makes the sky-view table stale).
+ * Returns 1 when it rebuilt them. */
+int tl_sky_luts_update_atmosphere(tl_sky_luts *l, const tl_atmosphere *a);
+/* Whether `view` must be rebuilt for this sun and camera altitude. */
+int tl_sky_view_stale(const tl_sky_luts *l, double sun_elevation, double altitude);
+/* `view` now holds the table for this sun and altitude (built elsewhere):
+ * records that, and computes `ambient` from it. */
+void tl_sky_view_built(tl_sky_luts *l, double sun_elevation, double altitude);
+/* The camera's height above the ground that the tables use for `altitude`:
+ * held at least 1 m above the ground and 1 m under the atmosphere's top. */
+double tl_sky_camera_height(const tl_atmosphere *a, double altitude);
 
 /* Sky radiance seen from `altitude` metres in direction (elevation above
  * the horizon, azimuth from the sun's), sun of illuminance 1: the sky-view
