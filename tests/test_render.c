@@ -146,6 +146,66 @@ static void test_device_platform_extensions(void)
     CHECK(!tl_gl_egl_lists_devices(""));
 }
 
+/* The readback in two halves (tideline render): two frames queued, then
+ * collected oldest first, are the frames tl_renderer_render gives, every
+ * plane bit for bit; a third queued frame, a collection with none queued
+ * and a frame of the wrong size are errors. */
+static void test_queued_readback(tl_renderer *r)
+{
+    tl_scene s[2];
+    tl_frame sync[2], queued[2];
+    tl_frame_uniforms u[2];
+    tl_error err;
+    tl_error_clear(&err);
+    for (int k = 0; k < 2; k++) {
+        small_scene(&s[k]);
+        s[k].time = 2.0 + 5.0 * k;
+        s[k].sun.azimuth = 0.4 * k; /* a different sky-view table too */
+        gl_test_prepare(r, &s[k], &u[k]);
+        if (render(r, &s[k], &sync[k]))
+            return;
+        CHECK(tl_frame_alloc(&queued[k], s[k].width, s[k].height, &err) == 0);
+    }
+    for (int k = 0; k < 2; k++) {
+        gl_test_prepare(r, &s[k], &u[k]);
+        CHECK(tl_renderer_begin(r, u[k].width, u[k].height, u[k].out_width, u[k].out_height,
+                                &err) == 0);
+        CHECK(tl_renderer_accumulate(r, &u[k], 1.0f, 1, &err) == 0);
+        CHECK(tl_renderer_finish_begin(
+                  r, &(tl_display_settings){u[k].exposure, u[k].bloom, u[k].pixel_filter},
+                  TL_PLANES_ALL, &err) == 0);
+    }
+    CHECK(tl_renderer_finish_begin(r, &(tl_display_settings){1, 0, 0}, TL_PLANES_ALL, &err) != 0);
+    CHECK_STR_CONTAINS(err.message, "collect one first");
+    int w = 0, h = 0;
+    CHECK(tl_renderer_queued_size(r, &w, &h) == 2 && w == 160 && h == 96);
+    size_t n = (size_t)160 * 96;
+    for (int k = 0; k < 2; k++) {
+        CHECK(tl_renderer_finish_end(r, &queued[k], &err) == 0);
+        CHECK(memcmp(queued[k].color, sync[k].color, n * 4 * sizeof(float)) == 0);
+        CHECK(memcmp(queued[k].depth, sync[k].depth, n * sizeof(float)) == 0);
+        CHECK(memcmp(queued[k].display, sync[k].display, n * 4 * sizeof(float)) == 0);
+    }
+    CHECK(memcmp(sync[0].display, sync[1].display, n * 4 * sizeof(float)) != 0);
+    CHECK(tl_renderer_finish_end(r, &queued[0], &err) != 0);
+    CHECK_STR_CONTAINS(err.message, "no frame waits");
+    /* Only the display plane, into a frame of another size: refused. */
+    tl_frame small;
+    CHECK(tl_frame_alloc(&small, 80, 48, &err) == 0);
+    CHECK(tl_renderer_begin(r, 160, 96, 160, 96, &err) == 0);
+    CHECK(tl_renderer_accumulate(r, &u[0], 1.0f, 1, &err) == 0);
+    CHECK(tl_renderer_finish_begin(r, &(tl_display_settings){1, 0, 0}, TL_PLANE_DISPLAY, &err) ==
+          0);
+    CHECK(tl_renderer_finish_end(r, &small, &err) != 0);
+    CHECK_STR_CONTAINS(err.message, "does not match");
+    CHECK(tl_renderer_queued_size(r, &w, &h) == 0);
+    tl_frame_free(&small);
+    for (int k = 0; k < 2; k++) {
+        tl_frame_free(&sync[k]);
+        tl_frame_free(&queued[k]);
+    }
+}
+
 /* A compiler's log names source strings by number; tideline names them by
  * file, the same way for Mesa's "0:12(5): " and NVIDIA's "0(12) : ". */
 static void test_shader_log_names(void)
@@ -671,6 +731,7 @@ int main(void)
     test_refine(r);
     test_bad_samples(r);
     test_sky_rows(r);
+    test_queued_readback(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

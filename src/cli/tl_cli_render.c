@@ -365,6 +365,32 @@ static void frame_written(progress *prog, size_t *written, long n, const char *p
     progress_update(prog, n, path[0] ? path : "encoded");
 }
 
+/* The frame drawn last, whose planes are still on their way to the CPU
+ * (tl_render_timeline_frame_queue): collected once the next one is drawn. */
+typedef struct pending_frame {
+    int queued;
+    long n;
+    tl_scene scene;
+    char path[4096];
+} pending_frame;
+
+/* Collects the pending frame into `frame` and hands it to the writers. */
+static int submit_pending(tl_render *render, tl_writer *writer, pending_frame *p, tl_frame *frame,
+                          progress *prog, size_t *written, tl_error *err)
+{
+    if (!p->queued)
+        return TL_OK;
+    p->queued = 0;
+    int rc = tl_render_collect(render, frame, err);
+    if (!rc) {
+        long done;
+        rc = tl_writer_submit(writer, frame, p->n, &p->scene, p->path, &done, err);
+        frame_written(prog, written, done, tl_writer_path(writer));
+        prog->rendered += !rc;
+    }
+    return rc;
+}
+
 int tl_cli_render(int argc, char **argv)
 {
     tl_error err;
@@ -480,7 +506,10 @@ int tl_cli_render(int argc, char **argv)
     if (o.verbose)
         fprintf(stderr, "tideline render: %d writer thread%s\n", writer.count,
                 writer.count == 1 ? "" : "s");
+    /* Frame n draws while frame n-1's planes travel to the CPU and the
+     * frames before it are encoded and written. */
     long done_frame;
+    pending_frame pending = {0};
     for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
         long n = frames.frames[i];
         if (o.pattern)
@@ -489,6 +518,7 @@ int tl_cli_render(int argc, char **argv)
             break;
         if (o.skip_existing && o.pattern && frame_file_complete(path, width, height)) {
             /* The frames in flight are reported first: progress stays in order. */
+            rc = submit_pending(render, &writer, &pending, &frame, &prog, &written, &err);
             for (int k = 0; !rc && k < writer.count; k++) {
                 rc = tl_writer_wait(&writer, &done_frame, &err);
                 frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
@@ -502,7 +532,7 @@ int tl_cli_render(int argc, char **argv)
         }
         double t0 = tl_clock_seconds();
         tl_scene scene;
-        rc = tl_render_timeline_frame(render, &tl, n, &settings, &frame, &scene, &err);
+        rc = tl_render_timeline_frame_queue(render, &tl, n, &settings, &scene, &err);
         if (rc)
             break;
         if (o.verbose && (i == 0 || tl_render_last_features(render) != last_features)) {
@@ -512,11 +542,18 @@ int tl_cli_render(int argc, char **argv)
             progress_note(&prog, "frame %ld: features: %s", n, words);
         }
         if (stop_signal)
-            break; /* discard the frame just rendered */
-        rc = tl_writer_submit(&writer, &frame, n, &scene, o.pattern ? path : "", &done_frame, &err);
-        frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
-        prog.rendered += !rc;
+            break; /* the frame just drawn is discarded: never collected */
+        rc = submit_pending(render, &writer, &pending, &frame, &prog, &written, &err);
+        pending = (pending_frame){1, n, scene, ""};
+        snprintf(pending.path, sizeof pending.path, "%s", o.pattern ? path : "");
         prog.busy += tl_clock_seconds() - t0;
+    }
+    /* The frame drawn before an interruption or an error is complete too. */
+    if (pending.queued) {
+        int prc = submit_pending(render, &writer, &pending, &frame, &prog, &written,
+                                 rc ? &(tl_error){0} : &err);
+        if (!rc)
+            rc = prc;
     }
     /* The frames submitted are complete: they are always written, even
      * when interrupted (what was rendered is kept, atomically). */

@@ -247,6 +247,9 @@ void tl_renderer_destroy(tl_renderer *r)
         if (r->mesh_program[i])
             glDeleteProgram(r->mesh_program[i]);
     tl_renderer_free_sky(r);
+    for (int i = 0; i < TL_READBACK_SLOTS; i++)
+        if (r->readback[i].buffer)
+            glDeleteBuffers(1, &r->readback[i].buffer);
     glDeleteVertexArrays(1, &r->vao);
     free(r);
 }

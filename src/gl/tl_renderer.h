@@ -81,8 +81,21 @@ int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, fl
  * them gives. Sample 0 goes into a target begin has just cleared. Then
  * finish or display. */
 int tl_renderer_refine(tl_renderer *r, const tl_frame_uniforms *u, int sample, tl_error *err);
+/* tl_renderer_finish in two halves, so that the GPU draws the next frame
+ * while this one's planes travel (tideline render): finish_begin runs the
+ * display pass and queues the planes' transfers; finish_end waits for the
+ * oldest queued frame's and copies them into `frame` (of the size
+ * tl_renderer_queued_size gives). Up to TL_READBACK_SLOTS frames wait at a
+ * time; the frames are the same as tl_renderer_finish's. */
+#define TL_READBACK_SLOTS 2
+int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display, unsigned planes,
+                             tl_error *err);
+int tl_renderer_finish_end(tl_renderer *r, tl_frame *frame, tl_error *err);
+/* How many frames wait for their readback, and the oldest one's size. */
+int tl_renderer_queued_size(const tl_renderer *r, int *width, int *height);
 /* Seconds the last tl_renderer_finish spent reading the planes back (after
- * waiting for the GPU to finish drawing). */
+ * waiting for the GPU to finish drawing), or finish_end waiting for and
+ * copying them. */
 double tl_renderer_last_readback(const tl_renderer *r);
 
 /* The glare image (render.bloom) is this many times smaller than the

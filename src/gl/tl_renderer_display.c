@@ -2,6 +2,7 @@
  * planes that leave the GPU at the output size, with glare and the
  * tonemap; the window's letterboxed copy; the readback. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -306,6 +307,114 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
     r->readback_seconds = tl_clock_seconds() - t0;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return tl_renderer_check("reading the frame back", err);
+}
+
+/* ---- the readback in two halves (tideline render) ---- */
+
+/* A queued frame's planes in its pixel-pack buffer: colour, distance and
+ * display, those asked for, one after another. */
+static size_t plane_bytes(unsigned plane, int w, int h)
+{
+    size_t px = (size_t)w * (size_t)h;
+    return px * sizeof(float) * (plane == TL_PLANE_DEPTH ? 1 : 4);
+}
+
+int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display, unsigned planes,
+                             tl_error *err)
+{
+    if (r->readback_queued == TL_READBACK_SLOTS)
+        return tl_error_set(err, TL_ERR_RUNTIME,
+                            "%d frames already wait for their readback: collect one first",
+                            TL_READBACK_SLOTS);
+    int w = r->display.width, h = r->display.height;
+    int rc = display_pass(r, display, planes, err);
+    if (rc)
+        return rc;
+    tl_timers_collect(&r->timers);
+    readback_slot *slot = &r->readback[(r->readback_head + r->readback_queued) % TL_READBACK_SLOTS];
+    size_t need = 0;
+    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1)
+        if (planes & p)
+            need += plane_bytes(p, w, h);
+    if (!slot->buffer)
+        glGenBuffers(1, &slot->buffer);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, slot->buffer);
+    if (slot->bytes < need) {
+        glBufferData(GL_PIXEL_PACK_BUFFER, (GLsizeiptr)need, NULL, GL_STREAM_READ);
+        slot->bytes = need;
+    }
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    size_t offset = 0;
+    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1) {
+        if (!(planes & p))
+            continue;
+        int filtered = p == TL_PLANE_DISPLAY && r->display_filtered;
+        glBindFramebuffer(GL_FRAMEBUFFER, filtered ? r->filtered.fbo : r->display.fbo);
+        glReadBuffer(GL_COLOR_ATTACHMENT0 + (p == TL_PLANE_COLOR   ? 1u
+                                             : p == TL_PLANE_DEPTH ? 2u
+                                                                   : 0u));
+        glReadPixels(0, 0, w, h, p == TL_PLANE_DEPTH ? GL_RED : GL_RGBA, GL_FLOAT,
+                     (void *)(uintptr_t)offset);
+        offset += plane_bytes(p, w, h);
+    }
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glFlush(); /* the GPU starts on it now, while the caller draws on */
+    slot->planes = planes;
+    slot->width = w;
+    slot->height = h;
+    r->readback_queued++;
+    return tl_renderer_check("queueing the readback", err);
+}
+
+int tl_renderer_queued_size(const tl_renderer *r, int *width, int *height)
+{
+    if (!r->readback_queued)
+        return 0;
+    *width = r->readback[r->readback_head].width;
+    *height = r->readback[r->readback_head].height;
+    return r->readback_queued;
+}
+
+int tl_renderer_finish_end(tl_renderer *r, tl_frame *frame, tl_error *err)
+{
+    if (!r->readback_queued)
+        return tl_error_set(err, TL_ERR_RUNTIME, "no frame waits for its readback");
+    readback_slot *slot = &r->readback[r->readback_head];
+    r->readback_head = (r->readback_head + 1) % TL_READBACK_SLOTS;
+    r->readback_queued--;
+    if (frame->width != slot->width || frame->height != slot->height)
+        return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
+    double t0 = tl_clock_seconds();
+    size_t need = 0;
+    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1)
+        if (slot->planes & p)
+            need += plane_bytes(p, slot->width, slot->height);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, slot->buffer);
+    /* Waits for the transfers queued by finish_begin. */
+    const char *src = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, (GLsizeiptr)need, GL_MAP_READ_BIT);
+    int rc = TL_OK;
+    if (!src) {
+        rc = tl_renderer_check("mapping the readback", err);
+        if (!rc)
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "the readback buffer could not be mapped");
+    } else {
+        float *dst[3] = {frame->color, frame->depth, frame->display};
+        size_t offset = 0;
+        for (int k = 0; k < 3; k++) {
+            unsigned p = 1u << k;
+            if (!(slot->planes & p))
+                continue;
+            size_t n = plane_bytes(p, slot->width, slot->height);
+            memcpy(dst[k], src + offset, n);
+            offset += n;
+        }
+        if (!glUnmapBuffer(GL_PIXEL_PACK_BUFFER))
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "the readback buffer was lost while mapped");
+    }
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    r->readback_seconds = tl_clock_seconds() - t0;
+    return rc;
 }
 
 double tl_renderer_last_readback(const tl_renderer *r)

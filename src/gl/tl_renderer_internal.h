@@ -48,6 +48,15 @@ typedef struct pass_timers {
     double seconds[TL_TIMED_COUNT];
 } pass_timers;
 
+/* A frame's planes in transit to the CPU (tl_renderer_finish_begin): a
+ * pixel-pack buffer of `bytes`, the planes and their size. */
+typedef struct readback_slot {
+    GLuint buffer;
+    size_t bytes;
+    unsigned planes;
+    int width, height;
+} readback_slot;
+
 /* The boat's mesh on the GPU: interleaved position, normal, colour. */
 typedef struct gpu_mesh {
     GLuint vao, vbo, ibo;
@@ -93,7 +102,11 @@ struct tl_renderer {
     int sky_tables_valid, sky_view_valid;
     double sky_view_sun, sky_view_altitude;
     gpu_mesh mesh;
-    double readback_seconds; /* of the last tl_renderer_finish */
+    double readback_seconds; /* of the last tl_renderer_finish or finish_end */
+    /* Frames whose planes are on their way (finish_begin), oldest first
+     * from readback_head. */
+    readback_slot readback[TL_READBACK_SLOTS];
+    int readback_head, readback_queued;
     pass_timers timers;
 };
 

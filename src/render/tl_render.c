@@ -232,13 +232,18 @@ void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutte
     *close = b;
 }
 
+/* The display pass's settings from the scene's exposure, glare and pixel
+ * filter. */
+#define display_of(scene)                                                                          \
+    ((tl_display_settings){(float)((scene)->exposure * exp2(-(scene)->ev)), (float)(scene)->bloom, \
+                           (float)(scene)->quality.pixel_filter})
+
 /* The display pass with the scene's settings, then the planes read back
  * into `out`, or (out NULL) the frame left on the GPU for the window. */
 static int show_or_read(tl_render *r, const tl_scene *scene, const tl_render_settings *settings,
                         tl_frame *out, tl_error *err)
 {
-    const tl_display_settings display = {(float)(scene->exposure * exp2(-scene->ev)),
-                                         (float)scene->bloom, (float)scene->quality.pixel_filter};
+    const tl_display_settings display = display_of(scene);
     if (!out)
         return tl_renderer_display(r->renderer, &display, err);
     int rc = tl_renderer_finish(r->renderer, &display,
@@ -248,22 +253,21 @@ static int show_or_read(tl_render *r, const tl_scene *scene, const tl_render_set
     return rc;
 }
 
-int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
-                             const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
-                             tl_error *err)
+/* Frame `frame` of `tl` drawn, its sub-frames accumulated, but not yet
+ * shown or read back; its scene in *scene. */
+static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
+                               const tl_render_settings *settings, tl_frame *out, tl_scene *scene,
+                               tl_error *err)
 {
-    double t0 = tl_clock_seconds();
-    r->render_seconds = r->readback_seconds = 0.0;
     double t = tl_timeline_frame_time(tl, frame);
-    tl_scene scene;
-    tl_render_frame_scene(tl, t, settings, &scene);
-    int rc = tl_scene_validate(&scene, err);
+    tl_render_frame_scene(tl, t, settings, scene);
+    int rc = tl_scene_validate(scene, err);
     if (!rc && out)
-        rc = ensure_frame(out, scene.width, scene.height, err);
+        rc = ensure_frame(out, scene->width, scene->height, err);
     int rw, rh;
-    tl_prepare_render_size(&scene, &rw, &rh);
+    tl_prepare_render_size(scene, &rw, &rh);
     if (!rc)
-        rc = tl_renderer_begin(r->renderer, rw, rh, scene.width, scene.height, err);
+        rc = tl_renderer_begin(r->renderer, rw, rh, scene->width, scene->height, err);
     if (rc)
         return rc;
     int samples = 1;
@@ -288,7 +292,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
         tl_scene sub;
         if (samples == 1)
-            sub = scene;
+            sub = *scene;
         else
             tl_render_frame_scene(tl, tk, settings, &sub);
         rc = tl_scene_validate(&sub, err);
@@ -303,12 +307,51 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         r->last_features |= u.features;
         rc = accumulate(r, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
+    return rc;
+}
+
+int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
+                             const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
+                             tl_error *err)
+{
+    double t0 = tl_clock_seconds();
+    r->render_seconds = r->readback_seconds = 0.0;
+    tl_scene scene;
+    int rc = draw_timeline_frame(r, tl, frame, settings, out, &scene, err);
     if (!rc)
         rc = show_or_read(r, &scene, settings, out, err);
     if (!rc && scene_out)
         *scene_out = scene;
     r->render_seconds = tl_clock_seconds() - t0 - r->readback_seconds;
     return rc;
+}
+
+int tl_render_timeline_frame_queue(tl_render *r, const tl_timeline *tl, long frame,
+                                   const tl_render_settings *settings, tl_scene *scene_out,
+                                   tl_error *err)
+{
+    tl_scene scene;
+    int rc = draw_timeline_frame(r, tl, frame, settings, NULL, &scene, err);
+    if (!rc)
+        rc = tl_renderer_finish_begin(r->renderer, &display_of(&scene),
+                                      settings->planes ? settings->planes : TL_PLANES_ALL, err);
+    if (!rc && scene_out)
+        *scene_out = scene;
+    return rc;
+}
+
+int tl_render_collect(tl_render *r, tl_frame *out, tl_error *err)
+{
+    int w, h;
+    if (!tl_renderer_queued_size(r->renderer, &w, &h))
+        return tl_error_set(err, TL_ERR_RUNTIME, "no frame is queued");
+    int rc = ensure_frame(out, w, h, err);
+    if (rc) {
+        tl_frame dummy = {0}; /* the queue moves on all the same */
+        tl_renderer_finish_end(r->renderer, &dummy, &(tl_error){0});
+        return rc;
+    }
+    return tl_renderer_finish_end(r->renderer, out, err);
 }
 
 int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,

@@ -78,6 +78,16 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err);
 
+/* tl_render_timeline_frame with its readback left in flight, so that the
+ * GPU draws the next frame while this one's planes travel (tideline
+ * render): the frame is drawn and its planes queued; tl_render_collect
+ * fills `out` (allocated to size) with the oldest queued frame's. At most
+ * two frames wait; the frames are tl_render_timeline_frame's. */
+int tl_render_timeline_frame_queue(tl_render *r, const tl_timeline *tl, long frame,
+                                   const tl_render_settings *settings, tl_scene *scene_out,
+                                   tl_error *err);
+int tl_render_collect(tl_render *r, tl_frame *out, tl_error *err);
+
 /* Progressive refinement of frame `frame` (no shutter): its sample
  * `sample` of `samples` stratified ones per pixel is added to the running
  * mean of the samples before it (sample 0 starts it afresh), then shown or
