@@ -234,9 +234,11 @@ void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutte
 
 /* The display pass's settings from the scene's exposure, glare and pixel
  * filter. */
-#define display_of(scene)                                                                          \
-    ((tl_display_settings){(float)((scene)->exposure * exp2(-(scene)->ev)), (float)(scene)->bloom, \
-                           (float)(scene)->quality.pixel_filter})
+static tl_display_settings display_of(const tl_scene *scene)
+{
+    return (tl_display_settings){(float)(scene->exposure * exp2(-scene->ev)), (float)scene->bloom,
+                                 (float)scene->quality.pixel_filter};
+}
 
 /* The display pass with the scene's settings, then the planes read back
  * into `out`, or (out NULL) the frame left on the GPU for the window. */
@@ -332,8 +334,9 @@ int tl_render_timeline_frame_queue(tl_render *r, const tl_timeline *tl, long fra
 {
     tl_scene scene;
     int rc = draw_timeline_frame(r, tl, frame, settings, NULL, &scene, err);
+    tl_display_settings display = display_of(&scene);
     if (!rc)
-        rc = tl_renderer_finish_begin(r->renderer, &display_of(&scene),
+        rc = tl_renderer_finish_begin(r->renderer, &display,
                                       settings->planes ? settings->planes : TL_PLANES_ALL, err);
     if (!rc && scene_out)
         *scene_out = scene;
