@@ -208,6 +208,64 @@ static void test_view_table(tl_renderer *r)
     CHECK(worst_ambient < 1e-3);
 }
 
+/* Renders `s` with renderer `r` and its own tables `luts`, as tl_render
+ * does. */
+static int render_with(tl_renderer *r, tl_sky_luts *luts, const tl_scene *s, tl_frame *f)
+{
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(s, &w, &u);
+    tl_error err;
+    tl_error_clear(&err);
+    int rc = tl_frame_alloc(f, s->width, s->height, &err);
+    if (!rc)
+        rc = tl_renderer_prepare_sky(r, s, luts, &u, &err);
+    if (!rc)
+        rc = tl_renderer_render(r, &u, f, &err);
+    CHECK(rc == 0);
+    return rc;
+}
+
+/* Two renderers in one context, each with its own tables: the first draws
+ * a frame with the sun at 3 deg, the second one at 30 deg, then the first
+ * its frame again. Its sky-view table is still current, so it is not drawn
+ * again, but the texture unit the programs read must hold the first
+ * renderer's table, not the one the second drew last: the frame is the
+ * same as the first time. */
+static void test_two_renderers(tl_renderer *r)
+{
+    static tl_sky_luts mine, theirs; /* ~0.5 MB each */
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = 64;
+    s.height = 36;
+    s.sun.elevation = 3.0 * DEG;
+    tl_frame before, other, after;
+    if (render_with(r, &mine, &s, &before))
+        return;
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    tl_renderer *second = NULL;
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_create(&second, &lib, &err) == 0);
+    tl_scene high = s;
+    high.sun.elevation = 30.0 * DEG;
+    if (second && !render_with(second, &theirs, &high, &other)) {
+        if (!render_with(r, &mine, &s, &after)) {
+            size_t n = (size_t)64 * 36 * 4;
+            CHECK(memcmp(after.color, before.color, n * sizeof(float)) == 0);
+            CHECK(memcmp(other.color, before.color, n * sizeof(float)) != 0);
+            tl_frame_free(&after);
+        }
+        tl_frame_free(&other);
+    }
+    if (second)
+        tl_renderer_destroy(second);
+    tl_frame_free(&before);
+}
+
 /* sky.model seed renders what the renderer rendered before the physical
  * sky: the reference (the default scene at 3 s, 96x54) was written by the
  * commit before it. Compared through the same EXR writer. */
@@ -276,6 +334,7 @@ int main(int argc, char **argv)
     on_llvmpipe = strstr(tl_gl_context_describe(ctx), "llvmpipe") != NULL;
     test_against_reference(r);
     test_view_table(r);
+    test_two_renderers(r);
     test_sun(r);
     test_seed_unchanged(r);
     tl_renderer_destroy(r);

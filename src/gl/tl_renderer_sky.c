@@ -73,7 +73,7 @@ static void set_atmosphere(GLuint p, const tl_atmosphere *a)
 }
 
 /* Draws l's sky-view table for the sun and camera height into the
- * texture on unit 4, and reads it back into l->view. */
+ * renderer's texture, and reads it back into l->view. */
 static int build_view(tl_renderer *r, tl_sky_luts *l, double sun_elevation, double height,
                       tl_error *err)
 {
@@ -121,9 +121,6 @@ static int build_view(tl_renderer *r, tl_sky_luts *l, double sun_elevation, doub
         memcpy(view + 3 * i, rgba + 4 * i, 3 * sizeof(float));
     free(rgba);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glActiveTexture(GL_TEXTURE4);
-    glBindTexture(GL_TEXTURE_2D, r->sky_view.tex[0]);
-    glActiveTexture(GL_TEXTURE0);
     return tl_renderer_check("building the sky-view table", err);
 }
 
@@ -152,6 +149,11 @@ int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, tl_sky_luts *
         r->sky_view_altitude = altitude;
         r->sky_view_valid = 1;
     }
+    /* Bound every frame, built or not: texture units belong to the
+     * context, which another renderer may share. */
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, r->sky_view.tex[0]);
+    glActiveTexture(GL_TEXTURE0);
     tl_prepare_sky_ambient(scene, luts, u);
     return TL_OK;
 }
