@@ -363,6 +363,13 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
     return tl_renderer_check("frame setup", err);
 }
 
+void tl_renderer_drop_program(GLuint *program)
+{
+    if (*program)
+        glDeleteProgram(*program);
+    *program = 0;
+}
+
 int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
 {
     GLuint present = tl_renderer_build_present(r, 0, err);
@@ -374,21 +381,11 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
         r->present_programs[i] = 0;
     }
     r->present_programs[0] = present;
-    if (r->glare_program)
-        glDeleteProgram(r->glare_program);
-    r->glare_program = 0;
-    if (r->mip_program)
-        glDeleteProgram(r->mip_program);
-    r->mip_program = 0;
-    if (r->filter_program)
-        glDeleteProgram(r->filter_program);
-    r->filter_program = 0;
-    if (r->upscale_program)
-        glDeleteProgram(r->upscale_program);
-    r->upscale_program = 0;
-    if (r->sky_view_program)
-        glDeleteProgram(r->sky_view_program);
-    r->sky_view_program = 0;
+    tl_renderer_drop_program(&r->glare_program);
+    tl_renderer_drop_program(&r->mip_program);
+    tl_renderer_drop_program(&r->filter_program);
+    tl_renderer_drop_program(&r->upscale_program);
+    tl_renderer_drop_program(&r->sky_view_program);
     for (int i = 0; i < r->program_count; i++)
         glDeleteProgram(r->programs[i].program);
     r->program_count = 0;

@@ -29,15 +29,19 @@ GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err)
     return r->present_programs[variant];
 }
 
-/* Reads attachment `index` of the bound framebuffer in one transfer. The
- * display pass wrote it top row first (present.frag), so its rows are in
- * image order already: flipping GL's bottom-up rows here took as long as
- * the transfer (3.5 ms of a 1920x1080 float plane's). */
-static void read_rows(int index, int width, int height, int channels, float *dst)
+/* Reads plane p (a TL_PLANE_*) of the last display pass into dst: a client
+ * pointer, or an offset into the bound pixel-pack buffer. The display pass
+ * wrote it top row first (present.frag), so its rows arrive in image order:
+ * flipping GL's bottom-up rows here took as long as the transfer (3.5 ms
+ * of a 1920x1080 float plane's). */
+static void read_plane(const tl_renderer *r, unsigned p, void *dst)
 {
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)index);
+    int filtered = p == TL_PLANE_DISPLAY && r->display_filtered;
+    glBindFramebuffer(GL_FRAMEBUFFER, filtered ? r->filtered.fbo : r->display.fbo);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + (p == TL_PLANE_COLOR ? 1u : p == TL_PLANE_DEPTH ? 2u : 0u));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width, height, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT, dst);
+    glReadPixels(0, 0, r->display.width, r->display.height, p == TL_PLANE_DEPTH ? GL_RED : GL_RGBA,
+                 GL_FLOAT, dst);
 }
 
 /* A pass's RGBA32F target at w x h and its program (fragment shader `fs`,
@@ -294,16 +298,10 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
     double t0 = tl_clock_seconds();
     /* Each plane is a transfer: only the ones asked for.
      * All three come from the display pass, at the output size. */
-    glBindFramebuffer(GL_FRAMEBUFFER, r->display.fbo);
-    if (planes & TL_PLANE_COLOR)
-        read_rows(1, w, h, 4, frame->color);
-    if (planes & TL_PLANE_DEPTH)
-        read_rows(2, w, h, 1, frame->depth);
-    if (planes & TL_PLANE_DISPLAY) {
-        if (r->display_filtered)
-            glBindFramebuffer(GL_FRAMEBUFFER, r->filtered.fbo);
-        read_rows(0, w, h, 4, frame->display);
-    }
+    float *dst[3] = {frame->color, frame->depth, frame->display};
+    for (int k = 0; k < 3; k++)
+        if (planes & (1u << k))
+            read_plane(r, 1u << k, dst[k]);
     r->readback_seconds = tl_clock_seconds() - t0;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return tl_renderer_check("reading the frame back", err);
@@ -343,18 +341,11 @@ int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display,
         glBufferData(GL_PIXEL_PACK_BUFFER, (GLsizeiptr)need, NULL, GL_STREAM_READ);
         slot->bytes = need;
     }
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
     size_t offset = 0;
     for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1) {
         if (!(planes & p))
             continue;
-        int filtered = p == TL_PLANE_DISPLAY && r->display_filtered;
-        glBindFramebuffer(GL_FRAMEBUFFER, filtered ? r->filtered.fbo : r->display.fbo);
-        glReadBuffer(GL_COLOR_ATTACHMENT0 + (p == TL_PLANE_COLOR   ? 1u
-                                             : p == TL_PLANE_DEPTH ? 2u
-                                                                   : 0u));
-        glReadPixels(0, 0, w, h, p == TL_PLANE_DEPTH ? GL_RED : GL_RGBA, GL_FLOAT,
-                     (void *)(uintptr_t)offset);
+        read_plane(r, p, (void *)(uintptr_t)offset);
         offset += plane_bytes(p, w, h);
     }
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);

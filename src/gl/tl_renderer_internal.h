@@ -110,6 +110,8 @@ struct tl_renderer {
     pass_timers timers;
 };
 
+/* Deletes *program if there is one and zeroes it: built again on next use. */
+void tl_renderer_drop_program(GLuint *program);
 /* Frees the sky's textures and program (tl_renderer_sky.c). */
 void tl_renderer_free_sky(tl_renderer *r);
 

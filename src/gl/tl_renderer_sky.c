@@ -161,9 +161,7 @@ int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, tl_sky_luts *
 void tl_renderer_free_sky(tl_renderer *r)
 {
     tl_renderer_target_free(&r->sky_view);
-    if (r->sky_view_program)
-        glDeleteProgram(r->sky_view_program);
-    r->sky_view_program = 0;
+    tl_renderer_drop_program(&r->sky_view_program);
     if (r->sky_transmittance)
         glDeleteTextures(1, &r->sky_transmittance);
     if (r->sky_ms)
