@@ -59,6 +59,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/march_relax", TL_META_DOUBLE, NULL, q->march_relax, 0},
         {"tideline/march_prepass", TL_META_INT, NULL, 0, q->march_prepass},
         {"tideline/prepass_budget", TL_META_INT, NULL, 0, q->prepass_budget},
+        {"tideline/giant_prepass", TL_META_INT, NULL, 0, q->giant_prepass},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
     };

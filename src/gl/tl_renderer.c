@@ -611,15 +611,17 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     if (features & TL_FEATURE_GIANT_WAVE)
         memcpy(rect, u->giant_rect, sizeof rect);
     int rc = TL_OK;
-    if (tl_renderer_prepass_wanted(u, features)) {
+    const int scope = tl_renderer_prepass_scope(u, features, rect);
+    if (scope != TL_PREPASS_NONE) {
         /* A later sample of the same pass (a per-sample boat pass, the
          * preview's refinement) starts from the prepass its first ran. */
         tl_timers_start(&r->timers, TL_TIMED_PREPASS);
-        rc = tl_renderer_prepass(r, u, features, rect, only > 0, err);
+        rc = tl_renderer_prepass(r, u, features, rect, scope, only > 0, err);
         tl_timers_stop(&r->timers);
         if (rc)
             return rc;
-        lean |= TL_PASS_HINTED;
+        if (scope == TL_PREPASS_FRAME)
+            lean |= TL_PASS_HINTED;
         features |= TL_PASS_HINTED;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);

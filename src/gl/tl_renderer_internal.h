@@ -148,14 +148,18 @@ int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has
  * `scale` of the render's, whose rays all rise (u->sky_rows); h if none. */
 int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h);
 
-/* Whether the frame's ocean passes start from the march prepass. */
-int tl_renderer_prepass_wanted(const tl_frame_uniforms *u, unsigned features);
-/* Runs the march prepass for the frame (the giant wave's program over
- * `rect`) and binds its finest level for the passes with TL_PASS_HINTED.
- * `reuse`: the frame's last prepass still holds (another sample of the same
- * pass); only bound again, unless its size does not match. */
+/* Which of the frame's ocean passes start from the march prepass: none,
+ * all (quality.march_prepass), or the giant wave's alone over `rect`
+ * (quality.giant_prepass without march_prepass). */
+enum { TL_PREPASS_NONE, TL_PREPASS_FRAME, TL_PREPASS_GIANT };
+int tl_renderer_prepass_scope(const tl_frame_uniforms *u, unsigned features, const int rect[4]);
+/* Runs the march prepass for the frame over `scope` (the giant wave's
+ * program over `rect`) and binds its finest level for the passes with
+ * TL_PASS_HINTED. `reuse`: the frame's last prepass still holds (another
+ * sample of the same pass); only bound again, unless its size does not
+ * match. */
 int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
-                        const int rect[4], int reuse, tl_error *err);
+                        const int rect[4], int scope, int reuse, tl_error *err);
 
 /* The display pass's program for `variant` (TL_PRESENT_*), built on first
  * use; tl_renderer_build_present builds one afresh. */

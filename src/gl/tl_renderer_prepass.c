@@ -39,9 +39,14 @@ int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h)
 
 /* Under water the ocean's march is another (the lens, the surface from
  * below): no prepass there. */
-int tl_renderer_prepass_wanted(const tl_frame_uniforms *u, unsigned features)
+int tl_renderer_prepass_scope(const tl_frame_uniforms *u, unsigned features, const int rect[4])
 {
-    return u->march_prepass && !(features & TL_FEATURE_UNDERWATER);
+    if (features & TL_FEATURE_UNDERWATER)
+        return TL_PREPASS_NONE;
+    if (u->march_prepass)
+        return TL_PREPASS_FRAME;
+    int has_rect = (features & TL_FEATURE_GIANT_WAVE) && rect[0] < rect[2] && rect[1] < rect[3];
+    return u->giant_prepass && has_rect ? TL_PREPASS_GIANT : TL_PREPASS_NONE;
 }
 
 static void bind_hint(GLuint program, const target *coarser, float pixel)
@@ -54,9 +59,11 @@ static void bind_hint(GLuint program, const target *coarser, float pixel)
 }
 
 /* One level: a ray per scale x scale pixels into `t`, started from
- * `coarser` when there is one. */
+ * `coarser` when there is one; TL_PREPASS_GIANT: the giant wave's
+ * rectangle alone, the rest a miss. */
 static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
-                      const int rect[4], int scale, target *t, const target *coarser, tl_error *err)
+                      const int rect[4], int scope, int scale, target *t, const target *coarser,
+                      tl_error *err)
 {
     const int w = (u->width + scale - 1) / scale, h = (u->height + scale - 1) / scale;
     const GLenum format = GL_R32F;
@@ -85,6 +92,13 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
      * what the march would write there (-1) without the march. */
     const int sky = tl_renderer_sky_from(u, scale, h);
     const GLfloat miss[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
+    if (scope == TL_PREPASS_GIANT) {
+        /* The rectangle's pixels read their hints within the grown
+         * rectangle; the clear only keeps last frame's values out. */
+        glScissor(0, 0, w, h);
+        glClearBufferfv(GL_COLOR, 0, miss);
+        n = 0;
+    }
     for (int i = 0; i < n; i++)
         if (bands[i][3] > sky && bands[i][2] > bands[i][0]) {
             int y0 = bands[i][1] > sky ? bands[i][1] : sky;
@@ -92,7 +106,7 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
             glClearBufferfv(GL_COLOR, 0, miss);
             bands[i][3] = y0;
         }
-    for (int pass = 0; pass < 2; pass++) {
+    for (int pass = scope == TL_PREPASS_GIANT; pass < 2; pass++) {
         if (pass == 1 && !has_rect)
             break;
         unsigned f = pass == 0 ? march & ~(unsigned)TL_FEATURE_GIANT_WAVE : march;
@@ -114,7 +128,7 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
 }
 
 int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
-                        const int rect[4], int reuse, tl_error *err)
+                        const int rect[4], int scope, int reuse, tl_error *err)
 {
     const target *finest = &r->hint[0];
     if (reuse && finest->fbo && finest->width == (u->width + 1) / 2 &&
@@ -129,7 +143,7 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
     glEnable(GL_SCISSOR_TEST);
     int rc = TL_OK;
     for (int level = TL_PREPASS_LEVELS - 1; level >= 0 && !rc; level--)
-        rc = draw_level(r, u, features, rect, 2 << level, &r->hint[level],
+        rc = draw_level(r, u, features, rect, scope, 2 << level, &r->hint[level],
                         level + 1 < TL_PREPASS_LEVELS ? &r->hint[level + 1] : NULL, err);
     glDisable(GL_SCISSOR_TEST);
     if (rc)

@@ -594,6 +594,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->march_relax = (float)q->march_relax;
     u->march_prepass = q->march_prepass;
     u->prepass_budget = q->prepass_budget;
+    u->giant_prepass = q->giant_prepass;
     u->normalize_smoothed = q->normalize_smoothed;
     if (q->analytic_normals)
         u->features |= TL_FEATURE_ANALYTIC_NORMALS;

@@ -89,6 +89,7 @@ typedef struct tl_frame_uniforms {
     float march_relax; /* quality.march_relax: the ocean march's over-relaxation */
     int march_prepass; /* quality.march_prepass */
     int prepass_budget; /* quality.prepass_budget */
+    int giant_prepass;  /* quality.giant_prepass */
     /* Level of detail: the water one pixel covers per metre of distance
      * (radians; 0 = none): pixel angle / sqrt(samples per pixel). */
     float lod_angle;

@@ -40,6 +40,8 @@ typedef struct tl_quality {
     int prepass_budget;      /* with the prepass: march steps a ray whose four neighbours
                                 disagree takes before regula falsi searches the rest of
                                 their bracket (0: it marches to the end) */
+    bool giant_prepass;      /* with march_prepass off: the prepass still runs over the giant
+                                wave's rectangle, and only the wave's pixels start from it */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

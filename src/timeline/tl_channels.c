@@ -208,6 +208,10 @@ static const tl_channel channels[] = {
      offsetof(tl_scene, quality.prepass_budget), NULL,
      "with the prepass: march steps before regula falsi where the neighbours disagree (0: "
      "march to the end)"},
+    {"quality.giant_prepass", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
+     offsetof(tl_scene, quality.giant_prepass), NULL,
+     "with quality.march_prepass off: the giant wave's pixels still start from a prepass over its "
+     "rectangle"},
     {"quality.miss_at_start", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
      offsetof(tl_scene, quality.miss_at_start), NULL,
      "a ray out of march steps ends where its march began (the seed shader's way)"},
