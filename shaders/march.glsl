@@ -50,18 +50,23 @@ uniform float u_hint_pixel; // this pass's pixel, in the frame's pixels (the pre
 #endif
 
 // The nearest and farthest of the four prepass distances around this
-// pixel, the sky as 1e30.
-vec2 march_hint()
+// pixel, the sky as 1e30, and their bilinear blend at the pixel (where
+// all four saw water).
+vec3 march_hint()
 {
     ivec2 last = textureSize(u_march_hint, 0) - 1;
-    ivec2 j = ivec2(floor((g_pixel / u_hint_pixel - 1.0) * 0.5));
+    vec2 at = g_pixel / u_hint_pixel * 0.5 - 0.5; // in the coarser level's texels
+    ivec2 j = ivec2(floor(at));
+    vec2 f = at - vec2(j);
     vec2 range = vec2(1e30, 0.0);
+    float blend = 0.0;
     for (int y = 0; y < 2; y++)
         for (int x = 0; x < 2; x++) {
             float t = texelFetch(u_march_hint, clamp(j + ivec2(x, y), ivec2(0), last), 0).r;
             range = vec2(t > 0.0 ? min(range.x, t) : range.x, t > 0.0 ? max(range.y, t) : 1e30);
+            blend += (x == 0 ? 1.0 - f.x : f.x) * (y == 0 ? 1.0 - f.y : f.y) * t;
         }
-    return range;
+    return vec3(range, blend);
 }
 
 // The walk through the prepass's bracket, inside the march's own loop:
@@ -85,7 +90,7 @@ struct hint_walk {
 hint_walk hint_begin(inout float t, inout int steps, float budget_from, float t_far)
 {
     hint_walk w = hint_walk(0, 0, 0, false, 0.0, 0.0, 0.0, 0.0, 0.0);
-    vec2 hint = march_hint();
+    vec3 hint = march_hint();
     // Next to the sky (the horizon, a crest's silhouette) the ray may clip
     // the crest nearer than any of the four saw water: it starts further
     // short of the nearest.
@@ -100,6 +105,8 @@ hint_walk hint_begin(inout float t, inout int steps, float budget_from, float t_
         steps += 3 + TL_HINT_REFINE;
         if (hint.y >= 1e30)
             w.b1 = t_far;
+        if (w.bracket)
+            t = clamp(hint.z, w.b0, w.b1); // the four agree: probe their blend first
         if (w.b0 >= budget_from && u_prepass_budget > 0 && !w.bracket) {
             w.budget = u_prepass_budget;
             steps += 1 + TL_HINT_REFINE;
@@ -133,42 +140,65 @@ int hint_step(inout hint_walk w, float above, inout float t, float t_start)
 {
     if (w.stage == 0)
         return HINT_MARCH;
-    if (w.stage == 1) {
+    if (w.stage == 1 && !w.bracket) {
         if (!(above > 0.0)) { // under a crest between the prepass rays
             w.stage = 0;
             w.budget = 0; // the crest lies before the bracket: march all the way
             t = t_start;
             return HINT_NEXT;
         }
-        if (!w.bracket) {
-            w.stage = 0; // march on from short of the silhouette
-            return HINT_MARCH;
-        }
-        w.c0 = above;
-        w.stage = 2;
-        t = w.b1;
-        return HINT_NEXT;
+        w.stage = 0; // march on from short of the silhouette
+        return HINT_MARCH;
     }
-    if (abs(above) < u_hit_epsilon) {
+    if (abs(above) < (w.stage > 1 ? 1.0 : 0.25) * u_hit_epsilon) {
         w.stage = 0;
         return HINT_FOUND; // within the hit epsilon of the surface
     }
-    if (w.stage == 2) {
+    if (w.stage == 1) { // the blend of the four: it splits the bracket
         if (above > 0.0) {
-            // No crossing at the bracket's ends: there may be two between
-            // them (a crest the ray clips), so the march goes on from the
-            // near end, where nothing was skipped.
+            w.b0 = t;
+            w.c0 = above;
+            w.stage = 2;
+            t = w.b1;
+        } else if (above <= 0.0) {
+            w.b1 = t;
+            w.c1 = above;
+            w.stage = 2;
+            w.side = 2; // the near end is still to check
+            t = w.b0;
+        } else { // NaN: start over
             w.stage = 0;
-            t = w.resume;
-            return HINT_NEXT;
-        }
-        w.stage = 0;
-        if (!(above <= 0.0)) { // NaN: start over
             t = t_start;
-            return HINT_NEXT;
         }
-        w.c1 = above;
-        w.stage = 3;
+        return HINT_NEXT;
+    }
+    if (w.stage == 2) {
+        if (w.side == 2) { // the near end
+            w.side = 0;
+            if (!(above > 0.0)) { // under a crest before the bracket: march all the way
+                w.stage = 0;
+                t = t_start;
+                return HINT_NEXT;
+            }
+            w.c0 = above;
+            w.stage = 3;
+        } else {
+            if (above > 0.0) {
+                // No crossing at the bracket's ends: there may be two between
+                // them (a crest the ray clips), so the march goes on from the
+                // near end, where nothing was skipped.
+                w.stage = 0;
+                t = w.resume;
+                return HINT_NEXT;
+            }
+            w.stage = 0;
+            if (!(above <= 0.0)) { // NaN: start over
+                t = t_start;
+                return HINT_NEXT;
+            }
+            w.c1 = above;
+            w.stage = 3;
+        }
     } else if (w.stage == 3 + TL_HINT_REFINE) {
         w.stage = 0; // not converged (a steep face): march on from the last proven point
         t = w.resume;

