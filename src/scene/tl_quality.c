@@ -31,6 +31,8 @@
  * steps: on a sea twice as steep as the default, at most 0.71 of a pixel
  * deep (docs/rendering.md, test_render). */
 #define BUDGET 12
+/* One preset a row, its knobs in the order of tl_quality. */
+/* clang-format off */
 static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
      * filtered pixel_filter relax prepass budget giant_prepass */
@@ -53,6 +55,7 @@ static const tl_quality presets[] = {
     {"seed", 12, 36, 64, 0.01, 0.01, 1, 6, 0, false, false, true, false, 1.0, false, 0.0, 1.0,
      false, 0, true},
 };
+/* clang-format on */
 
 int tl_quality_preset(const char *name, tl_quality *out, tl_error *err)
 {
