@@ -6,13 +6,27 @@
 
 uniform vec4 u_wake[TL_WAKE_POINTS]; // camera-relative x z, age (s), distance behind the boat (m)
 uniform vec4 u_wake_params;          // half beam, fade time, strength, unused
+uniform vec4 u_wake_groups[TL_WAKE_GROUPS]; // per TL_WAKE_GROUP segments: circle x z, radius
 uniform vec2 u_world_offset;         // camera x z wrapped every 65536 m: texture coordinates
 
 float wake_foam(vec2 p, float ocean_value, out float thickness)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
     float half_beam = u_wake_params.x, cover = 0.0;
-    for (int k = 0; k + 1 < TL_WAKE_POINTS; k++) {
+    // Only the segments of the groups whose circles hold p (the CPU sizes
+    // them to the foam's reach): the loop's bounds differ per pixel, so it
+    // ends once every pixel of a block is done (llvmpipe runs a loop's
+    // masked iterations, and an if's both sides, for the whole block).
+    int first = TL_WAKE_GROUPS, last = -1;
+    for (int g = 0; g < TL_WAKE_GROUPS; g++) {
+        vec2 c = p - u_wake_groups[g].xy;
+        if (dot(c, c) <= u_wake_groups[g].z * u_wake_groups[g].z) {
+            first = min(first, g);
+            last = g;
+        }
+    }
+    int end = min((last + 1) * TL_WAKE_GROUP, TL_WAKE_POINTS - 1);
+    for (int k = first * TL_WAKE_GROUP; k < end; k++) {
         vec2 a = u_wake[k].xy, ab = u_wake[k + 1].xy - a;
         float len2 = dot(ab, ab);
         if (len2 < 1.0e-8)

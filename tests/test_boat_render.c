@@ -139,6 +139,97 @@ static void test_depth(tl_renderer *r, const tl_mesh *m, const char *name, tl_sc
     tl_frame_free(&without);
 }
 
+/* A boat that came round a bend at 6 m/s, seen from above its stern: its
+ * wake curves away in front of the camera, thick with foam. */
+static void wake_scene(tl_scene *s)
+{
+    boat_scene(s);
+    const double speed = 6.0, radius = 40.0;
+    s->boat.wake_step = 2.0 * s->boat.wake_time / (TL_WAKE_POINTS - 1);
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        double turn = k * s->boat.wake_step * speed / radius;
+        s->boat.wake_path[k][0] = radius * (1.0 - cos(turn));
+        s->boat.wake_path[k][1] = -radius * sin(turn);
+    }
+    s->boat.heading = 0.0;
+    s->boat.wake = 3.0; /* foam down to the path's far end */
+    s->camera.position[0] = 12.0;
+    s->camera.position[1] = 14.0;
+    s->camera.position[2] = 18.0;
+    const double target[3] = {8.0, 0.0, -30.0};
+    tl_scene_camera_look_at(&s->camera, target, NULL);
+}
+
+/* The wake's groups of segments (tl_prepare, shaders/wake.glsl) cull none
+ * of its foam. On the CPU, every point a segment's foam can reach (the
+ * shader's own test, in float) lies in its group's circle; on the GPU the
+ * frame equals the one with every circle covering the whole sea, and
+ * differs from the frame without the wake. */
+static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    wake_scene(&s);
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_WAKE);
+    const float half_beam = u.wake_params[0];
+    long reached = 0, outside = 0;
+    for (int j = 0; j <= 400; j++)
+        for (int i = 0; i <= 400; i++) {
+            float p[2] = {u.wake[0][0] - 80.0f + 0.45f * (float)i,
+                          u.wake[0][1] - 100.0f + 0.45f * (float)j};
+            for (int k = 0; k + 1 < TL_WAKE_POINTS; k++) {
+                float ax = u.wake[k][0], az = u.wake[k][1];
+                float bx = u.wake[k + 1][0] - ax, bz = u.wake[k + 1][1] - az;
+                float len2 = bx * bx + bz * bz;
+                if (len2 < 1.0e-8f)
+                    continue;
+                float along = ((p[0] - ax) * bx + (p[1] - az) * bz) / len2;
+                float t = fminf(fmaxf(along, 0.0f), 1.0f);
+                float d = hypotf(p[0] - (ax + bx * t), p[1] - (az + bz * t));
+                float behind = u.wake[k][3] + (u.wake[k + 1][3] - u.wake[k][3]) * t;
+                if (d > (half_beam + behind * 0.35355f) * 1.3f + 2.0f)
+                    continue;
+                const float *c = u.wake_groups[k / TL_WAKE_GROUP];
+                float cx = p[0] - c[0], cz = p[1] - c[1];
+                reached++;
+                outside += cx * cx + cz * cz > c[2] * c[2];
+            }
+        }
+    printf("wake: %ld (point, segment) pairs in the foam's reach, %ld outside their group's "
+           "circle\n",
+           reached, outside);
+    CHECK(reached > 10000);
+    CHECK(outside == 0);
+
+    tl_frame culled, all, none;
+    CHECK(tl_frame_alloc(&culled, s.width, s.height, &err) == 0);
+    CHECK(tl_frame_alloc(&all, s.width, s.height, &err) == 0);
+    CHECK(tl_renderer_render(r, &u, &culled, &err) == 0);
+    tl_frame_uniforms everywhere = u;
+    for (int g = 0; g < TL_WAKE_GROUPS; g++) {
+        everywhere.wake_groups[g][0] = everywhere.wake_groups[g][1] = 0.0f;
+        everywhere.wake_groups[g][2] = 1.0e18f;
+    }
+    CHECK(tl_renderer_render(r, &everywhere, &all, &err) == 0);
+    size_t n = (size_t)s.width * s.height * 4;
+    CHECK(memcmp(culled.color, all.color, n * sizeof(float)) == 0);
+    s.boat.wake = 0.0;
+    if (render(r, &s, &none) == 0) {
+        long foam = 0;
+        for (size_t i = 0; i < n; i += 4)
+            foam += luminance(culled.color + i) > luminance(none.color + i) + 0.01;
+        printf("wake: %ld of %d pixels lighter with its foam\n", foam, s.width * s.height);
+        CHECK(foam > 200);
+        tl_frame_free(&none);
+    }
+    tl_frame_free(&culled);
+    tl_frame_free(&all);
+}
+
 /* A boat floating low, its deck below the water around it: looking down
  * into it shows the deck, never water inside the hull. */
 static void test_no_water_on_deck(tl_renderer *r, const tl_mesh *m)
@@ -262,6 +353,7 @@ int main(int argc, char **argv)
     test_depth(r, &skiff, "skiff.gltf", &s);
     test_no_water_on_deck(r, &builtin);
     test_hull_antialiased(r, &builtin);
+    test_wake_groups(r, &builtin);
 
     tl_mesh_free(&builtin);
     tl_mesh_free(&skiff);

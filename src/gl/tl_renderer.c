@@ -86,9 +86,11 @@ void tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_GIANT_SLOPE_BINS %d\n"
                      "#define TL_GIANT_CONVERGED %.1e\n"
                      "#define TL_WAKE_POINTS %d\n"
+                     "#define TL_WAKE_GROUP %d\n"
+                     "#define TL_WAKE_GROUPS %d\n"
                      "#define TL_MARCH_RELAX 1.3\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
-                     TL_GIANT_CONVERGED, TL_WAKE_POINTS);
+                     TL_GIANT_CONVERGED, TL_WAKE_POINTS, TL_WAKE_GROUP, TL_WAKE_GROUPS);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -339,6 +341,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     if (u->features & TL_FEATURE_WAKE) {
         glUniform4fv(tl_renderer_loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
         glUniform4fv(tl_renderer_loc(p, "u_wake_params"), 1, u->wake_params);
+        glUniform4fv(tl_renderer_loc(p, "u_wake_groups"), TL_WAKE_GROUPS, &u->wake_groups[0][0]);
         glUniform2fv(tl_renderer_loc(p, "u_world_offset"), 1, u->world_offset);
     }
 }

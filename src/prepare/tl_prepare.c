@@ -319,6 +319,41 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
                                cw[1] + s->camera.position[1], sun);
 }
 
+/* How far from its path, `behind` metres back from the boat, the wake's
+ * foam reaches: shaders/wake.glsl skips a segment farther than 1.3 times
+ * the wedge's half width there plus 2 m (tan 19.47 deg = 0.35355). */
+static double wake_reach(const tl_boat *b, double behind)
+{
+    return (0.5 * b->beam + behind * 0.35355) * 1.3 + 2.0;
+}
+
+/* A circle around each group of the wake's segments that holds every point
+ * of the water its foam can reach (the reach grows along the path), so
+ * that a pixel loops only over the groups that reach it. Camera-relative,
+ * from u->wake; the slack covers the shader's float rounding. */
+static void wake_groups(const tl_boat *b, tl_frame_uniforms *u)
+{
+    for (int g = 0; g < TL_WAKE_GROUPS; g++) {
+        int k0 = g * TL_WAKE_GROUP, k1 = k0 + TL_WAKE_GROUP;
+        if (k1 > TL_WAKE_POINTS - 1)
+            k1 = TL_WAKE_POINTS - 1;
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        for (int k = k0; k <= k1; k++)
+            for (int i = 0; i < 2; i++) {
+                lo[i] = fmin(lo[i], u->wake[k][i]);
+                hi[i] = fmax(hi[i], u->wake[k][i]);
+            }
+        double cx = 0.5 * (lo[0] + hi[0]), cz = 0.5 * (lo[1] + hi[1]), spread = 0.0;
+        for (int k = k0; k <= k1; k++)
+            spread = fmax(spread, hypot(u->wake[k][0] - cx, u->wake[k][1] - cz));
+        double radius = spread + wake_reach(b, u->wake[k1][3]);
+        u->wake_groups[g][0] = (float)cx;
+        u->wake_groups[g][1] = (float)cz;
+        u->wake_groups[g][2] = (float)(radius * 1.001 + 0.1);
+        u->wake_groups[g][3] = 0.0f;
+    }
+}
+
 /* The wake's past positions relative to the camera, and its feature bit
  * when the boat has moved and the wedge can be in view. */
 static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
@@ -344,13 +379,14 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
     if (behind < 0.1) /* a boat at rest leaves no wake */
         return;
     /* The wedge's reach: the path's box widened by its widest arm. */
-    double reach = 0.5 * b->beam + behind * 0.35355 * 1.3 + 2.0;
+    double reach = wake_reach(b, behind);
     double centre[3] = {0.5 * (lo[0] + hi[0]) - cam[0], b->position[1] - cam[1],
                         0.5 * (lo[1] + hi[1]) - cam[2]};
     double radius = hypot(0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1])) + reach;
     if (!sphere_in_view(s, centre, radius))
         return;
     u->features |= TL_FEATURE_WAKE;
+    wake_groups(b, u);
     u->wake_params[0] = (float)(0.5 * b->beam);
     u->wake_params[1] = (float)b->wake_time;
     u->wake_params[2] = (float)b->wake;

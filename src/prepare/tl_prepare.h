@@ -146,6 +146,9 @@ typedef struct tl_frame_uniforms {
      * age in seconds and distance behind the boat along its path. */
     float wake[TL_WAKE_POINTS][4];
     float wake_params[4];  /* half beam, fade time, strength, unused */
+    /* Per group of TL_WAKE_GROUP segments: a circle (camera-relative x z,
+     * radius, unused) holding every point the group's foam can reach. */
+    float wake_groups[TL_WAKE_GROUPS][4];
     float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
 
     /* Under water (TL_FEATURE_UNDERWATER). */

@@ -130,6 +130,11 @@ typedef struct tl_giant_wave {
 
 /* Past positions of the boat kept for its wake. */
 #define TL_WAKE_POINTS 24
+/* The wake's segments in groups of this many, each with a bounding circle
+ * (tl_frame_uniforms.wake_groups): a pixel loops only over the groups that
+ * can reach it. */
+#define TL_WAKE_GROUP  4
+#define TL_WAKE_GROUPS ((TL_WAKE_POINTS - 1 + TL_WAKE_GROUP - 1) / TL_WAKE_GROUP)
 
 /* The boat's pose and the knobs of its model and floating. */
 typedef struct tl_boat {
