@@ -7,12 +7,14 @@
 uniform vec4 u_wake[TL_WAKE_POINTS]; // camera-relative x z, age (s), distance behind the boat (m)
 uniform vec4 u_wake_params;          // half beam, fade time, strength, unused
 uniform vec4 u_wake_groups[TL_WAKE_GROUPS]; // per TL_WAKE_GROUP segments: circle x z, radius
+uniform float u_wake_along[TL_WAKE_POINTS];  // metres along the boat's path, wrapped every 65536 m
 uniform vec2 u_world_offset;         // camera x z wrapped every 65536 m: texture coordinates
 
-float wake_foam(vec2 p, float ocean_value, out float thickness)
+float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
     float half_beam = u_wake_params.x, cover = 0.0;
+    vec2 path = vec2(0.0); // where on the path the foam's texture hangs: along, across (m)
     // Only the segments of the groups whose circles hold p (the CPU sizes
     // them to the foam's reach): the loop's bounds differ per pixel, so it
     // ends once every pixel of a block is done (llvmpipe runs a loop's
@@ -47,13 +49,25 @@ float wake_foam(vec2 p, float ocean_value, out float thickness)
         float edge = (d - arm) / (0.08 * arm + 0.5);
         float beside = along >= 0.0 && along <= 1.0 ? 1.0 : 0.0;
         float arms = 0.6 * beside * exp(-edge * edge) * smoothstep(0.0, 2.0 * half_beam, behind);
-        cover = max(cover, fade * max(turbulent, arms));
+        float here = fade * max(turbulent, arms);
+        if (here > cover) {
+            cover = here;
+            float side = ab.x * (p.y - a.y) - ab.y * (p.x - a.x) < 0.0 ? -1.0 : 1.0;
+            path = vec2(mix(u_wake_along[k], u_wake_along[k + 1], u), side * d);
+        }
     }
-    float lace = 0.7 * foam_lace((p + u_world_offset) * 1.5) + 0.3 * ocean_value;
+    // The texture hangs on the path: streaks drawn out along it (the
+    // churned water stretches behind the stern) over a finer lace, both
+    // where the boat left them, not where it is now.
+    vec2 q = path / vec2(6.0, 0.8);
+    float streaks = 0.65 * foam_noise(q) + 0.35 * foam_noise(q * vec2(2.3, 2.7) + vec2(4.1, 7.7));
+    float lace = 0.75 * foam_lace((p + u_world_offset) * 3.0) + 0.25 * ocean_value;
     thickness = lace;
     cover *= u_wake_params.z;
-    // Where the coverage is full the foam is solid; thinner, only the
-    // lace's thickest parts stay.
-    float c = pow(cover, 0.75);
-    return cover > 0.0 ? smoothstep(1.0 - c, 1.3 - c, lace) : 0.0;
+    // How much foam: full behind the stern, thinning with age into the
+    // streaks; the fine lace then keeps as much of the water as that
+    // allows, its edges a pixel's texture wide (its finest cell 0.16 m).
+    float density = clamp(pow(cover, 1.3) * (0.4 + 1.2 * streaks), 0.0, 1.0);
+    float soft = 0.04 + 0.5 * min(footprint / 0.5, 1.0);
+    return cover > 0.0 ? smoothstep(1.0 - density, 1.0 - density + soft, lace) : 0.0;
 }

@@ -150,6 +150,7 @@ static void wake_scene(tl_scene *s)
         double turn = k * s->boat.wake_step * speed / radius;
         s->boat.wake_path[k][0] = radius * (1.0 - cos(turn));
         s->boat.wake_path[k][1] = -radius * sin(turn);
+        s->boat.wake_along[k] = 100.0 - radius * turn;
     }
     s->boat.heading = 0.0;
     s->boat.wake = 3.0; /* foam down to the path's far end */

@@ -193,6 +193,44 @@ static void test_constant_speed(void)
     tl_path_free(&path);
 }
 
+/* tl_path_distance against a dense polyline of the same path, by point
+ * times and at constant speed: 0 before the start, the length after the
+ * end, and in between the polyline's length up to that time. */
+static void test_distance(void)
+{
+    tl_path path;
+    build(&path, NPTS, pt_t, pt_p);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1) {
+            path.constant_speed = true;
+            CHECK(tl_path_prepare(&path, NULL) == 0);
+        }
+        CHECK(tl_path_distance(&path, -1.0) == 0.0);
+        CHECK_NEAR(tl_path_distance(&path, 9.0), path.length, 1e-12);
+        double along = 0.0, prev[3], cur[3], worst = 0.0;
+        tl_path_eval(&path, 0.0, prev, NULL);
+        const int steps = 100000;
+        for (int i = 1; i <= steps; i++) {
+            double t = 5.0 * i / steps;
+            tl_path_eval(&path, t, cur, NULL);
+            along += dist(cur, prev);
+            for (int k = 0; k < 3; k++)
+                prev[k] = cur[k];
+            if (i % 997 == 0 || i == steps)
+                worst = fmax(worst, fabs(tl_path_distance(&path, t) - along));
+        }
+        printf("%s: distance against a polyline, worst %.3g m of %.4f\n",
+               pass ? "constant speed" : "by point times", worst, path.length);
+        CHECK(worst < 1e-6 * path.length);
+    }
+    /* Fewer than two points: no distance. */
+    tl_path one;
+    build(&one, 1, pt_t, pt_p);
+    CHECK(tl_path_distance(&one, 3.0) == 0.0);
+    tl_path_free(&one);
+    tl_path_free(&path);
+}
+
 static void test_degenerate_and_validation(void)
 {
     /* A repeated point: finite everywhere, heading stays a unit vector. */
@@ -266,6 +304,7 @@ int main(void)
 {
     test_interpolation();
     test_constant_speed();
+    test_distance();
     test_degenerate_and_validation();
     TEST_END();
 }

@@ -386,6 +386,38 @@ static void test_look_at_boat(void)
     tl_timeline_free(&tl);
 }
 
+/* The wake's points carry their distance along the boat's path: a point
+ * passed at a given time keeps it in every later frame (the foam's
+ * texture hangs on it), the boat's own is how far it has come, and
+ * neighbouring points lie that far apart along the path. */
+static void test_wake_along(void)
+{
+    char text[1024];
+    snprintf(text, sizeof text, "tideline 1\n%s", boat_path);
+    tl_timeline tl;
+    if (!parse_ok(text, &tl))
+        return;
+    tl_scene a, b;
+    tl_timeline_eval(&tl, 6.0, &a);
+    /* Three wake steps later, point k + 3 is where point k was. */
+    tl_timeline_eval(&tl, 6.0 + 3.0 * a.boat.wake_step, &b);
+    CHECK(a.boat.wake_step > 0.0);
+    CHECK_NEAR(a.boat.wake_along[0], 0.6 * tl.boat_path.path.length, 1e-9);
+    for (int k = 0; k + 3 < TL_WAKE_POINTS; k++) {
+        CHECK_NEAR(b.boat.wake_along[k + 3], a.boat.wake_along[k], 1e-9);
+        CHECK_NEAR(b.boat.wake_path[k + 3][0], a.boat.wake_path[k][0], 1e-9);
+        /* The chord is shorter than the arc, by 6% where the path turns
+         * hard at its second point, by much less elsewhere. */
+        if (k > 0 && a.boat.wake_along[k] > 0.0) {
+            double chord = hypot(a.boat.wake_path[k][0] - a.boat.wake_path[k - 1][0],
+                                 a.boat.wake_path[k][1] - a.boat.wake_path[k - 1][1]);
+            double arc = a.boat.wake_along[k - 1] - a.boat.wake_along[k];
+            CHECK(arc >= chord - 1e-9 && arc <= 1.08 * chord);
+        }
+    }
+    tl_timeline_free(&tl);
+}
+
 static void test_follow_boat(void)
 {
     char text[1024];
@@ -780,6 +812,7 @@ int main(void)
     test_shortest();
     test_cuts();
     test_look_at_boat();
+    test_wake_along();
     test_follow_boat();
     test_boat_heading_and_float();
     test_constant_speed();

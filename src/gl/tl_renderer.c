@@ -342,6 +342,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform4fv(tl_renderer_loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
         glUniform4fv(tl_renderer_loc(p, "u_wake_params"), 1, u->wake_params);
         glUniform4fv(tl_renderer_loc(p, "u_wake_groups"), TL_WAKE_GROUPS, &u->wake_groups[0][0]);
+        glUniform1fv(tl_renderer_loc(p, "u_wake_along"), TL_WAKE_POINTS, u->wake_along);
         glUniform2fv(tl_renderer_loc(p, "u_world_offset"), 1, u->world_offset);
     }
 }

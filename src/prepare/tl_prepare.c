@@ -371,6 +371,7 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
         u->wake[k][1] = (float)(z - cam[2]);
         u->wake[k][2] = (float)(k * b->wake_step);
         u->wake[k][3] = (float)behind;
+        u->wake_along[k] = (float)wrap65536(b->wake_along[k]);
         lo[0] = fmin(lo[0], x);
         lo[1] = fmin(lo[1], z);
         hi[0] = fmax(hi[0], x);

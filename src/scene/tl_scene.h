@@ -156,6 +156,10 @@ typedef struct tl_boat {
     /* The wake: where the boat was, every wake_step seconds back from now
      * (wake_path[0] is the boat itself), world x z. */
     double wake_path[TL_WAKE_POINTS][2];
+    /* How far along the boat's path each of those points lies, metres from
+     * the path's start (tl_path_distance): the same wherever the boat is
+     * now, so the foam's texture stays where the boat left it. */
+    double wake_along[TL_WAKE_POINTS];
     double wake_step;
 } tl_boat;
 

@@ -184,24 +184,21 @@ int tl_path_prepare(tl_path *path, tl_error *err)
         return 0;
     size_t samples = (path->count - 1) * ARC_SAMPLES_PER_SEGMENT;
     double *arc = NULL;
-    if (path->constant_speed) {
-        if (samples + 1 > SIZE_MAX / sizeof *arc)
-            return tl_error_set(err, TL_ERR_RUNTIME, "path too long for an arc-length table");
-        arc = malloc((samples + 1) * sizeof *arc);
-        if (!arc)
-            return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for an arc-length table");
-        arc[0] = 0.0;
-    }
+    if (samples + 1 > SIZE_MAX / sizeof *arc)
+        return tl_error_set(err, TL_ERR_RUNTIME, "path too long for an arc-length table");
+    arc = malloc((samples + 1) * sizeof *arc);
+    if (!arc)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for an arc-length table");
+    arc[0] = 0.0;
     double total = 0.0;
     for (size_t j = 0; j < samples; j++) {
         double g0 = (double)j / ARC_SAMPLES_PER_SEGMENT;
         double g1 = (double)(j + 1) / ARC_SAMPLES_PER_SEGMENT;
         total += arc_between(path, g0, g1);
-        if (arc)
-            arc[j + 1] = total;
+        arc[j + 1] = total;
     }
     path->arc = arc;
-    path->arc_samples = arc ? samples : 0;
+    path->arc_samples = samples;
     path->length = total;
     return 0;
 }
@@ -266,19 +263,11 @@ static void fallback_tangent(const tl_path *path, size_t seg, double tangent[3])
     tangent[0] = tangent[1] = tangent[2] = 0.0;
 }
 
-void tl_path_eval(const tl_path *path, double t, double pos[3], double tangent[3])
+/* The segment and its parameter in [0, 1] where the path is at time t
+ * (two or more points). */
+static void locate(const tl_path *path, double t, size_t *seg_out, double *u_out)
 {
     size_t n = path->count;
-    double scratch[3];
-    if (!pos)
-        pos = scratch;
-    if (n == 0 || n == 1) {
-        for (int k = 0; k < 3; k++)
-            pos[k] = n ? path->points[0].p[k] : 0.0;
-        if (tangent)
-            tangent[0] = tangent[1] = tangent[2] = 0.0;
-        return;
-    }
     const tl_path_point *pts = path->points;
     double t0 = pts[0].t, t1 = pts[n - 1].t;
     if (isnan(t))
@@ -310,6 +299,26 @@ void tl_path_eval(const tl_path *path, double t, double pos[3], double tangent[3
         seg = lo;
         u = fmin(1.0, fmax(0.0, (t - pts[lo].t) / (pts[lo + 1].t - pts[lo].t)));
     }
+    *seg_out = seg;
+    *u_out = u;
+}
+
+void tl_path_eval(const tl_path *path, double t, double pos[3], double tangent[3])
+{
+    size_t n = path->count;
+    double scratch[3];
+    if (!pos)
+        pos = scratch;
+    if (n == 0 || n == 1) {
+        for (int k = 0; k < 3; k++)
+            pos[k] = n ? path->points[0].p[k] : 0.0;
+        if (tangent)
+            tangent[0] = tangent[1] = tangent[2] = 0.0;
+        return;
+    }
+    size_t seg;
+    double u;
+    locate(path, t, &seg, &u);
     double du[3];
     segment_eval(path, seg, u, pos, du);
     if (!tangent)
@@ -321,4 +330,18 @@ void tl_path_eval(const tl_path *path, double t, double pos[3], double tangent[3
     } else {
         fallback_tangent(path, seg, tangent);
     }
+}
+
+double tl_path_distance(const tl_path *path, double t)
+{
+    if (path->count < 2 || !path->arc)
+        return 0.0;
+    size_t seg;
+    double u;
+    locate(path, t, &seg, &u);
+    double g = (double)seg + u, step = 1.0 / ARC_SAMPLES_PER_SEGMENT;
+    size_t j = (size_t)(g * ARC_SAMPLES_PER_SEGMENT);
+    if (j >= path->arc_samples)
+        return path->length;
+    return path->arc[j] + arc_between(path, (double)j * step, g);
 }

@@ -129,6 +129,8 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
             tl_path_eval(&tl->boat_path.path, t - k * s->boat.wake_step, p, NULL);
             s->boat.wake_path[k][0] = p[0];
             s->boat.wake_path[k][1] = p[2];
+            s->boat.wake_along[k] =
+                tl_path_distance(&tl->boat_path.path, t - k * s->boat.wake_step);
         }
     }
     /* ... and floats on the waves, the giant one included. */
