@@ -10,7 +10,7 @@ uniform vec4 u_wake_groups[TL_WAKE_GROUPS]; // per TL_WAKE_GROUP segments: circl
 uniform float u_wake_along[TL_WAKE_POINTS];  // metres along the boat's path, wrapped every 65536 m
 uniform vec2 u_world_offset;         // camera x z wrapped every 65536 m: texture coordinates
 
-float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness)
+float wake_foam(vec2 p, float ocean_value, out float thickness)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
     float half_beam = u_wake_params.x, cover = 0.0;
@@ -66,8 +66,9 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness)
     cover *= u_wake_params.z;
     // How much foam: full behind the stern, thinning with age into the
     // streaks; the fine lace then keeps as much of the water as that
-    // allows, its edges a pixel's texture wide (its finest cell 0.16 m).
+    // allows. Its edges are soft by a fixed share of the lace's range:
+    // softer with the pixel's footprint, they came out further from the
+    // 16-sample `reference` (docs/quality.md, "This round").
     float density = clamp(pow(cover, 1.3) * (0.4 + 1.2 * streaks), 0.0, 1.0);
-    float soft = 0.04 + 0.5 * min(footprint / 0.5, 1.0);
-    return cover > 0.0 ? smoothstep(1.0 - density, 1.0 - density + soft, lace) : 0.0;
+    return cover > 0.0 ? smoothstep(1.0 - density, 1.12 - density, lace) : 0.0;
 }

@@ -130,8 +130,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #endif
 #ifdef TL_FEATURE_WAKE
     float thickness;
-    float wake = wake_foam(hit.xz, value, dist * u_lod_angle / max(abs(dot(ray, n)), 0.2),
-                           thickness);
+    float wake = wake_foam(hit.xz, value, thickness);
 #ifdef TL_FEATURE_GIANT_WAVE
     // The giant wave sweeps the wake away: none on its face.
     wake *= 1.0 - smoothstep(1.0, 4.0, abs(giant.height));
