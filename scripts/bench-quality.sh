@@ -66,9 +66,15 @@ for round in 1 2 3; do
     --presets draft,preview,final,seed --csv "$scratch/seed-$round.csv" >/dev/null
   "$tl" bench "$scratch/calm.tl" "$scratch/voyage.tl" --size $size --frames 60,180 --repeat 3 -q \
     --time-only --presets draft,preview,final,seed --csv "$scratch/cv-$round.csv" >/dev/null
+  # Each scene alone too: the pooled median sits between calm's slowest
+  # frame and voyage's fastest, and says little about either.
+  for t in calm voyage; do
+    "$tl" bench "$scratch/$t.tl" --size $size --frames 60,180 --repeat 3 -q --time-only \
+      --presets draft,preview,final,seed --csv "$scratch/$t-$round.csv" >/dev/null
+  done
   h2=$(shader)
   h=$(echo "($h1 + $h2) / 2" | bc -l)
-  for k in seed cv; do
+  for k in seed cv calm voyage; do
     awk -F, -v h="$h" -v r=$round -v k=$k 'NR > 1 { printf "%s %s %s %.4f %.4f\n", k, r, $1, $6 / h, $7 / h }' \
       "$scratch/$k-$round.csv"
   done >>"$scratch/ratios"
@@ -81,6 +87,14 @@ echo "| --- | ---: | ---: | ---: | ---: |"
 med() { awk -v k=$1 -v p=$p -v c=$2 '$1 == k && $3 == p { print $c }' "$scratch/ratios" | sort -n | sed -n 2p; }
 for p in draft preview final seed; do
   printf '| %s | %.2fx | %.2fx | %.2fx | %.2fx |\n' $p "$(med seed 4)" "$(med seed 5)" "$(med cv 4)" "$(med cv 5)"
+done
+echo
+echo "Each of the targets' scenes alone (seed sky, frames 60 and 180, the same rounds):"
+echo
+echo "| preset | calm: end to end | render | voyage: end to end | render |"
+echo "| --- | ---: | ---: | ---: | ---: |"
+for p in draft preview final seed; do
+  printf '| %s | %.2fx | %.2fx | %.2fx | %.2fx |\n' $p "$(med calm 4)" "$(med calm 5)" "$(med voyage 4)" "$(med voyage 5)"
 done
 if [ -n "$before" ]; then
   # The same, once, with the earlier binary (it renders `reference` too).
