@@ -132,8 +132,11 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     float thickness;
     float wake = wake_foam(hit.xz, value, thickness);
 #ifdef TL_FEATURE_GIANT_WAVE
-    // The giant wave sweeps the wake away: none on its face.
-    wake *= 1.0 - smoothstep(1.0, 4.0, abs(giant.height));
+    // The giant wave sweeps the wake away: none where it has lifted or
+    // lowered the water, nor on its face where that crosses the mean
+    // level (steeper than about 1 in 8).
+    wake *= (1.0 - smoothstep(1.0, 4.0, abs(giant.height))) *
+            (1.0 - smoothstep(0.08, 0.25, length(giant.grad)));
 #endif
     color = foam_shade(color, n, wake, thickness, sunlit);
 #endif

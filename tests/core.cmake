@@ -25,7 +25,7 @@ tl_add_test(test_giant SOURCES test_giant.c LIBS tideline_core)
 tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes)
 tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
-  ARGS ${PROJECT_SOURCE_DIR}/tests/meshes)
+  ARGS ${PROJECT_SOURCE_DIR}/tests/meshes ${PROJECT_SOURCE_DIR}/timelines)
 tl_add_test(test_underwater SOURCES test_underwater.c LIBS tideline_gl)
 tl_add_test(test_glare SOURCES test_glare.c LIBS tideline_gl)
 tl_add_test(test_sky SOURCES test_sky.c LIBS tideline_gl ARGS ${PROJECT_SOURCE_DIR}/tests/references)

@@ -1,10 +1,12 @@
 /* The boat on the GPU (llvmpipe on CI): its distance in the frame against
  * a CPU ray cast into the same mesh, the water it hides, a loaded model in
- * place of the built-in boat, and no water on deck when the boat sits low.
- * argv[1] is tests/meshes. */
+ * place of the built-in boat, no water on deck when the boat sits low, and
+ * its wake: culled exactly, and swept off the giant wave's face.
+ * argv[1] is tests/meshes, argv[2] timelines/. */
 #include <string.h>
 
 #include "mesh/tl_mesh.h"
+#include "timeline/tl_parse.h"
 #include "tl_gl_test.h"
 
 /* A camera 14 m off the boat's starboard quarter, 4 m up, looking at it. */
@@ -231,6 +233,46 @@ static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&all);
 }
 
+/* The hero cutscene's frame 216: the boat climbs the giant wave's face,
+ * its wake's path running up the face behind it. The wave sweeps the wake
+ * away, so the frame is the one without the wake; the foam once showed as
+ * a white trail where the face crosses the mean water level (the wave's
+ * height alone gated it). */
+static void test_wake_swept(tl_renderer *r, const tl_mesh *m, const char *timelines)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/giant_wave.tl", timelines);
+    tl_timeline tl;
+    tl_diags diags;
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_timeline_parse_file(path, &tl, &diags, &err) == TL_OK);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    tl_timeline_eval(&tl, tl_timeline_frame_time(&tl, 216), &s);
+    tl_timeline_free(&tl);
+    s.width = 240;
+    s.height = 135;
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_WAKE);
+    CHECK(u.features & TL_FEATURE_GIANT_WAVE);
+    tl_scene dry = s;
+    dry.boat.wake = 0.0;
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return;
+    if (render(r, &dry, &without) == 0) {
+        long foam = 0;
+        for (size_t i = 0; i < (size_t)s.width * s.height * 4; i += 4)
+            foam += luminance(with.color + i) > luminance(without.color + i) + 0.01;
+        printf("giant_wave.tl frame 216: %ld pixels lighter with the wake\n", foam);
+        CHECK(foam == 0);
+        tl_frame_free(&without);
+    }
+    tl_frame_free(&with);
+}
+
 /* A boat floating low, its deck below the water around it: looking down
  * into it shows the deck, never water inside the hull. */
 static void test_no_water_on_deck(tl_renderer *r, const tl_mesh *m)
@@ -326,7 +368,7 @@ static void test_hull_antialiased(tl_renderer *r, const tl_mesh *m)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2)
+    if (argc < 3)
         return 1;
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
@@ -355,6 +397,7 @@ int main(int argc, char **argv)
     test_no_water_on_deck(r, &builtin);
     test_hull_antialiased(r, &builtin);
     test_wake_groups(r, &builtin);
+    test_wake_swept(r, &builtin, argv[2]);
 
     tl_mesh_free(&builtin);
     tl_mesh_free(&skiff);
