@@ -76,8 +76,7 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
     return p;
 }
 
-/* The #defines every program shares, plus one per feature bit. */
-void tl_renderer_defines(unsigned features, char *out, size_t size)
+int tl_renderer_defines(unsigned features, char *out, size_t size)
 {
     int n = snprintf(out, size,
                      "#define TL_MAX_OCTAVES %d\n"
@@ -94,6 +93,7 @@ void tl_renderer_defines(unsigned features, char *out, size_t size)
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
+    return n > 0 && (size_t)n < size ? 0 : -1;
 }
 
 /* The ocean program for a feature set and octave counts. The counts are
@@ -109,16 +109,19 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
             r->programs[i].march_octaves == key.march_octaves &&
             r->programs[i].normal_octaves == key.normal_octaves)
             return r->programs[i].program;
-    char defines[640];
-    tl_renderer_defines(features, defines, sizeof defines);
+    char defines[TL_DEFINES_SIZE];
+    int fits = tl_renderer_defines(features, defines, sizeof defines) == 0;
     size_t n = strlen(defines);
-    snprintf(defines + n, sizeof defines - n,
-             "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s", key.march_octaves,
-             key.normal_octaves, features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
-             features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "");
-    if (features & TL_PASS_SKY) {
-        n = strlen(defines);
-        snprintf(defines + n, sizeof defines - n, "#define TL_SKY_ONLY 1\n");
+    int more = snprintf(defines + n, sizeof defines - n,
+                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s",
+                        key.march_octaves, key.normal_octaves,
+                        features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
+                        features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "",
+                        features & TL_PASS_SKY ? "#define TL_SKY_ONLY 1\n" : "");
+    if (!fits || more < 0 || (size_t)more >= sizeof defines - n) {
+        tl_error_set(err, TL_ERR_RUNTIME, "the ocean program's #defines do not fit in %d bytes",
+                     TL_DEFINES_SIZE);
+        return 0;
     }
     key.program = tl_renderer_build_program(r, "fullscreen.vert", "ocean.frag", defines, err);
     if (!key.program)
@@ -491,7 +494,7 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
     GLuint *program = &r->mesh_program[(features & TL_FEATURE_SUN_DISC ? 1 : 0) +
                                        (features & TL_FEATURE_SKY_PHYSICAL ? 2 : 0)];
     if (!*program) {
-        char defines[512];
+        char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(features, defines, sizeof defines);
         *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
         if (!*program)
@@ -737,8 +740,9 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
     if (!program) {
         if (r->probe_count == MAX_PROGRAMS)
             return tl_error_set(err, TL_ERR_RUNTIME, "probe: too many feature sets");
-        char defines[512];
-        tl_renderer_defines(features, defines, sizeof defines);
+        char defines[TL_DEFINES_SIZE];
+        if (tl_renderer_defines(features, defines, sizeof defines))
+            return tl_error_set(err, TL_ERR_RUNTIME, "probe: #defines do not fit");
         program = tl_renderer_build_program(r, "fullscreen.vert", "probe.frag", defines, err);
         if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;

@@ -12,7 +12,7 @@
 
 GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err)
 {
-    char defines[640];
+    char defines[TL_DEFINES_SIZE];
     tl_renderer_defines(0, defines, sizeof defines);
     size_t n = strlen(defines);
     snprintf(defines + n, sizeof defines - n, "%s%s",
@@ -52,7 +52,7 @@ static int ensure_pass(tl_renderer *r, target *t, int w, int h, GLuint *program,
     const GLenum format = GL_RGBA32F;
     int rc = tl_renderer_target_ensure(t, w, h, 1, &format, err);
     if (!rc && !*program) {
-        char defines[512];
+        char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(0, defines, sizeof defines);
         *program = tl_renderer_build_program(r, "fullscreen.vert", fs, defines, err);
         if (!*program)
@@ -77,7 +77,7 @@ static int mip_chain(tl_renderer *r, tl_error *err)
     while (top < TL_GLARE_LEVELS && (t->width >> (top + 1) > 0 || t->height >> (top + 1) > 0))
         top++;
     if (!r->mip_program) {
-        char defines[512];
+        char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(0, defines, sizeof defines);
         r->mip_program = tl_renderer_build_program(r, "fullscreen.vert", "mip.frag", defines, err);
         if (!r->mip_program)

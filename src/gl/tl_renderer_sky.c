@@ -44,7 +44,7 @@ static int ensure_view_pass(tl_renderer *r, tl_error *err)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     if (!r->sky_view_program) {
-        char defines[512];
+        char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(0, defines, sizeof defines);
         r->sky_view_program =
             tl_renderer_build_program(r, "fullscreen.vert", "sky_view.frag", defines, err);
