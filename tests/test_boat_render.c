@@ -163,6 +163,15 @@ static void wake_scene(tl_scene *s)
     tl_scene_camera_look_at(&s->camera, target, NULL);
 }
 
+/* Pixels of `a` lighter than `b`'s by more than 0.01 (foam over water). */
+static long lighter_pixels(const tl_frame *a, const tl_frame *b)
+{
+    long n = 0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; i += 4)
+        n += luminance(a->color + i) > luminance(b->color + i) + 0.01;
+    return n;
+}
+
 /* The wake's groups of segments (tl_prepare, shaders/wake.glsl) cull none
  * of its foam. On the CPU, every point a segment's foam can reach (the
  * shader's own test, in float) lies in its group's circle; on the GPU the
@@ -222,9 +231,7 @@ static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
     CHECK(memcmp(culled.color, all.color, n * sizeof(float)) == 0);
     s.boat.wake = 0.0;
     if (render(r, &s, &none) == 0) {
-        long foam = 0;
-        for (size_t i = 0; i < n; i += 4)
-            foam += luminance(culled.color + i) > luminance(none.color + i) + 0.01;
+        long foam = lighter_pixels(&culled, &none);
         printf("wake: %ld of %d pixels lighter with its foam\n", foam, s.width * s.height);
         CHECK(foam > 200);
         tl_frame_free(&none);
@@ -263,9 +270,7 @@ static void test_wake_swept(tl_renderer *r, const tl_mesh *m, const char *timeli
     if (render(r, &s, &with))
         return;
     if (render(r, &dry, &without) == 0) {
-        long foam = 0;
-        for (size_t i = 0; i < (size_t)s.width * s.height * 4; i += 4)
-            foam += luminance(with.color + i) > luminance(without.color + i) + 0.01;
+        long foam = lighter_pixels(&with, &without);
         printf("giant_wave.tl frame 216: %ld pixels lighter with the wake\n", foam);
         CHECK(foam == 0);
         tl_frame_free(&without);
