@@ -20,6 +20,7 @@ void tl_path_free(tl_path *path)
         return;
     free(path->points);
     free(path->arc);
+    free(path->point_arc);
     memset(path, 0, sizeof *path);
 }
 
@@ -176,7 +177,8 @@ static double arc_between(const tl_path *path, double g0, double g1)
 int tl_path_prepare(tl_path *path, tl_error *err)
 {
     free(path->arc);
-    path->arc = NULL;
+    free(path->point_arc);
+    path->arc = path->point_arc = NULL;
     path->arc_samples = 0;
     path->length = 0.0;
     path->prepared = true;
@@ -186,19 +188,31 @@ int tl_path_prepare(tl_path *path, tl_error *err)
     double *arc = NULL;
     if (samples + 1 > SIZE_MAX / sizeof *arc)
         return tl_error_set(err, TL_ERR_RUNTIME, "path too long for an arc-length table");
-    arc = malloc((samples + 1) * sizeof *arc);
-    if (!arc)
+    if (path->constant_speed) {
+        arc = malloc((samples + 1) * sizeof *arc);
+        if (!arc)
+            return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for an arc-length table");
+        arc[0] = 0.0;
+    }
+    double *point_arc = malloc(path->count * sizeof *point_arc);
+    if (!point_arc) {
+        free(arc);
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for an arc-length table");
-    arc[0] = 0.0;
+    }
+    point_arc[0] = 0.0;
     double total = 0.0;
     for (size_t j = 0; j < samples; j++) {
         double g0 = (double)j / ARC_SAMPLES_PER_SEGMENT;
         double g1 = (double)(j + 1) / ARC_SAMPLES_PER_SEGMENT;
         total += arc_between(path, g0, g1);
-        arc[j + 1] = total;
+        if (arc)
+            arc[j + 1] = total;
+        if ((j + 1) % ARC_SAMPLES_PER_SEGMENT == 0)
+            point_arc[(j + 1) / ARC_SAMPLES_PER_SEGMENT] = total;
     }
     path->arc = arc;
-    path->arc_samples = samples;
+    path->arc_samples = arc ? samples : 0;
+    path->point_arc = point_arc;
     path->length = total;
     return 0;
 }
@@ -334,14 +348,17 @@ void tl_path_eval(const tl_path *path, double t, double pos[3], double tangent[3
 
 double tl_path_distance(const tl_path *path, double t)
 {
-    if (path->count < 2 || !path->arc)
+    if (path->count < 2 || !path->point_arc)
         return 0.0;
     size_t seg;
     double u;
     locate(path, t, &seg, &u);
-    double g = (double)seg + u, step = 1.0 / ARC_SAMPLES_PER_SEGMENT;
-    size_t j = (size_t)(g * ARC_SAMPLES_PER_SEGMENT);
-    if (j >= path->arc_samples)
-        return path->length;
-    return path->arc[j] + arc_between(path, (double)j * step, g);
+    if (u >= 1.0)
+        return path->point_arc[seg + 1];
+    /* From the segment's start, the table's panels in the table's order. */
+    double s = path->point_arc[seg], g = (double)seg + u, step = 1.0 / ARC_SAMPLES_PER_SEGMENT;
+    size_t j = seg * ARC_SAMPLES_PER_SEGMENT;
+    for (; (double)(j + 1) * step <= g; j++)
+        s += arc_between(path, (double)j * step, (double)(j + 1) * step);
+    return s + arc_between(path, (double)j * step, g);
 }

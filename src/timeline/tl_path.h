@@ -27,11 +27,12 @@ typedef struct tl_path {
     tl_path_point *points; /* owned */
     size_t count, capacity;
     bool constant_speed;   /* takes effect at tl_path_prepare; until then by point times */
-    /* Built by tl_path_prepare: cumulative arc length at arc_samples + 1
-     * evenly spaced values of the global segment parameter g in
-     * [0, count - 1] (integer part: segment). */
+    /* Built by tl_path_prepare when constant_speed is set: cumulative arc
+     * length at arc_samples + 1 evenly spaced values of the global segment
+     * parameter g in [0, count - 1] (integer part: segment). */
     double *arc;
     size_t arc_samples;
+    double *point_arc;     /* arc length at each point (tl_path_distance) */
     double length;         /* total arc length (always computed) */
     bool prepared;
 } tl_path;
@@ -46,8 +47,9 @@ int tl_path_add_point(tl_path *path, double t, const double pos[3], tl_error *er
  * with "point N: ". */
 int tl_path_validate(const tl_path *path, size_t *bad_point, tl_error *err);
 
-/* Measures the path and builds its arc-length table. Call after the
- * points are added and validated. */
+/* Measures the path (the arc length at each point) and, with
+ * constant_speed, builds the arc-length table. Call after the points are
+ * added and validated. */
 int tl_path_prepare(tl_path *path, tl_error *err);
 
 /* Position and unit tangent (heading) at time t; either output may be
