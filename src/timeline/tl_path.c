@@ -350,6 +350,9 @@ double tl_path_distance(const tl_path *path, double t)
 {
     if (path->count < 2 || !path->point_arc)
         return 0.0;
+    const double t0 = path->points[0].t, t1 = path->points[path->count - 1].t;
+    if (path->constant_speed && path->arc && t1 > t0) /* what locate() inverts */
+        return fmin(1.0, fmax(0.0, (isnan(t) ? 0.0 : t - t0) / (t1 - t0))) * path->length;
     size_t seg;
     double u;
     locate(path, t, &seg, &u);
