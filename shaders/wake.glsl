@@ -68,7 +68,7 @@ float wake_foam(vec2 p, float ocean_value, out float thickness)
     // streaks; the fine lace then keeps as much of the water as that
     // allows. Its edges are soft by a fixed share of the lace's range:
     // softer with the pixel's footprint, they came out further from the
-    // 16-sample `reference` (docs/quality.md, "This round").
+    // 16-sample `reference` (docs/quality.md, "The wake's foam reads as foam").
     float density = clamp(pow(cover, 1.3) * (0.4 + 1.2 * streaks), 0.0, 1.0);
     return cover > 0.0 ? smoothstep(1.0 - density, 1.12 - density, lace) : 0.0;
 }
