@@ -123,11 +123,13 @@ echo "\`tideline render\` of the seed's scene to PNG (render and write overlap),
 echo "frames (the time of 28 frames less that of 4, over 24), against the shader timed"
 echo "just before and after:"
 echo
+# steady PRESET [TIMELINE FIRST COUNT]: ms per frame of COUNT frames after
+# the four from FIRST (the time of 4 + COUNT frames less that of 4).
 steady() {
-  local a b s
-  s=$(date +%s.%N); "$tl" render bench/seed002.tl --quality $1 --frames 240-243 --size $size -q -o "$scratch/e2e/a_####.png" 2>/dev/null; a=$(echo "$(date +%s.%N) - $s" | bc -l)
-  s=$(date +%s.%N); "$tl" render bench/seed002.tl --quality $1 --frames 240-267 --size $size -q -o "$scratch/e2e/b_####.png" 2>/dev/null; b=$(echo "$(date +%s.%N) - $s" | bc -l)
-  echo "($b - $a) * 1000 / 24" | bc -l
+  local a b s tlf=${2:-bench/seed002.tl} f=${3:-240} n=${4:-24}
+  s=$(date +%s.%N); "$tl" render "$tlf" --quality $1 --frames $f-$((f + 3)) --size $size -q -o "$scratch/e2e/a_####.png" 2>/dev/null; a=$(echo "$(date +%s.%N) - $s" | bc -l)
+  s=$(date +%s.%N); "$tl" render "$tlf" --quality $1 --frames $f-$((f + n + 3)) --size $size -q -o "$scratch/e2e/b_####.png" 2>/dev/null; b=$(echo "$(date +%s.%N) - $s" | bc -l)
+  echo "($b - $a) * 1000 / $n" | bc -l
 }
 echo "| preset | render to PNG (ms/frame) | the shader (ms/frame) | ratio |"
 echo "| --- | ---: | ---: | ---: |"
@@ -135,6 +137,18 @@ for p in draft preview final seed; do
   h1=$(shader); e=$(steady $p); h2=$(shader)
   printf '| %s | %.1f | %.1f | %.2fx |\n' $p "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
     "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
+done
+echo
+echo "The same on each target scene (seed sky), frames 174-193 less 170-173:"
+echo
+echo "| preset | scene | render to PNG (ms/frame) | the shader (ms/frame) | ratio |"
+echo "| --- | --- | ---: | ---: | ---: |"
+for p in draft preview; do
+  for t in calm voyage; do
+    h1=$(shader); e=$(steady $p "$scratch/$t.tl" 170 20); h2=$(shader)
+    printf '| %s | %s | %.1f | %.1f | %.2fx |\n' $p $t "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
+      "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
+  done
 done
 echo
 echo "## Presets on the bundled cutscenes ($size, 2 frames each)"
