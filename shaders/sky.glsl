@@ -12,7 +12,7 @@ uniform sampler2D u_sky_view;  // radiance for a sun of illuminance 1: azimuth f
 uniform float u_sky_scale;     // the sun's illuminance above the air
 uniform vec3 u_sun_light;      // its light at the camera: illuminance × transmittance
 uniform float u_sun_cos_radius; // cos of the disc's angular radius
-uniform vec3 u_sky_ambient;    // mean sky radiance over the upper hemisphere
+uniform vec3 u_sky_ambient;    // the sky's irradiance on a surface facing up, over pi
 
 vec3 sky_atmosphere(vec3 dir, vec3 sun)
 {
@@ -124,12 +124,14 @@ vec3 sky_sun_light()
 #endif
 }
 
-// Mean sky radiance over the upper hemisphere, for diffuse surfaces (foam,
-// the hull): the zenith and three directions 15 deg up.
+// The light a white diffuse surface facing up returns (foam, the hull):
+// the sky's irradiance on it over pi, from the zenith and three directions
+// 15 deg up, weighted to be exact for a sky whose radiance is linear in
+// the sine of the elevation (as the physical sky's mean is).
 vec3 sky_ambient()
 {
-    return 0.25 * (sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
-                   sky_atmosphere(vec3(0.0, 0.259, 0.966), u_sun_dir) +
+    return 0.55 * sky_atmosphere(vec3(0.0, 1.0, 0.0), u_sun_dir) +
+           0.15 * (sky_atmosphere(vec3(0.0, 0.259, 0.966), u_sun_dir) +
                    sky_atmosphere(vec3(0.837, 0.259, -0.483), u_sun_dir) +
                    sky_atmosphere(vec3(-0.837, 0.259, -0.483), u_sun_dir));
 }

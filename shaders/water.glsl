@@ -116,10 +116,11 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
                       (u_scatter_base + clamp((ocean_y + u_depth) / u_depth, 0.0, 1.0));
 #ifdef TL_FEATURE_SKY_PHYSICAL
     // Light scattered out of the water is light that went in: scale by the
-    // irradiance on the surface (sun + sky), 1 for the default sun at 10 deg
-    // so the water keeps the seed's look there, dark in the blue hour.
+    // irradiance on the surface (sun + sky), about 1 for the default sun at
+    // 10 deg (its luminance there is 0.94) so the water keeps the seed's
+    // look there, dark in the blue hour.
     scattering *=
-        (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + 3.1415927 * sky_ambient()) / 1.4;
+        (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + 3.1415927 * sky_ambient()) / 0.94;
 #endif
     vec3 color = fresnel * reflection + scattering;
 #ifdef TL_FEATURE_GIANT_WAVE

@@ -208,6 +208,33 @@ static void test_view_table(tl_renderer *r)
     CHECK(worst_ambient < 1e-3);
 }
 
+/* The ambient is the sky's irradiance on a surface facing up, over pi:
+ * tables of known radiance (the table's latitude mapping is dense at the
+ * horizon, lat = l^2 pi/2 with l = 2v - 1) give the integral's value. A
+ * uniform sky returns its radiance, one as bright as the sine of the
+ * elevation 2/3 (weighted by solid angle alone it would be 1/2; by rows,
+ * as before the fix, 0.32), and whatever lies below the horizon nothing. */
+static void test_ambient(void)
+{
+    static tl_sky_luts l; /* ~0.5 MB */
+    const double want[3] = {1.0, 2.0 / 3.0, 0.0};
+    for (int k = 0; k < 3; k++) {
+        for (int j = 0; j < TL_SKY_VIEW_H; j++) {
+            double x = 2.0 * (j + 0.5) / TL_SKY_VIEW_H - 1.0;
+            double lat = (x < 0.0 ? -1.0 : 1.0) * x * x * 0.5 * M_PI;
+            double above = k == 0 ? 1.0 : k == 1 ? sin(lat) : 0.0;
+            for (int i = 0; i < TL_SKY_VIEW_W; i++)
+                for (int c = 0; c < 3; c++)
+                    l.view[j][i][c] = (float)(lat > 0.0 ? above : 5.0);
+        }
+        tl_sky_view_built(&l, 0.1, 0.0);
+        printf("ambient of test sky %d: %.6f %.6f %.6f (want %.6f)\n", k, l.ambient[0],
+               l.ambient[1], l.ambient[2], want[k]);
+        for (int c = 0; c < 3; c++)
+            CHECK(fabs(l.ambient[c] - want[k]) < 1e-3 * fmax(want[k], 1.0));
+    }
+}
+
 /* Renders `s` with renderer `r` and its own tables `luts`, as tl_render
  * does. */
 static int render_with(tl_renderer *r, tl_sky_luts *luts, const tl_scene *s, tl_frame *f)
@@ -332,6 +359,7 @@ int main(int argc, char **argv)
     if (!r)
         return 1;
     on_llvmpipe = strstr(tl_gl_context_describe(ctx), "llvmpipe") != NULL;
+    test_ambient();
     test_against_reference(r);
     test_view_table(r);
     test_two_renderers(r);

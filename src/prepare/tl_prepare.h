@@ -170,7 +170,7 @@ typedef struct tl_frame_uniforms {
     float sky_scale;      /* the sun's illuminance above the air */
     float sun_light[3];   /* its light at the camera */
     float sun_cos_radius; /* cos of the disc's angular radius */
-    float sky_ambient[3]; /* mean sky radiance over the upper hemisphere */
+    float sky_ambient[3]; /* the sky's irradiance on a surface facing up, over pi */
 } tl_frame_uniforms;
 
 /* For frames with TL_FEATURE_SKY_PHYSICAL (else it returns 0): brings the

@@ -563,14 +563,20 @@ int tl_sky_view_stale(const tl_sky_luts *l, double sun_elevation, double altitud
 
 void tl_sky_view_built(tl_sky_luts *l, double sun_elevation, double altitude)
 {
-    /* The mean over the upper hemisphere's solid angle: each row above the
-     * horizon weighted by cos(latitude), its texels alike. */
+    /* The radiance a white diffuse surface facing up returns: the sky's
+     * irradiance on it over pi, the mean of the upper hemisphere weighted
+     * by projected solid angle. A row above the horizon spans
+     * cos(lat) d(lat) d(azimuth) of solid angle, sin(lat) of it projected,
+     * and d(lat) = 2 pi l dv in the table's mapping (lat = l^2 pi/2,
+     * l = 2v - 1): the rows crowd toward the horizon, and weighting them
+     * by cos(lat) alone made the bright, warm horizon count 2-3 times too
+     * much (foam in shadow glowed tan, docs/rendering.md). */
     double sum[3] = {0, 0, 0}, weight = 0.0;
     for (int j = 0; j < TL_SKY_VIEW_H; j++) {
-        double lat = view_latitude((j + 0.5) / TL_SKY_VIEW_H);
+        double v = (j + 0.5) / TL_SKY_VIEW_H, lat = view_latitude(v);
         if (!(lat > 0.0))
             continue;
-        double w = cos(lat);
+        double w = cos(lat) * sin(lat) * (2.0 * v - 1.0);
         for (int i = 0; i < TL_SKY_VIEW_W; i++)
             for (int c = 0; c < 3; c++)
                 sum[c] += w * l->view[j][i][c];

@@ -48,7 +48,7 @@ typedef struct tl_sky_luts {
     float ms[TL_SKY_MS_SIZE][TL_SKY_MS_SIZE][3];
     float view[TL_SKY_VIEW_H][TL_SKY_VIEW_W][3];
     double view_sun_elevation, view_altitude; /* what `view` was built for */
-    double ambient[3]; /* mean sky radiance over the upper hemisphere (from `view`) */
+    double ambient[3]; /* the sky's irradiance on a surface facing up, over pi (from `view`) */
     int valid, view_valid;
 } tl_sky_luts;
 
