@@ -290,7 +290,10 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
     // lit band of a distant backlit wave).
     float moved = sqrt(clamp(length(vec2(g.displacement, 0.3 * reach)) / reach, 0.0, 1.0));
     float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
-    float thin = smoothstep(0.35, 0.95, top);
+    // Times the fade: `top` is relative to the faded crest, and a wave
+    // fading into a low swell kept its full glow over the swell's whole
+    // top (voyage's last frames: a flat teal field around the boat).
+    float thin = smoothstep(0.35, 0.95, top) * u_giant_bounds.w;
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     return u_giant_scatter_color * sky_sun_light() *
            (u_giant_scatter.x * phase * moved * thin * daylight);

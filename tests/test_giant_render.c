@@ -141,6 +141,59 @@ static void test_fade_zero(tl_renderer *r)
     tl_frame_free(&b);
 }
 
+/* The light through the crest at `fade`, facing_scene backlit by a low
+ * sun: the linear luminance a frame gains from giant.scatter, averaged
+ * over the pixels where it is at least 1% of its largest; -1 if a render
+ * failed. */
+static double crest_glow(tl_renderer *r, double fade)
+{
+    tl_scene lit, dark;
+    facing_scene(&lit);
+    lit.sun.azimuth = 0.0; /* behind the wave */
+    lit.sun.elevation = 0.15;
+    lit.giant.fade = fade;
+    dark = lit;
+    dark.giant.scatter = 0.0;
+    tl_frame a, b;
+    if (render(r, &lit, &a))
+        return -1.0;
+    if (render(r, &dark, &b)) {
+        tl_frame_free(&a);
+        return -1.0;
+    }
+    size_t n = (size_t)lit.width * (size_t)lit.height;
+    double peak = 0.0, sum = 0.0;
+    int count = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t i = 0; i < n; i++) {
+            const float *p = a.color + 4 * i, *q = b.color + 4 * i;
+            double glow = 0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]);
+            if (pass == 0)
+                peak = fmax(peak, glow);
+            else if (glow >= 0.01 * peak) {
+                sum += glow;
+                count++;
+            }
+        }
+    tl_frame_free(&a);
+    tl_frame_free(&b);
+    return count > 0 ? sum / count : 0.0;
+}
+
+/* The crest's inner light fades with the wave: a wave fading into a low
+ * swell kept its full glow over the swell's whole top (voyage's last
+ * frames showed a flat teal field). At fade 0.3 the glow per lit pixel is
+ * at most 0.4 of a full wave's (0.3 by the fade, a little less or more as
+ * the lower crest moves the surface less and spreads over other pixels). */
+static void test_glow_fades(tl_renderer *r)
+{
+    double full = crest_glow(r, 1.0), low = crest_glow(r, 0.3);
+    printf("light through the crest, per lit pixel: fade 1 %.4g, fade 0.3 %.4g (%.2f)\n", full, low,
+           low / full);
+    CHECK(full > 1e-3);
+    CHECK(low >= 0.0 && low <= 0.4 * full);
+}
+
 /* Image row (top first) where the world point p projects. */
 static double project_row(const tl_scene *s, const double p[3])
 {
@@ -774,6 +827,7 @@ int main(void)
         return 1;
     test_probe(r);
     test_fade_zero(r);
+    test_glow_fades(r);
     test_wave_in_view(r);
     test_hits_on_surface(r);
     test_relaxed_march(r);
