@@ -2,8 +2,8 @@
 // at the output size; it also carries the colour (EXR, without glare) and
 // the distance planes to that size. A scene rendered smaller than the
 // output (quality.render_scale < 1) is upscaled here: Catmull-Rom for
-// radiance, the second of its two axes (upscale.frag did x; held at >= 0:
-// its negative lobes can ring below zero beside the sun), nearest for
+// radiance, the second of its two axes (upscale.frag did x; each axis held
+// between its two nearest texels, upscale_hold), nearest for
 // distance (an average of two distances is neither).
 // Glare first: a share u_bloom of the light is spread over the image's mip
 // levels 1 to 6 (glare.frag; the spread keeps the energy), so a small, very
@@ -47,12 +47,12 @@ vec3 upscaled(vec2 uv)
     float base = floor(src);
     vec4 w = catmull_rom(src - base);
     int x = int(gl_FragCoord.x);
-    vec3 sum = vec3(0.0);
+    vec3 tap[4];
     for (int j = 0; j < 4; j++) {
         int y = clamp(int(base) + j - 1, 0, size.y - 1);
-        sum += w[j] * texelFetch(u_hdr, ivec2(x, y), 0).rgb;
+        tap[j] = texelFetch(u_hdr, ivec2(x, y), 0).rgb;
     }
-    return max(sum, vec3(0.0));
+    return upscale_hold(w, tap);
 }
 #endif
 

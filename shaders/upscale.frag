@@ -4,8 +4,10 @@
 // pass (present.frag) then runs the same kernel along y. The kernel is
 // separable, so the two make what sixteen taps a pixel did in one pass,
 // for four taps at half the pixels and four: `draft`'s display pass on
-// llvmpipe took 8-9 ms of a 640x360 frame that way. Nothing is clamped
-// here: a negative lobe's sum is held at >= 0 only once both axes are done.
+// llvmpipe took 8-9 ms of a 640x360 frame that way. Each axis holds its
+// result between the two nearest texels (upscale_hold): the kernel's
+// negative lobes rang around a sun glint hundreds of times brighter than
+// the water, a dark ring with bright corners.
 #include "radiance.glsl"
 #include "upscale.glsl"
 
@@ -21,10 +23,10 @@ void main()
     float base = floor(src);
     vec4 w = catmull_rom(src - base);
     int y = int(gl_FragCoord.y);
-    vec3 sum = vec3(0.0);
+    vec3 tap[4];
     for (int i = 0; i < 4; i++) {
         int x = clamp(int(base) + i - 1, 0, size.x - 1);
-        sum += w[i] * scene_radiance(texelFetch(u_hdr, ivec2(x, y), 0));
+        tap[i] = scene_radiance(texelFetch(u_hdr, ivec2(x, y), 0));
     }
-    out_row = vec4(sum, 1.0);
+    out_row = vec4(upscale_hold(w, tap), 1.0);
 }

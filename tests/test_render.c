@@ -284,6 +284,62 @@ static void test_pixel_filter(tl_renderer *r)
     }
 }
 
+/* A half-size render's upscale (quality.render_scale 0.5) keeps each
+ * output pixel's radiance between the darkest and the brightest of the
+ * four scene texels around it (each axis is held between its two nearest
+ * taps): the Catmull-Rom kernel's negative lobes rang around the sun's
+ * glitter, a dark ring with bright corners. The texels are the same frame
+ * rendered at the half size, the sun ahead and its glitter in view. */
+static void test_upscale_holds(tl_renderer *r)
+{
+    tl_scene half, scaled;
+    small_scene(&half);
+    half.width = 80;
+    half.height = 48;
+    half.bloom = 0.0;
+    half.quality.pixel_filter = 0.0;
+    scaled = half;
+    scaled.width = 160;
+    scaled.height = 96;
+    scaled.quality.render_scale = 0.5;
+    tl_frame a, b;
+    if (render(r, &half, &a))
+        return;
+    if (render(r, &scaled, &b)) {
+        tl_frame_free(&a);
+        return;
+    }
+    const int w = half.width, h = half.height, W = scaled.width, H = scaled.height;
+    double worst = 0.0, peak = 0.0;
+    for (int row = 0; row < H; row++)
+        for (int x = 0; x < W; x++) {
+            /* Rows are stored top first; the upscale works in GL's rows. */
+            double sx = (x + 0.5) * w / W - 0.5, sy = (H - 1 - row + 0.5) * h / H - 0.5;
+            int x0 = (int)floor(sx), y0 = (int)floor(sy);
+            int xs[2] = {x0 < 0 ? 0 : x0, x0 + 1 > w - 1 ? w - 1 : x0 + 1};
+            int ys[2] = {y0 < 0 ? 0 : y0, y0 + 1 > h - 1 ? h - 1 : y0 + 1};
+            for (int c = 0; c < 3; c++) {
+                double lo = INFINITY, hi = -INFINITY;
+                for (int j = 0; j < 2; j++)
+                    for (int i = 0; i < 2; i++) {
+                        double v = a.color[((size_t)(h - 1 - ys[j]) * w + xs[i]) * 4 + c];
+                        lo = fmin(lo, v);
+                        hi = fmax(hi, v);
+                    }
+                double v = b.color[((size_t)row * W + x) * 4 + c];
+                peak = fmax(peak, hi);
+                worst = fmax(worst, fmax(lo - v, v - hi) / fmax(hi, 1e-3));
+            }
+        }
+    printf("upscale of a half-size render: brightest texel %.3g, furthest outside its four "
+           "texels' range %.2g of their brightest\n",
+           peak, worst);
+    CHECK(peak > 10.0); /* the glitter is in view */
+    CHECK(worst < 1e-4);
+    tl_frame_free(&a);
+    tl_frame_free(&b);
+}
+
 /* The first point below the surface along pixel (x, y)'s ray, walked on
  * the CPU 5 cm at a time from the crest plane up to `until`; `until` when
  * there is none before it. */
@@ -731,6 +787,7 @@ int main(void)
     test_sky_and_water(r);
     test_sun_disc(r);
     test_pixel_filter(r);
+    test_upscale_holds(r);
     test_relaxed_march(r);
     test_march_prepass(r);
     test_refine(r);
