@@ -229,7 +229,7 @@ static void test_exr_round_trip(void)
     tl_frame_free(&f);
 }
 
-static void test_png_round_trip(int bits)
+static void test_png_round_trip(int bits, int no_dither)
 {
     tl_error err;
     tl_frame f, g;
@@ -249,7 +249,8 @@ static void test_png_round_trip(int bits)
         {.name = "tideline/scene", .type = TL_META_STRING, .s = "harbour"},
         {.name = "tideline/time", .type = TL_META_DOUBLE, .d = 0.1},
     };
-    tl_image_options opt = {.png_bits = bits, .meta = meta, .meta_count = 2};
+    tl_image_options opt = {
+        .png_bits = bits, .no_dither = no_dither, .meta = meta, .meta_count = 2};
     int rc = tl_image_write(path, &f, &opt, &err);
     CHECK(rc == 0);
     if (rc)
@@ -271,10 +272,16 @@ static void test_png_round_trip(int bits)
         for (int c = 0; c < 3; c++) {
             float v = f.display[i * 4 + c];
             v = isnan(v) ? 0.0f : v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
-            float want = (float)floor((double)v * max + 0.5) / (float)max;
-            if (g.display[i * 4 + c] != want && !bad++)
-                fprintf(stderr, "pixel %zu channel %d: %.9g != %.9g\n", i, c, g.display[i * 4 + c],
-                        want);
+            /* 16 bits and no_dither: rounded to nearest; 8: dithered to
+             * the code below or above (test_png_dither checks the dither
+             * itself). */
+            double code = g.display[i * 4 + c] * max, exact = (double)v * max;
+            int ok = fabs(code - floor(code + 0.5)) < 0.01; /* a whole code */
+            code = floor(code + 0.5);
+            ok = ok &&
+                 (bits == 16 || no_dither ? code == floor(exact + 0.5) : fabs(code - exact) < 1.0);
+            if (!ok && !bad++)
+                fprintf(stderr, "pixel %zu channel %d: code %.9g for %.9g\n", i, c, code, exact);
         }
         if (g.display[i * 4 + 3] != 1.0f)
             bad++;
@@ -283,6 +290,58 @@ static void test_png_round_trip(int bits)
     CHECK(g.display[0] == 0.0f && g.display[1] == 1.0f && g.display[2] == 0.0f);
     CHECK(g.display[4] == 0.0f && g.display[5] == 1.0f);
     tl_frame_free(&g);
+    tl_frame_free(&f);
+}
+
+/* 8-bit codes are dithered: a flat grey between two codes averages to its
+ * value (rounding alone gives the nearer code everywhere, 0.3 off), using
+ * no codes but those two, and one on a code stays on it; the noise is a
+ * fixed pattern (the same row twice gives the same bytes) that differs
+ * between neighbours. */
+static void test_png_dither(void)
+{
+    tl_error err;
+    tl_frame f;
+    CHECK(tl_frame_alloc(&f, 64, 64, &err) == 0);
+    for (size_t i = 0; i < 64 * 64 * 4; i++)
+        f.display[i] = (100.3f + (float)(i % 4)) / 255.0f; /* R 100.3, G 101.3, B 102.3 */
+    double sum[3] = {0, 0, 0};
+    int outside = 0, repeat = 1, varied = 0;
+    unsigned char row[64 * 3], again[64 * 3];
+    for (int y = 0; y < 64; y++) {
+        tl_frame_display_row8(&f, y, 1, row);
+        tl_frame_display_row8(&f, y, 1, again);
+        repeat &= memcmp(row, again, sizeof row) == 0;
+        for (int x = 0; x < 64; x++)
+            for (int c = 0; c < 3; c++) {
+                int code = row[x * 3 + c];
+                sum[c] += code;
+                outside += code < 100 + c || code > 101 + c;
+                varied += x > 0 && code != row[(x - 1) * 3 + c];
+            }
+    }
+    for (int c = 0; c < 3; c++) {
+        double mean = sum[c] / (64 * 64);
+        printf("8-bit dither of %.1f: mean code %.3f\n", 100.3 + c, mean);
+        CHECK(fabs(mean - (100.3 + c)) < 0.05);
+    }
+    CHECK(outside == 0);
+    CHECK(repeat);
+    CHECK(varied > 64 * 64);
+    for (size_t i = 0; i < 64 * 4; i++)
+        f.display[i] = 77.0f / 255.0f;
+    tl_frame_display_row8(&f, 0, 1, row);
+    int exact = 1;
+    for (int i = 0; i < 64 * 3; i++)
+        exact &= row[i] == 77;
+    CHECK(exact);
+    /* Undithered (render --dither off): the nearest code everywhere. */
+    tl_frame_display_row8(&f, 1, 0, row);
+    int nearest = 1;
+    for (int x = 0; x < 64; x++)
+        for (int c = 0; c < 3; c++)
+            nearest &= row[x * 3 + c] == 100 + c;
+    CHECK(nearest);
     tl_frame_free(&f);
 }
 
@@ -623,8 +682,10 @@ int main(void)
     }
 
     test_exr_round_trip();
-    test_png_round_trip(8);
-    test_png_round_trip(16);
+    test_png_round_trip(8, 0);
+    test_png_round_trip(8, 1);
+    test_png_round_trip(16, 0);
+    test_png_dither();
     test_png_chunks();
     test_png_bad_keyword();
     test_png_compression();

@@ -136,6 +136,34 @@ static void test_six_frames(void)
     int bits = 0;
     tl_error err;
     CHECK(tl_png_read(a, &p, &bits, &err) == 0 && bits == 16 && p.width == 48);
+    /* 8 bits, dithered (the default) and not: each code within one of
+     * the 16-bit value, the same file twice, and --dither off the nearest
+     * code. */
+    tl_frame q[2] = {{0}, {0}};
+    const char *dither[2] = {"on", "off"};
+    for (int k = 0; k < 2; k++) {
+        snprintf(pattern, sizeof pattern, "%s/png8%s/f_##.png", out, dither[k]);
+        CHECK(tl_run(NULL, "render", six_path, "-o", pattern, "--frames", "4", "--dither",
+                     dither[k], "-q", NULL) == 0);
+        snprintf(b, sizeof b, "%s/png8%s/f_04.png", out, dither[k]);
+        CHECK(tl_png_read(b, &q[k], &bits, &err) == 0 && bits == 8);
+    }
+    int within = 1, nearest = 1, differ = 0;
+    for (size_t i = 0; p.display && q[0].display && q[1].display && i < 48 * 28 * 4; i++) {
+        if (i % 4 == 3)
+            continue;
+        double exact = p.display[i] * 255.0;
+        within &= fabs(q[0].display[i] * 255.0 - exact) < 1.0 + 1e-3;
+        nearest &= fabs(q[1].display[i] * 255.0 - floor(exact + 0.5)) < 0.01 ||
+                   fabs(exact - floor(exact) - 0.5) < 0.01; /* a tie either way */
+        differ += q[0].display[i] != q[1].display[i];
+    }
+    printf("8-bit PNG against 16-bit: dithered within a code %d, --dither off the nearest %d, "
+           "%d samples differ\n",
+           within, nearest, differ);
+    CHECK(within && nearest && differ > 0);
+    tl_frame_free(&q[0]);
+    tl_frame_free(&q[1]);
     tl_frame_free(&p);
     rm_rf(out);
     rm_rf(again);
@@ -400,6 +428,8 @@ static void test_bad_input(void)
     EXPECT(2, "--spp", "render", six_path, "-o", pattern, "--spp", "0");
     EXPECT(2, "--exr-compression", "render", six_path, "-o", pattern, "--exr-compression", "0");
     EXPECT(2, "--png-compression", "render", six_path, "-o", pattern, "--png-compression", "10");
+    EXPECT(2, "--dither: 'yes' is not on or off", "render", six_path, "-o", pattern, "--dither",
+           "yes");
     EXPECT(1, "cannot open timeline", "render", "/nonexistent.tl", "-o", pattern);
     CHECK(tl_dir_entries(out) <= 0); /* nothing rendered by any of them */
     /* A folder that cannot be created: its parent is a file. */

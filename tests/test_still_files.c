@@ -70,12 +70,17 @@ int main(void)
     CHECK(bits == 8);
     CHECK(p.width == s.width && p.height == s.height);
     int png_ok = 1;
-    for (size_t i = 0; p.display && i < n; i++)
-        for (int c = 0; c < 3; c++) {
-            /* The writer's rounding: floor(v·255 + 0.5) in double. */
-            float want = (float)(floor((double)f.display[i * 4 + c] * 255.0 + 0.5) / 255.0);
-            png_ok &= fabsf(p.display[i * 4 + c] - want) < 1e-6f;
-        }
+    unsigned char row[3 * 96];
+    for (int y = 0; p.display && s.width <= 96 && y < s.height; y++) {
+        /* The writer's codes: the display plane dithered to 8 bits. */
+        tl_frame_display_row8(&f, y, 1, row);
+        for (int x = 0; x < s.width; x++)
+            for (int c = 0; c < 3; c++) {
+                float got = p.display[((size_t)y * s.width + x) * 4 + c];
+                png_ok &= fabsf(got - row[x * 3 + c] / 255.0f) < 1e-6f;
+            }
+    }
+    CHECK(s.width <= 96);
     CHECK(png_ok);
     tl_frame_free(&p);
 

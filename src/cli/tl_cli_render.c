@@ -56,6 +56,9 @@ static const char usage[] =
     "                         or .mov (ProRes 422 HQ), at the timeline's fps\n"
     "  --png-bits 8|16        PNG bit depth (default 8)\n"
     "  --png-compression N    zlib level 1 (fast, the default) .. 9 (smallest files)\n"
+    "  --dither on|off        8-bit PNGs and movies: dither to the code below or above\n"
+    "                         so smooth skies do not band (default on; off rounds, for\n"
+    "                         smaller files and a faster encode)\n"
     "  --exr-compression N    zlib level of EXR's ZIP chunks, 1 (fast) .. 9 (default 4)\n"
     "  --writers N            frames encoded and written side by side, 1..8 (default:\n"
     "                         half the processors, at most 8)\n"
@@ -85,6 +88,7 @@ typedef struct render_options {
     int shutter_samples;
     int png_bits;
     int png_compression; /* 0: the writer's default (fast) */
+    int dither;          /* 8-bit PNG and movie frames dithered (default) */
     int exr_compression; /* 0: the writer's default (zlib level 4) */
     int writers;         /* 0: tl_writer_default_count() */
     int skip_existing;
@@ -148,6 +152,10 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
                          : 0;
         } else if (tl_args_match(&a, "--exr-compression", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->exr_compression, err) : 0;
+        } else if (tl_args_match(&a, "--dither", NULL, true, err)) {
+            if (a.value && strcmp(a.value, "on") && strcmp(a.value, "off"))
+                rc = tl_error_set(err, TL_ERR_USAGE, "--dither: '%s' is not on or off", a.value);
+            o->dither = a.value && !strcmp(a.value, "on");
         } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
             if (!rc && a.value && o->png_bits != 8 && o->png_bits != 16)
@@ -288,16 +296,12 @@ static void progress_note(const progress *p, const char *fmt, ...)
     va_end(ap);
 }
 
-/* 8-bit RGB rows for ffmpeg from the display plane (round to nearest). */
-static void display_to_rgb8(const tl_frame *f, uint8_t *rgb)
+/* 8-bit RGB rows for ffmpeg from the display plane, dithered as 8-bit
+ * PNGs are (--dither). */
+static void display_to_rgb8(const tl_frame *f, int dither, uint8_t *rgb)
 {
-    size_t n = (size_t)f->width * (size_t)f->height;
-    for (size_t i = 0; i < n; i++)
-        for (int c = 0; c < 3; c++) {
-            float v = f->display[i * 4 + c];
-            v = v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v;
-            rgb[i * 3 + c] = (uint8_t)lrintf(v * 255.0f);
-        }
+    for (int y = 0; y < f->height; y++)
+        tl_frame_display_row8(f, y, dither, rgb + (size_t)y * (size_t)f->width * 3);
 }
 
 static int write_frame_files(const render_options *o, const tl_timeline *tl, long frame,
@@ -320,6 +324,7 @@ static int write_frame_files(const render_options *o, const tl_timeline *tl, lon
     };
     int n = 7 + tl_cli_quality_meta(&scene->quality, meta + 7);
     tl_image_options opt = {.png_bits = o->png_bits,
+                            .no_dither = !o->dither,
                             .png_compression = o->png_compression,
                             .exr_compression = o->exr_compression,
                             .meta = meta,
@@ -351,7 +356,7 @@ static int write_movie(void *ctx, long n, const tl_scene *scene, const tl_frame 
     (void)scene;
     (void)path;
     const write_context *w = ctx;
-    display_to_rgb8(f, w->rgb);
+    display_to_rgb8(f, w->o->dither, w->rgb);
     return tl_movie_write(w->movie, w->rgb, err);
 }
 
@@ -397,6 +402,7 @@ int tl_cli_render(int argc, char **argv)
     tl_error_clear(&err);
     render_options o = {0};
     o.png_bits = 8;
+    o.dither = 1;
     int help = 0;
     int rc = parse(argc, argv, &o, &help, &err);
     if (help) {

@@ -24,7 +24,7 @@ static const char usage[] =
     "The extension of each -o picks the format:\n"
     "  .exr  linear scene-referred half RGBA + float Z (distance along the view\n"
     "        ray, metres; sky = 1e10), ZIP compressed\n"
-    "  .png  tonemapped (exposure, ACES, sRGB) 8-bit RGB\n"
+    "  .png  tonemapped (exposure, ACES, sRGB) 8-bit RGB, dithered\n"
     "Files are written atomically: a failed run never leaves a partial file.\n"
     "\n"
     "Options:\n"

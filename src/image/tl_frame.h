@@ -31,4 +31,13 @@ typedef struct tl_frame {
 int tl_frame_alloc(tl_frame *frame, int width, int height, tl_error *err);
 void tl_frame_free(tl_frame *frame);
 
+/* Row y of the display plane as 8-bit RGB codes (3 bytes a pixel), for
+ * 8-bit PNGs and movies. Dithered, so that a smooth sky does not band into
+ * steps of one code: a value between two codes takes the lower or the
+ * upper as a fixed noise per pixel and channel decides (every frame and
+ * run gets the same), the nearer the more often, so that on average it is
+ * the value it stands for. A value on a code stays exact; below 0 and NaN
+ * give 0, above 1 gives 255. `dither` 0: rounded to the nearest code. */
+void tl_frame_display_row8(const tl_frame *frame, int y, int dither, unsigned char *rgb);
+
 #endif

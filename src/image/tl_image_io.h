@@ -48,6 +48,7 @@ typedef struct tl_meta {
 
 typedef struct tl_image_options {
     int png_bits;          /* 8 (default when 0) or 16 */
+    int no_dither;         /* 8-bit PNG rounded to nearest (default: dithered) */
     int png_compression;   /* zlib level 1..9; 0: TL_PNG_COMPRESSION_DEFAULT */
     int exr_compression;   /* zlib level 1..9; 0: TL_EXR_COMPRESSION_DEFAULT */
     const tl_meta *meta;   /* may be NULL */

@@ -71,28 +71,29 @@ static unsigned int quantize(float v, unsigned int max)
     return (unsigned int)((double)v * max + 0.5);
 }
 
-/* One row of the display plane as big-endian RGB samples. */
-static void pack_row(const tl_frame *frame, int y, int bits, unsigned char *row)
+/* One row of the display plane as big-endian RGB samples: 16 bits
+ * rounded to nearest, 8 dithered unless asked not to be
+ * (tl_frame_display_row8). */
+static void pack_row(const tl_frame *frame, int y, int bits, int dither, unsigned char *row)
 {
+    if (bits != 16) {
+        tl_frame_display_row8(frame, y, dither, row);
+        return;
+    }
     const float *src = frame->display + (size_t)y * (size_t)frame->width * 4;
     for (int x = 0; x < frame->width; x++) {
         for (int c = 0; c < 3; c++) {
-            float v = src[(size_t)x * 4 + (size_t)c];
-            if (bits == 16) {
-                unsigned int q = quantize(v, 65535u);
-                *row++ = (unsigned char)(q >> 8);
-                *row++ = (unsigned char)(q & 0xffu);
-            } else {
-                *row++ = (unsigned char)quantize(v, 255u);
-            }
+            unsigned int q = quantize(src[(size_t)x * 4 + (size_t)c], 65535u);
+            *row++ = (unsigned char)(q >> 8);
+            *row++ = (unsigned char)(q & 0xffu);
         }
     }
 }
 
 /* Everything between png_create and png_destroy, in its own function so
  * that setjmp's caller has no local changed after the setjmp. */
-static int encode_png(png_job *io, const tl_frame *frame, int bits, int level, png_text *text,
-                      int ntext, unsigned char *row)
+static int encode_png(png_job *io, const tl_frame *frame, int bits, int dither, int level,
+                      png_text *text, int ntext, unsigned char *row)
 {
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, io, on_png_error, on_png_warning);
@@ -130,7 +131,7 @@ static int encode_png(png_job *io, const tl_frame *frame, int bits, int level, p
         png_set_text(png, info, text, ntext);
     png_write_info(png, info);
     for (int y = 0; y < frame->height; y++) {
-        pack_row(frame, y, bits, row);
+        pack_row(frame, y, bits, dither, row);
         png_write_row(png, row);
     }
     png_write_end(png, info);
@@ -226,7 +227,8 @@ int tl_png_write(const char *path, const tl_frame *frame, const tl_image_options
     rc = tl_atomic_open(&file, path, err);
     if (!rc) {
         png_job io = {.fp = file.fp};
-        if (encode_png(&io, frame, bits, level, text, ntext, row) == 0) {
+        int dither = !(opt && opt->no_dither);
+        if (encode_png(&io, frame, bits, dither, level, text, ntext, row) == 0) {
             rc = tl_atomic_commit(&file, err);
         } else {
             tl_atomic_abort(&file);
