@@ -37,7 +37,7 @@ echo "## tideline's \`seed\` against the shader (bench/seed002.tl)"
 echo
 for t in 10 37; do
   build/seed002 --size $size --time $t --repeat 1 --srgb --out "$scratch/s$t.png" >/dev/null
-  "$tl" still bench/seed002.tl --time $t -o "$scratch/t$t.png"
+  "$tl" still bench/seed002.tl --time $t --dither off -o "$scratch/t$t.png"
   echo "- t = $t s: $("$tl" compare "$scratch/s$t.png" "$scratch/t$t.png")"
 done
 echo

@@ -29,9 +29,9 @@ for t in "${timelines[@]}"; do
   { grep -v '^quality ' "$t"; printf '%s\n' 'quality reference' 'set quality.march_octaves 64' \
       'set quality.normal_octaves 64' 'set quality.march_steps 2000' 'set quality.hit_epsilon 0.00005' \
       'set quality.normal_epsilon 0.001' 'set quality.refine_steps 8' 'set quality.spp 32'; } >"$twin"
-  "$tl" still "$t" --frame "$frame" --size "$size" --quality reference -o "$scratch/$name.ref.png"
-  "$tl" still "$twin" --frame "$frame" --size "$size" -o "$scratch/$name.ref2.png"
-  "$tl" still "$t" --frame "$frame" --size "$size" --quality final -o "$scratch/$name.final.png"
+  "$tl" still "$t" --frame "$frame" --size "$size" --quality reference --dither off -o "$scratch/$name.ref.png"
+  "$tl" still "$twin" --frame "$frame" --size "$size" --dither off -o "$scratch/$name.ref2.png"
+  "$tl" still "$t" --frame "$frame" --size "$size" --quality final --dither off -o "$scratch/$name.final.png"
   d=$("$tl" compare "$scratch/$name.ref.png" "$scratch/$name.ref2.png" | awk '{ print $2 }')
   f=$("$tl" compare "$scratch/$name.ref.png" "$scratch/$name.final.png" | awk '{ print $2 }')
   echo "| $name | $frame | $d | $f |"

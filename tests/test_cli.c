@@ -85,7 +85,34 @@ static void test_bad_flags(void)
                  png);
     EXPECT_USAGE("look-at target coincides with the camera", "still", "--look-at", "0,1.5,0", "-o",
                  png);
+    EXPECT_USAGE("--dither: 'maybe' is not on or off", "still", "--dither", "maybe", "-o", png);
     EXPECT_USAGE("no output file", "still");
+}
+
+/* still --dither off rounds each code, on (the default) takes the code
+ * below or above: the two files differ, by one code at most. */
+static void test_still_dither(void)
+{
+    const char *a = in_dir(0, "dither_on.png"), *b = in_dir(1, "dither_off.png");
+    CHECK(run(NULL, "still", "--size", "48x27", "-o", a, NULL) == 0);
+    CHECK(run(NULL, "still", "--size", "48x27", "--dither", "off", "-o", b, NULL) == 0);
+    tl_frame on = {0}, off = {0};
+    tl_error err;
+    CHECK(tl_png_read(a, &on, NULL, &err) == 0);
+    CHECK(tl_png_read(b, &off, NULL, &err) == 0);
+    int differ = 0, far = 0;
+    for (size_t i = 0; on.display && off.display && i < 48 * 27 * 4; i++) {
+        double d = fabs((double)on.display[i] - off.display[i]) * 255.0;
+        differ += d > 0.5;
+        far += d > 1.5;
+    }
+    printf("still --dither on against off: %d samples differ, %d by more than a code\n", differ,
+           far);
+    CHECK(differ > 0 && far == 0);
+    tl_frame_free(&on);
+    tl_frame_free(&off);
+    unlink(a);
+    unlink(b);
 }
 
 static void test_bad_outputs(void)
@@ -508,6 +535,7 @@ int main(int argc, char **argv)
     shader_src = argv[2];
     test_help_and_version();
     test_bad_flags();
+    test_still_dither();
     test_bad_outputs();
     test_runtime_failures();
     test_success();

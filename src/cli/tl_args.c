@@ -94,6 +94,14 @@ int tl_args_int_range(const char *flag, const char *text, int lo, int hi, int *o
     return TL_OK;
 }
 
+int tl_args_on_off(const char *flag, const char *text, int *out, tl_error *err)
+{
+    if (strcmp(text, "on") && strcmp(text, "off"))
+        return tl_error_set(err, TL_ERR_USAGE, "%s: '%s' is not on or off", flag, text);
+    *out = !strcmp(text, "on");
+    return TL_OK;
+}
+
 int tl_args_angle(const char *flag, const char *text, double *radians, tl_error *err)
 {
     char buf[128];

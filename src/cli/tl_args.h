@@ -33,6 +33,8 @@ int tl_args_unknown(tl_args *a, const char *command, tl_error *err);
 int tl_args_double(const char *flag, const char *text, double *out, tl_error *err);
 /* A whole number in lo..hi. */
 int tl_args_int_range(const char *flag, const char *text, int lo, int hi, int *out, tl_error *err);
+/* on (1) or off (0). */
+int tl_args_on_off(const char *flag, const char *text, int *out, tl_error *err);
 /* A number with an optional unit: deg (default for angles) or rad. */
 int tl_args_angle(const char *flag, const char *text, double *radians, tl_error *err);
 /* WxH, each in 1..16384. */

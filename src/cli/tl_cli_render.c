@@ -153,9 +153,7 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
         } else if (tl_args_match(&a, "--exr-compression", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->exr_compression, err) : 0;
         } else if (tl_args_match(&a, "--dither", NULL, true, err)) {
-            if (a.value && strcmp(a.value, "on") && strcmp(a.value, "off"))
-                rc = tl_error_set(err, TL_ERR_USAGE, "--dither: '%s' is not on or off", a.value);
-            o->dither = a.value && !strcmp(a.value, "on");
+            rc = a.value ? tl_args_on_off(a.flag, a.value, &o->dither, err) : 0;
         } else if (tl_args_match(&a, "--png-bits", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 8, 16, &o->png_bits, err) : 0;
             if (!rc && a.value && o->png_bits != 8 && o->png_bits != 16)

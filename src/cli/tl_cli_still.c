@@ -45,6 +45,8 @@ static const char usage[] =
     "  --quality PRESET       draft, preview, final (default), reference, seed\n"
     "  --spp N                stratified samples per pixel (1..1024; default: the preset's)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
+    "  --dither on|off        8-bit PNG: dither to the code below or above so smooth\n"
+    "                         skies do not band (default on; off rounds)\n"
     "  -v, --verbose          log the GL platform, renderer and timings\n"
     "  -h, --help             show this help\n"
     "Angles accept a 'rad' suffix for radians.\n";
@@ -65,7 +67,8 @@ typedef struct still_options {
     int has_look_at;
     const char *shader_dir;
     int verbose;
-    int spp; /* 0: the preset's */
+    int spp;    /* 0: the preset's */
+    int dither; /* 8-bit PNGs dithered (default) */
 } still_options;
 
 static int parse(int argc, char **argv, still_options *o, int *help, tl_error *err)
@@ -151,6 +154,8 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
         } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
             o->shader_dir = a.value;
             rc = a.value ? TL_OK : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--dither", NULL, true, err)) {
+            rc = a.value ? tl_args_on_off(a.flag, a.value, &o->dither, err) : TL_ERR_USAGE;
         } else if (!o->timeline && tl_args_positional(&a, &pos)) {
             o->timeline = pos;
         } else {
@@ -235,6 +240,7 @@ int tl_cli_still(int argc, char **argv)
     tl_error err;
     tl_error_clear(&err);
     still_options o = {0};
+    o.dither = 1;
     tl_scene_defaults(&o.values);
     int help = 0;
     int rc = parse(argc, argv, &o, &help, &err);
@@ -302,7 +308,8 @@ int tl_cli_still(int argc, char **argv)
         {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0},
         {"tideline/camera", TL_META_STRING, camera_text, 0, 0},
     };
-    tl_image_options opt = {.meta = meta,
+    tl_image_options opt = {.no_dither = !o.dither,
+                            .meta = meta,
                             .meta_count = 4 + tl_cli_quality_meta(&scene.quality, meta + 4)};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_write(o.outputs[i], &frame, &opt, &err);
