@@ -33,7 +33,7 @@ void tl_frame_free(tl_frame *frame)
 /* The dither of pixel (x, y): three uniform noises in [0, 1) codes, bytes
  * of one hash (a fixed pattern: the same frame always gives the same
  * file). */
-static void dither(unsigned x, unsigned y, float noise[3])
+static void dither_noise(unsigned x, unsigned y, float noise[3])
 {
     uint32_t h = x * 0x9e3779b1u ^ y * 0x85ebca77u;
     h ^= h >> 15;
@@ -43,13 +43,13 @@ static void dither(unsigned x, unsigned y, float noise[3])
         noise[c] = (float)(h >> (8 * c) & 0xffu) * (1.0f / 256.0f);
 }
 
-void tl_frame_display_row8(const tl_frame *frame, int y, int dithered, unsigned char *rgb)
+void tl_frame_display_row8(const tl_frame *frame, int y, int dither, unsigned char *rgb)
 {
     const float *src = frame->display + (size_t)y * (size_t)frame->width * 4;
     float noise[3] = {0.5f, 0.5f, 0.5f}; /* undithered: floor(v·255 + 0.5) */
     for (int x = 0; x < frame->width; x++) {
-        if (dithered)
-            dither((unsigned)x, (unsigned)y, noise);
+        if (dither)
+            dither_noise((unsigned)x, (unsigned)y, noise);
         for (int c = 0; c < 3; c++) {
             float v = src[(size_t)x * 4 + (size_t)c];
             int code = 0;
