@@ -91,6 +91,9 @@ vec3 trace_water(vec3 ray, float t_min, out float dist)
         dist = TL_SKY_DEPTH;
         return sky_color(ray);
     }
+#ifdef TL_FEATURE_POLISH
+    t = surface_polish(ray, t);
+#endif
     dist = t;
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     return water_color(ray, hit, t);

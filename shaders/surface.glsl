@@ -11,3 +11,40 @@ float surface_height(vec2 p, int octaves, float footprint)
 #endif
     return h;
 }
+
+#ifdef TL_FEATURE_POLISH
+// The march stops where the ray crosses the surface of quality.march_octaves
+// octaves; the normal sums quality.normal_octaves, a surface that lies a
+// few centimetres off it, so shading at the march's hit draws the fine
+// ripples where the ray does not meet them. One Newton step on the finer
+// surface's height, with its exact gradient, moves t onto it, and the
+// normal is then evaluated where the ray meets the surface it describes
+// (quality.polish; docs/quality.md, Round 9: 2.1 dB closer to `reference`
+// at `preview`). Held where a step cannot be trusted: a ray within
+// TL_POLISH_GRAZE of the surface's tangent, whose step could leap to
+// another wave, and steps beyond TL_POLISH_MOST of t (the finer octaves
+// move the surface by centimetres; a longer step is a bad linearisation).
+#define TL_POLISH_GRAZE 0.02
+#define TL_POLISH_MOST 0.01
+float surface_polish(vec3 ray, float t)
+{
+    vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * t;
+    vec2 grad;
+    float slope_var;
+    float h = (waves_value_grad(p.xz, TL_NORMAL_OCTAVES, t * u_lod_angle, grad, slope_var) - 1.0) *
+              u_depth;
+    grad *= u_depth;
+#ifdef TL_FEATURE_GIANT_WAVE
+    GiantSample giant = giant_sample(p.xz);
+    h += giant.height;
+    grad += giant.grad;
+#endif
+    // d(p.y - h)/dt along the ray: negative where a ray from above meets
+    // the surface, positive from below.
+    float rate = ray.y - dot(grad, ray.xz);
+    float step = (h - p.y) / rate;
+    if (!(abs(rate) > TL_POLISH_GRAZE) || isnan(step))
+        return t;
+    return t + clamp(step, -TL_POLISH_MOST * t, TL_POLISH_MOST * t);
+}
+#endif

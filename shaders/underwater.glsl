@@ -62,6 +62,9 @@ vec3 trace_underwater(vec3 ray, out float dist)
         dist = TL_SKY_DEPTH;
         return deep;
     }
+#ifdef TL_FEATURE_POLISH
+    t = surface_polish(ray, t);
+#endif
     dist = t;
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     float value;

@@ -192,7 +192,7 @@ static void test_success(void)
     CHECK(run(NULL, "still", "-v", "--size", "16x16", "-o", png, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "OpenGL");
     CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky, level of detail, "
-                                 "analytic normals, filtered shading\n");
+                                 "analytic normals, filtered shading, hit polish\n");
     /* A timeline's giant wave joins the feature set only while it is there. */
     const char *tl = in_dir(2, "wave.tl");
     FILE *f = fopen(tl, "w");
@@ -206,10 +206,10 @@ static void test_success(void)
     }
     CHECK(run(NULL, "still", tl, "-v", "--time", "0", "--size", "16x16", "-o", png, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky, level of detail, "
-                                 "analytic normals, filtered shading\n");
+                                 "analytic normals, filtered shading, hit polish\n");
     CHECK(run(NULL, "still", tl, "-v", "--time", "0.5", "--size", "16x16", "-o", png, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, giant wave, physical sky, level of "
-                                 "detail, analytic normals, filtered shading\n");
+                                 "detail, analytic normals, filtered shading, hit polish\n");
     /* eval reports the wave and the water under the camera and the crest. */
     CHECK(run(NULL, "eval", tl, "--at", "1s", NULL) == 0);
     /* The crest reaches the centre at giant.arrival, at the deep-water

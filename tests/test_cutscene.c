@@ -144,7 +144,7 @@ static void test_bad_models(void)
     }
     CHECK(run("still", tl, "-o", png, "--size", "32x18", "-v", NULL) == 0);
     CHECK_STR_CONTAINS(tl_run_output, "features: ocean, sun disc, boat, physical sky, level of "
-                                      "detail, analytic normals, filtered shading\n");
+                                      "detail, analytic normals, filtered shading, hit polish\n");
     /* The water plate: the boat still floats but nothing of it is drawn. */
     f = fopen(tl, "a");
     if (f) {
@@ -153,7 +153,7 @@ static void test_bad_models(void)
     }
     CHECK(run("still", tl, "-o", png, "--size", "32x18", "-v", NULL) == 0);
     CHECK_STR_CONTAINS(tl_run_output, "features: ocean, sun disc, physical sky, level of detail, "
-                                      "analytic normals, filtered shading\n");
+                                      "analytic normals, filtered shading, hit polish\n");
     unlink(png);
     unlink(tl);
 }

@@ -101,11 +101,13 @@ static void facing_scene(tl_scene *s)
 
 /* facing_scene over the full-detail surface the CPU mirror computes (level
  * of detail would smooth the far ocean the march sees, by design), with a
- * budget of march steps. */
+ * budget of march steps; the march's own hits (the polish would move them
+ * onto the normals' finer surface). */
 static void facing_mirror_scene(tl_scene *s, int steps)
 {
     facing_scene(s);
     s->quality.lod = false;
+    s->quality.polish = false;
     s->quality.march_steps = steps;
 }
 

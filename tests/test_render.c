@@ -359,7 +359,8 @@ static double first_crossing(const tl_scene *s, const tl_waves *waves, int x, in
 }
 
 /* A steep sea (twice the default's slopes) seen at grazing angles, over
- * the full-detail surface the CPU mirror computes, with steps to spare. */
+ * the full-detail surface the CPU mirror computes, with steps to spare;
+ * the march's own hits (no polish onto the normals' surface). */
 static void steep_sea(tl_scene *s)
 {
     tl_scene_defaults(s);
@@ -370,6 +371,7 @@ static void steep_sea(tl_scene *s)
     s->ocean.depth = 2.0;
     s->quality.lod = false;
     s->quality.march_steps = 400;
+    s->quality.polish = false;
 }
 
 /* The march's over-relaxation (quality.march_relax) never steps through a

@@ -314,11 +314,12 @@ static void test_seed_unchanged(tl_renderer *r)
     s.time = 3.0;
     s.sky.model = TL_SKY_SEED;
     /* The reference predates level of detail, analytic normals, the
-     * march's over-relaxation and its prepass. */
+     * march's over-relaxation, its prepass and the hit polish. */
     s.quality.lod = false;
     s.quality.analytic_normals = false;
     s.quality.march_relax = 1.0;
     s.quality.march_prepass = false;
+    s.quality.polish = false;
     tl_frame f, ref, again;
     if (render(r, &s, &f))
         return;

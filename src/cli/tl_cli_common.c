@@ -51,6 +51,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
         {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
         {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
+        {"tideline/polish", TL_META_INT, NULL, 0, q->polish},
         {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
         {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
         {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading},

@@ -19,12 +19,12 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_FOG",         "TL_FEATURE_SKY_PHYSICAL",
     "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
     "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
-    "TL_FEATURE_REFINE"};
+    "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
     "sun disc",        "giant wave",       "boat",          "wake",
     "underwater",      "waterline",        "fog",           "physical sky",
     "level of detail", "analytic normals", "supersampling", "filtered shading",
-    "root refinement"};
+    "root refinement", "hit polish"};
 
 const char *tl_feature_define(int index)
 {
@@ -627,6 +627,8 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->refine_steps = q->refine_steps;
     if (q->refine_steps > 0)
         u->features |= TL_FEATURE_REFINE;
+    if (q->polish)
+        u->features |= TL_FEATURE_POLISH;
     u->miss_at_start = q->miss_at_start;
     u->march_relax = (float)q->march_relax;
     u->march_prepass = q->march_prepass;

@@ -36,9 +36,10 @@ typedef enum tl_feature {
     TL_FEATURE_SUPERSAMPLE = 1u << 10,      /* quality.spp > 1 */
     TL_FEATURE_FILTERED_SHADING = 1u << 11, /* quality.filtered_shading with quality.lod */
     TL_FEATURE_REFINE = 1u << 12,           /* quality.refine_steps > 0 */
+    TL_FEATURE_POLISH = 1u << 13,           /* quality.polish */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 13
+#define TL_FEATURE_COUNT 14
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the

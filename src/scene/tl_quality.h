@@ -42,6 +42,8 @@ typedef struct tl_quality {
                                 their bracket (0: it marches to the end) */
     bool giant_prepass;      /* with march_prepass off: the prepass still runs over the giant
                                 wave's rectangle, and only the wave's pixels start from it */
+    bool polish;             /* one Newton step moves the march's hit onto the finer surface
+                                of normal_octaves before it is shaded */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

@@ -184,6 +184,8 @@ static const tl_channel channels[] = {
     {"quality.refine_steps", TL_CH_INT, 1, TL_UNIT_NONE, 0, 16, false,
      offsetof(tl_scene, quality.refine_steps), NULL,
      "secant steps toward the surface after a hit (0: none)"},
+    {"quality.polish", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false, offsetof(tl_scene, quality.polish),
+     NULL, "one Newton step moves each hit onto the normals' finer surface before shading"},
     {"quality.lod", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false, offsetof(tl_scene, quality.lod), NULL,
      "fade wave octaves finer than a pixel to their mean (no aliasing, less work far out)"},
     {"quality.render_scale", TL_CH_REAL, 1, TL_UNIT_NONE, 0.25, 1.0, false,
