@@ -33,17 +33,17 @@
 #define BUDGET 12
 /* polish: the march's hit stepped onto the normals' finer surface before
  * it is shaded (one Newton step). On calm and voyage (seed sky) preview
- * came 2.2 dB closer to reference, final 1.3, draft 0.8, for about a
- * tenth of their time (docs/quality.md, Round 9). `seed` keeps the
- * shader's hit; `reference` marches the normals' octaves, where the step
- * is nil. */
+ * came 2.2 dB closer to reference, final 1.3, for 13-19% of their time
+ * (docs/quality.md, Round 9). draft, whose target is time, leaves it off:
+ * it gained 0.8 dB for 14%. `seed` keeps the shader's hit; `reference`
+ * marches the normals' octaves, where the step is nil. */
 /* One preset a row, its knobs in the order of tl_quality. */
 /* clang-format off */
 static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
      * filtered pixel_filter relax prepass budget giant_prepass polish */
     {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85, RELAX,
-     true, BUDGET, true, true},
+     true, BUDGET, true, false},
     {"preview", 10, 26, 48, 0.01, 0.01, 1, 5, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
      RELAX, true, BUDGET, true, true},
     {"final", 12, 36, 96, 0.005, 0.01, 1, 6, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
