@@ -19,7 +19,7 @@ float surface_height(vec2 p, int octaves, float footprint)
 // ripples where the ray does not meet them. One Newton step on the finer
 // surface's height, with its exact gradient, moves t onto it, and the
 // normal is then evaluated where the ray meets the surface it describes
-// (quality.polish; docs/quality.md, Round 9: 2.1 dB closer to `reference`
+// (quality.polish; docs/quality.md, Round 9: 2.2 dB closer to `reference`
 // at `preview`). Held where a step cannot be trusted: a ray within
 // TL_POLISH_GRAZE of the surface's tangent, whose step could leap to
 // another wave, and steps beyond TL_POLISH_MOST of t (the finer octaves
