@@ -158,7 +158,11 @@ float giant_sunlit(vec2 p, float y)
     float crest_height = abs(w) < u_giant_mask.z ? giant_lambda(w, dl) * A : 0.0;
     float ray_height = y + dist * sun.y / flat_len;
     float soft = 0.3 + 0.01 * dist + 0.08 * crest_height;
-    return smoothstep(-soft, soft, ray_height - crest_height);
+    // No crest, no shadow: where the width mask has let the crest down to
+    // the sea's mean level, the penumbra alone darkened the troughs beside
+    // the wave along the whole crest line.
+    float shade = 1.0 - smoothstep(-soft, soft, ray_height - crest_height);
+    return 1.0 - shade * smoothstep(0.0, TL_GIANT_SHADOW_FADE, crest_height);
 }
 
 // Bound on the wave's slope for s within `radius` of `s`.

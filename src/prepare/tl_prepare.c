@@ -1,4 +1,5 @@
 #include "tl_prepare.h"
+#include "tl_prepare_internal.h"
 
 #include "core/tl_math.h"
 
@@ -80,105 +81,6 @@ static double breaking(double threshold, double min_jacobian)
     return b < 0.0 ? 0.0 : b > 1.0 ? 1.0 : b;
 }
 
-/* The pixels whose rays can meet the giant wave's box (giant_ray_interval
- * in shaders/giant.glsl, from the same float uniforms) into u->giant_rect.
- * Outside the box the wave adds nothing, so the renderer draws the lean
- * ocean program there and the giant wave's only inside the rectangle: on
- * llvmpipe a pixel pays for all of the wave's code whatever its branches
- * decide. The box is clipped at `near` in front of the camera and the
- * corners of what is left projected. A ray meets the box closer than
- * `near` only if the camera is within near × `spread` of it, and the
- * lens's points (TL_LENS_DISTANCE ahead) lie within that too: such a
- * camera gets the whole frame. Two pixels of margin cover the samples'
- * jitter (half a pixel) and the GPU's float rounding. */
-static void giant_screen_rect(const tl_scene *s, tl_frame_uniforms *u)
-{
-    const int width = u->width, height = u->height;
-    int *rect = u->giant_rect;
-    rect[0] = rect[1] = rect[2] = rect[3] = 0;
-    double right[3], up[3], fwd[3];
-    tl_scene_camera_basis(&s->camera, right, up, fwd);
-    double ty = tan(0.5 * s->camera.vfov), tx = ty * width / height;
-    /* 1 / cos of the widest angle a sample's ray makes with the axis */
-    double spread = sqrt(1.0 + 1.21 * (tx * tx + ty * ty));
-    double near = fmax(0.5, 2.0 * TL_LENS_DISTANCE);
-    double margin = near * spread;
-    double top = (double)u->giant_bounds[3] * u->giant_shape[1];
-    /* The box in the wave's frame (along, up, across), camera-relative
-     * along and across, absolute up. */
-    double cam[3] = {u->giant_frame[2], s->camera.position[1], u->giant_frame[3]};
-    double lo[3] = {-(double)u->giant_bounds[0], -(double)u->depth - top,
-                    -(double)u->giant_mask[2]};
-    double hi[3] = {u->giant_bounds[0], top, u->giant_mask[2]};
-    int near_box = 1, finite = 1;
-    for (int i = 0; i < 3; i++) {
-        near_box = near_box && cam[i] > lo[i] - margin && cam[i] < hi[i] + margin;
-        finite = finite && isfinite(cam[i]) && isfinite(lo[i]) && isfinite(hi[i]);
-    }
-    if (near_box || !finite) { /* a box of no finite size is not culled */
-        rect[2] = width;
-        rect[3] = height;
-        return;
-    }
-    double dir[2] = {u->giant_frame[0], u->giant_frame[1]};
-    double across[2] = {dir[1], -dir[0]};
-    double corner[8][3]; /* camera space: right, up, forward */
-    for (int i = 0; i < 8; i++) {
-        double a = (i & 1 ? hi[0] : lo[0]) - cam[0];
-        double y = (i & 2 ? hi[1] : lo[1]) - cam[1];
-        double c = (i & 4 ? hi[2] : lo[2]) - cam[2];
-        double p[3] = {a * dir[0] + c * across[0], y, a * dir[1] + c * across[1]};
-        corner[i][0] = p[0] * right[0] + p[1] * right[1] + p[2] * right[2];
-        corner[i][1] = p[0] * up[0] + p[1] * up[1] + p[2] * up[2];
-        corner[i][2] = p[0] * fwd[0] + p[1] * fwd[1] + p[2] * fwd[2];
-    }
-    /* The clipped box's vertices: corners in front of `near`, and where
-     * its 12 edges cross the plane. Projected to pixels. */
-    double x_min = HUGE_VAL, x_max = -HUGE_VAL, y_min = HUGE_VAL, y_max = -HUGE_VAL;
-    for (int i = 0; i < 8; i++) {
-        for (int e = 0; e < 4; e++) {
-            double q[3];
-            if (e == 0) { /* the corner itself */
-                if (corner[i][2] < near)
-                    continue;
-                memcpy(q, corner[i], sizeof q);
-            } else { /* the edge to the corner across axis e - 1 */
-                int j = i | 1 << (e - 1);
-                if (j == i || (corner[i][2] - near) * (corner[j][2] - near) >= 0.0)
-                    continue;
-                double t = (near - corner[i][2]) / (corner[j][2] - corner[i][2]);
-                for (int k = 0; k < 3; k++)
-                    q[k] = corner[i][k] + t * (corner[j][k] - corner[i][k]);
-            }
-            double px = (q[0] / (q[2] * tx) + 1.0) * 0.5 * width;
-            double py = (q[1] / (q[2] * ty) + 1.0) * 0.5 * height;
-            x_min = fmin(x_min, px);
-            x_max = fmax(x_max, px);
-            y_min = fmin(y_min, py);
-            y_max = fmax(y_max, py);
-        }
-    }
-    if (!(x_min <= x_max && y_min <= y_max))
-        return; /* the box lies behind the camera */
-    /* Clamped first: a point just past `near` can project far outside. */
-    x_min = fmin(fmax(x_min, -4.0), width + 4.0);
-    x_max = fmin(fmax(x_max, -4.0), width + 4.0);
-    y_min = fmin(fmax(y_min, -4.0), height + 4.0);
-    y_max = fmin(fmax(y_max, -4.0), height + 4.0);
-    int x0 = (int)floor(x_min) - 2, x1 = (int)ceil(x_max) + 2;
-    int y0 = (int)floor(y_min) - 2, y1 = (int)ceil(y_max) + 2;
-    x0 = x0 < 0 ? 0 : x0;
-    y0 = y0 < 0 ? 0 : y0;
-    x1 = x1 > width ? width : x1;
-    y1 = y1 > height ? height : y1;
-    if (x0 < x1 && y0 < y1) {
-        rect[0] = x0;
-        rect[1] = y0;
-        rect[2] = x1;
-        rect[3] = y1;
-    }
-}
-
 /* The giant wave relative to the camera: only the camera's offset from the
  * crest (small when the wave is in view) reaches the GPU. */
 static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_uniforms *u)
@@ -235,7 +137,7 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
     double across = g.across[0] * g.origin[0] + g.across[1] * g.origin[1];
     u->giant_world[0] = (float)wrap65536(along);
     u->giant_world[1] = (float)wrap65536(across);
-    giant_screen_rect(s, u);
+    tl_prepare_giant_rect(s, u);
 }
 
 /* Whether a sphere (camera-relative centre c, radius r) can show in the

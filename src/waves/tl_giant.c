@@ -247,5 +247,10 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
      * lip near the top of a tall crest, through which light still comes. */
     double soft = 0.3 + 0.01 * dist + 0.08 * crest_height;
     double x01 = fmin(fmax((ray_height - crest_height + soft) / (2.0 * soft), 0.0), 1.0);
-    return x01 * x01 * (3.0 - 2.0 * x01);
+    /* No crest, no shadow: where the width mask has let the crest down
+     * to the sea's mean level, the penumbra alone darkened the troughs
+     * beside the wave along the whole crest line. */
+    double shade = 1.0 - x01 * x01 * (3.0 - 2.0 * x01);
+    double crest01 = fmin(fmax(crest_height / TL_GIANT_SHADOW_FADE, 0.0), 1.0);
+    return 1.0 - shade * crest01 * crest01 * (3.0 - 2.0 * crest01);
 }

@@ -42,6 +42,10 @@
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32
+/* The crest casts its full shadow once it stands this many metres above
+ * the sea's mean level; a crest the width mask lets down casts a fainter
+ * one, and none at 0 (tl_giant_sunlit). */
+#define TL_GIANT_SHADOW_FADE 0.5
 
 /* The wave at one moment, ready to evaluate. All lengths in metres. */
 typedef struct tl_giant {

@@ -1,0 +1,12 @@
+/* tl_prepare's parts shared between its files; not for other modules. */
+#ifndef TL_PREPARE_INTERNAL_H
+#define TL_PREPARE_INTERNAL_H
+
+#include "tl_prepare.h"
+
+/* The pixels where the renderer draws the giant wave's program, into
+ * u->giant_rect (tl_prepare_rect.c). Needs u's giant-wave, sun and depth
+ * uniforms filled. */
+void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u);
+
+#endif
