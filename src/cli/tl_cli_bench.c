@@ -65,7 +65,7 @@ typedef struct bench_options {
     const char *timelines[MAX_TIMELINES];
     int timeline_count;
     const char *frames, *csv, *plot, *shader_dir;
-    char presets[1024];
+    char presets[2048];
     int width, height, repeat, quiet, time_only, passes;
 } bench_options;
 

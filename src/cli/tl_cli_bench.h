@@ -8,7 +8,7 @@
 #include "core/tl_error.h"
 #include "render/tl_render.h"
 
-#define TL_BENCH_MAX_PRESETS 24
+#define TL_BENCH_MAX_PRESETS 32
 #define TL_BENCH_NAME        96 /* a preset, or a variant "final:lod=off" */
 #define TL_BENCH_PASSES      TL_RENDER_PASSES
 
