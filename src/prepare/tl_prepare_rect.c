@@ -1,6 +1,7 @@
-/* The giant wave's screen rectangle: the pixels whose rays can see the
+/* The giant wave's screen rectangle: the pixels whose rays can show the
  * wave, where the renderer draws the wave's program, and the lean ocean's
- * everywhere else (docs/rendering.md, "The giant wave's rectangle"). */
+ * everywhere else (docs/rendering.md, "Only the pixels that can show the
+ * wave pay for it"). */
 #include "tl_prepare_internal.h"
 
 #include <math.h>
@@ -158,9 +159,7 @@ static int clipped_bounds(double (*poly)[2], int n, const double clip[4], double
  * `near` only if the camera is within near × `spread` of it, and the
  * lens's points (TL_LENS_DISTANCE ahead) lie within that too: such a
  * camera gets the whole frame. Two pixels of margin cover the samples'
- * jitter (half a pixel) and the GPU's float rounding. On llvmpipe a pixel
- * pays for all of a program's code whatever its branches decide, so the
- * rectangle is worth keeping tight. */
+ * jitter (half a pixel) and the GPU's float rounding. */
 void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
 {
     const int width = u->width, height = u->height;
