@@ -77,13 +77,14 @@ static void cover_box(const tl_frame_uniforms *u, double cam_y, double min_y, do
     hi[2] += shadow * fabs(across);
 }
 
-/* Andrew's monotone chain: the convex hull of n points (n <= 32),
- * counter-clockwise into hull (room for 2n); returns its size. */
+/* a before b: by x, then y */
 static int before(const double a[2], const double b[2])
 {
     return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
 }
 
+/* Andrew's monotone chain: the convex hull of n points (n <= 32),
+ * counter-clockwise into hull (room for 2n); returns its size. */
 static int convex_hull(double (*p)[2], int n, double (*hull)[2])
 {
     for (int i = 1; i < n; i++) /* insertion sort by x, then y */
