@@ -243,7 +243,7 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
     float cap = smoothstep(0.9, 1.0, top) * breaking;
     float streaks = giant_streaks(g.s0, g.w);
-    float face = 0.85 * smoothstep(0.42, 0.72, streaks) * smoothstep(0.0, 0.8, top) *
+    float face = 0.75 * smoothstep(0.45, 0.85, streaks) * smoothstep(0.0, 0.8, top) *
                  smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x) * breaking;
     float behind = max(-g.s0, 0.0);
     float fresh = exp(-behind / max(u_giant_foam.y, 1.0e-3));
@@ -282,12 +282,17 @@ float giant_hg(float mu, float g)
 
 // Light through the thin, displaced crest (seed 003's subsurface term):
 // strongest in the upper part of the wave where the surface moved
-// furthest, shaped by a two-lobe phase function of the angle between view
-// and sun.
-vec3 giant_scatter(GiantSample g, vec3 ray)
+// furthest, shaped by a two-lobe phase function of the angle between the
+// sun and the ray refracted into the face (so the face's ripples texture
+// it), less what the Fresnel term keeps inside. Its colour is the water's
+// transmittance over the depth crossed: thin under the lip, where the
+// sun's own colour shows through; deeper green and darker down the face.
+vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
 {
-    float mu = dot(ray, u_sun_dir);
+    float mu = dot(refract(ray, n, 0.75), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
+    float leaves = 1.0 - (u_fresnel_f0 + (1.0 - u_fresnel_f0) *
+                                             pow(1.0 - max(0.0, dot(-n, ray)), 5.0));
     float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);
     // |D| with a floor of 0.3 of its largest: D changes sign on the face,
     // and the glow fell to nothing along that line (a dark crease in the
@@ -297,10 +302,17 @@ vec3 giant_scatter(GiantSample g, vec3 ray)
     // Times the fade: `top` is relative to the faded crest, and a wave
     // fading into a low swell kept its full glow over the swell's whole
     // top (voyage's last frames: a flat teal field around the boat).
-    float thin = smoothstep(0.35, 0.95, top) * u_giant_bounds.w;
+    float thin = smoothstep(0.1, 1.0, top) * u_giant_bounds.w;
+    // giant.scatter_color is the transmittance over one unit of depth,
+    // reached about a quarter of the way down from the crest; a colour
+    // brighter than 1 is a gain on that hue (divided out, then put back).
+    float depth = 0.3 + 2.7 * (1.0 - top);
+    float gain = max(1.0, max(u_giant_scatter_color.r,
+                              max(u_giant_scatter_color.g, u_giant_scatter_color.b)));
+    vec3 tint = gain * pow(max(u_giant_scatter_color / gain, vec3(1.0e-4)), vec3(depth));
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
-    return u_giant_scatter_color * sky_sun_light() *
-           (u_giant_scatter.x * phase * moved * thin * daylight);
+    return tint * sky_sun_light() *
+           (u_giant_scatter.x * phase * moved * thin * daylight * leaves);
 }
 
 // Foam and light through the crest over the water's colour.
@@ -311,9 +323,14 @@ vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value,
 {
     float thickness;
     float foam = giant_foam(g, ocean_value, footprint, thickness);
-    color += giant_scatter(g, ray) * (1.0 - foam);
+    vec3 glow = giant_scatter(g, ray, n);
+    color += glow * (1.0 - foam);
     // The lip is thin: whitewater on the top fifth of the crest still sees
     // the sun through it when the face below is in the crest's shadow.
     float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
-    return foam_shade(color, n, foam, thickness, max(sunlit, smoothstep(0.8, 1.0, top)));
+    // Foam over the glow scatters part of it (0.6) toward the eye: lit from
+    // behind, whitewater on a backlit crest shines. Without this its
+    // shadowed side read as grey-blue blobs on the bright band.
+    color = foam_shade(color, n, foam, thickness, max(sunlit, smoothstep(0.8, 1.0, top)));
+    return color + 0.6 * foam * glow;
 }

@@ -143,33 +143,54 @@ static void test_fade_zero(tl_renderer *r)
     tl_frame_free(&b);
 }
 
-/* The light through the crest at `fade`, facing_scene backlit by a low
- * sun: the linear luminance a frame gains from giant.scatter, averaged
- * over the pixels where it is at least 1% of its largest; -1 if a render
- * failed. */
+/* facing_scene backlit by a low sun at `fade`, rendered with the light
+ * through the crest (`lit`) and without it (`dark`); non-zero if a render
+ * failed (then neither frame holds anything). */
+static int glow_frames(tl_renderer *r, double fade, tl_scene *s, tl_frame *lit, tl_frame *dark)
+{
+    facing_scene(s);
+    s->sun.azimuth = 0.0; /* behind the wave */
+    s->sun.elevation = 0.15;
+    s->giant.fade = fade;
+    tl_scene off = *s;
+    off.giant.scatter = 0.0;
+    if (render(r, s, lit))
+        return 1;
+    if (render(r, &off, dark)) {
+        tl_frame_free(lit);
+        return 1;
+    }
+    return 0;
+}
+
+/* The linear colour pixel i gains from giant.scatter, and its luminance. */
+static void glow_at(const tl_frame *lit, const tl_frame *dark, size_t i, double rgb[3])
+{
+    for (int c = 0; c < 3; c++)
+        rgb[c] = lit->color[4 * i + c] - dark->color[4 * i + c];
+}
+
+static double glow_luminance(const double rgb[3])
+{
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+/* The light through the crest at `fade`: the linear luminance a frame
+ * gains from giant.scatter, averaged over the pixels where it is at least
+ * 1% of its largest; -1 if a render failed. */
 static double crest_glow(tl_renderer *r, double fade)
 {
-    tl_scene lit, dark;
-    facing_scene(&lit);
-    lit.sun.azimuth = 0.0; /* behind the wave */
-    lit.sun.elevation = 0.15;
-    lit.giant.fade = fade;
-    dark = lit;
-    dark.giant.scatter = 0.0;
+    tl_scene s;
     tl_frame a, b;
-    if (render(r, &lit, &a))
+    if (glow_frames(r, fade, &s, &a, &b))
         return -1.0;
-    if (render(r, &dark, &b)) {
-        tl_frame_free(&a);
-        return -1.0;
-    }
-    size_t n = (size_t)lit.width * (size_t)lit.height;
-    double peak = 0.0, sum = 0.0;
+    size_t n = (size_t)s.width * (size_t)s.height;
+    double peak = 0.0, sum = 0.0, rgb[3];
     int count = 0;
     for (int pass = 0; pass < 2; pass++)
         for (size_t i = 0; i < n; i++) {
-            const float *p = a.color + 4 * i, *q = b.color + 4 * i;
-            double glow = 0.2126 * (p[0] - q[0]) + 0.7152 * (p[1] - q[1]) + 0.0722 * (p[2] - q[2]);
+            glow_at(&a, &b, i, rgb);
+            double glow = glow_luminance(rgb);
             if (pass == 0)
                 peak = fmax(peak, glow);
             else if (glow >= 0.01 * peak) {
@@ -180,6 +201,56 @@ static double crest_glow(tl_renderer *r, double fade)
     tl_frame_free(&a);
     tl_frame_free(&b);
     return count > 0 ? sum / count : 0.0;
+}
+
+/* The light through the crest takes the colour of the water it crossed:
+ * under the lip, where the crest is thin, more of the sun's red comes
+ * through than lower down the face, where it is deeper green (a single
+ * colour gave a flat, saturated band). Over the rows the glow lights, the
+ * top quarter's red-to-green ratio is well above the bottom quarter's; and
+ * the glow is graded, not cut off: it still lights the rows well below
+ * its brightest one. */
+static void test_glow_graded(tl_renderer *r)
+{
+    tl_scene s;
+    tl_frame a, b;
+    if (glow_frames(r, 1.0, &s, &a, &b)) {
+        CHECK(0);
+        return;
+    }
+    double peak = 0.0, rgb[3];
+    for (size_t i = 0; i < (size_t)s.width * (size_t)s.height; i++) {
+        glow_at(&a, &b, i, rgb);
+        peak = fmax(peak, glow_luminance(rgb));
+    }
+    /* Rows (top first) with any pixel at 1% of the peak or more. */
+    int first = -1, last = -1;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            glow_at(&a, &b, (size_t)y * s.width + x, rgb);
+            if (glow_luminance(rgb) >= 0.01 * peak) {
+                first = first < 0 ? y : first;
+                last = y;
+            }
+        }
+    double sums[2][3] = {{0}};
+    int quarter = (last - first + 1) / 4;
+    for (int y = first; quarter > 0 && y <= last; y++) {
+        int part = y < first + quarter ? 0 : y > last - quarter ? 1 : -1;
+        for (int x = 0; part >= 0 && x < s.width; x++) {
+            glow_at(&a, &b, (size_t)y * s.width + x, rgb);
+            for (int c = 0; c < 3; c++)
+                sums[part][c] += fmax(rgb[c], 0.0);
+        }
+    }
+    double top_ratio = sums[0][0] / fmax(sums[0][1], 1e-12);
+    double low_ratio = sums[1][0] / fmax(sums[1][1], 1e-12);
+    printf("light through the crest: rows %d-%d, red/green top quarter %.3f, bottom %.3f\n", first,
+           last, top_ratio, low_ratio);
+    CHECK(quarter >= 2);
+    CHECK(top_ratio > 1.5 * low_ratio);
+    tl_frame_free(&a);
+    tl_frame_free(&b);
 }
 
 /* The crest's inner light fades with the wave: a wave fading into a low
@@ -896,6 +967,7 @@ int main(void)
     test_probe(r);
     test_fade_zero(r);
     test_glow_fades(r);
+    test_glow_graded(r);
     test_wave_in_view(r);
     test_hits_on_surface(r);
     test_relaxed_march(r);
