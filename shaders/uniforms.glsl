@@ -41,6 +41,7 @@ uniform bool u_miss_at_start;     // out of steps: the march's start (seed shade
 uniform float u_march_relax;      // over-relaxation of the ocean's steps (1: plain)
 uniform int u_prepass_budget;     // march steps before regula falsi where the prepass disagrees
 uniform bool u_normalize_smoothed; // renormalise the smoothed normal (not the seed)
+uniform bool u_facing_normals;     // turn a normal met from behind to face the ray (not the seed)
 
 uniform vec3 u_sun_dir;
 uniform float u_sun_intensity;

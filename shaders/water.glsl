@@ -42,6 +42,20 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value, out float s
 // sqrt(2·slope_var) around n's match that spread's mean and variance.
 // *fresnel gets the mean Fresnel factor; the result is the reflection it
 // weights. `sunlit`: the share of the sun that reaches the water there.
+// A shading normal the ray meets from behind, turned until it faces the
+// ray (quality.facing_normals; off for `seed`, whose shader reflects it as
+// it is). The normal has finer octaves than the surface the march met, so
+// it can face away where the view grazes: at the far sea and at the top of
+// a silhouette, where the march lands a hair past a crest. Reflected as it
+// is, the ray turned steeply up into the dark zenith (blue dashes along the
+// giant wave's lip, voyage 180); turned, it grazes the facet and mirrors
+// the sky near the horizon, as the facets the eye does see there would.
+vec3 water_facing(vec3 ray, vec3 n)
+{
+    float behind = dot(n, ray);
+    return u_facing_normals && behind > -1.0e-3 ? normalize(n - (behind + 1.0e-3) * ray) : n;
+}
+
 vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out float fresnel)
 {
 #ifdef TL_FEATURE_FILTERED_SHADING
@@ -53,7 +67,8 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out f
         vec2 offset = radius * (k == 0 ? vec2(1.0, 0.0)
                                 : k == 1 ? vec2(-0.5, 0.8660254)
                                          : vec2(-0.5, -0.8660254));
-        vec3 nk = normalize(vec3(-(slope.x + offset.x), 1.0, -(slope.y + offset.y)));
+        vec3 nk = water_facing(
+            ray, normalize(vec3(-(slope.x + offset.x), 1.0, -(slope.y + offset.y))));
         float fk = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-nk, ray)), 5.0);
         vec3 r = normalize(reflect(ray, nk));
         r.y = abs(r.y); // reflections never look into the water
@@ -96,6 +111,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
     ocean_y -= giant.height;
 #endif
+    n = water_facing(ray, n);
 
     float fresnel;
     vec3 reflection = water_sky_reflection(ray, n, slope_var, sunlit, fresnel);

@@ -267,6 +267,65 @@ static void test_glow_fades(tl_renderer *r)
     CHECK(low >= 0.0 && low <= 0.4 * full);
 }
 
+/* Of the columns whose top water pixel (the first below the sky) lies on
+ * the wave, those where it is darker than half the pixel two rows below;
+ * *columns gets how many columns have such a pixel. */
+static int dark_lip_columns(const tl_frame *f, int w, int h, int *columns)
+{
+    int dark = 0;
+    *columns = 0;
+    for (int x = 0; x < w; x++)
+        for (int y = 1; y + 2 < h; y++) {
+            size_t k = (size_t)y * w + x;
+            if (f->depth[k] == TL_FRAME_SKY_DEPTH)
+                continue;
+            if (f->depth[k - w] != TL_FRAME_SKY_DEPTH || f->depth[k] > 300.0f)
+                break; /* not a silhouette against the sky, or the far sea */
+            (*columns)++;
+            dark += luminance(f->color + 4 * k) < 0.5 * luminance(f->color + 4 * (k + 2 * w));
+            break;
+        }
+    return dark;
+}
+
+/* The top of the wave's silhouette, seen from the crest's height with the
+ * sun behind it: the march lands a hair past the crest's top, where the
+ * shading normal (finer octaves than the marched surface) faces away
+ * from the ray. Reflected as it was, the ray turned steeply up into the
+ * dark zenith: a row of blue dashes along the lip (voyage 180).
+ * quality.facing_normals turns such a normal to face the ray, so the lip
+ * mirrors the bright sky near the horizon. */
+static void test_lip_facing(tl_renderer *r)
+{
+    tl_scene s;
+    facing_scene(&s);
+    s.width = 640;
+    s.height = 384;
+    s.camera.position[1] = 18.0;
+    s.camera.position[2] = -60.0;
+    s.camera.pitch = -0.09;
+    s.giant.steepness = 0.7;
+    s.giant.curve_strength = 0.6;
+    s.sun.azimuth = 0.0; /* behind the wave */
+    s.sun.elevation = 0.15;
+    int dark[2], columns[2];
+    for (int on = 0; on < 2; on++) {
+        s.quality.facing_normals = on;
+        tl_frame f;
+        if (render(r, &s, &f)) {
+            CHECK(0);
+            return;
+        }
+        dark[on] = dark_lip_columns(&f, s.width, s.height, &columns[on]);
+        tl_frame_free(&f);
+    }
+    printf("lip against the sky: dark top pixels in %d of %d columns facing, %d of %d not\n",
+           dark[1], columns[1], dark[0], columns[0]);
+    CHECK(columns[1] >= s.width / 2);
+    CHECK(dark[0] >= 5);
+    CHECK(dark[1] <= dark[0] / 5);
+}
+
 /* Image row (top first) where the world point p projects. */
 static double project_row(const tl_scene *s, const double p[3])
 {
@@ -968,6 +1027,7 @@ int main(void)
     test_fade_zero(r);
     test_glow_fades(r);
     test_glow_graded(r);
+    test_lip_facing(r);
     test_wave_in_view(r);
     test_hits_on_surface(r);
     test_relaxed_march(r);

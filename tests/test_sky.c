@@ -314,12 +314,14 @@ static void test_seed_unchanged(tl_renderer *r)
     s.time = 3.0;
     s.sky.model = TL_SKY_SEED;
     /* The reference predates level of detail, analytic normals, the
-     * march's over-relaxation, its prepass and the hit polish. */
+     * march's over-relaxation, its prepass, the hit polish and the
+     * normals turned to face the ray. */
     s.quality.lod = false;
     s.quality.analytic_normals = false;
     s.quality.march_relax = 1.0;
     s.quality.march_prepass = false;
     s.quality.polish = false;
+    s.quality.facing_normals = false;
     tl_frame f, ref, again;
     if (render(r, &s, &f))
         return;

@@ -32,7 +32,7 @@ int tl_cli_make_parent_dirs(const char *path, tl_error *err);
  * (TL_CLI_QUALITY_META). */
 struct tl_quality;
 struct tl_meta;
-#define TL_CLI_QUALITY_META 21
+#define TL_CLI_QUALITY_META 22
 int tl_cli_quality_meta(const struct tl_quality *q, struct tl_meta *out);
 
 /* Prints err as one line (with file:line:col when it has one). */

@@ -63,6 +63,7 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/giant_prepass", TL_META_INT, NULL, 0, q->giant_prepass},
         {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
         {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
+        {"tideline/facing_normals", TL_META_INT, NULL, 0, q->facing_normals},
     };
     memcpy(out, m, sizeof m);
     return TL_CLI_QUALITY_META;

@@ -296,6 +296,7 @@ static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1f(tl_renderer_loc(p, "u_march_relax"), u->march_relax);
     glUniform1i(tl_renderer_loc(p, "u_prepass_budget"), u->prepass_budget);
     glUniform1i(tl_renderer_loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
+    glUniform1i(tl_renderer_loc(p, "u_facing_normals"), u->facing_normals);
     glUniform3fv(tl_renderer_loc(p, "u_sun_dir"), 1, u->sun_dir);
     glUniform1f(tl_renderer_loc(p, "u_sun_intensity"), u->sun_intensity);
     glUniform1f(tl_renderer_loc(p, "u_sun_sharpness"), u->sun_sharpness);

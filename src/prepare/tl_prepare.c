@@ -537,6 +537,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->prepass_budget = q->prepass_budget;
     u->giant_prepass = q->giant_prepass;
     u->normalize_smoothed = q->normalize_smoothed;
+    u->facing_normals = q->facing_normals;
     if (q->analytic_normals)
         u->features |= TL_FEATURE_ANALYTIC_NORMALS;
     if (q->lod) {

@@ -86,7 +86,7 @@ typedef struct tl_frame_uniforms {
     /* Quality knobs. */
     int march_octaves, normal_octaves, march_steps;
     float hit_epsilon, normal_epsilon;
-    int refine_steps, miss_at_start, normalize_smoothed;
+    int refine_steps, miss_at_start, normalize_smoothed, facing_normals;
     float march_relax; /* quality.march_relax: the ocean march's over-relaxation */
     int march_prepass; /* quality.march_prepass */
     int prepass_budget; /* quality.prepass_budget */

@@ -41,25 +41,25 @@
 /* clang-format off */
 static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
-     * filtered pixel_filter relax prepass budget giant_prepass polish */
+     * filtered pixel_filter relax prepass budget giant_prepass polish facing */
     {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85, RELAX,
-     true, BUDGET, true, false},
+     true, BUDGET, true, false, true},
     {"preview", 10, 26, 48, 0.01, 0.01, 1, 5, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX, true, BUDGET, true, true},
+     RELAX, true, BUDGET, true, true, true},
     {"final", 12, 36, 96, 0.005, 0.01, 1, 6, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX, true, BUDGET, true, true},
+     RELAX, true, BUDGET, true, true, true},
     /* Converged: every octave the normals use is marched too, a hit is
      * 0.1 mm, refined, normals exact, and 16 stratified samples average
      * the pixel (no level of detail: it is the brute-force answer LOD
      * approximates; plain march steps). */
     {"reference", 48, 48, 1000, 0.0001, 0.002, 16, 10, 4, false, true, false, true, 1.0, false, 0.0,
-     1.0, false, 0, false, false},
+     1.0, false, 0, false, false, true},
     /* The reference shader has no giant wave: it gets final's inversion,
      * and its pixels march from a prepass over the wave's rectangle alone
      * (no shader image to keep there; the open water is the shader's own
      * march). */
     {"seed", 12, 36, 64, 0.01, 0.01, 1, 6, 0, false, false, true, false, 1.0, false, 0.0, 1.0,
-     false, 0, true, false},
+     false, 0, true, false, false},
 };
 /* clang-format on */
 

@@ -44,6 +44,8 @@ typedef struct tl_quality {
                                 wave's rectangle, and only the wave's pixels start from it */
     bool polish;             /* one Newton step moves the march's hit onto the finer surface
                                 of normal_octaves before it is shaded */
+    bool facing_normals;     /* a shading normal the ray meets from behind is turned to face
+                                it before the sky is reflected (false: seed) */
 } tl_quality;
 
 /* Known presets: draft, preview, final (the default), reference, seed. */

@@ -220,6 +220,9 @@ static const tl_channel channels[] = {
     {"quality.normalize_smoothed", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
      offsetof(tl_scene, quality.normalize_smoothed), NULL,
      "renormalise the distance-smoothed normal (off: the seed shader's way)"},
+    {"quality.facing_normals", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, false,
+     offsetof(tl_scene, quality.facing_normals), NULL,
+     "turn a shading normal the ray meets from behind to face it (off: the seed shader's way)"},
 };
 
 #define CHANNEL_COUNT ((int)(sizeof channels / sizeof channels[0]))
