@@ -35,13 +35,6 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value, out float s
 #endif
 }
 
-// The sky the water mirrors, times Fresnel, averaged over the normals of a
-// pixel: the mean normal n and, with filtered shading, the slopes the
-// octaves level of detail faded would have added (variance slope_var per
-// axis). Three normals whose slopes sit on a circle of radius
-// sqrt(2·slope_var) around n's match that spread's mean and variance.
-// *fresnel gets the mean Fresnel factor; the result is the reflection it
-// weights. `sunlit`: the share of the sun that reaches the water there.
 // A shading normal the ray meets from behind, turned until it faces the
 // ray (quality.facing_normals; off for `seed`, whose shader reflects it as
 // it is). The normal has finer octaves than the surface the march met, so
@@ -56,6 +49,13 @@ vec3 water_facing(vec3 ray, vec3 n)
     return u_facing_normals && behind > -1.0e-3 ? normalize(n - (behind + 1.0e-3) * ray) : n;
 }
 
+// The sky the water mirrors, times Fresnel, averaged over the normals of a
+// pixel: the mean normal n and, with filtered shading, the slopes the
+// octaves level of detail faded would have added (variance slope_var per
+// axis). Three normals whose slopes sit on a circle of radius
+// sqrt(2·slope_var) around n's match that spread's mean and variance.
+// *fresnel gets the mean Fresnel factor; the result is the reflection it
+// weights. `sunlit`: the share of the sun that reaches the water there.
 vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out float fresnel)
 {
 #ifdef TL_FEATURE_FILTERED_SHADING

@@ -25,8 +25,9 @@ typedef struct tl_quality {
     int refine_steps;      /* secant steps toward the surface after the march hits */
     bool lod;              /* fade octaves finer than the pixel's footprint to their mean */
     bool analytic_normals; /* the wave sum's exact gradient instead of finite differences */
-    /* The reference shader's two behaviours that tideline improves on,
-     * kept for `seed` so it reproduces that shader's image: */
+    /* The reference shader's behaviours that tideline improves on, kept
+     * for `seed` so it reproduces that shader's image (a third,
+     * facing_normals, is last in the struct): */
     bool miss_at_start;      /* a ray out of steps reports where its march began */
     bool normalize_smoothed; /* renormalise the distance-smoothed normal (false: seed) */
     double render_scale;     /* the ocean renders at this share of the output's width and

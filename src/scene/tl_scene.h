@@ -113,7 +113,8 @@ typedef struct tl_giant_wave {
     double scatter;          /* strength of the light through the crest */
     double scatter_forward;  /* forward lobe g of the two-lobe phase function */
     double scatter_back;     /* backward lobe g (the lobe is mirrored) */
-    double scatter_color[3]; /* linear RGB of that light */
+    double scatter_color[3]; /* that light's colour: the water's transmittance (linear RGB)
+                                a quarter of the way down the crest */
 } tl_giant_wave;
 
 /* Bounds of the built-in boat in model units (src/mesh/tl_mesh_boat.c;

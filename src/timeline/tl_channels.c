@@ -149,7 +149,7 @@ static const tl_channel channels[] = {
     REAL("giant.scatter_back", 1, TL_UNIT_NONE, 0.0, 0.99, giant.scatter_back,
          "backward lobe (Henyey-Greenstein g, mirrored)"),
     REAL("giant.scatter_color", 3, TL_UNIT_NONE, 0.0, 1e3, giant.scatter_color,
-         "linear RGB of light through the crest"),
+         "colour of light through the crest: the water's transmittance a quarter of the way down"),
 
     {"boat.visible", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.visible),
      NULL, "the boat is drawn (off: the water plate, for compositing; it still floats)"},
