@@ -289,6 +289,8 @@ static void test_papercuts(void)
     CHECK(v == q.spp);
     CHECK(tl_exr_read_attr_double(exr, "tideline/giant_iterations", &v, &err) == 0);
     CHECK(v == q.giant_iterations);
+    CHECK(tl_exr_read_attr_double(exr, "tideline/facing_normals", &v, &err) == 0);
+    CHECK(v == q.facing_normals && v == 1.0);
     unlink(good);
     unlink(warn);
     unlink(bad);
