@@ -23,6 +23,7 @@ add_test(NAME example_farm_xargs
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 tl_add_test(test_giant SOURCES test_giant.c LIBS tideline_core)
 tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl)
+tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes)
 tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
   ARGS ${PROJECT_SOURCE_DIR}/tests/meshes ${PROJECT_SOURCE_DIR}/timelines)

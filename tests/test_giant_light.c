@@ -1,0 +1,297 @@
+/* The light on the giant wave, on the GPU (llvmpipe on CI): the light
+ * through its crest (fading with the wave, coloured by the water it
+ * crossed), the lip against the sky with normals met from behind, and the
+ * crest's shadow against its double CPU mirror. */
+#include <math.h>
+
+#include "tl_giant_test.h"
+
+/* facing_scene backlit by a low sun at `fade`, rendered with the light
+ * through the crest (`lit`) and without it (`dark`); non-zero if a render
+ * failed (then neither frame holds anything). */
+static int glow_frames(tl_renderer *r, double fade, tl_scene *s, tl_frame *lit, tl_frame *dark)
+{
+    facing_scene(s);
+    s->sun.azimuth = 0.0; /* behind the wave */
+    s->sun.elevation = 0.15;
+    s->giant.fade = fade;
+    tl_scene off = *s;
+    off.giant.scatter = 0.0;
+    if (render(r, s, lit))
+        return 1;
+    if (render(r, &off, dark)) {
+        tl_frame_free(lit);
+        return 1;
+    }
+    return 0;
+}
+
+/* The linear colour pixel i gains from giant.scatter, and its luminance. */
+static void glow_at(const tl_frame *lit, const tl_frame *dark, size_t i, double rgb[3])
+{
+    for (int c = 0; c < 3; c++)
+        rgb[c] = lit->color[4 * i + c] - dark->color[4 * i + c];
+}
+
+static double glow_luminance(const double rgb[3])
+{
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+/* The light through the crest at `fade`: the linear luminance a frame
+ * gains from giant.scatter, averaged over the pixels where it is at least
+ * 1% of its largest; -1 if a render failed. */
+static double crest_glow(tl_renderer *r, double fade)
+{
+    tl_scene s;
+    tl_frame a, b;
+    if (glow_frames(r, fade, &s, &a, &b))
+        return -1.0;
+    size_t n = (size_t)s.width * (size_t)s.height;
+    double peak = 0.0, sum = 0.0, rgb[3];
+    int count = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t i = 0; i < n; i++) {
+            glow_at(&a, &b, i, rgb);
+            double glow = glow_luminance(rgb);
+            if (pass == 0)
+                peak = fmax(peak, glow);
+            else if (glow >= 0.01 * peak) {
+                sum += glow;
+                count++;
+            }
+        }
+    tl_frame_free(&a);
+    tl_frame_free(&b);
+    return count > 0 ? sum / count : 0.0;
+}
+
+/* The light through the crest takes the colour of the water it crossed:
+ * under the lip, where the crest is thin, more of the sun's red comes
+ * through than lower down the face, where it is deeper green (a single
+ * colour gave a flat, saturated band). Over the rows the glow lights, the
+ * top quarter's red-to-green ratio is well above the bottom quarter's; and
+ * the glow is graded, not cut off: it still lights the rows well below
+ * its brightest one. */
+static void test_glow_graded(tl_renderer *r)
+{
+    tl_scene s;
+    tl_frame a, b;
+    if (glow_frames(r, 1.0, &s, &a, &b)) {
+        CHECK(0);
+        return;
+    }
+    double peak = 0.0, rgb[3];
+    for (size_t i = 0; i < (size_t)s.width * (size_t)s.height; i++) {
+        glow_at(&a, &b, i, rgb);
+        peak = fmax(peak, glow_luminance(rgb));
+    }
+    /* Rows (top first) with any pixel at 1% of the peak or more. */
+    int first = -1, last = -1;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            glow_at(&a, &b, (size_t)y * s.width + x, rgb);
+            if (glow_luminance(rgb) >= 0.01 * peak) {
+                first = first < 0 ? y : first;
+                last = y;
+            }
+        }
+    double sums[2][3] = {{0}};
+    int quarter = (last - first + 1) / 4;
+    for (int y = first; quarter > 0 && y <= last; y++) {
+        int part = y < first + quarter ? 0 : y > last - quarter ? 1 : -1;
+        for (int x = 0; part >= 0 && x < s.width; x++) {
+            glow_at(&a, &b, (size_t)y * s.width + x, rgb);
+            for (int c = 0; c < 3; c++)
+                sums[part][c] += fmax(rgb[c], 0.0);
+        }
+    }
+    double top_ratio = sums[0][0] / fmax(sums[0][1], 1e-12);
+    double low_ratio = sums[1][0] / fmax(sums[1][1], 1e-12);
+    printf("light through the crest: rows %d-%d, red/green top quarter %.3f, bottom %.3f\n", first,
+           last, top_ratio, low_ratio);
+    CHECK(quarter >= 2);
+    CHECK(top_ratio > 1.5 * low_ratio);
+    tl_frame_free(&a);
+    tl_frame_free(&b);
+}
+
+/* The crest's inner light fades with the wave: a wave fading into a low
+ * swell kept its full glow over the swell's whole top (voyage's last
+ * frames showed a flat teal field). At fade 0.3 the glow per lit pixel is
+ * at most 0.4 of a full wave's (0.3 by the fade, a little less or more as
+ * the lower crest moves the surface less and spreads over other pixels). */
+static void test_glow_fades(tl_renderer *r)
+{
+    double full = crest_glow(r, 1.0), low = crest_glow(r, 0.3);
+    printf("light through the crest, per lit pixel: fade 1 %.4g, fade 0.3 %.4g (%.2f)\n", full, low,
+           low / full);
+    CHECK(full > 1e-3);
+    CHECK(low >= 0.0 && low <= 0.4 * full);
+}
+
+/* Of the columns whose top water pixel (the first below the sky) lies on
+ * the wave, those where it is darker than half the pixel two rows below;
+ * *columns gets how many columns have such a pixel. */
+static int dark_lip_columns(const tl_frame *f, int w, int h, int *columns)
+{
+    int dark = 0;
+    *columns = 0;
+    for (int x = 0; x < w; x++)
+        for (int y = 1; y + 2 < h; y++) {
+            size_t k = (size_t)y * w + x;
+            if (f->depth[k] == TL_FRAME_SKY_DEPTH)
+                continue;
+            if (f->depth[k - w] != TL_FRAME_SKY_DEPTH || f->depth[k] > 300.0f)
+                break; /* not a silhouette against the sky, or the far sea */
+            (*columns)++;
+            dark += luminance(f->color + 4 * k) < 0.5 * luminance(f->color + 4 * (k + 2 * w));
+            break;
+        }
+    return dark;
+}
+
+/* The top of the wave's silhouette, seen from the crest's height with the
+ * sun behind it: the march lands a hair past the crest's top, where the
+ * shading normal (finer octaves than the marched surface) faces away
+ * from the ray. Reflected as it was, the ray turned steeply up into the
+ * dark zenith: a row of blue dashes along the lip (voyage 180).
+ * quality.facing_normals turns such a normal to face the ray, so the lip
+ * mirrors the bright sky near the horizon. */
+static void test_lip_facing(tl_renderer *r)
+{
+    tl_scene s;
+    facing_scene(&s);
+    s.width = 640;
+    s.height = 384;
+    s.camera.position[1] = 18.0;
+    s.camera.position[2] = -60.0;
+    s.camera.pitch = -0.09;
+    s.giant.steepness = 0.7;
+    s.giant.curve_strength = 0.6;
+    s.sun.azimuth = 0.0; /* behind the wave */
+    s.sun.elevation = 0.15;
+    int dark[2], columns[2];
+    for (int on = 0; on < 2; on++) {
+        s.quality.facing_normals = on;
+        tl_frame f;
+        if (render(r, &s, &f)) {
+            CHECK(0);
+            return;
+        }
+        dark[on] = dark_lip_columns(&f, s.width, s.height, &columns[on]);
+        tl_frame_free(&f);
+    }
+    printf("lip against the sky: dark top pixels in %d of %d columns facing, %d of %d not\n",
+           dark[1], columns[1], dark[0], columns[0]);
+    CHECK(columns[1] >= s.width / 2);
+    CHECK(dark[0] >= 5);
+    CHECK(dark[1] <= dark[0] / 5);
+}
+
+/* The crest's shadow (giant_sunlit, probe mode 7) against its double
+ * mirror along the wave's centre line, and what it must be: with a low sun
+ * behind a 20 m wave, the water in front of the crest is in its shadow out
+ * to about height / tan(elevation) and in the sun beyond, and behind the
+ * crest it is in the sun; with the sun in front of the wave the back near
+ * the crest is in the shadow and the front in the sun; with the sun set,
+ * nothing is shadowed (there is no sunlight to take away). */
+static void test_sun_shadow(tl_renderer *r)
+{
+    const double cam[3] = {3.0, 6.0, -4.0}, elevation = 8.0 * M_PI / 180.0;
+    const double azimuths[2] = {0.3 + M_PI, 0.3}; /* behind the wave, in front of it */
+    enum { N = 64 };
+    for (int k = 0; k < 3; k++) {
+        tl_scene s;
+        wave_scene(&s, 20.0, 10.0, cam);
+        s.giant.fade = 1.0;
+        s.sun.azimuth = azimuths[k == 1];
+        s.sun.elevation = k == 2 ? -3.0 * M_PI / 180.0 : elevation;
+        tl_waves w;
+        tl_waves_init(&w, &s.ocean);
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &w, &u);
+        double sun[3];
+        tl_scene_sun_direction(&s.sun, sun);
+        double crest = g.fade * g.curl / g.k; /* s of the crest line on the centre line */
+        double reach = 20.0 / tan(elevation);
+        /* s from 60 m behind the crest to 2.5 shadow lengths in front */
+        float xz[2 * N], gpu[4 * N];
+        double at[N];
+        for (int i = 0; i < N; i++) {
+            at[i] = crest - 60.0 + (60.0 + 2.5 * reach) * i / (N - 1);
+            xz[2 * i] = (float)(g.origin[0] + g.dir[0] * at[i] - cam[0]);
+            xz[2 * i + 1] = (float)(g.origin[1] + g.dir[1] * at[i] - cam[2]);
+        }
+        tl_error err;
+        tl_error_clear(&err);
+        CHECK(tl_renderer_probe(r, &u, 7, xz, N, s.quality.march_octaves, gpu, &err) == 0);
+        /* the least and most sun seen in front of the crest (5 m to half
+         * the shadow's length), and behind it (5 to 40 m) */
+        double worst = 0.0, front_min = 1.0, front_max = 0.0, back_min = 1.0, back_max = 0.0;
+        double front_far = 0.0;
+        for (int i = 0; i < N; i++) {
+            double x = cam[0] + (double)xz[2 * i], z = cam[2] + (double)xz[2 * i + 1];
+            double y = tl_waves_surface_height(&w, &g, x, z, s.time, s.quality.march_octaves,
+                                               s.quality.giant_iterations);
+            double cpu = tl_giant_sunlit(&g, x, z, y, sun);
+            worst = fmax(worst, fabs(cpu - gpu[4 * i]));
+            double ahead = at[i] - crest, lit = gpu[4 * i];
+            if (ahead > 5.0 && ahead < 0.5 * reach) {
+                front_min = fmin(front_min, lit);
+                front_max = fmax(front_max, lit);
+            }
+            if (ahead < -5.0 && ahead > -40.0) {
+                back_min = fmin(back_min, lit);
+                back_max = fmax(back_max, lit);
+            }
+            if (ahead > 1.5 * reach)
+                front_far = fmax(front_far, 1.0 - lit);
+        }
+        printf("sun shadow, sun %s: |gpu-cpu| <= %.4f; sun seen in front %.3f..%.3f, behind "
+               "%.3f..%.3f, beyond 1.5 shadow lengths >= %.3f\n",
+               k == 0   ? "behind the wave"
+               : k == 1 ? "in front of it"
+                        : "set",
+               worst, front_min, front_max, back_min, back_max, 1.0 - front_far);
+        CHECK(worst <= 0.02);
+        CHECK(front_far <= 0.01);
+        CHECK(k == 0 ? front_max <= 0.05 : front_min >= 0.99);
+        CHECK(k == 1 ? back_max <= 0.05 : back_min >= 0.99);
+        /* Beside the wave, 20 m past its width, there is no crest to cast
+         * a shadow: the same line is in the sun on the GPU and the CPU
+         * (the penumbra of a crest of no height shaded the troughs there). */
+        const double beside =
+            g.half_width + 20.0 +
+            fabs(sun[0] * g.across[0] + sun[2] * g.across[1]) / hypot(sun[0], sun[2]) * 2.5 * reach;
+        for (int i = 0; i < N; i++) {
+            xz[2 * i] += (float)(g.across[0] * beside);
+            xz[2 * i + 1] += (float)(g.across[1] * beside);
+        }
+        CHECK(tl_renderer_probe(r, &u, 7, xz, N, s.quality.march_octaves, gpu, &err) == 0);
+        double beside_min = 1.0;
+        for (int i = 0; i < N; i++) {
+            double x = cam[0] + (double)xz[2 * i], z = cam[2] + (double)xz[2 * i + 1];
+            beside_min = fmin(beside_min, fmin(gpu[4 * i], tl_giant_sunlit(&g, x, z, -1.0, sun)));
+        }
+        printf("  beside the wave: sun seen >= %.3f\n", beside_min);
+        CHECK(beside_min >= 0.999);
+    }
+}
+
+int main(void)
+{
+    tl_gl_context *ctx = NULL;
+    tl_renderer *r = gl_test_open(&ctx);
+    if (!r)
+        return 1;
+    test_glow_fades(r);
+    test_glow_graded(r);
+    test_lip_facing(r);
+    test_sun_shadow(r);
+    tl_renderer_destroy(r);
+    tl_gl_context_destroy(ctx);
+    TEST_END();
+}

@@ -1,0 +1,47 @@
+/* Scenes the giant wave's GPU tests share (test_giant_render.c,
+ * test_giant_light.c). Header-only. */
+#ifndef TL_GIANT_TEST_H
+#define TL_GIANT_TEST_H
+
+#include <string.h>
+
+#include "tl_gl_test.h"
+
+/* A wave of `height` whose crest is a few metres past its centre, 25 m in
+ * front of and 10 m beside the camera at `cam`, at time t. */
+static inline void wave_scene(tl_scene *s, double height, double t, const double cam[3])
+{
+    tl_scene_defaults(s);
+    s->time = t;
+    memcpy(s->camera.position, cam, sizeof s->camera.position);
+    s->giant.enabled = true;
+    s->giant.height = height;
+    s->giant.center[0] = cam[0] + 10.0;
+    s->giant.center[1] = cam[2] + 25.0;
+    s->giant.arrival = t - 1.0; /* the crest is a few metres past the centre */
+    s->giant.angle = 0.3;
+}
+
+/* A camera 120 m in front of a 20 m wave that travels toward it. */
+static inline void facing_scene(tl_scene *s)
+{
+    tl_scene_defaults(s);
+    s->width = 160;
+    s->height = 96;
+    s->time = 7.0;
+    s->camera.position[0] = 0.0;
+    s->camera.position[1] = 4.0;
+    s->camera.position[2] = -120.0;
+    s->camera.yaw = 0.0;
+    s->camera.pitch = 0.0;
+    s->sun.azimuth = M_PI; /* behind the camera */
+    s->sun.elevation = 0.4;
+    s->giant.enabled = true;
+    s->giant.height = 20.0;
+    s->giant.wavelength = 90.0;
+    s->giant.width = 260.0;
+    s->giant.angle = M_PI;  /* toward the camera */
+    s->giant.arrival = 7.0; /* crest on the centre, the world origin */
+}
+
+#endif
