@@ -161,7 +161,7 @@ echo "## Each change to final, on and off, on the same cutscenes"
 echo
 "$tl" bench timelines/calm.tl timelines/voyage.tl timelines/giant_wave.tl timelines/dive.tl \
   --size $size --frames 60,180 --repeat 3 -q \
-  --presets final,final:lod=off,final:filtered_shading=off,preview:filtered_shading=off,draft:filtered_shading=on,final:pixel_filter=0,preview:pixel_filter=0,draft:pixel_filter=0,final:march_relax=1,preview:march_relax=1,final:march_prepass=off,preview:march_prepass=off,draft:march_prepass=off,final:prepass_budget=0,preview:prepass_budget=0,final:analytic_normals=off,final:lod=off:analytic_normals=off,final:refine_steps=2,final:refine_steps=2:hit_epsilon=0.02,final:polish=off,preview:polish=off,draft:polish=on,seed,seed:miss_at_start=off:normalize_smoothed=on,seed:march_octaves=36,draft,preview \
+  --presets final,final:lod=off,final:filtered_shading=off,preview:filtered_shading=off,draft:filtered_shading=on,final:pixel_filter=0,preview:pixel_filter=0,draft:pixel_filter=0,final:march_relax=1,preview:march_relax=1,final:march_prepass=off,preview:march_prepass=off,draft:march_prepass=off,final:prepass_budget=0,preview:prepass_budget=0,final:analytic_normals=off,final:lod=off:analytic_normals=off,final:refine_steps=2,final:refine_steps=2:hit_epsilon=0.02,final:polish=off,preview:polish=off,draft:polish=on,final:facing_normals=off,preview:facing_normals=off,draft:facing_normals=off,seed,seed:miss_at_start=off:normalize_smoothed=on,seed:march_octaves=36,draft,preview \
   --csv "$out/quality-changes.csv"
 echo
 echo "## Feature specialisation ($size, calm.tl frames 0-11, final)"
