@@ -212,6 +212,12 @@ vec2 giant_ray_interval(vec3 ray)
     return vec2(t0, t1);
 }
 
+// Height up the faded crest, 0 at the sea's mean level to 1 at the top.
+float giant_top(GiantSample g)
+{
+    return clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+}
+
 // Streaks down the face: value noise stretched along the travel direction
 // (down the face) and wavering across it, three octaves so that no cell's
 // straight edge shows.
@@ -239,7 +245,7 @@ float giant_streaks(float s0, float w)
 float giant_foam(GiantSample g, float ocean_value, float footprint, out float thickness)
 {
     float breaking = u_giant_foam.w;
-    float top = g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3);
+    float top = giant_top(g);
     float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
     float cap = smoothstep(0.9, 1.0, top) * breaking;
     float streaks = giant_streaks(g.s0, g.w);
@@ -291,14 +297,13 @@ vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
 {
     float mu = dot(refract(ray, n, 0.75), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
-    float leaves = 1.0 - (u_fresnel_f0 + (1.0 - u_fresnel_f0) *
-                                             pow(1.0 - max(0.0, dot(-n, ray)), 5.0));
+    float leaves = 1.0 - optics_schlick(ray, n);
     float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);
     // |D| with a floor of 0.3 of its largest: D changes sign on the face,
     // and the glow fell to nothing along that line (a dark crease in the
     // lit band of a distant backlit wave).
     float moved = sqrt(clamp(length(vec2(g.displacement, 0.3 * reach)) / reach, 0.0, 1.0));
-    float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    float top = giant_top(g);
     // Times the fade: `top` is relative to the faded crest, and a wave
     // fading into a low swell kept its full glow over the swell's whole
     // top (voyage's last frames: a flat teal field around the boat).
@@ -327,7 +332,7 @@ vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value,
     color += glow * (1.0 - foam);
     // The lip is thin: whitewater on the top fifth of the crest still sees
     // the sun through it when the face below is in the crest's shadow.
-    float top = clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    float top = giant_top(g);
     // Foam over the glow scatters part of it (0.6) toward the eye: lit from
     // behind, whitewater on a backlit crest shines. Without this its
     // shadowed side read as grey-blue blobs on the bright band.

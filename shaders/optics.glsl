@@ -2,6 +2,14 @@
 // formulas in double): the exact Fresnel reflectance, the water body's
 // transmittance, the fog's optical depth.
 
+// Schlick's reflectance (water.fresnel_f0) of the water's surface with
+// normal n, seen from the air along `ray`: the seed shader's term, which
+// the water above the surface keeps (shader only, no CPU mirror).
+float optics_schlick(vec3 ray, vec3 n)
+{
+    return u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
+}
+
 // Reflectance of unpolarised light arriving in index n1 at cos_i, leaving
 // into n2: (r_s² + r_p²) / 2; 1 under total internal reflection. Schlick's
 // approximation with the water-side cosine is far off near the edge of

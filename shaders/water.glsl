@@ -69,7 +69,7 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out f
                                          : vec2(-0.5, -0.8660254));
         vec3 nk = water_facing(
             ray, normalize(vec3(-(slope.x + offset.x), 1.0, -(slope.y + offset.y))));
-        float fk = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-nk, ray)), 5.0);
+        float fk = optics_schlick(ray, nk);
         vec3 r = normalize(reflect(ray, nk));
         r.y = abs(r.y); // reflections never look into the water
         sum += fk * sky_reflected(r, sunlit);
@@ -78,7 +78,7 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out f
     fresnel = fresnel_sum / 3.0;
     return sum / max(fresnel_sum, 1e-6);
 #else
-    fresnel = u_fresnel_f0 + (1.0 - u_fresnel_f0) * pow(1.0 - max(0.0, dot(-n, ray)), 5.0);
+    fresnel = optics_schlick(ray, n);
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
     return sky_reflected(r, sunlit);
