@@ -242,7 +242,8 @@ float giant_streaks(float s0, float w)
 // of it that its coverage allows. The cap and streaks ride with the crest;
 // the trail's texture stays where the crest left it (world coordinates,
 // wrapped every 65536 m on the CPU).
-float giant_foam(GiantSample g, float ocean_value, float footprint, out float thickness)
+float giant_foam(GiantSample g, float ocean_value, float footprint, out float thickness,
+                 out float aerated)
 {
     float breaking = u_giant_foam.w;
     float top = giant_top(g);
@@ -274,6 +275,10 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     veins *= smoothstep(0.3, 0.6, foam_noise(at / 23.0 + vec2(5.2, 1.3))) *
              (0.55 + 0.45 * foam_noise(at * 0.9 + vec2(2.7, 8.1)));
     float texture_trail = max(0.8 * veins, smoothstep(0.68, 0.85, trail_lace) * fresh);
+    // The bubbles the broken crest drove under stay longer than the foam
+    // on top, in clouds larger than the web's cells.
+    aerated = trail * g.lambda * u_giant_foam.z *
+              (0.5 + 0.5 * foam_noise(at / 9.0 + vec2(3.1, 6.4)));
     coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
     // Even full coverage leaves holes where the lace is thinnest.
     float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
@@ -307,7 +312,9 @@ vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
     // Times the fade: `top` is relative to the faded crest, and a wave
     // fading into a low swell kept its full glow over the swell's whole
     // top (voyage's last frames: a flat teal field around the boat).
-    float thin = smoothstep(0.1, 1.0, top) * u_giant_bounds.w;
+    // Nothing in the lowest quarter: down there the wave is too thick for
+    // the sun to cross (from 0.1, a big face glowed green to its foot).
+    float thin = smoothstep(0.25, 1.0, top) * u_giant_bounds.w;
     // giant.scatter_color is the transmittance over one unit of depth,
     // reached about a quarter of the way down from the crest; a colour
     // brighter than 1 is a gain on that hue (divided out, then put back).
@@ -326,10 +333,19 @@ vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
 vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value, float footprint,
                  float sunlit)
 {
-    float thickness;
-    float foam = giant_foam(g, ocean_value, footprint, thickness);
+    float thickness, aerated;
+    float foam = giant_foam(g, ocean_value, footprint, thickness, aerated);
     vec3 glow = giant_scatter(g, ray, n);
     color += glow * (1.0 - foam);
+    // Water full of bubbles behind the crest scatters light back up: a
+    // milky layer, tinted by the water above it, under the trail's web
+    // (which on the dark water alone read as cracks in mud).
+    vec3 tint = u_giant_scatter_color /
+                max(max(u_giant_scatter_color.r, 1.0e-6),
+                    max(u_giant_scatter_color.g, u_giant_scatter_color.b));
+    // Lit as the water's own scattering is, by what enters the sea around.
+    vec3 light = sky_ambient() + sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) / 3.1415927;
+    color += (0.4 * aerated * (1.0 - optics_schlick(ray, n))) * tint * light;
     // The lip is thin: whitewater on the top fifth of the crest still sees
     // the sun through it when the face below is in the crest's shadow.
     float top = giant_top(g);

@@ -1,8 +1,10 @@
 /* The light on the giant wave, on the GPU (llvmpipe on CI): the light
  * through its crest (fading with the wave, coloured by the water it
  * crossed), the lip against the sky with normals met from behind, and the
- * crest's shadow against its double CPU mirror. */
+ * crest's shadow against its double CPU mirror, and the bubbles the broken
+ * crest leaves behind it. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "tl_giant_test.h"
 
@@ -281,6 +283,73 @@ static void test_sun_shadow(tl_renderer *r)
     }
 }
 
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Median of channel c (3: luminance) over the frame's lower half. */
+static double lower_median(const tl_frame *f, int w, int h, int c)
+{
+    size_t n = (size_t)w * (size_t)(h - h / 2), k = 0;
+    double *v = malloc(n * sizeof *v);
+    if (!v)
+        return -1.0;
+    for (int y = h / 2; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const float *p = f->color + 4 * ((size_t)y * w + x);
+            v[k++] = c < 3 ? p[c] : luminance(p);
+        }
+    qsort(v, n, sizeof *v, by_value);
+    double m = v[n / 2];
+    free(v);
+    return m;
+}
+
+/* Behind a broken crest the water is full of bubbles that scatter light
+ * back up; the web of spent foam on top covers only part of it. On dark
+ * water facing away from a low sun the web alone read as cracks in mud
+ * (giant_wave 310). Looking down on the trail, the water between the
+ * veins (the lower half's median pixel) is more than twice as light with
+ * foam as without, and what it gains is tinted toward giant.scatter_color
+ * (green above red; without the bubbles the median rose 1.6 times, by the
+ * web's warm, sunlit white). */
+static void test_trail_aerated(tl_renderer *r)
+{
+    tl_scene s;
+    facing_scene(&s);
+    s.giant.steepness = 0.75; /* giant_wave.tl's breaking crest */
+    s.giant.curve_strength = 0.6;
+    s.time = 9.0; /* the crest has run 2 s (about 24 m) toward -z */
+    s.camera.position[1] = 25.0;
+    s.camera.position[2] = -10.0; /* above the back, looking down the trail */
+    s.camera.pitch = -0.7;
+    s.sun.azimuth = 0.0; /* in front of the camera, low */
+    s.sun.elevation = 0.16;
+    double median[2][4];
+    for (int on = 0; on < 2; on++) {
+        s.water.foam = on;
+        tl_frame f;
+        if (render(r, &s, &f)) {
+            CHECK(0);
+            return;
+        }
+        for (int c = 0; c < 4; c++)
+            median[on][c] = lower_median(&f, s.width, s.height, c);
+        tl_frame_free(&f);
+    }
+    double gain[3];
+    for (int c = 0; c < 3; c++)
+        gain[c] = median[1][c] - median[0][c];
+    printf("trail's median pixel: luminance %.4g with foam, %.4g without; gain r %.3g g %.3g b "
+           "%.3g\n",
+           median[1][3], median[0][3], gain[0], gain[1], gain[2]);
+    CHECK(median[0][3] > 0.0);
+    CHECK(median[1][3] > 2.0 * median[0][3]);
+    CHECK(gain[1] > 1.5 * fmax(gain[0], 0.0));
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -291,6 +360,7 @@ int main(void)
     test_glow_graded(r);
     test_lip_facing(r);
     test_sun_shadow(r);
+    test_trail_aerated(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();
