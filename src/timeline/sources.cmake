@@ -8,4 +8,7 @@ set(TL_TIMELINE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_timeline.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_float.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_diag.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_values.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_checks.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_keys.c)

@@ -1,265 +1,27 @@
+/* The timeline parser: a file, line by line, into a tl_timeline; its
+ * directives and the `key` and `path` blocks (options of `key` lines in
+ * tl_parse_keys.c, values in tl_parse_values.c, diagnostics in
+ * tl_parse_diag.c, whole-file checks in tl_parse_checks.c). */
 #include "tl_parse.h"
 #include "tl_parse_internal.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <sys/stat.h>
 
-static const char *const directives[] = {"tideline", "fps",  "duration", "size",   "quality",
-                                         "set",      "key",  "path",     "look",   "follow",
-                                         NULL};
+static const char *const directives[] = {"tideline", "fps",  "duration", "size",   "quality", "set",
+                                         "key",      "path", "look",     "follow", NULL};
 static const char *const key_words[] = {
     "cut",           "constant",         "step",    "linear",    "bezier", "spline", "auto-clamped",
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
     "ease-out-sine", "ease-in-out-sine", "back",    "amplitude", "period", NULL};
 
-/* ---- diagnostics ---- */
-
-void tl_parse_diag(parser *p, int col, int len, const char *hint, const char *fmt, ...)
-{
-    tl_diags *d = p->diags;
-    if (d->count >= TL_PARSE_MAX_ERRORS) {
-        d->more++; /* counted, not kept: parsing goes on (it is linear) */
-        d->errors += !p->warning;
-        return;
-    }
-    tl_diag *g = &d->items[d->count++];
-    memset(g, 0, sizeof *g);
-    g->warning = p->warning;
-    d->errors += !p->warning;
-    g->line = p->line_no;
-    g->column = col;
-    g->length = len > 0 ? len : 1;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(g->message, sizeof g->message, fmt, ap);
-    va_end(ap);
-    if (hint)
-        snprintf(g->hint, sizeof g->hint, "did you mean '%s'?", hint);
-    size_t n = p->line_len < sizeof g->text - 1 ? p->line_len : sizeof g->text - 1;
-    if (!p->line_text)
-        n = 0;
-    /* The excerpt is shown on a terminal: control and non-ASCII bytes
-     * become '?' (tabs stay, so the caret lines up). */
-    for (size_t i = 0; i < n; i++) {
-        unsigned char c = (unsigned char)p->line_text[i];
-        g->text[i] = (c == '\t' || (c >= 0x20 && c < 0x7f)) ? (char)c : '?';
-    }
-    while (n > 0 && g->text[n - 1] == '\r')
-        n--;
-    g->text[n] = '\0';
-}
-
-/* The text of line `line` (1-based) and its first word's column; a scan
- * from the start, which is fine for the few errors found after parsing. */
-static int find_line(const parser *p, int line, struct key_source *out)
-{
-    if (!p->source || line < 1)
-        return 0;
-    const char *s = p->source, *end = p->source + p->source_len;
-    for (int n = 1; n < line; n++) {
-        const char *nl = memchr(s, '\n', (size_t)(end - s));
-        if (!nl)
-            return 0;
-        s = nl + 1;
-    }
-    const char *nl = memchr(s, '\n', (size_t)(end - s));
-    size_t len = nl ? (size_t)(nl - s) : (size_t)(end - s);
-    if (len > TL_PARSE_MAX_LINE)
-        return 0;
-    int col = 1;
-    while ((size_t)(col - 1) < len && (s[col - 1] == ' ' || s[col - 1] == '\t'))
-        col++;
-    *out = (struct key_source){line, s, len, col};
-    return 1;
-}
-
-/* A diagnostic about an earlier line (a key found bad when its block
- * closes, or a conflict found at the end). `src` may be NULL when only the
- * line number is known. */
-static void diag_at_line(parser *p, int line, const struct key_source *src, const char *fmt,
-                         const char *msg)
-{
-    int saved_line = p->line_no;
-    const char *saved_text = p->line_text;
-    size_t saved_len = p->line_len;
-    struct key_source found = {line, NULL, 0, 1};
-    if (!src && find_line(p, line, &found))
-        src = &found;
-    p->line_no = line;
-    p->line_text = src ? src->text : NULL;
-    p->line_len = src ? src->len : 0;
-    tl_parse_diag(p, src ? src->col : 0, 1, NULL, fmt, msg);
-    p->line_no = saved_line;
-    p->line_text = saved_text;
-    p->line_len = saved_len;
-}
-
-/* ---- numbers and units ---- */
-
-static double display_value(tl_unit unit, double v)
-{
-    return unit == TL_UNIT_ANGLE ? v / DEG : v;
-}
-
-static const char *display_unit(tl_unit unit)
-{
-    switch (unit) {
-    case TL_UNIT_ANGLE: return " deg";
-    case TL_UNIT_LENGTH: return " m";
-    case TL_UNIT_TIME: return " s";
-    default: return "";
-    }
-}
-
-/* Parses a number with an optional unit suffix; returns 0 on success. */
-int tl_parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
-{
-    char *end = NULL;
-    errno = 0;
-    double v = strtod(t->s, &end);
-    const char *word = t->s + (t->s[0] == '-' || t->s[0] == '+');
-    if (strncasecmp(word, "nan", 3) == 0 || strncasecmp(word, "inf", 3) == 0) {
-        ERR_AT(t, "'%s' is not a finite number", t->s);
-        return 1;
-    }
-    if (end == t->s || !(isdigit((unsigned char)t->s[0]) || t->s[0] == '-' || t->s[0] == '+' ||
-                         t->s[0] == '.')) {
-        ERR_AT(t, "expected a number, got '%s'", t->s);
-        return 1;
-    }
-    if (word[0] == '0' && (word[1] == 'x' || word[1] == 'X')) {
-        ERR_AT(t, "'%s': numbers are decimal", t->s);
-        return 1;
-    }
-    /* ERANGE on a tiny number is underflow: the value rounds to (almost) 0,
-     * which is fine. On a large one it is overflow. */
-    if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0)) {
-        ERR_AT(t, "'%s' is too large", t->s);
-        return 1;
-    }
-    const char *suffix = end;
-    double scale = 1.0;
-    int ok = *suffix == '\0';
-    switch (unit) {
-    case TL_UNIT_TIME:
-        if (strcmp(suffix, "s") == 0) {
-            ok = 1;
-        } else if (strcmp(suffix, "ms") == 0) {
-            ok = 1;
-            scale = 1e-3;
-        } else if (strcmp(suffix, "f") == 0) {
-            ok = 1;
-            scale = 1.0 / p->tl->fps;
-            if (!p->frame_units_line)
-                p->frame_units_line = p->line_no;
-        }
-        if (!ok) {
-            ERR_AT(t, "unknown time unit '%s' (use s, ms or f)", suffix);
-            return 1;
-        }
-        break;
-    case TL_UNIT_ANGLE:
-        scale = DEG; /* bare numbers are degrees */
-        if (strcmp(suffix, "deg") == 0) {
-            ok = 1;
-        } else if (strcmp(suffix, "rad") == 0) {
-            ok = 1;
-            scale = 1.0;
-        }
-        if (!ok) {
-            ERR_AT(t, "unknown angle unit '%s' (use deg or rad)", suffix);
-            return 1;
-        }
-        break;
-    case TL_UNIT_LENGTH:
-        ok |= strcmp(suffix, "m") == 0;
-        if (!ok) {
-            ERR_AT(t, "unknown length unit '%s' (use m)", suffix);
-            return 1;
-        }
-        break;
-    case TL_UNIT_NONE:
-        if (!ok) {
-            ERR_AT(t, "'%s' takes no unit here", t->s);
-            return 1;
-        }
-        break;
-    }
-    v *= scale;
-    if (unit == TL_UNIT_TIME && fabs(v) > MAX_TIME) {
-        ERR_AT(t, "time '%s' is out of range (|t| <= 1e9 s)", t->s);
-        return 1;
-    }
-    *out = v;
-    return 0;
-}
-
 static int parse_time(parser *p, const token *t, double *out)
 {
     return tl_parse_quantity(p, t, TL_UNIT_TIME, out);
-}
-
-/* One component of a channel value, range-checked. */
-static int parse_channel_value(parser *p, const tl_channel *ch, const token *t, double *out)
-{
-    if (ch->kind == TL_CH_BOOL) {
-        static const char *const yes[] = {"on", "true", "yes", "1", NULL};
-        static const char *const no[] = {"off", "false", "no", "0", NULL};
-        for (int i = 0; yes[i]; i++) {
-            if (strcmp(t->s, yes[i]) == 0) {
-                *out = 1.0;
-                return 0;
-            }
-            if (strcmp(t->s, no[i]) == 0) {
-                *out = 0.0;
-                return 0;
-            }
-        }
-        ERR_AT(t, "%s is on or off, got '%s'", ch->name, t->s);
-        return 1;
-    }
-    if (ch->kind == TL_CH_ENUM) {
-        for (int i = 0; ch->names[i]; i++)
-            if (strcmp(t->s, ch->names[i]) == 0) {
-                *out = i;
-                return 0;
-            }
-        tl_parse_diag(p, t->col, t->len, tl_suggest(t->s, ch->names), "%s has no value '%s'",
-                      ch->name, t->s);
-        return 1;
-    }
-    double v;
-    if (tl_parse_quantity(p, t, ch->unit, &v))
-        return 1;
-    /* A bare angle is degrees; a small one was likely meant as radians. */
-    char last = t->len > 0 ? t->s[t->len - 1] : '\0';
-    int bare = (last >= '0' && last <= '9') || last == '.';
-    double deg = fabs(v) / DEG;
-    int fov = strcmp(ch->name, "camera.fov") == 0;
-    if (ch->unit == TL_UNIT_ANGLE && bare && deg > 0.0 && deg < (fov ? 5.0 : 3.0)) {
-        p->warning = 1;
-        ERR_AT(t, "%s %s is read as degrees (%s deg); write %sdeg to keep it, or %srad for radians",
-               ch->name, t->s, t->s, t->s, t->s);
-        p->warning = 0;
-    }
-    if (ch->kind == TL_CH_INT && v != floor(v)) {
-        ERR_AT(t, "%s takes a whole number, got '%s'", ch->name, t->s);
-        return 1;
-    }
-    if (v < ch->min || v > ch->max) {
-        ERR_AT(t, "%s = %s is outside its range %.6g..%.6g%s", ch->name, t->s,
-               display_value(ch->unit, ch->min), display_value(ch->unit, ch->max),
-               display_unit(ch->unit));
-        return 1;
-    }
-    *out = v;
-    return 0;
 }
 
 /* ---- blocks ---- */
@@ -294,8 +56,8 @@ static void finish_block(parser *p)
     if (p->block == BLOCK_KEY && !p->block_failed) {
         tl_track *tr = p->block_track;
         if (tr->curve[0].count == 0) {
-            diag_at_line(p, p->block_line, NULL, "%s has no keys (indent key lines under it)",
-                         p->block_ch->name);
+            tl_parse_diag_at_line(p, p->block_line, NULL,
+                                  "%s has no keys (indent key lines under it)", p->block_ch->name);
         } else {
             for (int c = 0; c < p->block_ch->components; c++) {
                 size_t bad = 0;
@@ -303,8 +65,8 @@ static void finish_block(parser *p)
                 tl_error_clear(&e);
                 if (tl_curve_validate(&tr->curve[c], &bad, &e)) {
                     const struct key_source *src = bad < p->key_count ? &p->key_lines[bad] : NULL;
-                    diag_at_line(p, src ? src->line : p->block_line, src, "%s",
-                                 strip_index_prefix(e.message));
+                    tl_parse_diag_at_line(p, src ? src->line : p->block_line, src, "%s",
+                                          strip_index_prefix(e.message));
                     break;
                 }
                 if (p->block_shortest)
@@ -318,13 +80,14 @@ static void finish_block(parser *p)
         tl_error e;
         tl_error_clear(&e);
         if (path->count == 0) {
-            diag_at_line(p, p->block_line, NULL, "%s", "path has no points (indent them under it)");
+            tl_parse_diag_at_line(p, p->block_line, NULL, "%s",
+                                  "path has no points (indent them under it)");
         } else if (tl_path_validate(path, &bad, &e)) {
             const struct key_source *src = bad < p->key_count ? &p->key_lines[bad] : NULL;
-            diag_at_line(p, src ? src->line : p->block_line, src, "%s",
-                         strip_index_prefix(e.message));
+            tl_parse_diag_at_line(p, src ? src->line : p->block_line, src, "%s",
+                                  strip_index_prefix(e.message));
         } else if (tl_path_prepare(path, &e)) {
-            diag_at_line(p, p->block_line, NULL, "%s", e.message);
+            tl_parse_diag_at_line(p, p->block_line, NULL, "%s", e.message);
         }
     }
     p->block = BLOCK_NONE;
@@ -366,7 +129,7 @@ static void key_line(parser *p, token *tok, int n)
             p->block_failed = 1;
             return;
         }
-        if (parse_channel_value(p, ch, &tok[i], &v[c])) {
+        if (tl_parse_channel_value(p, ch, &tok[i], &v[c])) {
             p->block_failed = 1;
             return;
         }
@@ -568,7 +331,7 @@ static void dir_set(parser *p, token *tok, int n)
     }
     double v[3] = {0, 0, 0};
     for (int c = 0; c < ch->components; c++)
-        if (parse_channel_value(p, ch, &tok[2 + c], &v[c]))
+        if (tl_parse_channel_value(p, ch, &tok[2 + c], &v[c]))
             return;
     tl_track *tr = claim_track(p, ch, &tok[1]);
     if (!tr)
@@ -863,8 +626,8 @@ static void dir_header(parser *p, token *tok, int n)
             return;
         tl_error e;
         if (tl_quality_preset(tok[1].s, &tl->quality, &e)) {
-            static const char *const names[] = {"draft", "preview", "final", "reference",
-                                                "seed", NULL};
+            static const char *const names[] = {"draft",     "preview", "final",
+                                                "reference", "seed",    NULL};
             tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names), "%s", e.message);
         }
     }
@@ -973,103 +736,6 @@ static void parse_line(parser *p, const char *text, size_t len)
         p->block = BLOCK_SKIP;
     directive(p, tok, n);
 }
-
-/* Conflicts between what drives the camera and the boat links, found once
- * the whole file is read; each is reported at the later of its lines. */
-static void check_links(parser *p)
-{
-    tl_timeline *tl = p->tl;
-    const tl_track *pos = &tl->tracks[tl_channel_index(tl_channel_find("camera.position"))];
-    const tl_track *yaw = &tl->tracks[tl_channel_index(tl_channel_find("camera.yaw"))];
-    const tl_track *pitch = &tl->tracks[tl_channel_index(tl_channel_find("camera.pitch"))];
-    char msg[256];
-    struct {
-        int line, active;
-        const char *what;
-    } drivers[3] = {{pos->line, pos->state != TL_TRACK_DEFAULT, "camera.position"},
-                    {tl->camera_path.line, tl->camera_path.present, "path camera"},
-                    {tl->camera_follow.line, tl->camera_follow.target != TL_TARGET_NONE,
-                     "follow camera"}};
-    for (int i = 0; i < 3; i++)
-        for (int j = i + 1; j < 3; j++)
-            if (drivers[i].active && drivers[j].active) {
-                int later = drivers[i].line > drivers[j].line ? i : j;
-                int earlier = later == i ? j : i;
-                snprintf(msg, sizeof msg, "the camera position comes from both %s (line %d) and %s",
-                         drivers[earlier].what, drivers[earlier].line, drivers[later].what);
-                diag_at_line(p, drivers[later].line, NULL, "%s", msg);
-            }
-    if (tl->camera_look.target != TL_TARGET_NONE) {
-        const tl_track *aim[2] = {yaw, pitch};
-        const char *names[2] = {"camera.yaw", "camera.pitch"};
-        for (int i = 0; i < 2; i++)
-            if (aim[i]->state != TL_TRACK_DEFAULT) {
-                int line = aim[i]->line > tl->camera_look.line ? aim[i]->line : tl->camera_look.line;
-                snprintf(msg, sizeof msg,
-                         "the camera looks at a target (line %d), so %s (line %d) cannot be set "
-                         "or keyed",
-                         tl->camera_look.line, names[i], aim[i]->line);
-                diag_at_line(p, line, NULL, "%s", msg);
-            }
-    }
-    const tl_link *needs_boat[3] = {&tl->camera_look, &tl->camera_follow, &tl->giant_follow};
-    for (int i = 0; i < 3; i++)
-        if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present)
-            diag_at_line(p, needs_boat[i]->line, NULL, "%s",
-                         "this refers to the boat, but the timeline has no 'path boat'");
-    if (tl->boat_model_line && !tl->boat_path.present)
-        diag_at_line(p, tl->boat_model_line, NULL, "%s",
-                     "boat.model names the boat's mesh, but the timeline has no 'path boat'");
-}
-
-/* Warnings for keys and path points past the end of the timeline (or all
- * before its start): times written in frames without the `f`, usually. */
-static void check_times(parser *p)
-{
-    tl_timeline *tl = p->tl;
-    const double end = tl->duration * (1.0 + 1e-12);
-    char msg[256];
-    p->warning = 1;
-    for (int i = 0; i < tl_channel_count(); i++) {
-        const tl_track *tr = &tl->tracks[i];
-        if (tr->state != TL_TRACK_KEYED)
-            continue;
-        double lo = INFINITY, hi = -INFINITY;
-        for (int c = 0; c < tl_channel_at(i)->components; c++)
-            if (tr->curve[c].count) {
-                lo = fmin(lo, tr->curve[c].keys[0].t);
-                hi = fmax(hi, tr->curve[c].keys[tr->curve[c].count - 1].t);
-            }
-        if (hi > end && lo > end)
-            snprintf(msg, sizeof msg,
-                     "all keys of %s lie after the end of the timeline (%.6g s), from %.6g s: "
-                     "frames written without 'f'?",
-                     tl_channel_at(i)->name, tl->duration, lo);
-        else if (hi < 0.0)
-            snprintf(msg, sizeof msg, "all keys of %s lie before the timeline's start",
-                     tl_channel_at(i)->name);
-        else if (hi > end)
-            snprintf(msg, sizeof msg,
-                     "%s has keys past the end of the timeline (%.6g s), the last at %.6g s",
-                     tl_channel_at(i)->name, tl->duration, hi);
-        else
-            continue;
-        diag_at_line(p, tr->line, NULL, "%s", msg);
-    }
-    const tl_path_track *paths[2] = {&tl->boat_path, &tl->camera_path};
-    const char *names[2] = {"boat", "camera"};
-    for (int i = 0; i < 2; i++) {
-        const tl_path *path = &paths[i]->path;
-        if (!paths[i]->present || path->count == 0 || path->points[path->count - 1].t <= end)
-            continue;
-        snprintf(msg, sizeof msg,
-                 "path %s has points past the end of the timeline (%.6g s), the last at %.6g s",
-                 names[i], tl->duration, path->points[path->count - 1].t);
-        diag_at_line(p, paths[i]->line, NULL, "%s", msg);
-    }
-    p->warning = 0;
-}
-
 int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl_timeline *out,
                            tl_diags *diags, tl_error *err)
 {
@@ -1118,9 +784,9 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
             tl_parse_diag(&p, 0, 1, NULL, "%sa timeline starts with the line 'tideline 1'",
                           length == 0 ? "the file is empty: " : "");
         }
-        check_links(&p);
+        tl_parse_check_links(&p);
         if (diags->errors == 0)
-            check_times(&p);
+            tl_parse_check_times(&p);
     }
     free(p.key_lines);
     /* Conflicts are found after the whole file: show everything in line
@@ -1183,50 +849,4 @@ int tl_timeline_parse_file(const char *path, tl_timeline *out, tl_diags *diags, 
     int rc = tl_timeline_parse_text(path, text, len, out, diags, err);
     free(text);
     return rc;
-}
-
-void tl_diags_write(const tl_diags *d, FILE *out)
-{
-    for (int i = 0; i < d->count; i++) {
-        const tl_diag *g = &d->items[i];
-        const char *kind = g->warning ? "warning" : "error";
-        if (g->column > 0)
-            fprintf(out, "%s:%d:%d: %s: %s\n", d->file, g->line, g->column, kind, g->message);
-        else
-            fprintf(out, "%s:%d: %s: %s\n", d->file, g->line, kind, g->message);
-        if (g->text[0] && g->column > 0) {
-            fprintf(out, "%6d | %s\n", g->line, g->text);
-            fprintf(out, "       | ");
-            /* Tabs stay tabs so the caret lines up under the same column. */
-            for (int c = 1; c < g->column && c <= (int)strlen(g->text); c++)
-                fputc(g->text[c - 1] == '\t' ? '\t' : ' ', out);
-            fputc('^', out);
-            for (int c = 1; c < g->length && c < 80; c++)
-                fputc('~', out);
-            fputc('\n', out);
-        }
-        if (g->hint[0])
-            fprintf(out, "       = %s\n", g->hint);
-    }
-    if (d->more)
-        fprintf(out, "%s: %d more error%s not shown\n", d->file, d->more, d->more > 1 ? "s" : "");
-}
-
-int tl_parse_time_text(const char *text, double fps, double *out, tl_error *err)
-{
-    tl_timeline tl;
-    memset(&tl, 0, sizeof tl);
-    tl.fps = fps;
-    tl_diags diags;
-    memset(&diags, 0, sizeof diags);
-    parser p = {0};
-    p.tl = &tl;
-    p.diags = &diags;
-    char copy[128];
-    snprintf(copy, sizeof copy, "%s", text);
-    token t = {copy, 1, (int)strlen(copy)};
-    if (strlen(text) >= sizeof copy || parse_time(&p, &t, out))
-        return tl_error_set(err, TL_ERR_USAGE, "%s",
-                            diags.count ? diags.items[0].message : "time is too long");
-    return TL_OK;
 }

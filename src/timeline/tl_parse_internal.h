@@ -63,8 +63,30 @@ void tl_parse_diag(parser *p, int col, int len, const char *hint, const char *fm
     __attribute__((format(printf, 5, 6)));
 #define ERR_AT(tok, ...) tl_parse_diag(p, (tok)->col, (tok)->len, NULL, __VA_ARGS__)
 
+/* ---- tl_parse_diag.c ---- */
+
+/* A diagnostic about an earlier line (a key found bad when its block
+ * closes, or a conflict found at the end); `src` may be NULL when only the
+ * line number is known. */
+void tl_parse_diag_at_line(parser *p, int line, const struct key_source *src, const char *fmt,
+                           const char *msg);
+
+/* ---- tl_parse_values.c ---- */
+
 /* A number with an optional unit suffix of the given kind; 0 on success. */
 int tl_parse_quantity(parser *p, const token *t, tl_unit unit, double *out);
+
+/* One component of a channel's value (on/off, a name, or a number in the
+ * channel's unit), range-checked; 0 on success. */
+int tl_parse_channel_value(parser *p, const tl_channel *ch, const token *t, double *out);
+
+/* ---- tl_parse_checks.c: the whole timeline, once read ---- */
+
+/* Conflicts between what drives the camera, and links to a missing boat. */
+void tl_parse_check_links(parser *p);
+
+/* Warnings for keys and path points past the timeline's end. */
+void tl_parse_check_times(parser *p);
 
 /* ---- tl_parse_keys.c: options of `key` blocks ---- */
 

@@ -1,0 +1,105 @@
+/* Checks of the whole timeline once it is read: what drives the camera
+ * and the links to the boat, and keys past the timeline's end. Split from
+ * tl_parse.c to keep it readable. */
+#include "tl_parse_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+
+/* Conflicts between what drives the camera and the boat links, found once
+ * the whole file is read; each is reported at the later of its lines. */
+void tl_parse_check_links(parser *p)
+{
+    tl_timeline *tl = p->tl;
+    const tl_track *pos = &tl->tracks[tl_channel_index(tl_channel_find("camera.position"))];
+    const tl_track *yaw = &tl->tracks[tl_channel_index(tl_channel_find("camera.yaw"))];
+    const tl_track *pitch = &tl->tracks[tl_channel_index(tl_channel_find("camera.pitch"))];
+    char msg[256];
+    struct {
+        int line, active;
+        const char *what;
+    } drivers[3] = {
+        {pos->line, pos->state != TL_TRACK_DEFAULT, "camera.position"},
+        {tl->camera_path.line, tl->camera_path.present, "path camera"},
+        {tl->camera_follow.line, tl->camera_follow.target != TL_TARGET_NONE, "follow camera"}};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (drivers[i].active && drivers[j].active) {
+                int later = drivers[i].line > drivers[j].line ? i : j;
+                int earlier = later == i ? j : i;
+                snprintf(msg, sizeof msg, "the camera position comes from both %s (line %d) and %s",
+                         drivers[earlier].what, drivers[earlier].line, drivers[later].what);
+                tl_parse_diag_at_line(p, drivers[later].line, NULL, "%s", msg);
+            }
+    if (tl->camera_look.target != TL_TARGET_NONE) {
+        const tl_track *aim[2] = {yaw, pitch};
+        const char *names[2] = {"camera.yaw", "camera.pitch"};
+        for (int i = 0; i < 2; i++)
+            if (aim[i]->state != TL_TRACK_DEFAULT) {
+                int line =
+                    aim[i]->line > tl->camera_look.line ? aim[i]->line : tl->camera_look.line;
+                snprintf(msg, sizeof msg,
+                         "the camera looks at a target (line %d), so %s (line %d) cannot be set "
+                         "or keyed",
+                         tl->camera_look.line, names[i], aim[i]->line);
+                tl_parse_diag_at_line(p, line, NULL, "%s", msg);
+            }
+    }
+    const tl_link *needs_boat[3] = {&tl->camera_look, &tl->camera_follow, &tl->giant_follow};
+    for (int i = 0; i < 3; i++)
+        if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present)
+            tl_parse_diag_at_line(p, needs_boat[i]->line, NULL, "%s",
+                                  "this refers to the boat, but the timeline has no 'path boat'");
+    if (tl->boat_model_line && !tl->boat_path.present)
+        tl_parse_diag_at_line(
+            p, tl->boat_model_line, NULL, "%s",
+            "boat.model names the boat's mesh, but the timeline has no 'path boat'");
+}
+
+/* Warnings for keys and path points past the end of the timeline (or all
+ * before its start): times written in frames without the `f`, usually. */
+void tl_parse_check_times(parser *p)
+{
+    tl_timeline *tl = p->tl;
+    const double end = tl->duration * (1.0 + 1e-12);
+    char msg[256];
+    p->warning = 1;
+    for (int i = 0; i < tl_channel_count(); i++) {
+        const tl_track *tr = &tl->tracks[i];
+        if (tr->state != TL_TRACK_KEYED)
+            continue;
+        double lo = INFINITY, hi = -INFINITY;
+        for (int c = 0; c < tl_channel_at(i)->components; c++)
+            if (tr->curve[c].count) {
+                lo = fmin(lo, tr->curve[c].keys[0].t);
+                hi = fmax(hi, tr->curve[c].keys[tr->curve[c].count - 1].t);
+            }
+        if (hi > end && lo > end)
+            snprintf(msg, sizeof msg,
+                     "all keys of %s lie after the end of the timeline (%.6g s), from %.6g s: "
+                     "frames written without 'f'?",
+                     tl_channel_at(i)->name, tl->duration, lo);
+        else if (hi < 0.0)
+            snprintf(msg, sizeof msg, "all keys of %s lie before the timeline's start",
+                     tl_channel_at(i)->name);
+        else if (hi > end)
+            snprintf(msg, sizeof msg,
+                     "%s has keys past the end of the timeline (%.6g s), the last at %.6g s",
+                     tl_channel_at(i)->name, tl->duration, hi);
+        else
+            continue;
+        tl_parse_diag_at_line(p, tr->line, NULL, "%s", msg);
+    }
+    const tl_path_track *paths[2] = {&tl->boat_path, &tl->camera_path};
+    const char *names[2] = {"boat", "camera"};
+    for (int i = 0; i < 2; i++) {
+        const tl_path *path = &paths[i]->path;
+        if (!paths[i]->present || path->count == 0 || path->points[path->count - 1].t <= end)
+            continue;
+        snprintf(msg, sizeof msg,
+                 "path %s has points past the end of the timeline (%.6g s), the last at %.6g s",
+                 names[i], tl->duration, path->points[path->count - 1].t);
+        tl_parse_diag_at_line(p, paths[i]->line, NULL, "%s", msg);
+    }
+    p->warning = 0;
+}
