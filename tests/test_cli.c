@@ -269,6 +269,21 @@ static void test_papercuts(void)
     CHECK(run(NULL, "eval", good, "--at", "0", NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "camera.fov                 60 deg\n");
     CHECK_STR_CONTAINS(out_text, "camera.position            0 2.5 0 m\n");
+    CHECK(strstr(out_text, "warning") == NULL);
+
+    /* A time outside the timeline renders (the keys' ends hold), with a
+     * word: a frame past the end is usually a typo or the wrong fps. */
+    const char *png = in_dir(3, "past.png");
+    CHECK(run(NULL, "still", warn, "--frame", "96", "--size", "16x16", "--quality", "draft", "-o",
+              png, NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "tideline still: warning: --frame 96 (4 s) is past the end of the "
+                                 "timeline (0 to 2 s, frames 0-47 at 24 fps)");
+    CHECK(access(png, F_OK) == 0);
+    unlink(png);
+    CHECK(run(NULL, "eval", warn, "--at", "-1s", NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "tideline eval: warning: --at -1s (-1 s) is before the timeline");
+    CHECK(run(NULL, "eval", warn, "--at", "2s", NULL) == 0);
+    CHECK(strstr(out_text, "is past the end") == NULL);
 
     const char *exr = in_dir(3, "q.exr");
     CHECK(run(NULL, "still", good, "--size", "16x16", "--quality", "draft", "-o", exr, NULL) == 0);

@@ -23,6 +23,12 @@ struct tl_mesh;
 int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl,
                          struct tl_mesh *boat);
 
+/* Warns on stderr when time t (seconds; `flag` `given` on the command
+ * line) lies outside the timeline: a frame past the end is most often a
+ * typo or the wrong fps, and what it renders only repeats the keys' ends. */
+void tl_cli_warn_outside(const char *command, const char *flag, const char *given,
+                         const struct tl_timeline *tl, double t);
+
 /* mkdir -p of the folder part of `path` (status 2 when it cannot). */
 int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 

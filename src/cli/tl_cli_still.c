@@ -30,7 +30,8 @@ static const char usage[] =
     "Options:\n"
     "  -o, --output FILE      output file (repeat for several formats)\n"
     "  --time T               time since the start: 2.5, 2.5s, 1500ms, 60f (default 0)\n"
-    "  --frame N              the timeline's frame N (time N / fps)\n"
+    "  --frame N              the timeline's frame N (time N / fps); outside the\n"
+    "                         timeline it renders the keys' ends, with a warning\n"
     "  --size WxH             image size, each side 1..16384 (default 1280x720)\n"
     "  --camera X,Y,Z         camera position in metres (default 0,1.5,0;\n"
     "                         +Y up, +Z north, +X east, water at y = 0)\n"
@@ -193,6 +194,11 @@ static int build_scene(still_options *o, tl_scene *scene, tl_mesh *boat, tl_erro
     }
     if (!rc && o->has_frame)
         t = tl_timeline_frame_time(&tl, o->frame);
+    char frame[32];
+    snprintf(frame, sizeof frame, "%ld", o->frame);
+    if (!rc && have_timeline && (o->has_frame || o->time_text))
+        tl_cli_warn_outside("still", o->has_frame ? "--frame" : "--time",
+                            o->has_frame ? frame : o->time_text, &tl, t);
     if (!rc) {
         if (have_timeline)
             tl_timeline_eval(&tl, t, scene);

@@ -38,7 +38,8 @@ static const char eval_usage[] =
     "crest and the boat, and whether the camera sees from under the water.\n"
     "\n"
     "Options:\n"
-    "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps)\n"
+    "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps); one\n"
+    "                 outside the timeline is evaluated, with a warning\n"
     "  --frames A-B   every frame from A to B inclusive (frame time = frame / fps)\n"
     "  --json         one JSON object: {\"file\", \"fps\", \"samples\": [{\"time\",\n"
     "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\",\n"
@@ -90,6 +91,18 @@ int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl,
     else
         tl_mesh_free(&mesh);
     return 0;
+}
+
+void tl_cli_warn_outside(const char *command, const char *flag, const char *given,
+                         const tl_timeline *tl, double t)
+{
+    if (t >= 0.0 && t <= tl->duration * (1.0 + 1e-12))
+        return;
+    fprintf(stderr,
+            "tideline %s: warning: %s %s (%.6g s) is %s the timeline (0 to %.6g s, frames "
+            "0-%ld at %.6g fps); every channel holds or extrapolates its %s key there\n",
+            command, flag, given, t, t < 0.0 ? "before" : "past the end of", tl->duration,
+            tl_timeline_frame_count(tl) - 1, tl->fps, t < 0.0 ? "first" : "last");
 }
 
 static void list_tracks(const tl_timeline *tl, tl_track_state state, const char *label)
@@ -465,6 +478,8 @@ int tl_cli_eval(int argc, char **argv)
         tl_timeline_free(&tl);
         return 2;
     }
+    if (at)
+        tl_cli_warn_outside("eval", "--at", at, &tl, t);
     if (frames && last - first >= 1000000) {
         fprintf(stderr, "tideline eval: --frames: at most 1000000 frames at once\n");
         tl_timeline_free(&tl);
