@@ -37,6 +37,26 @@ float foam_lace(vec2 p)
     return sum / 0.9375;
 }
 
+// Detail for foam seen close: three octaves of value noise, cells 50, 25
+// and 12 cm, each faded out as its cell shrinks from four to two pixels'
+// footprint (metres; 0: all). Centred on zero, within +-0.5.
+float foam_detail(vec2 p, float footprint)
+{
+    const mat2 turn = mat2(0.6, -0.8, 0.8, 0.6);
+    float sum = 0.0, amp = 0.5, cell = 0.5;
+    p *= 2.0;
+    for (int i = 0; i < 3; i++) {
+        float weight = footprint > 0.0 ? clamp(cell / footprint - 1.0, 0.0, 1.0) : 1.0;
+        if (weight <= 0.0)
+            break;
+        sum += amp * weight * (foam_noise(p) - 0.5);
+        p = turn * p * 2.07 + vec2(5.3, 9.1);
+        amp *= 0.5;
+        cell /= 2.07;
+    }
+    return sum / 0.875;
+}
+
 // Foam over the water's colour: a white diffuse layer lit by the sky's
 // hemisphere and the sun, with a wrapped term for light through the foam.
 // Thin foam (thickness near 0) lets the water through and looks greyer.

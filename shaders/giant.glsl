@@ -257,8 +257,9 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float trail = breaking * fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
     float coverage = max(max(compressed, cap), face) * g.lambda;
     vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));
-    float lace = 0.75 * foam_lace(at) + 0.25 * ocean_value;
-    thickness = lace;
+    float detail = foam_detail(at, footprint);
+    float lace = 0.75 * foam_lace(at) + 0.25 * ocean_value + 0.3 * detail;
+    thickness = clamp(lace + 0.6 * detail, 0.0, 1.0);
     // Behind the crest the foam decays into a web, as spent whitewater
     // does: thin veins along the middle contours of a lace stretched along
     // the crest, in drifts with open water between them; fresh foam near

@@ -14,6 +14,8 @@
 //   mode 7: the share of the sun the water at camera-relative (x, z) sees
 //           past the giant wave's crest, at the surface's height there
 //           (tl_giant_sunlit)
+//   mode 8: the foam's close-up detail at the point (x, 0.37 x) for a pixel
+//           footprint of y metres (foam_detail)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -71,6 +73,8 @@ void main()
 #ifdef TL_FEATURE_GIANT_WAVE
     else if (u_probe_mode == 7)
         result.x = giant_sunlit(p, surface_height(p, u_probe_octaves, 0.0));
+    else if (u_probe_mode == 8)
+        result.x = foam_detail(vec2(p.x, 0.37 * p.x), p.y);
 #endif
 #ifdef TL_FEATURE_FOG
     else if (u_probe_mode == 3)

@@ -134,7 +134,7 @@ int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err);
 /* Evaluates one of the shaders' functions (shaders/probe.frag lists the
  * modes: surface height, Fresnel, water and fog transmittance, the lens's
  * gap to the surface, the sky, the surface's slope for the normal, the giant
- * wave's shadow) at
+ * wave's shadow, the foam's close-up detail) at
  * `count` input pairs, with the frame's uniforms and features; out4 gets
  * four floats per input. The GPU side of the tests. */
 int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
