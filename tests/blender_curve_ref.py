@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Expected values for tests/test_curve.c, from Blender 3.4's F-curve formulas.
+"""Expected values for tests/test_curve.c and tests/test_curve_ends.c, from
+Blender 3.4's F-curve formulas.
 
 Written from the formulas (BLI_easing, BKE_nurb_handle_calc for F-curves,
 BKE_nurb_handle_smooth_fcurve, the Cycles modifier, F-curve extrapolation),

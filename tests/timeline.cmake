@@ -1,5 +1,6 @@
 # Timeline tests.
 tl_add_test(test_curve SOURCES test_curve.c LIBS tideline_core)
+tl_add_test(test_curve_ends SOURCES test_curve_ends.c LIBS tideline_core)
 tl_add_test(test_path SOURCES test_path.c LIBS tideline_core)
 tl_add_test(test_timeline SOURCES test_timeline.c LIBS tideline_core)
 # Golden `tideline check` messages for broken timelines (one per mistake).
