@@ -130,6 +130,33 @@ static void test_default_boat(void)
         CHECK_NEAR(m.bounds_max[c], hi[c], 1e-3);
     }
     check_normals(&m);
+    /* The transom (the faces at the stern whose normal points astern):
+     * each triangle is one colour, red wholly below the waterline and white
+     * wholly above, so they meet in a straight line. A fan from a white
+     * centre point blended them into a pale red X. */
+    int transom = 0, mixed = 0, misplaced = 0;
+    for (size_t t = 0; t + 2 < m.index_count; t += 3) {
+        const uint32_t *v = m.indices + t;
+        int astern = 1;
+        for (int k = 0; k < 3; k++)
+            astern &= m.normals[3 * v[k] + 2] < -0.99f && m.positions[3 * v[k] + 2] < -0.499f;
+        if (!astern)
+            continue;
+        transom++;
+        const float *c0 = m.colors + 3 * v[0];
+        int red = c0[0] > 2.0f * c0[1];
+        for (int k = 1; k < 3; k++)
+            mixed += memcmp(m.colors + 3 * v[k], c0, 3 * sizeof(float)) != 0;
+        for (int k = 0; k < 3; k++) {
+            float y = m.positions[3 * v[k] + 1];
+            misplaced += red ? y > 1e-6f : y < -1e-6f;
+        }
+    }
+    printf("default boat's transom: %d triangles, %d mixed, %d vertices on the wrong side\n",
+           transom, mixed, misplaced);
+    CHECK(transom >= 10);
+    CHECK(mixed == 0);
+    CHECK(misplaced == 0);
     tl_mesh_free(&m);
 }
 

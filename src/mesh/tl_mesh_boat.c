@@ -117,29 +117,38 @@ static void hull(tl_mesh_builder *b)
     }
 }
 
-/* The flat transom at the stern, a fan from the centre line. */
+/* The flat transom at the stern: a strip across it between each pair of
+ * section rows, each strip its rows' colour, so the red bottom meets the
+ * white topsides in a straight line at the waterline (rows 5 and 6
+ * coincide). A fan from one white centre point blended the colours
+ * across its triangles into a pale red X (dusk.tl, the boat seen from
+ * astern). */
 static void transom(tl_mesh_builder *b)
 {
     const double n[3] = {0.0, 0.0, -1.0};
-    double top[3];
-    hull_point(0.0, ROWS - 1, top);
-    double centre[3] = {0.0, 0.5 * top[1], -0.5};
-    uint32_t c = vertex(b, centre, n, HULL_TOP);
-    for (int side = -1; side <= 1; side += 2) {
-        uint32_t prev = 0;
-        for (int r = 0; r < ROWS; r++) {
-            double p[3];
-            hull_point(0.0, r, p);
-            p[0] *= side;
-            uint32_t v = vertex(b, p, n, r <= 5 ? HULL_BOTTOM : HULL_TOP);
-            if (r > 0) {
-                if (side > 0)
-                    tl_mesh_add_triangle(b, c, v, prev);
-                else
-                    tl_mesh_add_triangle(b, c, prev, v);
-            }
-            prev = v;
+    uint32_t left = 0, right = 0;
+    for (int r = 0; r < ROWS; r++) {
+        if (r == 6)
+            continue; /* the same points as row 5 */
+        double p[3], q[3];
+        hull_point(0.0, r, p);
+        memcpy(q, p, sizeof q);
+        q[0] = -p[0];
+        /* Rows 5 and 6 meet at the waterline: the strip above it starts
+         * there in white. */
+        const float *rgb = r <= 4 ? HULL_BOTTOM : HULL_TOP;
+        uint32_t l = vertex(b, q, n, rgb), rt = vertex(b, p, n, rgb);
+        if (r == 5) {
+            /* the red strip below ends here: close it with red vertices */
+            uint32_t lr = vertex(b, q, n, HULL_BOTTOM), rr = vertex(b, p, n, HULL_BOTTOM);
+            tl_mesh_add_triangle(b, left, rr, right);
+            tl_mesh_add_triangle(b, left, lr, rr);
+        } else if (r > 0) {
+            tl_mesh_add_triangle(b, left, rt, right);
+            tl_mesh_add_triangle(b, left, l, rt);
         }
+        left = l;
+        right = rt;
     }
 }
 
