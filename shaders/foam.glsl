@@ -38,15 +38,17 @@ float foam_lace(vec2 p)
 }
 
 // Detail for foam seen close: three octaves of value noise, cells 50, 25
-// and 12 cm, each faded out as its cell shrinks from four to two pixels'
-// footprint (metres; 0: all). Centred on zero, within +-0.5.
+// and 12 cm, each faded out as its cell shrinks from one pixel's footprint
+// to half of one (metres; 0: all): a cell is half a wavelength, so none
+// goes past the pixels' Nyquist limit and aliases. Centred on zero, within
+// +-0.5.
 float foam_detail(vec2 p, float footprint)
 {
     const mat2 turn = mat2(0.6, -0.8, 0.8, 0.6);
     float sum = 0.0, amp = 0.5, cell = 0.5;
     p *= 2.0;
     for (int i = 0; i < 3; i++) {
-        float weight = footprint > 0.0 ? clamp(cell / footprint - 1.0, 0.0, 1.0) : 1.0;
+        float weight = footprint > 0.0 ? clamp(2.0 * cell / footprint - 1.0, 0.0, 1.0) : 1.0;
         if (weight <= 0.0)
             break;
         sum += amp * weight * (foam_noise(p) - 0.5);

@@ -381,9 +381,9 @@ static int detail_stats(tl_renderer *r, const tl_frame_uniforms *u, double footp
 /* The crest's foam close up takes detail finer than its lace (cells 50 cm
  * down to 12 cm; without it the whitewater read as a smooth, blurred
  * sheet), and only where the pixel is small enough to hold it: each octave
- * fades out as its cell shrinks from two pixels' footprint to one, so far
- * foam cannot alias into sparkle. Centred on zero (the coverage far off
- * stays what the lace gives) and within +-0.5. */
+ * fades out as its cell shrinks from one pixel's footprint to half of one,
+ * so far foam cannot alias into sparkle. Centred on zero (the coverage far
+ * off stays what the lace gives) and within +-0.5. */
 static void test_foam_detail(tl_renderer *r)
 {
     tl_scene s;
@@ -393,22 +393,22 @@ static void test_foam_detail(tl_renderer *r)
     tl_waves_init(&w, &s.ocean);
     tl_frame_uniforms u;
     tl_prepare_frame(&s, &w, &u);
-    const double footprints[4] = {0.0, 0.1, 0.3, 0.5};
+    const double footprints[4] = {0.0, 0.2, 0.6, 1.0};
     double mean[4], sd[4], peak[4];
     for (int k = 0; k < 4; k++)
         if (detail_stats(r, &u, footprints[k], &mean[k], &sd[k], &peak[k])) {
             CHECK(0);
             return;
         }
-    printf("foam detail, sd at footprint 0 / 0.1 / 0.3 / 0.5 m: %.4f %.4f %.4f %.4f (mean %.4f, "
+    printf("foam detail, sd at footprint 0 / 0.2 / 0.6 / 1 m: %.4f %.4f %.4f %.4f (mean %.4f, "
            "peak %.3f)\n",
            sd[0], sd[1], sd[2], sd[3], mean[0], peak[0]);
     CHECK(fabs(mean[0]) < 0.04);
     CHECK(peak[0] <= 0.5);
     CHECK(sd[0] > 0.05);
-    CHECK(sd[1] < sd[0] && sd[1] > 0.5 * sd[0]); /* the two coarser octaves whole */
+    CHECK(sd[1] < sd[0] && sd[1] > 0.5 * sd[0]); /* the 12 cm octave fading */
     CHECK(sd[2] > 0.0 && sd[2] < 0.7 * sd[1]);   /* the 50 cm octave alone, fading */
-    CHECK(peak[3] == 0.0);                       /* nothing at or below one pixel */
+    CHECK(peak[3] == 0.0);                       /* every cell is half a pixel or less */
 }
 
 int main(void)
