@@ -418,6 +418,51 @@ static void test_wake_along(void)
     tl_timeline_free(&tl);
 }
 
+/* A boat under way in the first frame was under way before it: before the
+ * path's first point (at 0 s) its wake continues back along its first
+ * velocity, and the distance along the path goes negative there, keeping
+ * a place's value from frame to frame. A path that starts later holds its
+ * boat still before the start, and its wake with it. */
+static void test_wake_before_start(void)
+{
+    tl_timeline tl;
+    if (!parse_ok("tideline 1\npath boat constant-speed\n  0s 0 0\n  10s 0 50\n", &tl))
+        return;
+    tl_scene s, later;
+    tl_timeline_eval(&tl, 0.0, &s);
+    tl_timeline_eval(&tl, 2.0 * s.boat.wake_step, &later);
+    CHECK(s.boat.wake_step > 0.0);
+    double worst = 0.0;
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        double back = 5.0 * k * s.boat.wake_step; /* 5 m/s */
+        worst = fmax(worst, fabs(s.boat.wake_path[k][0]));
+        worst = fmax(worst, fabs(s.boat.wake_path[k][1] + back));
+        worst = fmax(worst, fabs(s.boat.wake_along[k] + back));
+        if (k + 2 < TL_WAKE_POINTS) { /* a place keeps its distance */
+            worst = fmax(worst, fabs(later.boat.wake_along[k + 2] - s.boat.wake_along[k]));
+            worst = fmax(worst, fabs(later.boat.wake_path[k + 2][1] - s.boat.wake_path[k][1]));
+        }
+    }
+    printf("wake before the path's start: worst error %.3g m over %d points\n", worst,
+           TL_WAKE_POINTS);
+    CHECK(worst < 1e-3);
+    tl_timeline_free(&tl);
+
+    if (!parse_ok("tideline 1\npath boat constant-speed\n  2s 0 0\n  12s 0 50\n", &tl))
+        return;
+    tl_timeline_eval(&tl, 3.0, &s);
+    int held = 0, before = 0;
+    for (int k = 0; k < TL_WAKE_POINTS; k++)
+        if (3.0 - k * s.boat.wake_step < 2.0) {
+            before++;
+            held += s.boat.wake_path[k][0] == 0.0 && s.boat.wake_path[k][1] == 0.0 &&
+                    s.boat.wake_along[k] == 0.0;
+        }
+    CHECK(before > 10);
+    CHECK(held == before);
+    tl_timeline_free(&tl);
+}
+
 static void test_follow_boat(void)
 {
     char text[1024];
@@ -813,6 +858,7 @@ int main(void)
     test_cuts();
     test_look_at_boat();
     test_wake_along();
+    test_wake_before_start();
     test_follow_boat();
     test_boat_heading_and_float();
     test_constant_speed();

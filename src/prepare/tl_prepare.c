@@ -273,7 +273,10 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
         u->wake[k][1] = (float)(z - cam[2]);
         u->wake[k][2] = (float)(k * b->wake_step);
         u->wake[k][3] = (float)behind;
-        u->wake_along[k] = (float)wrap65536(b->wake_along[k]);
+        /* Half a wrap on: before the path's first point the distance is
+         * negative, and the wrap's seam (a jump in the streaks' texture)
+         * would lie at the path's start, often in view; it lies 32 km away. */
+        u->wake_along[k] = (float)wrap65536(b->wake_along[k] + 32768.0);
         lo[0] = fmin(lo[0], x);
         lo[1] = fmin(lo[1], z);
         hi[0] = fmax(hi[0], x);

@@ -66,6 +66,33 @@ static void add3(double out[3], const double a[3], const double b[3])
 }
 
 /* The scene at t; floating (the costly part) only when asked. */
+/* Where the boat was at time tk, for its wake: x z and the distance along
+ * its path. A path that starts with the timeline (its first point at or
+ * before 0 s) continues back along its first velocity: a boat under way in
+ * the first frame was under way before it, and its wake is already there
+ * (it grew from nothing over the first seconds of every bundled cutscene).
+ * A path that starts later holds still before its start, as the boat on
+ * screen does, and so does its wake. */
+static void wake_point(const tl_path *path, double tk, double xz[2], double *along)
+{
+    double p[3];
+    double t0 = path->count ? path->points[0].t : 0.0;
+    if (path->count < 2 || tk >= t0 || t0 > 0.0) {
+        tl_path_eval(path, tk, p, NULL);
+        xz[0] = p[0];
+        xz[1] = p[2];
+        *along = tl_path_distance(path, tk);
+        return;
+    }
+    double h = 1e-3 * (path->points[1].t - t0), q[3];
+    tl_path_eval(path, t0, p, NULL);
+    tl_path_eval(path, t0 + h, q, NULL);
+    double vx = (q[0] - p[0]) / h, vz = (q[2] - p[2]) / h, dt = tk - t0; /* dt < 0 */
+    xz[0] = p[0] + vx * dt;
+    xz[1] = p[2] + vz * dt;
+    *along = hypot(vx, vz) * dt; /* negative: before the path's first point */
+}
+
 static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_boat)
 {
     tl_scene_defaults(s);
@@ -124,14 +151,9 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
     /* Where it was, for its wake: twice the fade time back. */
     if (s->boat.enabled) {
         s->boat.wake_step = 2.0 * s->boat.wake_time / (TL_WAKE_POINTS - 1);
-        for (int k = 0; k < TL_WAKE_POINTS; k++) {
-            double p[3];
-            tl_path_eval(&tl->boat_path.path, t - k * s->boat.wake_step, p, NULL);
-            s->boat.wake_path[k][0] = p[0];
-            s->boat.wake_path[k][1] = p[2];
-            s->boat.wake_along[k] =
-                tl_path_distance(&tl->boat_path.path, t - k * s->boat.wake_step);
-        }
+        for (int k = 0; k < TL_WAKE_POINTS; k++)
+            wake_point(&tl->boat_path.path, t - k * s->boat.wake_step, s->boat.wake_path[k],
+                       &s->boat.wake_along[k]);
     }
     /* ... and floats on the waves, the giant one included. */
     if (s->boat.enabled && float_boat)
