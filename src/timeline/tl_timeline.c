@@ -65,7 +65,6 @@ static void add3(double out[3], const double a[3], const double b[3])
         out[i] = a[i] + b[i];
 }
 
-/* The scene at t; floating (the costly part) only when asked. */
 /* Where the boat was at time tk, for its wake: x z and the distance along
  * its path. A path that starts with the timeline (its first point at or
  * before 0 s) continues back along its first velocity: a boat under way in
@@ -93,6 +92,7 @@ static void wake_point(const tl_path *path, double tk, double xz[2], double *alo
     *along = hypot(vx, vz) * dt; /* negative: before the path's first point */
 }
 
+/* The scene at t; floating (the costly part) only when asked. */
 static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_boat)
 {
     tl_scene_defaults(s);
