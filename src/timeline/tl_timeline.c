@@ -65,31 +65,41 @@ static void add3(double out[3], const double a[3], const double b[3])
         out[i] = a[i] + b[i];
 }
 
-/* Where the boat was at time tk, for its wake: x z and the distance along
- * its path. A path that starts with the timeline (its first point at or
- * before 0 s) continues back along its first velocity: a boat under way in
- * the first frame was under way before it, and its wake is already there
- * (it grew from nothing over the first seconds of every bundled cutscene).
- * A path that starts later holds still before its start, as the boat on
- * screen does, and so does its wake. */
-static void wake_point(const tl_path *path, double tk, double xz[2], double *along)
+/* Where the boat was over the last 2 x wake_time, for its wake: x z and
+ * the distance along its path at each of TL_WAKE_POINTS times back from t.
+ * A path that starts with the timeline (its first point at or before 0 s)
+ * continues back along its first velocity: a boat under way in the first
+ * frame was under way before it, and its wake is already there (it grew
+ * from nothing over the first seconds of every bundled cutscene). A path
+ * that starts later holds still before its start, as the boat on screen
+ * does, and so does its wake. */
+static void boat_wake(const tl_path *path, double t, tl_boat *b)
 {
-    double p[3];
-    double t0 = path->count ? path->points[0].t : 0.0;
-    if (path->count < 2 || tk >= t0 || t0 > 0.0) {
-        tl_path_eval(path, tk, p, NULL);
-        xz[0] = p[0];
-        xz[1] = p[2];
-        *along = tl_path_distance(path, tk);
-        return;
+    b->wake_step = 2.0 * b->wake_time / (TL_WAKE_POINTS - 1);
+    const double t0 = path->count ? path->points[0].t : 0.0;
+    const bool extrapolate = path->count >= 2 && t0 <= 0.0;
+    double start[3] = {0.0, 0.0, 0.0}, vx = 0.0, vz = 0.0;
+    if (extrapolate && t - (TL_WAKE_POINTS - 1) * b->wake_step < t0) {
+        double h = 1e-3 * (path->points[1].t - t0), q[3];
+        tl_path_eval(path, t0, start, NULL);
+        tl_path_eval(path, t0 + h, q, NULL);
+        vx = (q[0] - start[0]) / h;
+        vz = (q[2] - start[2]) / h;
     }
-    double h = 1e-3 * (path->points[1].t - t0), q[3];
-    tl_path_eval(path, t0, p, NULL);
-    tl_path_eval(path, t0 + h, q, NULL);
-    double vx = (q[0] - p[0]) / h, vz = (q[2] - p[2]) / h, dt = tk - t0; /* dt < 0 */
-    xz[0] = p[0] + vx * dt;
-    xz[1] = p[2] + vz * dt;
-    *along = hypot(vx, vz) * dt; /* negative: before the path's first point */
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        double tk = t - k * b->wake_step, p[3];
+        if (extrapolate && tk < t0) {
+            double dt = tk - t0; /* < 0 */
+            b->wake_path[k][0] = start[0] + vx * dt;
+            b->wake_path[k][1] = start[2] + vz * dt;
+            b->wake_along[k] = hypot(vx, vz) * dt; /* negative: before the first point */
+            continue;
+        }
+        tl_path_eval(path, tk, p, NULL);
+        b->wake_path[k][0] = p[0];
+        b->wake_path[k][1] = p[2];
+        b->wake_along[k] = tl_path_distance(path, tk);
+    }
 }
 
 /* The scene at t; floating (the costly part) only when asked. */
@@ -149,12 +159,8 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
         s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
     }
     /* Where it was, for its wake: twice the fade time back. */
-    if (s->boat.enabled) {
-        s->boat.wake_step = 2.0 * s->boat.wake_time / (TL_WAKE_POINTS - 1);
-        for (int k = 0; k < TL_WAKE_POINTS; k++)
-            wake_point(&tl->boat_path.path, t - k * s->boat.wake_step, s->boat.wake_path[k],
-                       &s->boat.wake_along[k]);
-    }
+    if (s->boat.enabled)
+        boat_wake(&tl->boat_path.path, t, &s->boat);
     /* ... and floats on the waves, the giant one included. */
     if (s->boat.enabled && float_boat)
         tl_timeline_float_boat(tl, t, heading_from_path, s);
