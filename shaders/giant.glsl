@@ -338,15 +338,9 @@ vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value,
     float foam = giant_foam(g, ocean_value, footprint, thickness, aerated);
     vec3 glow = giant_scatter(g, ray, n);
     color += glow * (1.0 - foam);
-    // Water full of bubbles behind the crest scatters light back up: a
-    // milky layer, tinted by the water above it, under the trail's web
-    // (which on the dark water alone read as cracks in mud).
-    vec3 tint = u_giant_scatter_color /
-                max(max(u_giant_scatter_color.r, 1.0e-6),
-                    max(u_giant_scatter_color.g, u_giant_scatter_color.b));
-    // Lit as the water's own scattering is, by what enters the sea around.
-    vec3 light = sky_ambient() + sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) / 3.1415927;
-    color += (0.4 * aerated * (1.0 - optics_schlick(ray, n))) * tint * light;
+    // The bubbles behind the crest, tinted by the water above them, under
+    // the trail's web (which on the dark water alone read as cracks in mud).
+    color += foam_aerated(ray, n, aerated, u_giant_scatter_color, sunlit);
     // The lip is thin: whitewater on the top fifth of the crest still sees
     // the sun through it when the face below is in the crest's shadow.
     float top = giant_top(g);

@@ -16,17 +16,23 @@
 //           (tl_giant_sunlit)
 //   mode 8: the foam's close-up detail at the point (x, 0.37 x) for a pixel
 //           footprint of y metres (foam_detail)
+//   mode 9: the boat's wake at camera-relative (x, z), no level of detail
+//           and the ocean's value 0.5: foam cover, thickness, bubbles
+//           (wake_foam)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
 #include "optics.glsl"
-#ifdef TL_FEATURE_GIANT_WAVE
 #include "foam.glsl"
+#ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif
 #include "surface.glsl"
 #ifdef TL_FEATURE_UNDERWATER
 #include "lens.glsl"
+#endif
+#ifdef TL_FEATURE_WAKE
+#include "wake.glsl"
 #endif
 
 uniform int u_probe_mode;
@@ -75,6 +81,13 @@ void main()
         result.x = giant_sunlit(p, surface_height(p, u_probe_octaves, 0.0));
     else if (u_probe_mode == 8)
         result.x = foam_detail(vec2(p.x, 0.37 * p.x), p.y);
+#endif
+#ifdef TL_FEATURE_WAKE
+    else if (u_probe_mode == 9) {
+        float thickness, aerated;
+        result.x = wake_foam(p, 0.5, 0.0, thickness, aerated);
+        result.yz = vec2(thickness, aerated);
+    }
 #endif
 #ifdef TL_FEATURE_FOG
     else if (u_probe_mode == 3)

@@ -10,7 +10,11 @@ uniform vec4 u_wake_groups[TL_WAKE_GROUPS]; // per TL_WAKE_GROUP segments: circl
 uniform float u_wake_along[TL_WAKE_POINTS];  // metres along the boat's path, wrapped every 65536 m
 uniform vec2 u_world_offset;         // camera x z wrapped every 65536 m: texture coordinates
 
-float wake_foam(vec2 p, float ocean_value, out float thickness)
+// Foam cover in [0, 1] at p; `footprint`: the water a pixel covers there
+// (metres, 0: no level of detail). Out: the foam's thickness, and the
+// bubbles under it (foam_aerated).
+float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
+                out float aerated)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
     float half_beam = u_wake_params.x, cover = 0.0;
@@ -56,19 +60,33 @@ float wake_foam(vec2 p, float ocean_value, out float thickness)
             path = vec2(mix(u_wake_along[k], u_wake_along[k + 1], u), side * d);
         }
     }
-    // The texture hangs on the path: streaks drawn out along it (the
-    // churned water stretches behind the stern) over a finer lace, both
-    // where the boat left them, not where it is now.
+    cover *= u_wake_params.z;
+    thickness = 0.0;
+    aerated = 0.0;
+    if (cover <= 0.0)
+        return 0.0; // most of the sea: none of the texture below
+    // The texture hangs on the path and the world, where the boat left
+    // it, not where it is now: first, streaks of coverage 6 m along the
+    // path by 0.8 m across.
     vec2 q = path / vec2(6.0, 0.8);
     float streaks = 0.65 * foam_noise(q) + 0.35 * foam_noise(q * vec2(2.3, 2.7) + vec2(4.1, 7.7));
-    float lace = 0.75 * foam_lace((p + u_world_offset) * 3.0) + 0.25 * ocean_value;
-    thickness = lace;
-    cover *= u_wake_params.z;
+    vec2 world = p + u_world_offset;
+    float detail = foam_detail(world, footprint);
+    // The lace: drawn out along the path (cells about 11 m by 1.6 m: the
+    // churned water stretches into streaks behind the stern) and broken up
+    // where the boat left it, to the pixel's detail.
+    float lace = 0.6 * foam_lace(path * vec2(0.35, 2.5)) + 0.2 * foam_lace(world * 2.0) +
+                 0.2 * ocean_value + 0.5 * detail;
+    // The churned water under the foam is full of bubbles, in the streaks'
+    // pattern: it keeps the band pale where the foam opens.
+    aerated = min(cover, 1.0) * (0.4 + 0.6 * streaks);
     // How much foam: full behind the stern, thinning with age into the
-    // streaks; the fine lace then keeps as much of the water as that
-    // allows. Its edges are soft by a fixed share of the lace's range:
-    // softer with the pixel's footprint, they came out further from the
-    // 16-sample `reference` (docs/quality.md, "The wake's foam reads as foam").
+    // streaks. Even full cover leaves holes where the lace is thinnest (a
+    // threshold that saturated at full cover drew flat sheets), and the
+    // foam is thicker, whiter, the further the lace is above it: thin at
+    // a patch's edge, where the water shows through.
     float density = clamp(pow(cover, 1.3) * (0.4 + 1.2 * streaks), 0.0, 1.0);
-    return cover > 0.0 ? smoothstep(1.0 - density, 1.12 - density, lace) : 0.0;
+    float threshold = 0.75 - 0.5 * density;
+    thickness = clamp(smoothstep(threshold, threshold + 0.25, lace) + detail, 0.0, 1.0);
+    return smoothstep(threshold, threshold + 0.06, lace);
 }

@@ -139,22 +139,25 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
         (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + 3.1415927 * sky_ambient()) / 0.94;
 #endif
     vec3 color = fresnel * reflection + scattering;
-#ifdef TL_FEATURE_GIANT_WAVE
     // The water a pixel covers (0 without level of detail), more as the
-    // view grazes the surface: the trail foam's veins stay a pixel wide.
-    color = giant_shade(color, ray, n, giant, value,
-                        dist * u_lod_angle / max(abs(dot(ray, n)), 0.2), sunlit);
+    // view grazes the surface: foam's detail and veins stay a pixel wide.
+    float footprint = dist * u_lod_angle / max(abs(dot(ray, n)), 0.2);
+#ifdef TL_FEATURE_GIANT_WAVE
+    color = giant_shade(color, ray, n, giant, value, footprint, sunlit);
 #endif
 #ifdef TL_FEATURE_WAKE
-    float thickness;
-    float wake = wake_foam(hit.xz, value, thickness);
+    float thickness, aerated;
+    float wake = wake_foam(hit.xz, value, footprint, thickness, aerated);
 #ifdef TL_FEATURE_GIANT_WAVE
     // The giant wave sweeps the wake away: none where it has lifted or
     // lowered the water, nor on its face where that crosses the mean
     // level (steeper than about 1 in 8).
-    wake *= (1.0 - smoothstep(1.0, 4.0, abs(giant.height))) *
-            (1.0 - smoothstep(0.08, 0.25, length(giant.grad)));
+    float swept = (1.0 - smoothstep(1.0, 4.0, abs(giant.height))) *
+                  (1.0 - smoothstep(0.08, 0.25, length(giant.grad)));
+    wake *= swept;
+    aerated *= swept;
 #endif
+    color += foam_aerated(ray, n, aerated, u_scatter_color, sunlit);
     color = foam_shade(color, n, wake, thickness, sunlit);
 #endif
     return color;
