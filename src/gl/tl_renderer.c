@@ -268,7 +268,7 @@ GLint tl_renderer_loc(GLuint p, const char *name)
 
 /* Uploads everything in `u`. Uniforms a program does not use are
  * optimised away and have location -1, which GL ignores. */
-static void upload_uniforms(GLuint p, const tl_frame_uniforms *u)
+void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u)
 {
     glUniform2f(tl_renderer_loc(p, "u_resolution"), (float)u->width, (float)u->height);
     glUniform3fv(tl_renderer_loc(p, "u_cam_right"), 1, u->cam_right);
@@ -508,7 +508,7 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
     glDisable(GL_CULL_FACE); /* models may be open or wound either way */
     glDisable(GL_BLEND);
     glUseProgram(*program);
-    upload_uniforms(*program, u);
+    tl_renderer_upload_uniforms(*program, u);
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
     glUniform1f(tl_renderer_loc(*program, "u_sunlit"), u->boat_sunlit);
@@ -547,7 +547,7 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
     if (!program)
         return 0;
     glUseProgram(program);
-    upload_uniforms(program, u);
+    tl_renderer_upload_uniforms(program, u);
     if (features & TL_FEATURE_BOAT) {
         const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
         for (int i = 0; i < 3; i++) {
@@ -724,92 +724,5 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
     if (!rc)
         rc = tl_renderer_finish(r, &(tl_display_settings){u->exposure, u->bloom, u->pixel_filter},
                                 TL_PLANES_ALL, frame, err);
-    return rc;
-}
-
-int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
-                      int count, int octaves, float *out4, tl_error *err)
-{
-    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 9)
-        return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad mode, point or octave count");
-    /* The features that change what the probe computes. */
-    unsigned features =
-        u->features &
-        (TL_FEATURE_GIANT_WAVE | TL_FEATURE_UNDERWATER | TL_FEATURE_WATERLINE | TL_FEATURE_FOG |
-         TL_FEATURE_SKY_PHYSICAL | TL_FEATURE_SUN_DISC | TL_FEATURE_WAKE);
-    GLuint program = 0;
-    for (int i = 0; i < r->probe_count; i++)
-        if (r->probes[i].features == features)
-            program = r->probes[i].program;
-    if (!program) {
-        if (r->probe_count == MAX_PROGRAMS)
-            return tl_error_set(err, TL_ERR_RUNTIME, "probe: too many feature sets");
-        char defines[TL_DEFINES_SIZE];
-        if (tl_renderer_defines(features, defines, sizeof defines))
-            return tl_error_set(err, TL_ERR_RUNTIME, "probe: #defines do not fit");
-        program = tl_renderer_build_program(r, "fullscreen.vert", "probe.frag", defines, err);
-        if (!program)
-            return err ? (int)err->status : TL_ERR_RUNTIME;
-        r->probes[r->probe_count++] = (cached_program){features, 0, 0, program};
-    }
-    int width = count < 1024 ? count : 1024;
-    int height = (count + width - 1) / width;
-    float *texels = calloc((size_t)width * (size_t)height * 4, sizeof(float));
-    float *out = malloc((size_t)width * (size_t)height * 4 * sizeof(float));
-    if (!texels || !out) {
-        free(texels);
-        free(out);
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    }
-    for (int i = 0; i < count; i++) {
-        texels[i * 4 + 0] = xy[i * 2 + 0];
-        texels[i * 4 + 1] = xy[i * 2 + 1];
-    }
-    GLuint points;
-    glGenTextures(1, &points);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, points);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-
-    target t = {0};
-    const GLenum formats[1] = {GL_RGBA32F};
-    int rc = tl_renderer_target_ensure(&t, width, height, 1, formats, err);
-    if (!rc) {
-        glBindVertexArray(r->vao);
-        glViewport(0, 0, width, height);
-        glUseProgram(program);
-        upload_uniforms(program, u);
-        /* target_ensure bound its own texture to unit 0: bind the points again. */
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, points);
-        glUniform1i(tl_renderer_loc(program, "u_points"), 0);
-        glUniform1i(tl_renderer_loc(program, "u_probe_octaves"), octaves);
-        glUniform1i(tl_renderer_loc(program, "u_probe_mode"), mode);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
-        memcpy(out4, out, (size_t)count * 4 * sizeof(float));
-        rc = tl_renderer_check("probe", err);
-    }
-    tl_renderer_target_free(&t);
-    glDeleteTextures(1, &points);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    free(texels);
-    free(out);
-    return rc;
-}
-
-int tl_renderer_probe_heights(tl_renderer *r, const tl_frame_uniforms *u, const float *xz,
-                              int count, int octaves, float *heights, tl_error *err)
-{
-    float *out = malloc((size_t)(count > 0 ? count : 1) * 4 * sizeof(float));
-    if (!out)
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    int rc = tl_renderer_probe(r, u, 0, xz, count, octaves, out, err);
-    for (int i = 0; !rc && i < count; i++)
-        heights[i] = out[i * 4];
-    free(out);
     return rc;
 }

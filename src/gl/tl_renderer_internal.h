@@ -130,6 +130,8 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
  * do not fit (the caller then fails rather than compile a cut-off line). */
 int tl_renderer_defines(unsigned features, char *out, size_t size);
 GLint tl_renderer_loc(GLuint p, const char *name);
+/* Sets every frame uniform `p` uses (the ocean's, the probe's). */
+void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u);
 /* (Re)creates `t` at the size with the given internal formats. */
 int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
                               const GLenum *formats, tl_error *err);
