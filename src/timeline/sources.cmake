@@ -11,4 +11,5 @@ set(TL_TIMELINE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_diag.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_values.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_checks.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_links.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_keys.c)

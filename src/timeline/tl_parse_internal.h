@@ -80,6 +80,13 @@ int tl_parse_quantity(parser *p, const token *t, tl_unit unit, double *out);
  * channel's unit), range-checked; 0 on success. */
 int tl_parse_channel_value(parser *p, const tl_channel *ch, const token *t, double *out);
 
+/* ---- tl_parse_links.c: `look` and `follow` ---- */
+
+/* `look camera at boat [+ X Y Z]` or `look camera at X Y Z`. */
+void tl_parse_dir_look(parser *p, token *tok, int n);
+/* `follow camera|giant.center boat [+ offset]`. */
+void tl_parse_dir_follow(parser *p, token *tok, int n);
+
 /* ---- tl_parse_checks.c: the whole timeline, once read ---- */
 
 /* Conflicts between what drives the camera, and links to a missing boat. */
