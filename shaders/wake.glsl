@@ -86,7 +86,7 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     // foam is thicker, whiter, the further the lace is above it: thin at
     // a patch's edge, where the water shows through.
     float density = clamp(pow(cover, 1.3) * (0.4 + 1.2 * streaks), 0.0, 1.0);
-    float threshold = 0.75 - 0.5 * density;
+    float threshold = 0.75 - 0.5 * density + 0.35 * (1.0 - density) * (1.0 - density);
     thickness = clamp(smoothstep(threshold, threshold + 0.25, lace) + detail, 0.0, 1.0);
     return smoothstep(threshold, threshold + 0.06, lace);
 }

