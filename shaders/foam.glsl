@@ -59,15 +59,28 @@ float foam_detail(vec2 p, float footprint)
     return sum / 0.875;
 }
 
-// Water full of bubbles under foam scatters light back up: a milky layer
-// tinted by the water's colour `hue` (its scale does not matter), lit as
-// the water's own scattering is, by what enters the sea around, less what
-// the surface reflects. Added to the water's colour before the foam.
-vec3 foam_aerated(vec3 ray, vec3 n, float aerated, vec3 hue, float sunlit)
+// The daylight on the sea (radiance of a white surface facing up, lit by
+// the sky and by the share `sunlit` of the sun), which foam and bubbles
+// scatter.
+vec3 foam_daylight(float sunlit)
+{
+    return sky_ambient() + sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) / 3.1415927;
+}
+
+// Water full of bubbles under foam scatters light: a milky layer tinted by
+// the water's colour `hue` (its scale does not matter), lit as the water's
+// own scattering is, by what enters the sea around. As seen from below.
+vec3 foam_bubbles(float aerated, vec3 hue, float sunlit)
 {
     vec3 tint = hue / max(max(hue.r, 1.0e-6), max(hue.g, hue.b));
-    vec3 light = sky_ambient() + sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) / 3.1415927;
-    return (0.4 * aerated * (1.0 - optics_schlick(ray, n))) * tint * light;
+    return 0.4 * aerated * tint * foam_daylight(sunlit);
+}
+
+// The same seen from above, less what the surface reflects. Added to the
+// water's colour before the foam.
+vec3 foam_aerated(vec3 ray, vec3 n, float aerated, vec3 hue, float sunlit)
+{
+    return (1.0 - optics_schlick(ray, n)) * foam_bubbles(aerated, hue, sunlit);
 }
 
 // Foam over the water's colour: a white diffuse layer lit by the sky's

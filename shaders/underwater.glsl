@@ -88,6 +88,35 @@ vec3 trace_underwater(vec3 ray, out float dist)
     }
     vec3 down = reflect(ray, -n);
     vec3 surface = (1.0 - fresnel) * through + fresnel * underwater_inscatter(down);
+#if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_FEATURE_WAKE)
+    // Foam on the surface seen from below (the giant wave's and the
+    // wake's): it hides Snell's window and glows with the daylight it lets
+    // through, diffusely, about half of it through thin foam and a fifth
+    // through thick; the bubbles under it scatter the same light. Without
+    // this the foam vanished from below: a wake's white water was clear sky.
+    float footprint = t * u_lod_angle / max(abs(dot(ray, n)), 0.2);
+    float foam = 0.0, thickness = 0.0, aerated = 0.0, sunlit = 1.0;
+#ifdef TL_FEATURE_GIANT_WAVE
+    sunlit = giant_sunlit(hit.xz, hit.y);
+    foam = giant_foam(giant, value, footprint, thickness, aerated);
+#endif
+#ifdef TL_FEATURE_WAKE
+    float wake_thickness, wake_aerated;
+    float wake = wake_foam(hit.xz, value, footprint, wake_thickness, wake_aerated);
+#ifdef TL_FEATURE_GIANT_WAVE
+    float swept = wake_swept(giant);
+    wake *= swept;
+    wake_aerated *= swept;
+#endif
+    if (wake > foam) {
+        foam = wake;
+        thickness = wake_thickness;
+    }
+    aerated = max(aerated, wake_aerated);
+#endif
+    surface = mix(surface, (0.5 - 0.3 * thickness) * foam_daylight(sunlit), foam) +
+              foam_bubbles(aerated, u_scatter_color, sunlit);
+#endif
     vec3 trans = optics_water_transmittance(t);
     return surface * trans + deep * (1.0 - trans);
 }

@@ -93,3 +93,14 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     thickness = clamp(smoothstep(threshold, threshold + 0.25, lace) + detail, 0.0, 1.0);
     return smoothstep(threshold, threshold + 0.06, lace);
 }
+
+#ifdef TL_FEATURE_GIANT_WAVE
+// How much of the wake the giant wave leaves: none where it has lifted or
+// lowered the water, nor on its face where that crosses the mean level
+// (steeper than about 1 in 8).
+float wake_swept(GiantSample g)
+{
+    return (1.0 - smoothstep(1.0, 4.0, abs(g.height))) *
+           (1.0 - smoothstep(0.08, 0.25, length(g.grad)));
+}
+#endif

@@ -149,11 +149,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     float thickness, aerated;
     float wake = wake_foam(hit.xz, value, footprint, thickness, aerated);
 #ifdef TL_FEATURE_GIANT_WAVE
-    // The giant wave sweeps the wake away: none where it has lifted or
-    // lowered the water, nor on its face where that crosses the mean
-    // level (steeper than about 1 in 8).
-    float swept = (1.0 - smoothstep(1.0, 4.0, abs(giant.height))) *
-                  (1.0 - smoothstep(0.08, 0.25, length(giant.grad)));
+    float swept = wake_swept(giant); // the giant wave sweeps the wake away
     wake *= swept;
     aerated *= swept;
 #endif

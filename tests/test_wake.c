@@ -3,9 +3,9 @@
  * white but open in places, and thicker inside its patches than at their
  * edges; old foam lies in streaks drawn out along the path; bubbles lie
  * under all of it; outside the wedge, and behind a drifting boat, there is
- * nothing. Each figure sums LANES boats in different places (the foam's
- * textures are fixed to the world and the path, and one wake's few metres
- * hold only a few of their cells). */
+ * nothing; and seen from under the water the foam is there too. Each figure sums LANES boats in
+ * different places (the foam's textures are fixed to the world and the path, and one wake's few
+ * metres hold only a few of their cells). */
 #include <string.h>
 
 #include "tl_gl_test.h"
@@ -180,6 +180,47 @@ static void test_slow(tl_renderer *r)
     CHECK(foam[1] > 0 && foam[1] < foam[2]);
 }
 
+/* From 3 m under the water, looking up the wake behind a boat at 6 m/s:
+ * the foam shows (it hid from below, the window's sky or the surface's
+ * reflection of the depths in its place), lighter than the surface around
+ * it where that reflects the depths, and every pixel stays finite. */
+static void test_from_below(tl_renderer *r)
+{
+    tl_scene s;
+    straight_wake(&s, 6.0, 0);
+    s.camera.position[0] = 3.0;
+    s.camera.position[1] = -3.0;
+    s.camera.position[2] = -6.0;
+    s.camera.yaw = M_PI;
+    s.camera.pitch = 35.0 * M_PI / 180.0;
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_UNDERWATER);
+    CHECK(u.features & TL_FEATURE_WAKE);
+    tl_scene dry = s;
+    dry.boat.wake = 0.0;
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return;
+    if (render(r, &dry, &without) == 0) {
+        long lighter = 0, darker = 0, bad = 0;
+        size_t n = (size_t)s.width * s.height;
+        for (size_t i = 0; i < n * 4; i += 4) {
+            double a = luminance(with.color + i), b = luminance(without.color + i);
+            lighter += a > b + 0.01;
+            darker += a < b - 0.01;
+            bad += !isfinite(a);
+        }
+        printf("from below: %ld of %zu pixels lighter with the wake, %ld darker, %ld not "
+               "finite\n",
+               lighter, n, darker, bad);
+        CHECK(lighter > (long)n / 50);
+        CHECK(bad == 0);
+        tl_frame_free(&without);
+    }
+    tl_frame_free(&with);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -190,6 +231,7 @@ int main(void)
     test_old(r);
     test_outside(r);
     test_slow(r);
+    test_from_below(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();
