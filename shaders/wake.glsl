@@ -53,10 +53,11 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
         float edge = (d - arm) / (0.08 * arm + 0.5);
         float beside = along >= 0.0 && along <= 1.0 ? 1.0 : 0.0;
         float arms = 0.6 * beside * exp(-edge * edge) * smoothstep(0.0, 2.0 * half_beam, behind);
-        // Only a boat under way churns the water white: none below 0.3 m/s
-        // (drifting), all of it from 2 m/s (4 knots, a slow cruise).
+        // Only a boat under way churns the water white (tl_scene.h,
+        // TL_WAKE_SPEED_NONE: the CPU turns the feature off when none can).
         float speed = (u_wake[k + 1].w - u_wake[k].w) / max(u_wake[k + 1].z - u_wake[k].z, 1.0e-3);
-        float here = fade * max(turbulent, arms) * smoothstep(0.3, 2.0, speed);
+        float churn = smoothstep(TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, speed);
+        float here = fade * max(turbulent, arms) * churn;
         if (here > cover) {
             cover = here;
             float side = ab.x * (p.y - a.y) - ab.y * (p.x - a.x) < 0.0 ? -1.0 : 1.0;

@@ -88,10 +88,12 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_WAKE_POINTS %d\n"
                      "#define TL_WAKE_GROUP %d\n"
                      "#define TL_WAKE_GROUPS %d\n"
+                     "#define TL_WAKE_SPEED_NONE %.3f\n"
+                     "#define TL_WAKE_SPEED_FULL %.3f\n"
                      "#define TL_MARCH_RELAX 1.3\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, TL_WAKE_POINTS, TL_WAKE_GROUP,
-                     TL_WAKE_GROUPS);
+                     TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

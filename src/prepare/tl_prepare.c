@@ -256,19 +256,32 @@ static void wake_groups(const tl_boat *b, tl_frame_uniforms *u)
     }
 }
 
+/* How much white water a boat churns at `speed` m/s, 0 to 1: the shader's
+ * smoothstep (shaders/wake.glsl). */
+static double wake_churn(double speed)
+{
+    double t = (speed - TL_WAKE_SPEED_NONE) / (TL_WAKE_SPEED_FULL - TL_WAKE_SPEED_NONE);
+    t = fmin(fmax(t, 0.0), 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
 /* The wake's past positions relative to the camera, and its feature bit
- * when the boat has moved and the wedge can be in view. */
+ * when the boat is under way and the wedge can be in view. */
 static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
 {
     const tl_boat *b = &s->boat;
     if (!b->enabled || !b->visible || !(b->wake > 0.0))
         return;
     const double *cam = s->camera.position;
-    double behind = 0.0, lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    double behind = 0.0, lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, churn = 0.0;
     for (int k = 0; k < TL_WAKE_POINTS; k++) {
         double x = b->wake_path[k][0], z = b->wake_path[k][1];
-        if (k > 0)
-            behind += hypot(x - b->wake_path[k - 1][0], z - b->wake_path[k - 1][1]);
+        if (k > 0) {
+            double step = hypot(x - b->wake_path[k - 1][0], z - b->wake_path[k - 1][1]);
+            behind += step;
+            double speed = b->wake_step > 0.0 ? step / b->wake_step : 0.0;
+            churn = fmax(churn, wake_churn(speed));
+        }
         u->wake[k][0] = (float)(x - cam[0]);
         u->wake[k][1] = (float)(z - cam[2]);
         u->wake[k][2] = (float)(k * b->wake_step);
@@ -282,7 +295,8 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
         hi[0] = fmax(hi[0], x);
         hi[1] = fmax(hi[1], z);
     }
-    if (behind < 0.1) /* a boat at rest leaves no wake */
+    /* A boat at rest, or drifting, leaves no white water. */
+    if (behind < 0.1 || b->wake * churn < TL_WAKE_LEAST)
         return;
     /* The wedge's reach: the path's box widened by its widest arm. */
     double reach = wake_reach(b, behind);

@@ -136,6 +136,15 @@ typedef struct tl_giant_wave {
  * can reach it. */
 #define TL_WAKE_GROUP  4
 #define TL_WAKE_GROUPS ((TL_WAKE_POINTS - 1 + TL_WAKE_GROUP - 1) / TL_WAKE_GROUP)
+/* Only a boat under way churns white water: the wake's coverage scales by
+ * a smoothstep of the boat's speed there, none below TL_WAKE_SPEED_NONE m/s
+ * (drifting), all of it from TL_WAKE_SPEED_FULL (4 knots, a slow cruise).
+ * Where boat.wake times the most of that is under TL_WAKE_LEAST, no foam
+ * can form (it needs about 0.2) and the bubbles would be under 2% of the
+ * daylight: the wake's feature stays off, and costs nothing. */
+#define TL_WAKE_SPEED_NONE 0.3
+#define TL_WAKE_SPEED_FULL 2.0
+#define TL_WAKE_LEAST 0.05
 
 /* The boat's pose and the knobs of its model and floating. */
 typedef struct tl_boat {
