@@ -144,7 +144,7 @@ typedef struct tl_giant_wave {
  * daylight: the wake's feature stays off, and costs nothing. */
 #define TL_WAKE_SPEED_NONE 0.3
 #define TL_WAKE_SPEED_FULL 2.0
-#define TL_WAKE_LEAST 0.05
+#define TL_WAKE_LEAST      0.05
 
 /* The boat's pose and the knobs of its model and floating. */
 typedef struct tl_boat {
