@@ -137,4 +137,30 @@ static inline int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
     return rc;
 }
 
+/* Renders `scene` into `with` and, its wake's strength at 0, into
+ * `without` (both allocated here, both freed on failure); 0 when both
+ * rendered. */
+static inline int render_wake_pair(tl_renderer *r, const tl_scene *scene, tl_frame *with,
+                                   tl_frame *without)
+{
+    if (render(r, scene, with))
+        return 1;
+    tl_scene dry = *scene;
+    dry.boat.wake = 0.0;
+    if (render(r, &dry, without)) {
+        tl_frame_free(with);
+        return 1;
+    }
+    return 0;
+}
+
+/* Pixels of `a` lighter than `b`'s by more than 0.01 (foam over water). */
+static inline long lighter_pixels(const tl_frame *a, const tl_frame *b)
+{
+    long n = 0;
+    for (size_t i = 0; i < (size_t)a->width * a->height * 4; i += 4)
+        n += luminance(a->color + i) > luminance(b->color + i) + 0.01;
+    return n;
+}
+
 #endif
