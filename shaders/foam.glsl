@@ -37,8 +37,9 @@ float foam_lace(vec2 p)
     return sum / 0.9375;
 }
 
-// Detail for foam seen close: three octaves of value noise, cells 50, 25
-// and 12 cm, each faded out as its cell shrinks from one pixel's footprint
+// Detail for foam seen close: five octaves of value noise, cells 50, 25,
+// 12, 6 and 3 cm (three, down to 12 cm, left a close wake's patches with
+// smooth, painted edges), each faded out as its cell shrinks from one pixel's footprint
 // to half of one (metres; 0: all): a cell is half a wavelength, so none
 // goes past the pixels' Nyquist limit and aliases. Centred on zero, within
 // +-0.5.
@@ -47,7 +48,7 @@ float foam_detail(vec2 p, float footprint)
     const mat2 turn = mat2(0.6, -0.8, 0.8, 0.6);
     float sum = 0.0, amp = 0.5, cell = 0.5;
     p *= 2.0;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 5; i++) {
         float weight = footprint > 0.0 ? clamp(2.0 * cell / footprint - 1.0, 0.0, 1.0) : 1.0;
         if (weight <= 0.0)
             break;
@@ -56,7 +57,7 @@ float foam_detail(vec2 p, float footprint)
         amp *= 0.5;
         cell /= 2.07;
     }
-    return sum / 0.875;
+    return sum / 0.96875;
 }
 
 // The daylight on the sea (radiance of a white surface facing up, lit by
@@ -85,12 +86,13 @@ vec3 foam_aerated(vec3 ray, vec3 n, float aerated, vec3 hue, float sunlit)
 
 // Foam over the water's colour: a white diffuse layer lit by the sky's
 // hemisphere and the sun, with a wrapped term for light through the foam.
-// Thin foam (thickness near 0) lets the water through and looks greyer.
+// Thin foam (thickness near 0) is half transparent and greyer: opaque
+// everywhere, a close wake read as flat paint.
 // `sunlit`: the share of the sun that reaches it (0 in the giant wave's
 // shadow, where the wrapped term lit foam on a dark face).
 vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness, float sunlit)
 {
     vec3 sun = sky_sun_light() * sunlit * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
-    return mix(color, albedo * (sky_ambient() + sun), foam);
+    return mix(color, albedo * (sky_ambient() + sun), foam * (0.5 + 0.5 * thickness));
 }

@@ -78,9 +78,10 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     float detail = foam_detail(world, footprint);
     // The lace: drawn out along the path (cells about 11 m by 1.6 m: the
     // churned water stretches into streaks behind the stern) and broken up
-    // where the boat left it, to the pixel's detail.
+    // where the boat left it, to the pixel's detail (strong enough to
+    // fray a patch's edge down to a few centimetres).
     float lace = 0.6 * foam_lace(path * vec2(0.35, 2.5)) + 0.2 * foam_lace(world * 2.0) +
-                 0.2 * ocean_value + 0.5 * detail;
+                 0.2 * ocean_value + 0.9 * detail;
     // The churned water under the foam is full of bubbles, in the streaks'
     // pattern: it keeps the band pale where the foam opens.
     aerated = min(cover, 1.0) * (0.4 + 0.6 * streaks);
