@@ -71,6 +71,35 @@ awk -F' *[|] *' '$2 ~ /^(draft|seed)$/ && NF == 13 {
 } END { if (rows != 4) { print "rows " rows; bad = 1 }; exit bad }' "$work/p.md" || fail "--passes table"
 grep -q '^| preset | boat' "$work/t.md" && fail "a passes table without --passes"
 
+# --reference-cache: the first run renders and keeps the reference
+# frames, the second reads them (the same scores, the reference row
+# untimed); a timeline changed by a comment alone, or a kept file cut
+# short, renders afresh.
+cache=$work/cache
+bench_cached() {
+  "$tideline" bench "$1" --size 64x36 --frames 0,120 --presets draft --repeat 1 \
+    --reference-cache "$cache" --csv "$2" -q >"$2.md" 2>"$2.err"
+}
+psnr_of() { awk -F, '$1 == "draft" { print $10 }' "$1"; }
+ref_ms() { awk -F, '$1 == "reference" { print $6 }' "$1"; }
+bench_cached "$timelines/calm.tl" "$work/c1.csv"
+[ "$(ls "$cache" | grep -c '\.tlref$')" -eq 2 ] || fail "cache files: $(ls -A "$cache")"
+[ -n "$(ref_ms "$work/c1.csv")" ] || fail "first cached run: reference untimed"
+bench_cached "$timelines/calm.tl" "$work/c2.csv"
+grep -q '^| reference | (cached) |' "$work/c2.csv.md" || fail "second run: $(cat "$work/c2.csv.md")"
+[ -z "$(ref_ms "$work/c2.csv")" ] || fail "second run rendered the reference: $(cat "$work/c2.csv")"
+[ "$(psnr_of "$work/c1.csv")" = "$(psnr_of "$work/c2.csv")" ] || fail "cached scores differ"
+cp "$timelines/calm.tl" "$work/calm.tl"
+echo '# a comment' >>"$work/calm.tl"
+bench_cached "$work/calm.tl" "$work/c3.csv"
+[ -n "$(ref_ms "$work/c3.csv")" ] || fail "a changed timeline hit the cache"
+[ "$(ls "$cache" | grep -c '\.tlref$')" -eq 4 ] || fail "cache files after a change: $(ls -A "$cache")"
+for f in "$cache"/*.tlref; do truncate -s 100 "$f"; done
+bench_cached "$work/calm.tl" "$work/c4.csv"
+[ -n "$(ref_ms "$work/c4.csv")" ] || fail "a file cut short hit the cache"
+[ "$(psnr_of "$work/c3.csv")" = "$(psnr_of "$work/c4.csv")" ] || fail "re-rendered scores differ"
+ls -A "$cache" | grep -vq '\.tlref$' && fail "a temporary left in the cache: $(ls -A "$cache")"
+
 # Usage errors: status 2, a message naming the flag, nothing written.
 expect_usage() {
   local want=$1; shift
@@ -92,6 +121,11 @@ expect_usage "no timeline" --size 64x36
 expect_usage "--time-only does not measure" "$timelines/calm.tl" --time-only --plot "$work/p.png"
 expect_usage "shader" "$timelines/calm.tl" --shader-dir "$work/nowhere" --size 64x36
 expect_usage "--frames" "$timelines/calm.tl" --frames 99999 --size 64x36
+expect_usage "--reference-cache: --time-only" "$timelines/calm.tl" --time-only --reference-cache "$cache"
+expect_usage "--reference-cache: .* is not a writable folder" "$timelines/calm.tl" \
+  --reference-cache "$work/calm.tl"
+expect_usage "--reference-cache: cannot create folder" "$timelines/calm.tl" \
+  --reference-cache "$work/calm.tl/sub"
 [ ! -e "$work/p.svg" ] || fail "wrote a plot on a usage error"
 "$tideline" bench --help | grep -q 'Usage: tideline bench' || fail "--help"
 

@@ -8,4 +8,5 @@ set(TL_CLI_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_preview.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_compare.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench_report.c)
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench_report.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench_cache.c)

@@ -45,6 +45,12 @@ static const char usage[] =
     "                    columns (to time a change quickly)\n"
     "  --shader-dir DIR  render with the shaders in DIR instead of the built-in\n"
     "                    copies (to measure a shader edit before rebuilding)\n"
+    "  --reference-cache DIR\n"
+    "                    keep the `reference` frames in DIR and reuse them in\n"
+    "                    later runs (each 16 bytes a pixel, named by a hash of\n"
+    "                    this program, the shaders, the GL renderer, the\n"
+    "                    timeline and its boat model, the frame and the size:\n"
+    "                    any change renders afresh; delete DIR to free it)\n"
     "  --passes          also print where each preset's render time goes: the ms\n"
     "                    of each kind of pass in its median frame (boat, march\n"
     "                    prepass, ocean, giant wave, glare, display, pixel\n"
@@ -64,7 +70,7 @@ static const char usage[] =
 typedef struct bench_options {
     const char *timelines[MAX_TIMELINES];
     int timeline_count;
-    const char *frames, *csv, *plot, *shader_dir;
+    const char *frames, *csv, *plot, *shader_dir, *cache_dir;
     char presets[2048];
     int width, height, repeat, quiet, time_only, passes;
 } bench_options;
@@ -98,6 +104,8 @@ static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *e
             o->passes = 1;
         } else if (tl_args_match(&a, "--shader-dir", NULL, true, err)) {
             o->shader_dir = a.value;
+        } else if (tl_args_match(&a, "--reference-cache", NULL, true, err)) {
+            o->cache_dir = a.value;
         } else if (tl_args_match(&a, "--csv", NULL, true, err)) {
             o->csv = a.value;
         } else if (tl_args_match(&a, "--plot", NULL, true, err)) {
@@ -123,6 +131,9 @@ static int parse(int argc, char **argv, bench_options *o, int *help, tl_error *e
         return tl_error_set(err, TL_ERR_USAGE,
                             "--plot: the plot needs the error against `reference`, which "
                             "--time-only does not measure");
+    if (o->time_only && o->cache_dir)
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "--reference-cache: --time-only renders no `reference` to keep");
     return TL_OK;
 }
 
@@ -217,9 +228,10 @@ typedef struct bench_state {
     bench_shot *shots;
     int shot_count;
     tl_render *render;
-    tl_shader_lib lib; /* built in, or --shader-dir */
-    int boat_of;      /* the timeline whose boat is uploaded, or -1 */
-    char scratch[64]; /* folder for the encoded PNGs */
+    tl_shader_lib lib;    /* built in, or --shader-dir */
+    tl_bench_cache cache; /* --reference-cache (dir empty: none) */
+    int boat_of;          /* the timeline whose boat is uploaded, or -1 */
+    char scratch[64];     /* folder for the encoded PNGs */
     double last_progress;
 } bench_state;
 
@@ -413,35 +425,62 @@ static int make_shots(bench_state *s, tl_error *err)
     return rc;
 }
 
+/* Shot k's reference from --reference-cache: 1 when found. */
+static int cached_reference(bench_state *s, int k, uint64_t *key)
+{
+    const bench_shot *b = &s->shots[k];
+    *key =
+        tl_bench_cache_key(&s->cache, tl_render_describe(s->render), s->o->timelines[b->timeline],
+                           s->tl[b->timeline].boat_model, b->frame, s->o->width, s->o->height);
+    return tl_bench_cache_load(&s->cache, *key, s->o->width, s->o->height, b->reference);
+}
+
 static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
 {
     tl_quality ref;
     tl_quality_preset("reference", &ref, err);
     tl_frame frame = {0};
-    int rc = TL_OK;
+    int rc = TL_OK, timed = 0;
     double *ms = calloc((size_t)s->shot_count, sizeof(double));
     if (!ms)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    memset(row, 0, sizeof *row);
+    size_t bytes = sizeof(float) * 4 * (size_t)s->o->width * (size_t)s->o->height;
     for (int k = 0; !rc && k < s->shot_count; k++) {
+        if (!(s->shots[k].reference = malloc(bytes))) {
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+            break;
+        }
+        uint64_t key = 0;
+        if (s->cache.dir[0] && cached_reference(s, k, &key)) {
+            row->cached++;
+            continue;
+        }
         progress(s, "reference", k, 0);
         rc = render_shot(s, k, &ref, &frame, err);
-        size_t bytes = sizeof(float) * 4 * (size_t)frame.width * (size_t)frame.height;
-        if (!rc && !(s->shots[k].reference = malloc(bytes)))
-            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-        if (!rc)
-            memcpy(s->shots[k].reference, frame.display, bytes);
+        if (rc)
+            break;
+        memcpy(s->shots[k].reference, frame.display, bytes);
         double render, readback;
         tl_render_last_timing(s->render, &render, &readback);
-        ms[k] = (render + readback) * 1e3;
+        ms[timed++] = (render + readback) * 1e3;
+        tl_error keep;
+        tl_error_clear(&keep);
+        /* The cache only saves time: a frame it cannot keep is a warning. */
+        if (s->cache.dir[0] &&
+            tl_bench_cache_store(&s->cache, key, frame.width, frame.height, frame.display, &keep))
+            fprintf(stderr, "bench: warning: --reference-cache: %s\n", keep.message);
     }
-    memset(row, 0, sizeof *row);
     snprintf(row->preset, sizeof row->preset, "reference");
     row->is_reference = 1;
     if (!rc) {
-        row->ms_total = median(ms, s->shot_count);
+        row->ms_total = timed ? median(ms, timed) : NAN; /* NAN: every frame from the cache */
         row->ms_render = row->ms_total;
         row->psnr = TL_METRICS_PSNR_MAX;
         row->ssim = 1.0;
+        if (row->cached && !s->o->quiet)
+            fprintf(stderr, "bench: %d of %d reference frames from %s\n", row->cached,
+                    s->shot_count, s->cache.dir);
     }
     free(ms);
     tl_frame_free(&frame);
@@ -459,6 +498,7 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
     if (!rc && !s->o->quiet)
         fprintf(stderr, "bench: %d frames at %dx%d on %s\n", s->shot_count, s->o->width,
                 s->o->height, tl_render_describe(s->render));
+
     int first = s->o->time_only ? 0 : 1; /* row 0: `reference`, when measured */
     if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
@@ -506,13 +546,14 @@ int tl_cli_bench(int argc, char **argv)
     if (!rc && o.plot &&
         (tl_cli_make_parent_dirs(o.plot, &err) || tl_image_check_writable(o.plot, &err)))
         rc = TL_ERR_USAGE;
+    static bench_state s;
+    memset(&s, 0, sizeof s);
+    if (!rc && o.cache_dir && tl_bench_cache_open(&s.cache, o.cache_dir, &lib, &err))
+        rc = TL_ERR_USAGE;
     if (rc) {
         tl_cli_print_error("bench", &err);
         return 2;
     }
-
-    static bench_state s;
-    memset(&s, 0, sizeof s);
     s.o = &o;
     s.lib = lib;
     s.boat_of = -1;

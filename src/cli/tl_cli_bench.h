@@ -3,10 +3,12 @@
 #ifndef TL_CLI_BENCH_H
 #define TL_CLI_BENCH_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "core/tl_error.h"
 #include "render/tl_render.h"
+#include "shader/tl_shader_lib.h"
 
 #define TL_BENCH_MAX_PRESETS 32
 #define TL_BENCH_NAME        96 /* a preset, or a variant "final:lod=off" */
@@ -15,6 +17,7 @@
 typedef struct tl_bench_row {
     char preset[TL_BENCH_NAME];
     int is_reference; /* the yardstick row: its own error is zero */
+    int cached;       /* reference frames read from --reference-cache (not timed) */
     /* Medians over every frame and repeat, milliseconds. The parts are
      * medians too, so they need not add up to the total exactly. */
     double ms_total, ms_render, ms_readback, ms_encode;
@@ -48,5 +51,29 @@ int tl_bench_write_csv(const char *path, const tl_bench_row *rows, int count, in
  * line, through gnuplot; an error says so when gnuplot is missing. */
 int tl_bench_write_plot(const char *path, const tl_bench_row *rows, int count, int width,
                         int height, tl_error *err);
+
+/* --reference-cache DIR (tl_cli_bench_cache.c): `reference` frames kept
+ * between runs, each under a hash of everything that draws it. */
+typedef struct tl_bench_cache {
+    char dir[4096];
+    uint64_t base; /* this program and the --shader-dir shaders */
+} tl_bench_cache;
+
+/* Creates `dir` if needed (it must be a writable folder) and hashes what
+ * every frame shares. */
+int tl_bench_cache_open(tl_bench_cache *c, const char *dir, const tl_shader_lib *lib,
+                        tl_error *err);
+/* A frame's key: the shared part, the GL renderer's description, the
+ * timeline's text and its boat model (model: a path, or NULL or "" for
+ * the built-in boat), frame and size. */
+uint64_t tl_bench_cache_key(const tl_bench_cache *c, const char *renderer, const char *timeline,
+                            const char *model, long frame, int width, int height);
+/* 1 and the display plane (RGBA floats) when the cache holds the frame, 0
+ * when it does not (or holds a short or foreign file). */
+int tl_bench_cache_load(const tl_bench_cache *c, uint64_t key, int width, int height,
+                        float *pixels);
+/* Keeps a frame, written atomically. */
+int tl_bench_cache_store(const tl_bench_cache *c, uint64_t key, int width, int height,
+                         const float *pixels, tl_error *err);
 
 #endif

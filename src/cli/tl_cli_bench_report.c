@@ -36,6 +36,10 @@ void tl_bench_print_table(FILE *to, const tl_bench_row *rows, int count)
     fprintf(to, "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n");
     for (int i = 0; i < count; i++) {
         const tl_bench_row *r = &rows[i];
+        if (r->is_reference && isnan(r->ms_total)) { /* every frame from --reference-cache */
+            fprintf(to, "| reference | (cached) | | | | (yardstick) | | | |\n");
+            continue;
+        }
         if (r->is_reference) {
             fprintf(to, "| reference | %.0f | %.0f | | | (yardstick) | | | |\n", r->ms_total,
                     r->ms_render);
@@ -83,6 +87,11 @@ int tl_bench_write_csv(const char *path, const tl_bench_row *rows, int count, in
                   "psnr_db,ssim,p99_levels,worst_psnr_db,worst_frame,pareto\n");
     for (int i = 0; i < count; i++) {
         const tl_bench_row *r = &rows[i];
+        if (r->is_reference && isnan(r->ms_total)) { /* from --reference-cache: untimed */
+            fprintf(f.fp, "reference,%d,%d,%d,1,,,,,%.4f,%.6f,%.2f,%.4f,,0\n", width, height,
+                    frames, r->psnr, r->ssim, r->p99, r->psnr);
+            continue;
+        }
         if (isnan(r->psnr)) { /* --time-only: the error columns stay empty */
             fprintf(f.fp, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,,,,,,0\n", r->preset, width, height,
                     frames, repeat, r->ms_total, r->ms_render, r->ms_readback, r->ms_encode);
@@ -120,8 +129,11 @@ static void write_plot_script(FILE *s, const char *out, const tl_bench_row *rows
             ref_ms = rows[i].ms_total;
     fprintf(s, "set terminal pngcairo size 960,600 font 'sans,11'\n");
     fprintf(s, "set output '%s'\n", out);
-    fprintf(s, "set title 'tideline bench, %dx%d: error against reference (%.0f ms/frame)'\n",
-            width, height, ref_ms);
+    if (isnan(ref_ms)) /* its frames came from --reference-cache */
+        fprintf(s, "set title 'tideline bench, %dx%d: error against reference'\n", width, height);
+    else
+        fprintf(s, "set title 'tideline bench, %dx%d: error against reference (%.0f ms/frame)'\n",
+                width, height, ref_ms);
     fprintf(s, "set xlabel 'median ms per frame (render + readback + PNG encode)'\n");
     fprintf(s, "set ylabel 'PSNR against reference (dB, higher is closer)'\n");
     fprintf(s, "set grid\nset key below\nset offsets graph 0.1, graph 0.15, graph 0.1, "
