@@ -309,6 +309,12 @@ vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
     // and the glow fell to nothing along that line (a dark crease in the
     // lit band of a distant backlit wave).
     float moved = sqrt(clamp(length(vec2(g.displacement, 0.3 * reach)) / reach, 0.0, 1.0));
+    // Times a displacement noise, as seed 003 weights its displacement:
+    // the crest is not equally thin all along, and without it the glow
+    // was an even green band (cells 7 m along the crest by 16 m down the
+    // face, so the light falls in broad shafts; 0.3 to 1.7, mean 1).
+    vec2 q = vec2(g.w / 7.0, g.s0 / 16.0);
+    moved *= 0.3 + 1.4 * (0.65 * foam_noise(q) + 0.35 * foam_noise(q * 2.3 + vec2(3.7, 1.1)));
     float top = giant_top(g);
     // Times the fade: `top` is relative to the faded crest, and a wave
     // fading into a low swell kept its full glow over the swell's whole
