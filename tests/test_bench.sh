@@ -71,6 +71,14 @@ awk -F' *[|] *' '$2 ~ /^(draft|seed)$/ && NF == 13 {
 } END { if (rows != 4) { print "rows " rows; bad = 1 }; exit bad }' "$work/p.md" || fail "--passes table"
 grep -q '^| preset | boat' "$work/t.md" && fail "a passes table without --passes"
 
+# Progress: every `reference` frame has a line, and those after the
+# first say how long is left.
+"$tideline" bench "$timelines/calm.tl" --size 32x18 --frames 0,1,2 --presets draft --repeat 1 \
+  2>"$work/progress" >/dev/null
+grep -q '^bench: reference calm.tl frame 0 (1/3)$' "$work/progress" || fail "progress: $(cat "$work/progress")"
+[ "$(grep -cE '^bench: reference calm.tl frame [12] \([23]/3\) ETA [0-9]+s$' "$work/progress")" -eq 2 ] ||
+  fail "progress ETA: $(cat "$work/progress")"
+
 # --reference-cache: the first run renders and keeps the reference
 # frames, the second reads them (the same scores, the reference row
 # untimed); a timeline changed by a comment alone, or a kept file cut

@@ -31,6 +31,9 @@ void tl_cli_warn_outside(const char *command, const char *flag, const char *give
 
 /* mkdir -p of the folder part of `path` (status 2 when it cannot). */
 int tl_cli_make_parent_dirs(const char *path, tl_error *err);
+/* A time left for progress lines: "48s", "3m05s", "2h10m"; "--" when not
+ * known (negative or not finite). */
+void tl_cli_format_duration(double seconds, char *out, size_t size);
 
 /* Writes the effective quality knobs (preset name and every value the
  * preset or the overrides set) as image metadata entries into out[0..13],

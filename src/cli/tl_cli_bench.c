@@ -241,18 +241,32 @@ static const char *base_name(const char *path)
     return slash ? slash + 1 : path;
 }
 
-static void progress(bench_state *s, const char *preset, int shot, int rep)
+/* A progress line, at most two a second. `left`: seconds to go, printed
+ * as an ETA when >= 0; a line that has one is always printed (the
+ * `reference` frames, each a long render). */
+static void progress_eta(bench_state *s, const char *preset, int shot, int rep, double left)
 {
     if (s->o->quiet)
         return;
     double now = tl_clock_seconds();
-    if (now - s->last_progress < 0.5 && shot > 0)
+    if (now - s->last_progress < 0.5 && shot > 0 && left < 0.0)
         return;
     s->last_progress = now;
     const bench_shot *b = &s->shots[shot];
-    fprintf(stderr, "bench: %-9s %s frame %ld (%d/%d)%s%s", preset,
+    char eta[48] = "";
+    if (left >= 0.0) {
+        char took[32];
+        tl_cli_format_duration(left, took, sizeof took);
+        snprintf(eta, sizeof eta, " ETA %s", took);
+    }
+    fprintf(stderr, "bench: %-9s %s frame %ld (%d/%d)%s%s%s", preset,
             base_name(s->o->timelines[b->timeline]), b->frame, shot + 1, s->shot_count,
-            rep > 0 ? " again" : "", isatty(STDERR_FILENO) ? "        \r" : "\n");
+            rep > 0 ? " again" : "", eta, isatty(STDERR_FILENO) ? "        \r" : "\n");
+}
+
+static void progress(bench_state *s, const char *preset, int shot, int rep)
+{
+    progress_eta(s, preset, shot, rep, -1.0);
 }
 
 static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *frame,
@@ -456,7 +470,12 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
             row->cached++;
             continue;
         }
-        progress(s, "reference", k, 0);
+        /* The frames to go at the mean of those rendered (the cached ones
+         * among them are not known yet). */
+        double sum = 0.0;
+        for (int i = 0; i < timed; i++)
+            sum += ms[i];
+        progress_eta(s, "reference", k, 0, timed ? sum / timed * 1e-3 * (s->shot_count - k) : -1.0);
         rc = render_shot(s, k, &ref, &frame, err);
         if (rc)
             break;

@@ -1,4 +1,5 @@
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -67,4 +68,16 @@ int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
     };
     memcpy(out, m, sizeof m);
     return TL_CLI_QUALITY_META;
+}
+
+void tl_cli_format_duration(double s, char *out, size_t size)
+{
+    if (!isfinite(s) || s < 0)
+        snprintf(out, size, "--");
+    else if (s < 60)
+        snprintf(out, size, "%.0fs", s);
+    else if (s < 3600)
+        snprintf(out, size, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
+    else
+        snprintf(out, size, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
 }

@@ -237,18 +237,6 @@ static void remove_stale_temporaries(const char *pattern, const tl_frame_list *f
                 removed, removed == 1 ? "" : "s");
 }
 
-static void format_duration(double s, char *out, size_t size)
-{
-    if (!isfinite(s) || s < 0)
-        snprintf(out, size, "--");
-    else if (s < 60)
-        snprintf(out, size, "%.0fs", s);
-    else if (s < 3600)
-        snprintf(out, size, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
-    else
-        snprintf(out, size, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
-}
-
 typedef struct progress {
     int tty, quiet;
     size_t total, done;
@@ -263,7 +251,7 @@ static void progress_update(progress *p, long frame, const char *what)
     double ms = p->rendered ? p->busy / (double)p->rendered * 1e3 : 0.0;
     double remaining = ms * 1e-3 * (double)(p->total - p->done);
     char eta[32];
-    format_duration(remaining, eta, sizeof eta);
+    tl_cli_format_duration(remaining, eta, sizeof eta);
     if (p->tty) {
         int width = 30, filled = (int)(width * (double)p->done / (double)p->total);
         char bar[64];
@@ -587,7 +575,7 @@ int tl_cli_render(int argc, char **argv)
 
     double total = tl_clock_seconds() - prog.start;
     char took[32];
-    format_duration(total, took, sizeof took);
+    tl_cli_format_duration(total, took, sizeof took);
     if (rc)
         tl_cli_print_error("render", &err);
     fprintf(stderr, "tideline render: %s: %zu frame%s written, %zu skipped, %zu of %zu done in %s",
