@@ -39,10 +39,10 @@ float foam_lace(vec2 p)
 
 // Detail for foam seen close: five octaves of value noise, cells 50, 25,
 // 12, 6 and 3 cm (three, down to 12 cm, left a close wake's patches with
-// smooth, painted edges), each faded out as its cell shrinks from one pixel's footprint
-// to half of one (metres; 0: all): a cell is half a wavelength, so none
-// goes past the pixels' Nyquist limit and aliases. Centred on zero, within
-// +-0.5.
+// smooth, painted edges), each faded out as its cell shrinks from one
+// pixel's footprint to half of one (metres; 0: all): a cell is half a
+// wavelength, so none goes past the pixels' Nyquist limit and aliases.
+// Centred on zero, within +-0.5.
 float foam_detail(vec2 p, float footprint)
 {
     const mat2 turn = mat2(0.6, -0.8, 0.8, 0.6);

@@ -25,11 +25,12 @@ float surface_height(vec2 p, int octaves, float footprint)
 // another wave, and steps beyond TL_POLISH_MOST of t (the finer octaves
 // move the surface by centimetres; a longer step is a bad linearisation).
 // The step's height sums TL_POLISH_EXTRA octaves past the march's, not
-// all of the normals': the finer ones move the surface by a millimetre
-// or two (test_polish). On calm + voyage (seed sky, frames 60 and 180) 9 more
-// octaves brought `preview` 0.02 dB and `final` 0.07 dB closer to
-// `reference` than all 26 and 36 did, and took 2-4% off their frames; 6
-// more cost `preview` 0.07 dB, 3 more 0.6 dB (docs/quality.md, Round 14).
+// all of the normals': the octaves beyond those move the surface by a
+// millimetre or two (test_polish), and only the normal needs them. On
+// calm + voyage (seed sky, frames 60 and 180) 9 more octaves brought
+// `preview` 0.02 dB and `final` 0.07 dB closer to `reference` than all 26
+// and 36 did, and took 2-4% off their frames; 6 more cost `preview` 0.07
+// dB, 3 more 0.6 dB (docs/quality.md, Round 14).
 #define TL_POLISH_GRAZE 0.02
 #define TL_POLISH_MOST 0.01
 #define TL_POLISH_EXTRA 9

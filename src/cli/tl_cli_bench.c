@@ -517,7 +517,6 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
     if (!rc && !s->o->quiet)
         fprintf(stderr, "bench: %d frames at %dx%d on %s\n", s->shot_count, s->o->width,
                 s->o->height, tl_render_describe(s->render));
-
     int first = s->o->time_only ? 0 : 1; /* row 0: `reference`, when measured */
     if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
