@@ -216,6 +216,139 @@ static void test_from_below(tl_renderer *r)
     tl_frame_free(&with);
 }
 
+/* Whether a ray from the camera (camera-relative, unit `ray`) meets the
+ * ocean's band (between the crest plane and the trough plane) over water
+ * some wake group's circle holds: its stretch through the band, in x z,
+ * comes within a circle. */
+static int ray_reaches_wake(const tl_scene *s, const tl_frame_uniforms *u, const double ray[3])
+{
+    if (!(ray[1] < 0.0))
+        return 0;
+    double t0 = s->camera.position[1] / -ray[1], t1 = (s->camera.position[1] + u->depth) / -ray[1];
+    double a[2] = {ray[0] * t0, ray[2] * t0}, d[2] = {ray[0] * (t1 - t0), ray[2] * (t1 - t0)};
+    for (int g = 0; g < TL_WAKE_GROUPS; g++) {
+        const float *c = u->wake_groups[g];
+        double q[2] = {c[0] - a[0], c[1] - a[1]}, len2 = d[0] * d[0] + d[1] * d[1];
+        double k = len2 > 0.0 ? fmin(fmax((q[0] * d[0] + q[1] * d[1]) / len2, 0.0), 1.0) : 0.0;
+        if (hypot(q[0] - k * d[0], q[1] - k * d[1]) <= c[2])
+            return 1;
+    }
+    return 0;
+}
+
+/* The pixels whose rays can meet the wake's foam (u.wake_rect), where the
+ * renderer draws the programs with the wake: every ray through every pixel
+ * outside it, at the pixel's centre, corners and edge midpoints, meets
+ * water no group's circle holds; inside, some ray meets such water. From
+ * far off the wake is a small part of the frame; from a camera down in
+ * it, all of it. */
+static void test_rect(void)
+{
+    struct {
+        const char *what;
+        double pos[3], target[3];
+        int expect; /* 0: under half the frame, 1: all of it, 2: any */
+    } cases[] = {
+        {"160 m to the side", {160.0, 25.0, 20.0}, {0.0, 0.0, -60.0}, 0},
+        {"300 m behind, low", {-40.0, 4.0, -400.0}, {0.0, 0.0, -40.0}, 0},
+        {"25 m over the wake", {5.0, 25.0, 10.0}, {0.0, 0.0, -20.0}, 2},
+        {"in the wake, 0.4 m up", {3.0, 0.4, -10.0}, {0.0, 0.0, -60.0}, 1},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        tl_scene s;
+        straight_wake(&s, 6.0, 0);
+        memcpy(s.camera.position, cases[c].pos, sizeof s.camera.position);
+        tl_scene_camera_look_at(&s.camera, cases[c].target, NULL);
+        tl_waves w;
+        tl_waves_init(&w, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &w, &u);
+        CHECK(u.features & TL_FEATURE_WAKE);
+        const int *rect = u.wake_rect;
+        double right[3], up[3], fwd[3];
+        tl_scene_camera_basis(&s.camera, right, up, fwd);
+        double th = tan(0.5 * s.camera.vfov), aspect = (double)u.width / u.height;
+        int missed = 0, inside_hits = 0, area = 0;
+        for (int y = 0; y < u.height; y++)
+            for (int x = 0; x < u.width; x++) {
+                int in = x >= rect[0] && x < rect[2] && y >= rect[1] && y < rect[3];
+                area += in;
+                for (int k = 0; k < 9; k++) { /* GL's lower-left origin, as gl_FragCoord */
+                    double nx = (x + 0.5 * (k % 3)) / u.width * 2.0 - 1.0;
+                    double ny = (y + 0.5 * (k / 3)) / u.height * 2.0 - 1.0, ray[3], len = 0.0;
+                    for (int i = 0; i < 3; i++) {
+                        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
+                        len += ray[i] * ray[i];
+                    }
+                    for (int i = 0; i < 3; i++)
+                        ray[i] /= sqrt(len);
+                    int reaches = ray_reaches_wake(&s, &u, ray);
+                    missed += reaches && !in;
+                    inside_hits += reaches && in;
+                }
+            }
+        int total = u.width * u.height;
+        printf("wake's rectangle, %s: x %d-%d, y %d-%d (%.0f%% of the frame); rays outside it "
+               "that reach the wake: %d\n",
+               cases[c].what, rect[0], rect[2], rect[1], rect[3], 100.0 * area / total, missed);
+        CHECK(missed == 0);
+        CHECK(inside_hits > 0);
+        if (cases[c].expect == 0)
+            CHECK(area < total / 2);
+        if (cases[c].expect == 1)
+            CHECK(area == total);
+    }
+}
+
+/* The frame drawn with the wake's programs inside its rectangle and
+ * without them around it matches the frame drawn with them everywhere. */
+static void test_split_matches_whole(tl_renderer *r)
+{
+    tl_scene s;
+    straight_wake(&s, 6.0, 0);
+    s.camera.position[0] = 160.0;
+    s.camera.position[2] = 20.0;
+    const double target[3] = {0.0, 0.0, -60.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    const int w = u.width, h = u.height;
+    int area = (u.wake_rect[2] - u.wake_rect[0]) * (u.wake_rect[3] - u.wake_rect[1]);
+    CHECK(area > 0 && area < w * h);
+    tl_error err;
+    tl_error_clear(&err);
+    tl_frame split, whole;
+    CHECK(tl_frame_alloc(&split, w, h, &err) == 0);
+    CHECK(tl_frame_alloc(&whole, w, h, &err) == 0);
+    CHECK(tl_renderer_render(r, &u, &split, &err) == 0);
+    const int all[4] = {0, 0, w, h};
+    memcpy(u.wake_rect, all, sizeof all);
+    CHECK(tl_renderer_render(r, &u, &whole, &err) == 0);
+    double worst = 0.0, foam = 0.0;
+    int differ = 0;
+    for (size_t i = 0; i < (size_t)w * h * 4; i++) {
+        double e = fabs((double)split.display[i] - whole.display[i]);
+        worst = fmax(worst, e);
+        differ += e > 0.0;
+    }
+    /* The wake is in the picture: the rectangle's pixels are brighter with it. */
+    tl_frame none;
+    tl_scene calm = s;
+    calm.boat.wake = 0.0;
+    if (render(r, &calm, &none) == 0) {
+        for (size_t i = 0; i < (size_t)w * h * 4; i++)
+            foam = fmax(foam, (double)whole.display[i] - none.display[i]);
+        tl_frame_free(&none);
+    }
+    printf("wake's split against whole (rectangle %.0f%% of the frame): %d of %d display values "
+           "differ, by at most %.3g; the wake brightens a value by up to %.3f\n",
+           100.0 * area / (w * h), differ, w * h * 4, worst, foam);
+    CHECK(worst < 1e-4);
+    CHECK(foam > 0.1);
+    tl_frame_free(&split);
+    tl_frame_free(&whole);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -227,6 +360,8 @@ int main(void)
     test_outside(r);
     test_slow(r);
     test_from_below(r);
+    test_rect();
+    test_split_matches_whole(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

@@ -596,6 +596,50 @@ static void draw_ocean(GLuint program, const tl_frame_uniforms *u, int chunk, fl
     }
 }
 
+/* One ocean draw over `area` (x0 y0 x1 y1) with the program of
+ * `features`. With the wake, its foam is drawn only inside u->wake_rect;
+ * around that the same program without the wake draws the same image (no
+ * foam reaches there), and llvmpipe, which runs every `if` body of a
+ * program for every pixel, leaves the foam's texture out there. */
+static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned features, float weight,
+                     int write_depth, int only, const int area[4], tl_error *err)
+{
+    if (area[0] >= area[2] || area[1] >= area[3])
+        return TL_OK;
+    int in[4], parts = 0, part[5][4];
+    unsigned with[5];
+    const unsigned without = features & ~(unsigned)TL_FEATURE_WAKE;
+    for (int i = 0; i < 2; i++) {
+        const int *wr = u->wake_rect;
+        in[i] = area[i] > wr[i] ? area[i] : wr[i];
+        in[i + 2] = area[i + 2] < wr[i + 2] ? area[i + 2] : wr[i + 2];
+    }
+    if (!(features & TL_FEATURE_WAKE) || in[0] >= in[2] || in[1] >= in[3]) {
+        memcpy(part[0], area, sizeof part[0]);
+        with[parts++] = without;
+    } else {
+        const int around[4][4] = {{area[0], area[1], area[2], in[1]},
+                                  {area[0], in[3], area[2], area[3]},
+                                  {area[0], in[1], in[0], in[3]},
+                                  {in[2], in[1], area[2], in[3]}};
+        memcpy(part[0], in, sizeof part[0]);
+        with[parts++] = features;
+        for (int i = 0; i < 4; i++)
+            if (around[i][0] < around[i][2] && around[i][1] < around[i][3]) {
+                memcpy(part[parts], around[i], sizeof part[0]);
+                with[parts++] = without;
+            }
+    }
+    for (int i = 0; i < parts; i++) {
+        GLuint program = tl_renderer_use_ocean(r, u, with[i], err);
+        if (!program)
+            return err ? (int)err->status : TL_ERR_RUNTIME;
+        draw_ocean(program, u, samples_per_draw(u, with[i]), weight, write_depth, only, part[i][0],
+                   part[i][1], part[i][2], part[i][3]);
+    }
+    return TL_OK;
+}
+
 /* The frame's passes into the float target with the blending the caller
  * set: the boat's, then the ocean's (all samples, or sample `only`). */
 static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight, int write_depth,
@@ -651,33 +695,23 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     /* Above the horizon, outside the wave's rectangle, the sky alone. */
     const int sky = tl_renderer_sky_from(u, 1, h);
     tl_timers_start(&r->timers, TL_TIMED_OCEAN);
-    for (int part = 0; part < 2 && n && !rc; part++) {
+    for (int part = 0; part < 2 && !rc; part++) {
         if (part == 1 && sky >= h)
             break;
-        unsigned f = part == 0 ? lean : (lean & ~(unsigned)TL_PASS_HINTED) | TL_PASS_SKY;
-        GLuint program = tl_renderer_use_ocean(r, u, f, err);
-        int chunk = samples_per_draw(u, lean);
-        if (!program)
-            rc = err ? (int)err->status : TL_ERR_RUNTIME;
+        /* The sky's rays meet no water: no wake there either. */
+        unsigned f =
+            part == 0 ? lean : (lean & ~(unsigned)(TL_PASS_HINTED | TL_FEATURE_WAKE)) | TL_PASS_SKY;
         for (int i = 0; i < n && !rc; i++) {
             const int *b = bands[i];
-            if (part == 0)
-                draw_ocean(program, u, chunk, weight, write_depth, only, b[0], b[1], b[2],
-                           b[3] < sky ? b[3] : sky);
-            else
-                draw_ocean(program, u, chunk, weight, write_depth, only, b[0],
-                           b[1] > sky ? b[1] : sky, b[2], b[3]);
+            const int area[4] = {b[0], part == 0 ? b[1] : (b[1] > sky ? b[1] : sky), b[2],
+                                 part == 0 ? (b[3] < sky ? b[3] : sky) : b[3]};
+            rc = draw_area(r, u, f, weight, write_depth, only, area, err);
         }
     }
     tl_timers_stop(&r->timers);
     if (!rc && has_rect) {
         tl_timers_start(&r->timers, TL_TIMED_GIANT);
-        GLuint program = tl_renderer_use_ocean(r, u, features, err);
-        if (!program)
-            rc = err ? (int)err->status : TL_ERR_RUNTIME;
-        else
-            draw_ocean(program, u, samples_per_draw(u, features), weight, write_depth, only,
-                       rect[0], rect[1], rect[2], rect[3]);
+        rc = draw_area(r, u, features, weight, write_depth, only, rect, err);
         tl_timers_stop(&r->timers);
     }
     glDisable(GL_SCISSOR_TEST);

@@ -600,4 +600,5 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     prepare_fog(s, u);
     prepare_sky(s, u);
     sky_rows(u);
+    tl_prepare_wake_rect(s, u);
 }

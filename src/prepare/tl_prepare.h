@@ -151,6 +151,11 @@ typedef struct tl_frame_uniforms {
     /* Per group of TL_WAKE_GROUP segments: a circle (camera-relative x z,
      * radius, unused) holding every point the group's foam can reach. */
     float wake_groups[TL_WAKE_GROUPS][4];
+    /* The render target's pixels whose rays can meet water the wake's foam
+     * reaches, as giant_rect's; the renderer leaves the foam out of the
+     * programs it draws elsewhere (tl_prepare_wake_rect). Empty without
+     * the wake. */
+    int wake_rect[4];
     float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
 
     /* Under water (TL_FEATURE_UNDERWATER). */

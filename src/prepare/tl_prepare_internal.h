@@ -8,5 +8,9 @@
  * u->giant_rect (tl_prepare_rect.c). Needs u's giant-wave, sun and depth
  * uniforms filled. */
 void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u);
+/* The pixels where the renderer draws the wake's foam, into u->wake_rect
+ * (tl_prepare_rect.c). Needs u's features, wake groups, depth and
+ * giant-wave uniforms filled. */
+void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u);
 
 #endif

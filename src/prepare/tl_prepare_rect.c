@@ -1,7 +1,8 @@
-/* The giant wave's screen rectangle: the pixels whose rays can show the
- * wave, where the renderer draws the wave's program, and the lean ocean's
- * everywhere else (docs/rendering.md, "Only the pixels that can show the
- * wave pay for it"). */
+/* The screen rectangles of the features that only part of the frame can
+ * show: the giant wave's, where the renderer draws the wave's program and
+ * the lean ocean's everywhere else, and the boat's wake's, outside which
+ * the programs leave the wake's foam out (docs/rendering.md, "Only the
+ * pixels that can show the wave pay for it"). */
 #include "tl_prepare_internal.h"
 
 #include <math.h>
@@ -152,19 +153,22 @@ static int clipped_bounds(double (*poly)[2], int n, const double clip[4], double
     return 1;
 }
 
-/* The box (cover_box) is clipped at `near` in front of the camera, what is
- * left projected, and the bounds of its outline on the screen taken (a
- * point just past `near` projects far outside the frame: the outline is
- * clipped to the frame first, or a corner far to the side would stretch
- * the rectangle to the frame's edge). A ray meets the box closer than
- * `near` only if the camera is within near × `spread` of it, and the
- * lens's points (TL_LENS_DISTANCE ahead) lie within that too: such a
- * camera gets the whole frame. Two pixels of margin cover the samples'
- * jitter (half a pixel) and the GPU's float rounding. */
-void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
+/* The pixels whose rays can meet a box, into rect (x0, y0, x1, y1; all 0
+ * when none can). The box is given in its own axes (along `dir`, a unit
+ * vector in xz; up; across, dir turned a right angle): lo and hi, and
+ * the camera `cam` in the same coordinates. It is clipped at `near` in
+ * front of the camera, what is left projected, and the bounds of its
+ * outline on the screen taken (a point just past `near` projects far
+ * outside the frame: the outline is clipped to the frame first, or a
+ * corner far to the side would stretch the rectangle to the frame's
+ * edge). A ray meets the box closer than `near` only if the camera is
+ * within near × `spread` of it, and the lens's points (TL_LENS_DISTANCE
+ * ahead) lie within that too: such a camera gets the whole frame, as does
+ * a box of no finite size. Two pixels of margin cover the samples' jitter
+ * (half a pixel) and the GPU's float rounding. */
+static void box_rect(const tl_scene *s, int width, int height, const double dir[2],
+                     const double cam[3], const double lo[3], const double hi[3], int rect[4])
 {
-    const int width = u->width, height = u->height;
-    int *rect = u->giant_rect;
     rect[0] = rect[1] = rect[2] = rect[3] = 0;
     double right[3], up[3], fwd[3];
     tl_scene_camera_basis(&s->camera, right, up, fwd);
@@ -173,20 +177,16 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
     double spread = sqrt(1.0 + 1.21 * (tx * tx + ty * ty));
     double near = fmax(0.5, 2.0 * TL_LENS_DISTANCE);
     double margin = near * spread;
-    double cam[3] = {u->giant_frame[2], s->camera.position[1], u->giant_frame[3]};
-    double lo[3], hi[3];
-    cover_box(u, cam[1], near, lo, hi);
     int near_box = 1, finite = 1;
     for (int i = 0; i < 3; i++) {
         near_box = near_box && cam[i] > lo[i] - margin && cam[i] < hi[i] + margin;
         finite = finite && isfinite(cam[i]) && isfinite(lo[i]) && isfinite(hi[i]);
     }
-    if (near_box || !finite) { /* a box of no finite size is not culled */
+    if (near_box || !finite) {
         rect[2] = width;
         rect[3] = height;
         return;
     }
-    double dir[2] = {u->giant_frame[0], u->giant_frame[1]};
     double across[2] = {dir[1], -dir[0]};
     double corner[8][3]; /* camera space: right, up, forward */
     for (int i = 0; i < 8; i++) {
@@ -239,5 +239,54 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
         rect[1] = y0;
         rect[2] = x1;
         rect[3] = y1;
+    }
+}
+
+void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
+{
+    double near = fmax(0.5, 2.0 * TL_LENS_DISTANCE);
+    double cam[3] = {u->giant_frame[2], s->camera.position[1], u->giant_frame[3]};
+    double dir[2] = {u->giant_frame[0], u->giant_frame[1]};
+    double lo[3], hi[3];
+    cover_box(u, cam[1], near, lo, hi);
+    box_rect(s, u->width, u->height, dir, cam, lo, hi, u->giant_rect);
+}
+
+/* The union of the rectangles of the wake's groups: each group's circle
+ * (u->wake_groups, camera-relative, already holding every point its foam
+ * can reach) as a box from the lowest to the highest the water can be
+ * there: the ocean's band, widened by the giant wave's height when it is
+ * in the frame (cover_box's). Under water the frame is whole: the lens's
+ * and the surface's rays from below are left as they are. */
+void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u)
+{
+    int *rect = u->wake_rect;
+    rect[0] = rect[1] = rect[2] = rect[3] = 0;
+    if (!(u->features & TL_FEATURE_WAKE))
+        return;
+    if (u->features & TL_FEATURE_UNDERWATER) {
+        rect[2] = u->width;
+        rect[3] = u->height;
+        return;
+    }
+    double top = 0.0;
+    if (u->features & TL_FEATURE_GIANT_WAVE)
+        top = (double)u->giant_bounds[3] * u->giant_shape[1];
+    const double dir[2] = {1.0, 0.0}; /* along x; across is -z */
+    const double cam[3] = {0.0, s->camera.position[1], 0.0};
+    int any = 0;
+    for (int g = 0; g < TL_WAKE_GROUPS; g++) {
+        double x = u->wake_groups[g][0], z = u->wake_groups[g][1], r = u->wake_groups[g][2];
+        double lo[3] = {x - r, -(double)u->depth - top, -z - r};
+        double hi[3] = {x + r, top, -z + r};
+        int part[4];
+        box_rect(s, u->width, u->height, dir, cam, lo, hi, part);
+        if (part[0] >= part[2] || part[1] >= part[3])
+            continue;
+        for (int i = 0; i < 2; i++) {
+            rect[i] = any && rect[i] < part[i] ? rect[i] : part[i];
+            rect[i + 2] = any && rect[i + 2] > part[i + 2] ? rect[i + 2] : part[i + 2];
+        }
+        any = 1;
     }
 }
