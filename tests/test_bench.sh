@@ -155,3 +155,10 @@ set -e
 [ $rc2 -eq 1 ] && grep -q 'a.png is 32x18 but .*c.png is 18x32' "$work/e2" || fail "sizes: $(cat "$work/e2")"
 [ $rc3 -eq 2 ] && grep -q 'two images are needed' "$work/e3" || fail "one image: $(cat "$work/e3")"
 echo BENCH_OK
+
+# The presets take turns, round by round, and each round starts one
+# preset further along: draft, final, then final, draft.
+"$tideline" bench "$timelines/calm.tl" --size 32x18 --frames 0 --presets draft,final --repeat 2 \
+  --time-only 2>"$work/rounds" >/dev/null
+[ "$(sed -nE 's/^bench: ([a-z]+) +calm.tl frame 0 \(1\/1\) round ([12])\/2$/\1 \2/p' "$work/rounds" | paste -sd,)" = \
+  "draft 1,final 1,final 2,draft 2" ] || fail "rounds: $(cat "$work/rounds")"

@@ -40,7 +40,9 @@ static const char usage[] =
     "  --presets LIST    comma-separated presets (default draft,preview,final,seed);\n"
     "                    PRESET:KNOB=V:... is a variant with quality knobs changed,\n"
     "                    e.g. final:lod=off or final:refine_steps=2:hit_epsilon=0.02\n"
-    "  --repeat N        timed renders of each frame, 1..100 (default 3)\n"
+    "  --repeat N        rounds, 1..100 (default 3): each times every preset on\n"
+    "                    every frame once, the presets taking turns, so that a\n"
+    "                    slow spell of the machine falls on all of them alike\n"
     "  --time-only       time the presets only: no `reference` render, no error\n"
     "                    columns (to time a change quickly)\n"
     "  --shader-dir DIR  render with the shaders in DIR instead of the built-in\n"
@@ -243,8 +245,10 @@ static const char *base_name(const char *path)
 
 /* A progress line, at most two a second. `left`: seconds to go, printed
  * as an ETA when >= 0; a line that has one is always printed (the
- * `reference` frames, each a long render). */
-static void progress_eta(bench_state *s, const char *preset, int shot, int rep, double left)
+ * `reference` frames, each a long render). `round` of `rounds` (0: none,
+ * the references). */
+static void progress_eta(bench_state *s, const char *preset, int shot, int round, int rounds,
+                         double left)
 {
     if (s->o->quiet)
         return;
@@ -253,20 +257,17 @@ static void progress_eta(bench_state *s, const char *preset, int shot, int rep, 
         return;
     s->last_progress = now;
     const bench_shot *b = &s->shots[shot];
-    char eta[48] = "";
+    char eta[48] = "", of[32] = "";
     if (left >= 0.0) {
         char took[32];
         tl_cli_format_duration(left, took, sizeof took);
         snprintf(eta, sizeof eta, " ETA %s", took);
     }
+    if (rounds > 1)
+        snprintf(of, sizeof of, " round %d/%d", round + 1, rounds);
     fprintf(stderr, "bench: %-9s %s frame %ld (%d/%d)%s%s%s", preset,
-            base_name(s->o->timelines[b->timeline]), b->frame, shot + 1, s->shot_count,
-            rep > 0 ? " again" : "", eta, isatty(STDERR_FILENO) ? "        \r" : "\n");
-}
-
-static void progress(bench_state *s, const char *preset, int shot, int rep)
-{
-    progress_eta(s, preset, shot, rep, -1.0);
+            base_name(s->o->timelines[b->timeline]), b->frame, shot + 1, s->shot_count, of, eta,
+            isatty(STDERR_FILENO) ? "        \r" : "\n");
 }
 
 static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *frame,
@@ -322,91 +323,128 @@ static int median_frame_passes(double *const *pass, int n, double *out)
     return pick;
 }
 
-/* Renders every shot `repeat` times with q, timing each part, and scores
- * the shot (every render of it is the same) against the reference. */
-static int measure(bench_state *s, const tl_quality *q, const char *name, int repeat,
-                   tl_bench_row *row, tl_error *err)
-{
-    int n = s->shot_count * repeat;
-    /* total, render, readback, encode; then each kind of pass, all passes */
-    enum { PARTS = 4 + TL_BENCH_PASSES + 1 };
+/* A preset's timings while the rounds run, per shot and round (index
+ * shot * rounds + round): total, render, readback, encode, then each kind
+ * of pass and all passes; and its errors' sums. */
+enum { PARTS = 4 + TL_BENCH_PASSES + 1 };
+typedef struct preset_times {
     double *t[PARTS];
-    int rc = TL_OK;
-    for (int i = 0; i < PARTS; i++)
-        if (!(t[i] = calloc((size_t)n, sizeof(double))))
-            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    tl_frame frame = {0};
-    int timed_passes = 1;
-    double psnr_sum = 0.0, ssim_sum = 0.0;
-    row->worst_psnr = TL_METRICS_PSNR_MAX + 1.0;
+    int timed_passes;
+    double psnr_sum, ssim_sum;
+} preset_times;
+
+/* Shot k with preset q in round r: a render untimed, then one timed. The
+ * untimed render takes what a change of preset or shot costs once (each
+ * preset compiles its own programs, since octave counts are compiled in,
+ * each shot its feature set; the sky's tables follow the shot's sun; the
+ * render targets the preset's scale). In the first round the frame is
+ * then encoded `rounds` times and scored against the reference. The
+ * encodes come after the timed render, not between renders: a GPU left
+ * idle while the CPU encodes lowers its clock (an H100 timed 16 ms a frame
+ * back to back and up to 77 ms with encodes in between). */
+static int measure_shot(bench_state *s, const tl_quality *q, const char *name, int k, int r,
+                        int rounds, preset_times *pt, tl_bench_row *row, tl_frame *frame,
+                        tl_error *err)
+{
+    progress_eta(s, name, k, r, rounds, -1.0);
+    int rc = render_shot(s, k, q, frame, err);
+    if (!rc)
+        rc = render_shot(s, k, q, frame, err);
+    if (rc)
+        return rc;
+    const int i = k * rounds + r;
+    double render = 0.0, readback = 0.0, pass[TL_BENCH_PASSES];
+    tl_render_last_timing(s->render, &render, &readback);
+    pt->t[1][i] = render * 1e3;
+    pt->t[2][i] = readback * 1e3;
+    pt->timed_passes = tl_render_pass_seconds(s->render, pass) && pt->timed_passes;
+    for (int j = 0; j < TL_BENCH_PASSES; j++) {
+        pt->t[4 + j][i] = pass[j] * 1e3;
+        pt->t[4 + TL_BENCH_PASSES][i] += pass[j] * 1e3;
+    }
+    if (r > 0)
+        return TL_OK;
     char png[128];
     snprintf(png, sizeof png, "%s/frame.png", s->scratch);
-    for (int k = 0, i0 = 0; !rc && k < s->shot_count; k++, i0 += repeat) {
-        /* A render first, untimed: each preset compiles its own programs
-         * (octave counts are compiled in) and each shot its feature set,
-         * and the sky's tables follow the shot's sun. Then the renders back
-         * to back, then the encodes: a GPU left idle while the CPU encodes
-         * lowers its clock (an H100 timed 16 ms a frame back to back and up
-         * to 77 ms with encodes in between). */
-        progress(s, name, k, 0);
-        rc = render_shot(s, k, q, &frame, err);
-        for (int r = 0; !rc && r < repeat; r++) {
-            progress(s, name, k, r);
-            rc = render_shot(s, k, q, &frame, err);
-            double render = 0.0, readback = 0.0;
-            tl_render_last_timing(s->render, &render, &readback);
-            t[1][i0 + r] = render * 1e3;
-            t[2][i0 + r] = readback * 1e3;
-            double pass[TL_BENCH_PASSES];
-            timed_passes = tl_render_pass_seconds(s->render, pass) && timed_passes;
-            for (int i = 0; i < TL_BENCH_PASSES; i++) {
-                t[4 + i][i0 + r] = pass[i] * 1e3;
-                t[4 + TL_BENCH_PASSES][i0 + r] += pass[i] * 1e3;
-            }
-        }
-        for (int r = 0; !rc && r < repeat; r++) {
-            double t0 = tl_clock_seconds();
-            rc = tl_png_write(png, &frame, NULL, err);
-            t[3][i0 + r] = (tl_clock_seconds() - t0) * 1e3;
-            t[0][i0 + r] = t[1][i0 + r] + t[2][i0 + r] + t[3][i0 + r];
-        }
-        if (rc || !s->shots[k].reference)
-            continue;
-        tl_metrics m;
-        if (tl_metrics_compare(frame.display, s->shots[k].reference, frame.width, frame.height,
-                               &m)) {
-            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-            continue;
-        }
-        psnr_sum += m.psnr;
-        ssim_sum += m.ssim;
-        row->p99 = m.p99 > row->p99 ? m.p99 : row->p99;
-        if (m.psnr < row->worst_psnr) {
-            row->worst_psnr = m.psnr;
-            snprintf(row->worst_shot, sizeof row->worst_shot, "%s:%ld",
-                     base_name(s->o->timelines[s->shots[k].timeline]), s->shots[k].frame);
-        }
+    for (int e = 0; !rc && e < rounds; e++) {
+        double t0 = tl_clock_seconds();
+        rc = tl_png_write(png, frame, NULL, err);
+        pt->t[3][k * rounds + e] = (tl_clock_seconds() - t0) * 1e3;
     }
-    if (!rc) {
-        /* Before the medians below, which sort their arrays. */
-        row->has_passes = s->o->passes && timed_passes;
-        if (row->has_passes) {
-            int pick = median_frame_passes(t + 4, n, row->ms_pass);
-            const bench_shot *b = &s->shots[pick / repeat];
-            row->ms_pass_render = t[1][pick];
-            snprintf(row->pass_shot, sizeof row->pass_shot, "%s:%ld",
-                     base_name(s->o->timelines[b->timeline]), b->frame);
-        }
-        row->ms_total = median(t[0], n);
-        row->ms_render = median(t[1], n);
-        row->ms_readback = median(t[2], n);
-        row->ms_encode = median(t[3], n);
-        row->psnr = s->o->time_only ? NAN : psnr_sum / s->shot_count;
-        row->ssim = s->o->time_only ? NAN : ssim_sum / s->shot_count;
+    if (rc || !s->shots[k].reference)
+        return rc;
+    tl_metrics m;
+    if (tl_metrics_compare(frame->display, s->shots[k].reference, frame->width, frame->height, &m))
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    pt->psnr_sum += m.psnr;
+    pt->ssim_sum += m.ssim;
+    row->p99 = m.p99 > row->p99 ? m.p99 : row->p99;
+    if (m.psnr < row->worst_psnr) {
+        row->worst_psnr = m.psnr;
+        snprintf(row->worst_shot, sizeof row->worst_shot, "%s:%ld",
+                 base_name(s->o->timelines[s->shots[k].timeline]), s->shots[k].frame);
     }
+    return TL_OK;
+}
+
+/* A preset's row from its timings: medians over every shot and round. */
+static void finish_row(bench_state *s, preset_times *pt, int rounds, tl_bench_row *row)
+{
+    const int n = s->shot_count * rounds;
+    for (int i = 0; i < n; i++)
+        pt->t[0][i] = pt->t[1][i] + pt->t[2][i] + pt->t[3][i];
+    /* Before the medians below, which sort their arrays. */
+    row->has_passes = s->o->passes && pt->timed_passes;
+    if (row->has_passes) {
+        int pick = median_frame_passes(pt->t + 4, n, row->ms_pass);
+        const bench_shot *b = &s->shots[pick / rounds];
+        row->ms_pass_render = pt->t[1][pick];
+        snprintf(row->pass_shot, sizeof row->pass_shot, "%s:%ld",
+                 base_name(s->o->timelines[b->timeline]), b->frame);
+    }
+    row->ms_total = median(pt->t[0], n);
+    row->ms_render = median(pt->t[1], n);
+    row->ms_readback = median(pt->t[2], n);
+    row->ms_encode = median(pt->t[3], n);
+    row->psnr = s->o->time_only ? NAN : pt->psnr_sum / s->shot_count;
+    row->ssim = s->o->time_only ? NAN : pt->ssim_sum / s->shot_count;
+}
+
+/* Every preset over every shot, in `repeat` rounds: each round takes the
+ * presets in turn, each preset every shot once, and the next round starts
+ * one preset further along. The host's slow spells then fall on every
+ * preset alike, where preset after preset (each with all its renders)
+ * gave one of them a whole spell. */
+static int measure(bench_state *s, const tl_quality *presets, char names[][TL_BENCH_NAME],
+                   int count, tl_bench_row *rows, tl_error *err)
+{
+    const int rounds = s->o->repeat, n = s->shot_count * rounds;
+    preset_times *pt = calloc((size_t)count, sizeof *pt);
+    int rc = pt ? TL_OK : tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (int p = 0; !rc && p < count; p++) {
+        memset(&rows[p], 0, sizeof rows[p]);
+        memcpy(rows[p].preset, names[p], TL_BENCH_NAME); /* both TL_BENCH_NAME, terminated */
+        rows[p].worst_psnr = TL_METRICS_PSNR_MAX + 1.0;
+        pt[p].timed_passes = 1;
+        for (int i = 0; !rc && i < PARTS; i++)
+            if (!(pt[p].t[i] = calloc((size_t)n, sizeof(double))))
+                rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    }
+    tl_frame frame = {0};
+    for (int r = 0; !rc && r < rounds; r++)
+        for (int j = 0; !rc && j < count; j++) {
+            const int p = (j + r) % count;
+            for (int k = 0; !rc && k < s->shot_count; k++)
+                rc = measure_shot(s, &presets[p], names[p], k, r, rounds, &pt[p], &rows[p], &frame,
+                                  err);
+        }
+    for (int p = 0; !rc && p < count; p++)
+        finish_row(s, &pt[p], rounds, &rows[p]);
     tl_frame_free(&frame);
-    for (int i = 0; i < PARTS; i++)
-        free(t[i]);
+    for (int p = 0; pt && p < count; p++)
+        for (int i = 0; i < PARTS; i++)
+            free(pt[p].t[i]);
+    free(pt);
     return rc;
 }
 
@@ -475,7 +513,8 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
         double sum = 0.0;
         for (int i = 0; i < timed; i++)
             sum += ms[i];
-        progress_eta(s, "reference", k, 0, timed ? sum / timed * 1e-3 * (s->shot_count - k) : -1.0);
+        progress_eta(s, "reference", k, 0, 0,
+                     timed ? sum / timed * 1e-3 * (s->shot_count - k) : -1.0);
         rc = render_shot(s, k, &ref, &frame, err);
         if (rc)
             break;
@@ -520,12 +559,8 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
     int first = s->o->time_only ? 0 : 1; /* row 0: `reference`, when measured */
     if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
-    for (int p = 0; !rc && p < preset_count; p++) {
-        tl_bench_row *row = &rows[first + p];
-        memset(row, 0, sizeof *row);
-        memcpy(row->preset, names[p], TL_BENCH_NAME); /* both TL_BENCH_NAME, terminated */
-        rc = measure(s, &presets[p], names[p], s->o->repeat, row, err);
-    }
+    if (!rc)
+        rc = measure(s, presets, names, preset_count, rows + first, err);
     if (!s->o->quiet && isatty(STDERR_FILENO))
         fprintf(stderr, "%60s\r", "");
     if (s->scratch[0]) {
