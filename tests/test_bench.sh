@@ -162,3 +162,17 @@ echo BENCH_OK
   --time-only 2>"$work/rounds" >/dev/null
 [ "$(sed -nE 's/^bench: ([a-z]+) +calm.tl frame 0 \(1\/1\) round ([12])\/2$/\1 \2/p' "$work/rounds" | paste -sd,)" = \
   "draft 1,final 1,final 2,draft 2" ] || fail "rounds: $(cat "$work/rounds")"
+
+# PRESET@DIR: a preset with a folder's shaders, timed in the same rounds
+# (the source tree's shaders, the same as the built-in ones: the same
+# error); a folder without shaders is refused, naming the preset.
+"$tideline" bench "$timelines/calm.tl" --size 32x18 --frames 0 --presets draft,draft@"$(dirname "$timelines")/shaders" \
+  --repeat 1 -q --csv "$work/at.csv" >/dev/null
+awk -F, 'NR > 1 { p[$1] = $10 } END {
+  if (!("draft" in p) || !(("draft@" shaders) in p) || p["draft"] != p["draft@" shaders]) exit 1 }' \
+  shaders="$(dirname "$timelines")/shaders" "$work/at.csv" || fail "PRESET@DIR: $(cat "$work/at.csv")"
+if "$tideline" bench "$timelines/calm.tl" --presets draft@"$work" --time-only 2>"$work/at.err"; then
+  fail "PRESET@DIR without shaders was accepted"
+fi
+grep -q "^tideline bench: --presets: draft@$work: '$work' holds no ocean.frag$" "$work/at.err" ||
+  fail "PRESET@DIR error: $(cat "$work/at.err")"

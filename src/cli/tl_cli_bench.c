@@ -39,7 +39,10 @@ static const char usage[] =
     "  --size WxH        frame size (default 640x360)\n"
     "  --presets LIST    comma-separated presets (default draft,preview,final,seed);\n"
     "                    PRESET:KNOB=V:... is a variant with quality knobs changed,\n"
-    "                    e.g. final:lod=off or final:refine_steps=2:hit_epsilon=0.02\n"
+    "                    e.g. final:lod=off or final:refine_steps=2:hit_epsilon=0.02;\n"
+    "                    PRESET@DIR renders with the shaders in DIR, timed in the\n"
+    "                    same rounds as the rest (a shader edit against the shaders\n"
+    "                    it changes: preview,preview@my-shaders)\n"
     "  --repeat N        rounds, 1..100 (default 3): each times every preset on\n"
     "                    every frame once, the presets taking turns, so that a\n"
     "                    slow spell of the machine falls on all of them alike\n"
@@ -178,10 +181,12 @@ static int apply_knob(const char *spec, char *knob, tl_quality *q, tl_error *err
 }
 
 /* Splits the preset list. Each item is a preset's name, optionally with
- * knobs changed (a variant): `final:refine_steps=2:lod=off`. `reference`
- * may not be listed (it is what the others are measured against). */
-static int parse_presets(char *list, tl_quality *out, char names[][TL_BENCH_NAME], int *count,
-                         tl_error *err)
+ * knobs changed (a variant): `final:refine_steps=2:lod=off`, and with
+ * another folder's shaders: `preview@DIR` (dirs[i]: DIR, in `list`, or
+ * NULL). `reference` may not be listed (it is what the others are
+ * measured against). */
+static int parse_presets(char *list, tl_quality *out, char names[][TL_BENCH_NAME],
+                         const char **dirs, int *count, tl_error *err)
 {
     *count = 0;
     for (char *save = NULL, *item = strtok_r(list, ",", &save); item;
@@ -191,6 +196,15 @@ static int parse_presets(char *list, tl_quality *out, char names[][TL_BENCH_NAME
                                 TL_BENCH_MAX_PRESETS);
         if (snprintf(names[*count], TL_BENCH_NAME, "%s", item) >= TL_BENCH_NAME)
             return tl_error_set(err, TL_ERR_USAGE, "--presets: '%s' is too long", item);
+        char *at = strchr(item, '@');
+        dirs[*count] = NULL;
+        if (at) {
+            *at++ = '\0';
+            if (!*at)
+                return tl_error_set(err, TL_ERR_USAGE, "--presets: '%s' names no folder after '@'",
+                                    names[*count]);
+            dirs[*count] = at;
+        }
         char *rest = strchr(item, ':');
         if (rest)
             *rest++ = '\0';
@@ -230,10 +244,11 @@ typedef struct bench_state {
     bench_shot *shots;
     int shot_count;
     tl_render *render;
-    tl_shader_lib lib;    /* built in, or --shader-dir */
-    tl_bench_cache cache; /* --reference-cache (dir empty: none) */
-    int boat_of;          /* the timeline whose boat is uploaded, or -1 */
-    char scratch[64];     /* folder for the encoded PNGs */
+    tl_shader_lib lib;                              /* built in, or --shader-dir */
+    tl_shader_lib preset_lib[TL_BENCH_MAX_PRESETS]; /* each preset's: lib, or its @DIR */
+    tl_bench_cache cache;                           /* --reference-cache (dir empty: none) */
+    int boat_of;                                    /* the timeline whose boat is uploaded, or -1 */
+    char scratch[64];                               /* folder for the encoded PNGs */
     double last_progress;
 } bench_state;
 
@@ -337,17 +352,22 @@ typedef struct preset_times {
  * untimed render takes what a change of preset or shot costs once (each
  * preset compiles its own programs, since octave counts are compiled in,
  * each shot its feature set; the sky's tables follow the shot's sun; the
- * render targets the preset's scale). In the first round the frame is
+ * render targets the preset's scale; a preset with another folder's
+ * shaders compiles them again). In the first round the frame is
  * then encoded `rounds` times and scored against the reference. The
  * encodes come after the timed render, not between renders: a GPU left
  * idle while the CPU encodes lowers its clock (an H100 timed 16 ms a frame
  * back to back and up to 77 ms with encodes in between). */
-static int measure_shot(bench_state *s, const tl_quality *q, const char *name, int k, int r,
-                        int rounds, preset_times *pt, tl_bench_row *row, tl_frame *frame,
-                        tl_error *err)
+static int measure_shot(bench_state *s, const tl_quality *q, const tl_shader_lib *lib,
+                        const char *name, int k, int r, int rounds, preset_times *pt,
+                        tl_bench_row *row, tl_frame *frame, tl_error *err)
 {
     progress_eta(s, name, k, r, rounds, -1.0);
-    int rc = render_shot(s, k, q, frame, err);
+    int rc = tl_render_use_shaders(s->render, lib, err);
+    if (rc)
+        tl_error_prefix(err, name);
+    if (!rc)
+        rc = render_shot(s, k, q, frame, err);
     if (!rc)
         rc = render_shot(s, k, q, frame, err);
     if (rc)
@@ -435,8 +455,8 @@ static int measure(bench_state *s, const tl_quality *presets, char names[][TL_BE
         for (int j = 0; !rc && j < count; j++) {
             const int p = (j + r) % count;
             for (int k = 0; !rc && k < s->shot_count; k++)
-                rc = measure_shot(s, &presets[p], names[p], k, r, rounds, &pt[p], &rows[p], &frame,
-                                  err);
+                rc = measure_shot(s, &presets[p], &s->preset_lib[p], names[p], k, r, rounds, &pt[p],
+                                  &rows[p], &frame, err);
         }
     for (int p = 0; !rc && p < count; p++)
         finish_row(s, &pt[p], rounds, &rows[p]);
@@ -491,6 +511,8 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
 {
     tl_quality ref;
     tl_quality_preset("reference", &ref, err);
+    if (tl_render_use_shaders(s->render, &s->lib, err))
+        return err->status;
     tl_frame frame = {0};
     int rc = TL_OK, timed = 0;
     double *ms = calloc((size_t)s->shot_count, sizeof(double));
@@ -588,12 +610,23 @@ int tl_cli_bench(int argc, char **argv)
     tl_quality presets[TL_BENCH_MAX_PRESETS];
     static char names[TL_BENCH_MAX_PRESETS][TL_BENCH_NAME];
     int preset_count = 0;
+    const char *dirs[TL_BENCH_MAX_PRESETS];
     if (!rc)
-        rc = parse_presets(o.presets, presets, names, &preset_count, &err);
+        rc = parse_presets(o.presets, presets, names, dirs, &preset_count, &err);
     tl_shader_lib lib;
     tl_shader_lib_embedded(&lib);
-    if (!rc && o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err))
+    if (!rc && o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err)) {
+        tl_error_prefix(&err, "--shader-dir");
         rc = TL_ERR_USAGE;
+    }
+    static tl_shader_lib preset_lib[TL_BENCH_MAX_PRESETS];
+    for (int p = 0; !rc && p < preset_count; p++) {
+        preset_lib[p] = lib;
+        if (dirs[p] && tl_shader_lib_from_dir(&preset_lib[p], dirs[p], &err)) {
+            tl_error_prefix(&err, "--presets: %s", names[p]);
+            rc = TL_ERR_USAGE;
+        }
+    }
     if (!rc && o.csv && tl_cli_make_parent_dirs(o.csv, &err))
         rc = TL_ERR_USAGE;
     if (!rc && o.plot &&
@@ -609,6 +642,7 @@ int tl_cli_bench(int argc, char **argv)
     }
     s.o = &o;
     s.lib = lib;
+    memcpy(s.preset_lib, preset_lib, sizeof s.preset_lib);
     s.boat_of = -1;
     int loaded = 0;
     for (; loaded < o.timeline_count; loaded++)

@@ -551,6 +551,7 @@ int tl_cli_preview(int argc, char **argv)
     tl_shader_lib lib;
     tl_shader_lib_embedded(&lib);
     if (o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err)) {
+        tl_error_prefix(&err, "--shader-dir");
         tl_cli_print_error("preview", &err);
         tl_timeline_free(&p.tl);
         free(p.shot_starts);

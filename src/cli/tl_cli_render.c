@@ -443,8 +443,8 @@ int tl_cli_render(int argc, char **argv)
         if (!rc && tl_movie_check(o.movie, width, height, &err))
             rc = TL_ERR_USAGE;
     }
-    if (!rc && o.shader_dir)
-        rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err);
+    if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
+        tl_error_prefix(&err, "--shader-dir");
     if (rc) {
         tl_cli_print_error("render", &err);
         tl_frame_list_free(&frames);

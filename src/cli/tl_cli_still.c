@@ -273,8 +273,8 @@ int tl_cli_still(int argc, char **argv)
             rc = TL_ERR_USAGE;
     tl_shader_lib lib;
     tl_shader_lib_embedded(&lib);
-    if (!rc && o.shader_dir)
-        rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err);
+    if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
+        tl_error_prefix(&err, "--shader-dir");
     if (rc) {
         tl_cli_print_error("still", &err);
         tl_mesh_free(&boat);

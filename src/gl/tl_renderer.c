@@ -412,6 +412,20 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     return tl_renderer_check("reloading shaders", err);
 }
 
+int tl_renderer_use_shaders(tl_renderer *r, const tl_shader_lib *lib, tl_error *err)
+{
+    if (strcmp(r->lib.dir, lib->dir) == 0)
+        return TL_OK;
+    tl_shader_lib was = r->lib;
+    r->lib = *lib;
+    int rc = tl_renderer_reload_shaders(r, err);
+    if (rc)
+        r->lib = was;
+    else
+        r->sky_view_valid = 0; /* drawn by the other folder's sky_view.frag */
+    return rc;
+}
+
 int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
 {
     gpu_mesh *g = &r->mesh;

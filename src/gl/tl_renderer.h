@@ -32,6 +32,11 @@ void tl_renderer_destroy(tl_renderer *r);
  * files again (the preview's hot reload); the display program is rebuilt
  * at once and, if it fails, everything is kept as it was. */
 int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err);
+/* Renders with the shaders of `lib` from now on (the bench's variants
+ * with another folder's shaders): reloads them when they are not the ones
+ * in use, and draws the sky-view table again. On failure the renderer
+ * keeps the shaders it had. */
+int tl_renderer_use_shaders(tl_renderer *r, const tl_shader_lib *lib, tl_error *err);
 
 /* For frames with TL_FEATURE_SKY_PHYSICAL: brings the physical sky's
  * tables up to date for the scene (the atmosphere's two on the CPU when

@@ -87,6 +87,11 @@ int tl_render_reload_shaders(tl_render *r, tl_error *err)
     return tl_renderer_reload_shaders(r->renderer, err);
 }
 
+int tl_render_use_shaders(tl_render *r, const tl_shader_lib *lib, tl_error *err)
+{
+    return tl_renderer_use_shaders(r->renderer, lib, err);
+}
+
 int tl_render_present(tl_render *r, tl_error *err)
 {
     int w, h;

@@ -28,6 +28,9 @@ int tl_render_open_window(tl_render **out, const tl_shader_lib *lib, int width, 
 struct tl_gl_window *tl_render_window(tl_render *r);
 /* Compiles the shaders again on the next frame (their files changed). */
 int tl_render_reload_shaders(tl_render *r, tl_error *err);
+/* Renders with the shaders of `lib` from now on (compiled again when they
+ * are not the ones in use); on failure the old ones stay. */
+int tl_render_use_shaders(tl_render *r, const tl_shader_lib *lib, tl_error *err);
 /* Shows the last frame rendered (letterboxed) and swaps the window. */
 int tl_render_present(tl_render *r, tl_error *err);
 void tl_render_close(tl_render *r);

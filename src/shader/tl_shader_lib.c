@@ -57,11 +57,11 @@ int tl_shader_lib_from_dir(tl_shader_lib *lib, const char *dir, tl_error *err)
 {
     struct stat st;
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
-        return tl_error_set(err, TL_ERR_USAGE, "--shader-dir: '%s' is not a folder", dir);
+        return tl_error_set(err, TL_ERR_USAGE, "'%s' is not a folder", dir);
     char probe[1200];
     snprintf(probe, sizeof probe, "%s/ocean.frag", dir);
     if (stat(probe, &st) != 0)
-        return tl_error_set(err, TL_ERR_USAGE, "--shader-dir: '%s' holds no ocean.frag", dir);
+        return tl_error_set(err, TL_ERR_USAGE, "'%s' holds no ocean.frag", dir);
     snprintf(lib->dir, sizeof lib->dir, "%s", dir);
     return TL_OK;
 }

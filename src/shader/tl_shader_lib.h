@@ -33,7 +33,8 @@ typedef struct tl_shader_source {
 } tl_shader_source;
 
 void tl_shader_lib_embedded(tl_shader_lib *lib);
-/* Fails if `dir` is not a readable folder holding ocean.frag. */
+/* Fails if `dir` is not a readable folder holding ocean.frag; the message
+ * names the folder, and the caller prefixes the flag that gave it. */
 int tl_shader_lib_from_dir(tl_shader_lib *lib, const char *dir, tl_error *err);
 
 /* Composes `entry` with `defines` (lines of "#define ...") into out. */
