@@ -236,9 +236,18 @@ static void test_hits_on_surface(tl_renderer *r)
  * shadow (tl_giant_sunlit at the trough plane's depth, where a shadow
  * reaches furthest, between where the ray crosses the crest and trough
  * planes). */
-static int ray_sees_wave(const tl_scene *s, const tl_frame_uniforms *u, const tl_giant *g,
-                         const double ray[3])
+typedef struct wave_view {
+    const tl_scene *s;
+    const tl_frame_uniforms *u;
+    const tl_giant *g;
+} wave_view;
+
+static int ray_sees_wave(const void *ctx, const double ray[3])
 {
+    const wave_view *v = ctx;
+    const tl_scene *s = v->s;
+    const tl_frame_uniforms *u = v->u;
+    const tl_giant *g = v->g;
     const double d[2] = {u->giant_frame[0], u->giant_frame[1]};
     const double o[3] = {u->giant_frame[2], u->cam_height, u->giant_frame[3]};
     const double r[3] = {d[0] * ray[0] + d[1] * ray[2], ray[1], d[1] * ray[0] - d[0] * ray[2]};
@@ -315,28 +324,9 @@ static void test_screen_rect(void)
         tl_giant g;
         tl_giant_prepare(&g, &s.giant, s.time);
         const int *rect = u.giant_rect;
-        double right[3], up[3], fwd[3];
-        tl_scene_camera_basis(&s.camera, right, up, fwd);
-        double th = tan(0.5 * s.camera.vfov), aspect = (double)u.width / u.height;
-        int missed = 0, inside_hits = 0, area = 0;
-        for (int y = 0; y < u.height; y++)
-            for (int x = 0; x < u.width; x++) {
-                int in = x >= rect[0] && x < rect[2] && y >= rect[1] && y < rect[3];
-                area += in;
-                for (int k = 0; k < 9; k++) { /* GL's lower-left origin, as gl_FragCoord */
-                    double nx = (x + 0.5 * (k % 3)) / u.width * 2.0 - 1.0;
-                    double ny = (y + 0.5 * (k / 3)) / u.height * 2.0 - 1.0, ray[3], len = 0.0;
-                    for (int i = 0; i < 3; i++) {
-                        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
-                        len += ray[i] * ray[i];
-                    }
-                    for (int i = 0; i < 3; i++)
-                        ray[i] /= sqrt(len);
-                    int sees = ray_sees_wave(&s, &u, &g, ray);
-                    missed += sees && !in;
-                    inside_hits += sees && in;
-                }
-            }
+        int missed, inside_hits, area;
+        const wave_view view = {&s, &u, &g};
+        rect_rays(&s, rect, ray_sees_wave, &view, &missed, &inside_hits, &area);
         int total = u.width * u.height;
         printf("wave's rectangle, %s: x %d-%d, y %d-%d (%.0f%% of the frame); rays outside it "
                "that can show the wave: %d\n",
@@ -360,30 +350,14 @@ static void split_matches_whole(tl_renderer *r, const tl_scene *sp, const char *
     const int w = u.width, h = u.height;
     int area = (u.giant_rect[2] - u.giant_rect[0]) * (u.giant_rect[3] - u.giant_rect[1]);
     CHECK(area > 0 && area < w * h);
-    tl_error err;
-    tl_error_clear(&err);
-    tl_frame split, whole;
-    CHECK(tl_frame_alloc(&split, w, h, &err) == 0);
-    CHECK(tl_frame_alloc(&whole, w, h, &err) == 0);
-    CHECK(tl_renderer_render(r, &u, &split, &err) == 0);
-    const int all[4] = {0, 0, w, h};
-    memcpy(u.giant_rect, all, sizeof all);
-    CHECK(tl_renderer_render(r, &u, &whole, &err) == 0);
-    double worst = 0.0;
-    int differ = 0;
-    for (size_t i = 0; i < (size_t)w * h * 4; i++) {
-        double e = fabs((double)split.display[i] - whole.display[i]);
-        worst = fmax(worst, e);
-        differ += e > 0.0;
-    }
+    int differ;
+    double worst = split_against_whole(r, &u, u.giant_rect, &differ, NULL);
     printf("split against whole, %s (rectangle %.0f%% of the frame): %d of %d display values "
            "differ, by at most %.3g\n",
            what, 100.0 * area / (w * h), differ, w * h * 4, worst);
     /* The two programs round differently (6e-8 here); a pixel drawn by
      * the lean one in the crest's shadow was 3e-3 too bright. */
     CHECK(worst < 1e-4);
-    tl_frame_free(&split);
-    tl_frame_free(&whole);
 }
 
 /* The frame drawn in two programs (the lean ocean around the wave's

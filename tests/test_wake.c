@@ -216,12 +216,19 @@ static void test_from_below(tl_renderer *r)
     tl_frame_free(&with);
 }
 
+typedef struct wake_view {
+    const tl_scene *s;
+    const tl_frame_uniforms *u;
+} wake_view;
+
 /* Whether a ray from the camera (camera-relative, unit `ray`) meets the
  * ocean's band (between the crest plane and the trough plane) over water
  * some wake group's circle holds: its stretch through the band, in x z,
  * comes within a circle. */
-static int ray_reaches_wake(const tl_scene *s, const tl_frame_uniforms *u, const double ray[3])
+static int ray_reaches_wake(const void *ctx, const double ray[3])
 {
+    const tl_scene *s = ((const wake_view *)ctx)->s;
+    const tl_frame_uniforms *u = ((const wake_view *)ctx)->u;
     if (!(ray[1] < 0.0))
         return 0;
     double t0 = s->camera.position[1] / -ray[1], t1 = (s->camera.position[1] + u->depth) / -ray[1];
@@ -265,28 +272,9 @@ static void test_rect(void)
         tl_prepare_frame(&s, &w, &u);
         CHECK(u.features & TL_FEATURE_WAKE);
         const int *rect = u.wake_rect;
-        double right[3], up[3], fwd[3];
-        tl_scene_camera_basis(&s.camera, right, up, fwd);
-        double th = tan(0.5 * s.camera.vfov), aspect = (double)u.width / u.height;
-        int missed = 0, inside_hits = 0, area = 0;
-        for (int y = 0; y < u.height; y++)
-            for (int x = 0; x < u.width; x++) {
-                int in = x >= rect[0] && x < rect[2] && y >= rect[1] && y < rect[3];
-                area += in;
-                for (int k = 0; k < 9; k++) { /* GL's lower-left origin, as gl_FragCoord */
-                    double nx = (x + 0.5 * (k % 3)) / u.width * 2.0 - 1.0;
-                    double ny = (y + 0.5 * (k / 3)) / u.height * 2.0 - 1.0, ray[3], len = 0.0;
-                    for (int i = 0; i < 3; i++) {
-                        ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
-                        len += ray[i] * ray[i];
-                    }
-                    for (int i = 0; i < 3; i++)
-                        ray[i] /= sqrt(len);
-                    int reaches = ray_reaches_wake(&s, &u, ray);
-                    missed += reaches && !in;
-                    inside_hits += reaches && in;
-                }
-            }
+        int missed, inside_hits, area;
+        const wake_view view = {&s, &u};
+        rect_rays(&s, rect, ray_reaches_wake, &view, &missed, &inside_hits, &area);
         int total = u.width * u.height;
         printf("wake's rectangle, %s: x %d-%d, y %d-%d (%.0f%% of the frame); rays outside it "
                "that reach the wake: %d\n",
@@ -315,22 +303,9 @@ static void test_split_matches_whole(tl_renderer *r)
     const int w = u.width, h = u.height;
     int area = (u.wake_rect[2] - u.wake_rect[0]) * (u.wake_rect[3] - u.wake_rect[1]);
     CHECK(area > 0 && area < w * h);
-    tl_error err;
-    tl_error_clear(&err);
-    tl_frame split, whole;
-    CHECK(tl_frame_alloc(&split, w, h, &err) == 0);
-    CHECK(tl_frame_alloc(&whole, w, h, &err) == 0);
-    CHECK(tl_renderer_render(r, &u, &split, &err) == 0);
-    const int all[4] = {0, 0, w, h};
-    memcpy(u.wake_rect, all, sizeof all);
-    CHECK(tl_renderer_render(r, &u, &whole, &err) == 0);
-    double worst = 0.0, foam = 0.0;
-    int differ = 0;
-    for (size_t i = 0; i < (size_t)w * h * 4; i++) {
-        double e = fabs((double)split.display[i] - whole.display[i]);
-        worst = fmax(worst, e);
-        differ += e > 0.0;
-    }
+    int differ;
+    tl_frame whole;
+    double worst = split_against_whole(r, &u, u.wake_rect, &differ, &whole), foam = 0.0;
     /* The wake is in the picture: the rectangle's pixels are brighter with it. */
     tl_frame none;
     tl_scene calm = s;
@@ -345,7 +320,6 @@ static void test_split_matches_whole(tl_renderer *r)
            100.0 * area / (w * h), differ, w * h * 4, worst, foam);
     CHECK(worst < 1e-4);
     CHECK(foam > 0.1);
-    tl_frame_free(&split);
     tl_frame_free(&whole);
 }
 

@@ -83,22 +83,85 @@ static inline double probe_error(tl_renderer *r, const tl_scene *s, int octaves,
     return worst;
 }
 
-/* The unit view ray through the centre of pixel (x, y), top row first, as
- * the ocean shader and the rasteriser see it. */
-static inline void pixel_ray(const tl_scene *s, int x, int y, double ray[3])
+/* The unit view ray through the point (gx, gy) of the frame, in pixels
+ * from its lower-left corner (GL's, as gl_FragCoord), as the ocean shader
+ * sees it. */
+static inline void frame_ray(const tl_scene *s, double gx, double gy, double ray[3])
 {
     double right[3], up[3], fwd[3];
     tl_scene_camera_basis(&s->camera, right, up, fwd);
     double th = tan(0.5 * s->camera.vfov), aspect = (double)s->width / s->height;
-    double nx = (x + 0.5) / s->width * 2.0 - 1.0;
-    double ny = (s->height - 1 - y + 0.5) / s->height * 2.0 - 1.0;
-    double len = 0.0;
+    double nx = gx / s->width * 2.0 - 1.0, ny = gy / s->height * 2.0 - 1.0, len = 0.0;
     for (int i = 0; i < 3; i++) {
         ray[i] = fwd[i] + nx * aspect * th * right[i] + ny * th * up[i];
         len += ray[i] * ray[i];
     }
     for (int i = 0; i < 3; i++)
         ray[i] /= sqrt(len);
+}
+
+/* The unit view ray through the centre of pixel (x, y), top row first, as
+ * the ocean shader and the rasteriser see it. */
+static inline void pixel_ray(const tl_scene *s, int x, int y, double ray[3])
+{
+    frame_ray(s, x + 0.5, s->height - 1 - y + 0.5, ray);
+}
+
+/* A screen rectangle (x0 y0 x1 y1, GL's rows) that should hold every ray
+ * `reaches` says can show a feature, checked at nine points of every
+ * pixel (centre, corners, edge midpoints): such rays through pixels
+ * outside it into *outside, inside into *inside; the pixels inside into
+ * *area. */
+static inline void rect_rays(const tl_scene *s, const int rect[4],
+                             int (*reaches)(const void *ctx, const double ray[3]), const void *ctx,
+                             int *outside, int *inside, int *area)
+{
+    *outside = *inside = *area = 0;
+    for (int y = 0; y < s->height; y++)
+        for (int x = 0; x < s->width; x++) {
+            int in = x >= rect[0] && x < rect[2] && y >= rect[1] && y < rect[3];
+            *area += in;
+            for (int k = 0; k < 9; k++) {
+                double ray[3];
+                frame_ray(s, x + 0.5 * (k % 3), y + 0.5 * (k / 3), ray);
+                int hit = reaches(ctx, ray);
+                *outside += hit && !in;
+                *inside += hit && in;
+            }
+        }
+}
+
+/* The prepared frame `u` rendered as it is (split at one of its screen
+ * rectangles, `rect`, which is u's) and again with `rect` the whole frame:
+ * the largest difference of a display value between the two, their count
+ * in *differ. *whole keeps the second render when not NULL (the caller
+ * frees it). */
+static inline double split_against_whole(tl_renderer *r, tl_frame_uniforms *u, int rect[4],
+                                         int *differ, tl_frame *whole)
+{
+    const int w = u->width, h = u->height;
+    tl_error err;
+    tl_error_clear(&err);
+    tl_frame split, all_of_it;
+    CHECK(tl_frame_alloc(&split, w, h, &err) == 0);
+    CHECK(tl_frame_alloc(&all_of_it, w, h, &err) == 0);
+    CHECK(tl_renderer_render(r, u, &split, &err) == 0);
+    const int all[4] = {0, 0, w, h};
+    memcpy(rect, all, sizeof all);
+    CHECK(tl_renderer_render(r, u, &all_of_it, &err) == 0);
+    double worst = 0.0;
+    *differ = 0;
+    for (size_t i = 0; i < (size_t)w * h * 4; i++) {
+        double e = fabs((double)split.display[i] - all_of_it.display[i]);
+        worst = fmax(worst, e);
+        *differ += e > 0.0;
+    }
+    tl_frame_free(&split);
+    if (whole)
+        *whole = all_of_it;
+    else
+        tl_frame_free(&all_of_it);
+    return worst;
 }
 
 static inline double luminance(const float *rgb)
