@@ -176,3 +176,15 @@ if "$tideline" bench "$timelines/calm.tl" --presets draft@"$work" --time-only 2>
 fi
 grep -q "^tideline bench: --presets: draft@$work: '$work' holds no ocean.frag$" "$work/at.err" ||
   fail "PRESET@DIR error: $(cat "$work/at.err")"
+# A folder whose shaders do not compile stops the bench with the row's
+# name and the shader's error.
+mkdir "$work/broken"
+cp "$(dirname "$timelines")"/shaders/* "$work/broken/"
+echo "this is not glsl" >>"$work/broken/water.glsl"
+if "$tideline" bench "$timelines/calm.tl" --size 32x18 --frames 0 --presets draft,draft@"$work/broken" \
+  --time-only -q 2>"$work/broken.err" >/dev/null; then
+  fail "a folder of broken shaders was benched"
+fi
+grep -q "^tideline bench: draft@$work/broken: calm.tl: shader ocean.frag failed to compile:" "$work/broken.err" ||
+  fail "broken shaders' error: $(cat "$work/broken.err")"
+grep -q '^water.glsl:[0-9]*' "$work/broken.err" || fail "no shader line: $(cat "$work/broken.err")"

@@ -364,14 +364,14 @@ static int measure_shot(bench_state *s, const tl_quality *q, const tl_shader_lib
 {
     progress_eta(s, name, k, r, rounds, -1.0);
     int rc = tl_render_use_shaders(s->render, lib, err);
-    if (rc)
-        tl_error_prefix(err, name);
     if (!rc)
         rc = render_shot(s, k, q, frame, err);
     if (!rc)
         rc = render_shot(s, k, q, frame, err);
-    if (rc)
+    if (rc) {
+        tl_error_prefix(err, "%s", name); /* which row's shaders or knobs */
         return rc;
+    }
     const int i = k * rounds + r;
     double render = 0.0, readback = 0.0, pass[TL_BENCH_PASSES];
     tl_render_last_timing(s->render, &render, &readback);
