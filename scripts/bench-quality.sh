@@ -159,6 +159,11 @@ echo
   --size $size --frames 60,180 --repeat 3 -q --presets draft,preview,final,seed "${cache[@]}" \
   --csv "$out/quality-bench.csv" --plot "$out/quality-bench.png"
 echo
+echo "## Presets on the targets' scenes with the seed's sky, against reference ($size)"
+echo
+"$tl" bench "$scratch/calm.tl" "$scratch/voyage.tl" --size $size --frames 60,180 --repeat 1 -q \
+  --presets draft,preview,final,seed --csv "$out/quality-targets.csv"
+echo
 echo "## Each change to final, on and off, on the same cutscenes"
 echo
 "$tl" bench timelines/calm.tl timelines/voyage.tl timelines/giant_wave.tl timelines/dive.tl \

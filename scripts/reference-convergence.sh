@@ -2,7 +2,7 @@
 # Is `reference` converged? Renders one frame of each timeline with
 # `reference` and with every reference knob doubled (64 octaves marched and
 # for normals, twice the steps, half the hit and normal epsilons, twice the
-# refinement steps, 32 samples per pixel), and prints the PSNR between the
+# refinement steps, 128 samples per pixel), and prints the PSNR between the
 # two next to the PSNR of `final` against `reference`. A converged
 # reference changes less when doubled than any preset differs from it.
 #
@@ -28,7 +28,7 @@ for t in "${timelines[@]}"; do
   doubled+=("$twin")
   { grep -v '^quality ' "$t"; printf '%s\n' 'quality reference' 'set quality.march_octaves 64' \
       'set quality.normal_octaves 64' 'set quality.march_steps 2000' 'set quality.hit_epsilon 0.00005' \
-      'set quality.normal_epsilon 0.001' 'set quality.refine_steps 8' 'set quality.spp 32'; } >"$twin"
+      'set quality.normal_epsilon 0.001' 'set quality.refine_steps 8' 'set quality.spp 128'; } >"$twin"
   "$tl" still "$t" --frame "$frame" --size "$size" --quality reference --dither off -o "$scratch/$name.ref.png"
   "$tl" still "$twin" --frame "$frame" --size "$size" --dither off -o "$scratch/$name.ref2.png"
   "$tl" still "$t" --frame "$frame" --size "$size" --quality final --dither off -o "$scratch/$name.final.png"

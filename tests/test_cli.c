@@ -415,7 +415,7 @@ static void test_lod_close_up(void)
         tl_frame_free(&img[i]);
 }
 
-/* final's two knobs against aliasing bring it closer to its 16-sample
+/* final's two knobs against aliasing bring it closer to its 64-sample
  * `reference`. Filtered shading: water shaded with the slopes level of
  * detail fades, against water shaded with the mean normal alone. The pixel
  * filter: the display image's 3x3 Gaussian, against none. Frames 60 and
