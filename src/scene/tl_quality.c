@@ -34,7 +34,7 @@
 /* polish: the march's hit stepped onto the normals' finer surface before
  * it is shaded (one Newton step). On calm and voyage (seed sky) preview
  * came 2.2 dB closer to reference, final 1.3, for 13-19% of their time
- * (docs/quality.md, Round 9). draft, whose target is time, leaves it off:
+ * (docs/quality-history.md, Round 9). draft, whose target is time, leaves it off:
  * it gained 0.8 dB for 14%. `seed` keeps the shader's hit; `reference`
  * marches the normals' octaves, where the step is nil. */
 /* One preset a row, its knobs in the order of tl_quality. */
