@@ -1,6 +1,7 @@
 # Pure modules (no GL) and render tests (EGL; llvmpipe on CI).
 tl_add_test(test_render SOURCES test_render.c LIBS tideline_gl)
 tl_add_test(test_still_files SOURCES test_still_files.c LIBS tideline_gl)
+tl_add_test(test_render_progress SOURCES test_render_progress.c LIBS tideline_gl)
 tl_add_test(test_cli SOURCES test_cli.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders)
 tl_add_test(test_docs SOURCES test_docs.c LIBS tideline_core
@@ -42,6 +43,11 @@ add_test(NAME test_bench
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
 set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
+# still's progress line on a (pseudo-)terminal.
+add_test(NAME test_still_progress
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_still_progress.sh $<TARGET_FILE:tideline>
+          ${PROJECT_SOURCE_DIR}/timelines)
+set_tests_properties(test_still_progress PROPERTIES PASS_REGULAR_EXPRESSION "STILL_PROGRESS_OK")
 # Extremes (issue 15): every row of docs/precision.md's table; it prints the
 # table. The timeout is the "no hang" bound.
 tl_add_test(test_extremes SOURCES test_extremes.c LIBS tideline_gl)

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
@@ -16,6 +17,28 @@
 
 #define MAX_OUTPUTS 8
 
+/* The progress line of a long frame (a `reference` still takes minutes on
+ * a CPU renderer): on a terminal only, from its first second on, at most
+ * two updates a second. */
+typedef struct still_progress {
+    double start, last;
+    int shown;
+} still_progress;
+
+static void still_progress_update(void *ctx, double fraction)
+{
+    still_progress *p = ctx;
+    double now = tl_clock_seconds(), spent = now - p->start;
+    if (spent < 1.0 || (now - p->last < 0.5 && fraction < 1.0) || fraction <= 0.0)
+        return;
+    p->last = now;
+    p->shown = 1;
+    char eta[32];
+    tl_cli_format_duration(spent * (1.0 - fraction) / fraction, eta, sizeof eta);
+    fprintf(stderr, "\rtideline still: %3.0f%% drawn, ETA %s   ", fraction * 100.0, eta);
+    fflush(stderr);
+}
+
 static const char usage[] =
     "Usage: tideline still [TIMELINE.tl] [options] -o FILE [-o FILE...]\n"
     "\n"
@@ -26,6 +49,8 @@ static const char usage[] =
     "        ray, metres; sky = 1e10), ZIP compressed\n"
     "  .png  tonemapped (exposure, ACES, sRGB) 8-bit RGB, dithered\n"
     "Files are written atomically: a failed run never leaves a partial file.\n"
+    "On a terminal a frame that takes over a second shows how much of it is\n"
+    "drawn (a `reference` frame takes minutes on a CPU renderer).\n"
     "\n"
     "Options:\n"
     "  -o, --output FILE      output file (repeat for several formats)\n"
@@ -291,8 +316,13 @@ int tl_cli_still(int argc, char **argv)
     if (!rc && o.verbose)
         fprintf(stderr, "tideline still: %s\n", tl_render_describe(render));
     double t1 = tl_clock_seconds();
+    still_progress progress = {t1, 0.0, 0};
+    if (!rc && isatty(STDERR_FILENO))
+        tl_render_set_progress(render, still_progress_update, &progress);
     if (!rc)
         rc = tl_render_frame(render, &scene, &frame, &err);
+    if (progress.shown)
+        fputc('\n', stderr);
     double t2 = tl_clock_seconds();
     if (!rc && o.verbose) {
         char features[256];

@@ -590,8 +590,8 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
  * samples go in draws of at most `chunk`; each adds its share of the
  * average. Depth (the nearest surface any sample saw) comes from the first
  * draw's samples. `only` >= 0: that sample alone, at the full weight. */
-static void draw_ocean(GLuint program, const tl_frame_uniforms *u, int chunk, float weight,
-                       int write_depth, int only, int x0, int y0, int x1, int y1)
+static void draw_ocean(tl_renderer *r, GLuint program, const tl_frame_uniforms *u, int chunk,
+                       float weight, int write_depth, int only, int x0, int y0, int x1, int y1)
 {
     if (x0 >= x1 || y0 >= y1)
         return;
@@ -607,7 +607,17 @@ static void draw_ocean(GLuint program, const tl_frame_uniforms *u, int chunk, fl
         glUniform1f(tl_renderer_loc(program, "u_sample_weight"),
                     only >= 0 ? weight : weight * (float)count / (float)spp);
         glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (r->progress) {
+            glFinish();
+            r->progress(r->progress_ctx, (double)(x1 - x0) * (double)(y1 - y0) * count);
+        }
     }
+}
+
+void tl_renderer_set_progress(tl_renderer *r, tl_renderer_progress_fn fn, void *ctx)
+{
+    r->progress = fn;
+    r->progress_ctx = ctx;
 }
 
 /* One ocean draw over `area` (x0 y0 x1 y1) with the program of
@@ -648,7 +658,7 @@ static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned featur
         GLuint program = tl_renderer_use_ocean(r, u, with[i], err);
         if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
-        draw_ocean(program, u, samples_per_draw(u, with[i]), weight, write_depth, only, part[i][0],
+        draw_ocean(r, program, u, samples_per_draw(u, with[i]), weight, write_depth, only, part[i][0],
                    part[i][1], part[i][2], part[i][3]);
     }
     return TL_OK;

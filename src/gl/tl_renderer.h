@@ -80,6 +80,11 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
  * the same uniforms but the boat's. Refinement below likewise. */
 int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                                   int write_depth, int sample, tl_error *err);
+/* Progress of a long frame (a `reference` still): after each ocean draw
+ * the renderer waits for it (glFinish) and calls fn with the pixel
+ * samples it drew. NULL turns it off (the default: no waits). */
+typedef void (*tl_renderer_progress_fn)(void *ctx, double pixel_samples);
+void tl_renderer_set_progress(tl_renderer *r, tl_renderer_progress_fn fn, void *ctx);
 /* Progressive refinement (the preview, paused): sample `sample` of u->spp
  * alone, into the running mean of the samples before it, so that after
  * samples 0..spp-1 the float target holds what one accumulate of all of

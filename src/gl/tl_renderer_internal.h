@@ -108,6 +108,8 @@ struct tl_renderer {
     readback_slot readback[TL_READBACK_SLOTS];
     int readback_head, readback_queued;
     pass_timers timers;
+    tl_renderer_progress_fn progress; /* tl_renderer_set_progress, NULL when off */
+    void *progress_ctx;
 };
 
 /* Deletes *program if there is one and zeroes it: built again on next use. */

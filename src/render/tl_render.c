@@ -22,7 +22,33 @@ struct tl_render {
     unsigned last_features; /* of the last frame, over all its passes */
     tl_sky_luts *sky;       /* the physical sky's tables, rebuilt when they change */
     double render_seconds, readback_seconds; /* of the last timeline frame */
+    tl_render_progress_fn progress;          /* tl_render_set_progress */
+    void *progress_ctx;
+    double progress_done, progress_total; /* pixel samples of the frame being drawn */
 };
+
+/* The renderer's pixel samples as the share of the frame drawn. */
+static void count_pixel_samples(void *ctx, double pixel_samples)
+{
+    tl_render *r = ctx;
+    r->progress_done += pixel_samples;
+    if (r->progress_total > 0.0)
+        r->progress(r->progress_ctx, fmin(1.0, r->progress_done / r->progress_total));
+}
+
+void tl_render_set_progress(tl_render *r, tl_render_progress_fn fn, void *ctx)
+{
+    r->progress = fn;
+    r->progress_ctx = ctx;
+    tl_renderer_set_progress(r->renderer, fn ? count_pixel_samples : NULL, r);
+}
+
+/* A new frame of `samples` pixel samples in all (0: none to report). */
+static void progress_begin(tl_render *r, double samples)
+{
+    r->progress_done = 0.0;
+    r->progress_total = samples;
+}
 
 /* The renderer on whichever context `open_context` made current; headless
  * and windowed differ only in that step. */
@@ -177,6 +203,7 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     tl_frame_uniforms u;
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
+    progress_begin(r, (double)u.width * u.height * (u.spp < 1 ? 1 : u.spp));
     rc = tl_renderer_prepare_sky(r->renderer, scene, r->sky, &u, err);
     if (!rc)
         rc = tl_renderer_begin(r->renderer, u.width, u.height, u.out_width, u.out_height, err);
@@ -283,6 +310,8 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         samples = settings->shutter_samples > 0 ? settings->shutter_samples : 8;
         tl_render_shutter_interval(tl, frame, settings->shutter_deg, &open, &close);
     }
+    progress_begin(r, (double)rw * rh * (scene->quality.spp < 1 ? 1 : scene->quality.spp) *
+                          samples);
     /* Sub-frame k sits at the centre of the k-th of `samples` equal slices
      * of the shutter interval; depth comes from the one nearest t. */
     int depth_sample = 0;
@@ -379,6 +408,7 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     tl_prepare_render_size(&scene, &rw, &rh);
     if (!rc && sample == 0)
         rc = tl_renderer_begin(r->renderer, rw, rh, scene.width, scene.height, err);
+    progress_begin(r, 0.0); /* the preview's refinement: a sample a call */
     tl_frame_uniforms u;
     if (!rc) {
         tl_prepare_frame(&scene, waves_for(r, &scene.ocean), &u);

@@ -46,6 +46,13 @@ int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err);
  * union over its passes. tl_feature_describe turns them into words. */
 unsigned tl_render_last_features(const tl_render *r);
 
+/* Progress of long frames: while a frame draws, fn gets the share of its
+ * pixel samples drawn so far, rising to 1 (after each of the renderer's
+ * ocean draws, each of which it then waits for; tl_renderer_set_progress).
+ * For `still`'s progress display; NULL (the default) turns it off. */
+typedef void (*tl_render_progress_fn)(void *ctx, double fraction);
+void tl_render_set_progress(tl_render *r, tl_render_progress_fn fn, void *ctx);
+
 /* Renders `scene` into `frame`, (re)allocating it to the scene's size. */
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err);
 

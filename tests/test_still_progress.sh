@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# still's progress line on a terminal (a pseudo-terminal from script(1)):
+# it appears for a frame that takes more than a second, its share only
+# rises and ends at 100%, and the frame is the same as one rendered
+# without a terminal, which prints no progress at all.
+set -euo pipefail
+tideline=$1
+timelines=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+args=("$timelines/calm.tl" --frame 120 --size 96x54 --quality reference)
+"$tideline" still "${args[@]}" -o "$work/plain.png" 2>"$work/plain.err"
+[ ! -s "$work/plain.err" ] || fail "progress without a terminal: $(cat "$work/plain.err")"
+
+printf -v cmd '%q ' "$tideline" still "${args[@]}" -o "$work/tty.png"
+script -qec "$cmd" /dev/null | tr '\r' '\n' >"$work/tty.out"
+cat "$work/tty.out"
+shares=$(sed -nE 's/^tideline still: +([0-9]+)% drawn, ETA .*/\1/p' "$work/tty.out")
+[ -n "$shares" ] || fail "no progress line on a terminal"
+[ "$(tail -n1 <<<"$shares")" = 100 ] || fail "the last share is not 100%: $shares"
+[ "$(wc -l <<<"$shares")" -ge 2 ] || fail "one progress line only: $shares"
+sort -n -c <<<"$shares" || fail "the share went down: $shares"
+"$tideline" compare "$work/plain.png" "$work/tty.png" | grep -q 'max 0.0 levels' ||
+  fail "the frame differs with the progress line: $("$tideline" compare "$work/plain.png" "$work/tty.png")"
+echo "STILL_PROGRESS_OK"
