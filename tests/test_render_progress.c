@@ -9,7 +9,7 @@
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "timeline/tl_parse.h"
-#include "tl_test.h"
+#include "tl_gl_test.h"
 
 typedef struct shares {
     int calls, rising;
@@ -41,13 +41,9 @@ int main(void)
 {
     tl_error err;
     tl_error_clear(&err);
-    tl_shader_lib lib;
-    tl_shader_lib_embedded(&lib);
-    tl_render *r = NULL;
-    if (tl_render_open(&r, &lib, &err)) {
-        fprintf(stderr, "%s\n", err.message);
+    tl_render *r = render_test_open();
+    if (!r)
         return 1;
-    }
     tl_frame f = {0};
 
     /* One pass, four samples a pixel, the ocean at half the output's size. */

@@ -7,7 +7,7 @@
 
 #include "image/tl_image_io.h"
 #include "render/tl_render.h"
-#include "tl_test.h"
+#include "tl_gl_test.h"
 
 static float half_round_trip_tolerance(float v)
 {
@@ -26,13 +26,9 @@ int main(void)
 
     tl_error err;
     tl_error_clear(&err);
-    tl_shader_lib lib;
-    tl_shader_lib_embedded(&lib);
-    tl_render *r = NULL;
-    if (tl_render_open(&r, &lib, &err)) {
-        fprintf(stderr, "%s\n", err.message);
+    tl_render *r = render_test_open();
+    if (!r)
         return 1;
-    }
     tl_scene s;
     tl_scene_defaults(&s);
     s.width = 96;

@@ -9,6 +9,7 @@
 #include "gl/tl_gl_context.h"
 #include "gl/tl_renderer.h"
 #include "prepare/tl_prepare.h"
+#include "render/tl_render.h"
 #include "scene/tl_scene.h"
 #include "sky/tl_sky.h"
 #include "tl_test.h"
@@ -31,6 +32,21 @@ static inline tl_renderer *gl_test_open(tl_gl_context **ctx)
     if (tl_renderer_create(&r, &lib, &err)) {
         fprintf(stderr, "renderer: %s\n", err.message);
         tl_gl_context_destroy(*ctx);
+        return NULL;
+    }
+    return r;
+}
+
+/* The whole headless pipeline (tl_render) on the embedded shaders, or NULL. */
+static inline tl_render *render_test_open(void)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    tl_shader_lib lib;
+    tl_shader_lib_embedded(&lib);
+    tl_render *r = NULL;
+    if (tl_render_open(&r, &lib, &err)) {
+        fprintf(stderr, "no pipeline: %s\n", err.message);
         return NULL;
     }
     return r;
