@@ -658,8 +658,8 @@ static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned featur
         GLuint program = tl_renderer_use_ocean(r, u, with[i], err);
         if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
-        draw_ocean(r, program, u, samples_per_draw(u, with[i]), weight, write_depth, only, part[i][0],
-                   part[i][1], part[i][2], part[i][3]);
+        draw_ocean(r, program, u, samples_per_draw(u, with[i]), weight, write_depth, only,
+                   part[i][0], part[i][1], part[i][2], part[i][3]);
     }
     return TL_OK;
 }

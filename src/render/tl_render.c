@@ -310,8 +310,8 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         samples = settings->shutter_samples > 0 ? settings->shutter_samples : 8;
         tl_render_shutter_interval(tl, frame, settings->shutter_deg, &open, &close);
     }
-    progress_begin(r, (double)rw * rh * (scene->quality.spp < 1 ? 1 : scene->quality.spp) *
-                          samples);
+    progress_begin(r,
+                   (double)rw * rh * (scene->quality.spp < 1 ? 1 : scene->quality.spp) * samples);
     /* Sub-frame k sits at the centre of the k-th of `samples` equal slices
      * of the shutter interval; depth comes from the one nearest t. */
     int depth_sample = 0;
