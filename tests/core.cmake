@@ -43,11 +43,11 @@ add_test(NAME test_bench
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
 set_tests_properties(test_bench PROPERTIES PASS_REGULAR_EXPRESSION "BENCH_OK")
-# still's progress line on a (pseudo-)terminal.
-add_test(NAME test_still_progress
-  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_still_progress.sh $<TARGET_FILE:tideline>
+# still's and bench's progress on a (pseudo-)terminal.
+add_test(NAME test_progress
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_progress.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
-set_tests_properties(test_still_progress PROPERTIES PASS_REGULAR_EXPRESSION "STILL_PROGRESS_OK")
+set_tests_properties(test_progress PROPERTIES PASS_REGULAR_EXPRESSION "PROGRESS_OK")
 # Extremes (issue 15): every row of docs/precision.md's table; it prints the
 # table. The timeout is the "no hang" bound.
 tl_add_test(test_extremes SOURCES test_extremes.c LIBS tideline_gl)

@@ -1,5 +1,6 @@
 /* A long frame's progress (tl_render_set_progress, `still` on a terminal):
- * the share of its pixel samples drawn only rises and ends at exactly 1,
+ * the share of its pixel samples drawn (the sky's rows, drawn first, left
+ * out: they take next to no time) only rises and ends at exactly 1,
  * whether the samples go in one pass (the ocean's draws, at a render scale
  * below 1), a pass per sample (the boat in view) or per sub-frame (motion
  * blur); and once turned off it is not called. */
@@ -19,7 +20,7 @@ typedef struct shares {
 static void record(void *ctx, double fraction)
 {
     shares *s = ctx;
-    s->rising &= fraction >= s->last && fraction > 0.0 && fraction <= 1.0;
+    s->rising &= fraction >= s->last && fraction >= 0.0 && fraction <= 1.0;
     s->before_last = s->last;
     s->last = fraction;
     s->calls++;

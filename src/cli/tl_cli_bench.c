@@ -250,6 +250,11 @@ typedef struct bench_state {
     int boat_of;                                    /* the timeline whose boat is uploaded, or -1 */
     char scratch[64];                               /* folder for the encoded PNGs */
     double last_progress;
+    /* The `reference` frame drawing (its share shown on a terminal): its
+     * shot, when it began, and the seconds the frames after it will take
+     * (-1: not known until one has been timed). */
+    int drawing_shot;
+    double drawing_start, drawing_after;
 } bench_state;
 
 static const char *base_name(const char *path)
@@ -261,18 +266,19 @@ static const char *base_name(const char *path)
 /* A progress line, at most two a second. `left`: seconds to go, printed
  * as an ETA when >= 0; a line that has one is always printed (the
  * `reference` frames, each a long render). `round` of `rounds` (0: none,
- * the references). */
+ * the references). `share`: of the frame drawn, printed when >= 0. */
 static void progress_eta(bench_state *s, const char *preset, int shot, int round, int rounds,
-                         double left)
+                         double share, double left)
 {
     if (s->o->quiet)
         return;
     double now = tl_clock_seconds();
-    if (now - s->last_progress < 0.5 && shot > 0 && left < 0.0)
+    /* Throttled: a frame's share, and lines without an ETA after the first. */
+    if (now - s->last_progress < 0.5 && (share >= 0.0 || (shot > 0 && left < 0.0)))
         return;
     s->last_progress = now;
     const bench_shot *b = &s->shots[shot];
-    char eta[48] = "", of[32] = "";
+    char eta[48] = "", of[32] = "", drawn[16] = "";
     if (left >= 0.0) {
         char took[32];
         tl_cli_format_duration(left, took, sizeof took);
@@ -280,9 +286,25 @@ static void progress_eta(bench_state *s, const char *preset, int shot, int round
     }
     if (rounds > 1)
         snprintf(of, sizeof of, " round %d/%d", round + 1, rounds);
-    fprintf(stderr, "bench: %-9s %s frame %ld (%d/%d)%s%s%s", preset,
-            base_name(s->o->timelines[b->timeline]), b->frame, shot + 1, s->shot_count, of, eta,
-            isatty(STDERR_FILENO) ? "        \r" : "\n");
+    if (share >= 0.0)
+        snprintf(drawn, sizeof drawn, " %3.0f%%", share * 100.0);
+    fprintf(stderr, "bench: %-9s %s frame %ld (%d/%d)%s%s%s%s", preset,
+            base_name(s->o->timelines[b->timeline]), b->frame, shot + 1, s->shot_count, of, drawn,
+            eta, isatty(STDERR_FILENO) ? "        \r" : "\n");
+}
+
+/* A `reference` frame's share drawn, on a terminal (tl_render_set_progress):
+ * a minute or more a frame on a CPU renderer. The ETA counts this frame's
+ * rest at its pace so far and the frames after it. */
+static void reference_drawn(void *ctx, double share)
+{
+    bench_state *s = ctx;
+    double spent = tl_clock_seconds() - s->drawing_start;
+    double frame = share > 0.0 ? spent / share : 0.0;
+    double after =
+        s->drawing_after >= 0.0 ? s->drawing_after : frame * (s->shot_count - s->drawing_shot - 1);
+    progress_eta(s, "reference", s->drawing_shot, 0, 0, share,
+                 share > 0.0 ? frame - spent + after : -1.0);
 }
 
 static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *frame,
@@ -362,7 +384,7 @@ static int measure_shot(bench_state *s, const tl_quality *q, const tl_shader_lib
                         const char *name, int k, int r, int rounds, preset_times *pt,
                         tl_bench_row *row, tl_frame *frame, tl_error *err)
 {
-    progress_eta(s, name, k, r, rounds, -1.0);
+    progress_eta(s, name, k, r, rounds, -1.0, -1.0);
     int rc = tl_render_use_shaders(s->render, lib, err);
     if (!rc)
         rc = render_shot(s, k, q, frame, err);
@@ -513,6 +535,8 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
     tl_quality_preset("reference", &ref, err);
     if (tl_render_use_shaders(s->render, &s->lib, err))
         return err->status;
+    if (!s->o->quiet && isatty(STDERR_FILENO))
+        tl_render_set_progress(s->render, reference_drawn, s);
     tl_frame frame = {0};
     int rc = TL_OK, timed = 0;
     double *ms = calloc((size_t)s->shot_count, sizeof(double));
@@ -535,8 +559,11 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
         double sum = 0.0;
         for (int i = 0; i < timed; i++)
             sum += ms[i];
-        progress_eta(s, "reference", k, 0, 0,
+        progress_eta(s, "reference", k, 0, 0, -1.0,
                      timed ? sum / timed * 1e-3 * (s->shot_count - k) : -1.0);
+        s->drawing_shot = k;
+        s->drawing_start = tl_clock_seconds();
+        s->drawing_after = timed ? sum / timed * 1e-3 * (s->shot_count - k - 1) : -1.0;
         rc = render_shot(s, k, &ref, &frame, err);
         if (rc)
             break;
@@ -581,6 +608,8 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
     int first = s->o->time_only ? 0 : 1; /* row 0: `reference`, when measured */
     if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
+    /* The presets are timed without the waits a frame's share costs. */
+    tl_render_set_progress(s->render, NULL, NULL);
     if (!rc)
         rc = measure(s, presets, names, preset_count, rows + first, err);
     if (!s->o->quiet && isatty(STDERR_FILENO))

@@ -590,8 +590,9 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
  * samples go in draws of at most `chunk`; each adds its share of the
  * average. Depth (the nearest surface any sample saw) comes from the first
  * draw's samples. `only` >= 0: that sample alone, at the full weight. */
-static void draw_ocean(tl_renderer *r, GLuint program, const tl_frame_uniforms *u, int chunk,
-                       float weight, int write_depth, int only, int x0, int y0, int x1, int y1)
+static void draw_ocean(tl_renderer *r, GLuint program, unsigned program_features,
+                       const tl_frame_uniforms *u, int chunk, float weight, int write_depth,
+                       int only, int x0, int y0, int x1, int y1)
 {
     if (x0 >= x1 || y0 >= y1)
         return;
@@ -609,7 +610,8 @@ static void draw_ocean(tl_renderer *r, GLuint program, const tl_frame_uniforms *
         glDrawArrays(GL_TRIANGLES, 0, 3);
         if (r->progress) {
             glFinish();
-            r->progress(r->progress_ctx, (double)(x1 - x0) * (double)(y1 - y0) * count);
+            r->progress(r->progress_ctx, (double)(x1 - x0) * (double)(y1 - y0) * count,
+                        (program_features & TL_PASS_SKY) != 0);
         }
     }
 }
@@ -658,7 +660,7 @@ static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned featur
         GLuint program = tl_renderer_use_ocean(r, u, with[i], err);
         if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
-        draw_ocean(r, program, u, samples_per_draw(u, with[i]), weight, write_depth, only,
+        draw_ocean(r, program, with[i], u, samples_per_draw(u, with[i]), weight, write_depth, only,
                    part[i][0], part[i][1], part[i][2], part[i][3]);
     }
     return TL_OK;
@@ -719,9 +721,13 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     /* Above the horizon, outside the wave's rectangle, the sky alone. */
     const int sky = tl_renderer_sky_from(u, 1, h);
     tl_timers_start(&r->timers, TL_TIMED_OCEAN);
-    for (int part = 0; part < 2 && !rc; part++) {
+    /* The sky's rows first: a long frame's progress then counts the water
+     * alone from its first report on (tl_renderer_set_progress). Each
+     * pixel is in one area, so the order changes no pixel. */
+    for (int k = 0; k < 2 && !rc; k++) {
+        const int part = 1 - k;
         if (part == 1 && sky >= h)
-            break;
+            continue;
         /* The sky's rays meet no water: no wake there either. */
         unsigned f =
             part == 0 ? lean : (lean & ~(unsigned)(TL_PASS_HINTED | TL_FEATURE_WAKE)) | TL_PASS_SKY;

@@ -82,8 +82,10 @@ int tl_renderer_accumulate_sample(tl_renderer *r, const tl_frame_uniforms *u, fl
                                   int write_depth, int sample, tl_error *err);
 /* Progress of a long frame (a `reference` still): after each ocean draw
  * the renderer waits for it (glFinish) and calls fn with the pixel
- * samples it drew. NULL turns it off (the default: no waits). */
-typedef void (*tl_renderer_progress_fn)(void *ctx, double pixel_samples);
+ * samples it drew; `sky_only` for the rows above the horizon, which meet
+ * no water and take next to no time (they are drawn first). NULL turns
+ * it off (the default: no waits). */
+typedef void (*tl_renderer_progress_fn)(void *ctx, double pixel_samples, int sky_only);
 void tl_renderer_set_progress(tl_renderer *r, tl_renderer_progress_fn fn, void *ctx);
 /* Progressive refinement (the preview, paused): sample `sample` of u->spp
  * alone, into the running mean of the samples before it, so that after

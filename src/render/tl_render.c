@@ -27,11 +27,16 @@ struct tl_render {
     double progress_done, progress_total; /* pixel samples of the frame being drawn */
 };
 
-/* The renderer's pixel samples as the share of the frame drawn. */
-static void count_pixel_samples(void *ctx, double pixel_samples)
+/* The renderer's pixel samples as the share of the frame drawn. The
+ * sky's rows cost next to nothing: they leave the count, so that the
+ * share follows the time. */
+static void count_pixel_samples(void *ctx, double pixel_samples, int sky_only)
 {
     tl_render *r = ctx;
-    r->progress_done += pixel_samples;
+    if (sky_only)
+        r->progress_total -= pixel_samples;
+    else
+        r->progress_done += pixel_samples;
     if (r->progress_total > 0.0)
         r->progress(r->progress_ctx, fmin(1.0, r->progress_done / r->progress_total));
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# still's progress line on a terminal (a pseudo-terminal from script(1)):
-# it appears for a frame that takes more than a second, its share only
+# Progress on a terminal (a pseudo-terminal from script(1)). still: the
+# line appears for a frame that takes more than a second, its share only
 # rises and ends at 100%, and the frame is the same as one rendered
-# without a terminal, which prints no progress at all.
+# without a terminal, which prints no progress at all. bench: each
+# `reference` frame shows its share drawn, rising.
 set -euo pipefail
 tideline=$1
 timelines=$2
@@ -24,4 +25,14 @@ shares=$(sed -nE 's/^tideline still: +([0-9]+)% drawn, ETA .*/\1/p' "$work/tty.o
 sort -n -c <<<"$shares" || fail "the share went down: $shares"
 "$tideline" compare "$work/plain.png" "$work/tty.png" | grep -q 'max 0.0 levels' ||
   fail "the frame differs with the progress line: $("$tideline" compare "$work/plain.png" "$work/tty.png")"
-echo "STILL_PROGRESS_OK"
+
+printf -v cmd '%q ' "$tideline" bench "$timelines/calm.tl" --size 96x54 --frames 0,120 \
+  --presets draft --repeat 1
+script -qec "$cmd" /dev/null | tr '\r' '\n' >"$work/bench.out"
+for frame in 0 120; do
+  shares=$(sed -nE "s/^bench: reference calm.tl frame $frame \([12]\/2\) +([0-9]+)% .*/\1/p" "$work/bench.out")
+  [ -n "$shares" ] || fail "bench: no share for reference frame $frame: $(cat "$work/bench.out")"
+  sort -n -c <<<"$shares" || fail "bench: frame $frame's share went down: $shares"
+done
+grep -q '^| draft' "$work/bench.out" || fail "bench: no table"
+echo "PROGRESS_OK"
