@@ -154,7 +154,6 @@ set -e
 [ $rc1 -eq 1 ] && grep -q 'below --min-psnr 150' "$work/e" || fail "--min-psnr: $rc1 $(cat "$work/e")"
 [ $rc2 -eq 1 ] && grep -q 'a.png is 32x18 but .*c.png is 18x32' "$work/e2" || fail "sizes: $(cat "$work/e2")"
 [ $rc3 -eq 2 ] && grep -q 'two images are needed' "$work/e3" || fail "one image: $(cat "$work/e3")"
-echo BENCH_OK
 
 # The presets take turns, round by round, and each round starts one
 # preset further along: draft, final, then final, draft.
@@ -188,3 +187,16 @@ fi
 grep -q "^tideline bench: draft@$work/broken: calm.tl: shader ocean.frag failed to compile:" "$work/broken.err" ||
   fail "broken shaders' error: $(cat "$work/broken.err")"
 grep -q '^water.glsl:[0-9]*' "$work/broken.err" || fail "no shader line: $(cat "$work/broken.err")"
+
+# No OpenGL at all (no EGL vendor to load): the context's error, exit 1,
+# no crash.
+set +e
+__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json "$tideline" bench "$timelines/calm.tl" \
+  --size 32x18 --frames 0 --presets draft 2>"$work/nogl.err" >/dev/null
+status=$?
+set -e
+[ "$status" -eq 1 ] || fail "bench without OpenGL exited $status: $(cat "$work/nogl.err")"
+grep -q '^tideline bench: no headless OpenGL 3.3 context' "$work/nogl.err" ||
+  fail "bench without OpenGL: $(cat "$work/nogl.err")"
+# Last: ctest passes on this line alone (it ignores the exit status).
+echo BENCH_OK

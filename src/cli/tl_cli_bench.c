@@ -609,7 +609,8 @@ static int run(bench_state *s, tl_bench_row *rows, int *row_count, const tl_qual
     if (!rc && !s->o->time_only)
         rc = render_references(s, &rows[0], err);
     /* The presets are timed without the waits a frame's share costs. */
-    tl_render_set_progress(s->render, NULL, NULL);
+    if (s->render)
+        tl_render_set_progress(s->render, NULL, NULL);
     if (!rc)
         rc = measure(s, presets, names, preset_count, rows + first, err);
     if (!s->o->quiet && isatty(STDERR_FILENO))
