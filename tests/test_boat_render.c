@@ -1,7 +1,8 @@
 /* The boat on the GPU (llvmpipe on CI): its distance in the frame against
  * a CPU ray cast into the same mesh, the water it hides, a loaded model in
- * place of the built-in boat, no water on deck when the boat sits low, and
- * its wake: culled exactly, and swept off the giant wave's face.
+ * place of the built-in boat, no water on deck when the boat sits low, its
+ * wake: culled exactly, and swept off the giant wave's face, and its mirror
+ * image: culled exactly, and hidden where a swell stands between.
  * argv[1] is tests/meshes, argv[2] timelines/. */
 #include <string.h>
 
@@ -265,6 +266,133 @@ static void test_wake_swept(tl_renderer *r, const tl_mesh *m, const char *timeli
     tl_frame_free(&with);
 }
 
+/* Renders the prepared uniforms `u` into `f` (allocated here); 0 when it
+ * rendered. */
+static int render_prepared(tl_renderer *r, const tl_frame_uniforms *u, int width, int height,
+                           tl_frame *f)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_frame_alloc(f, width, height, &err) == 0);
+    int rc = tl_renderer_render(r, u, f, &err);
+    CHECK(rc == 0);
+    if (rc) {
+        fprintf(stderr, "render failed: %s\n", err.message);
+        tl_frame_free(f);
+    }
+    return rc;
+}
+
+/* Pixels of `a` and `b` whose colour differs by more than 1% (and 1e-4),
+ * among those `mask` keeps (NULL: all). */
+static long differing_pixels(const tl_frame *a, const tl_frame *b, const unsigned char *mask)
+{
+    long n = 0;
+    for (int i = 0; i < a->width * a->height; i++) {
+        if (mask && !mask[i])
+            continue;
+        double la = luminance(a->color + (size_t)i * 4), lb = luminance(b->color + (size_t)i * 4);
+        n += fabs(la - lb) > fmax(1.0e-4, 0.01 * fmax(la, lb));
+    }
+    return n;
+}
+
+/* The hull's mirror image in the water next to it (boat_scene): the
+ * programs that draw it run only inside u.boat_mirror_rect, which culls
+ * none of it (the frame equals the one with the rectangle covering the
+ * whole frame, bit for bit), and there is an image to cull (the frame
+ * with an empty rectangle, no image anywhere, differs). */
+static void test_mirror_rect(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_scene(&s);
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    const int *rect = u.boat_mirror_rect;
+    long area = (long)(rect[2] - rect[0]) * (rect[3] - rect[1]);
+    printf("mirror image: rectangle %d,%d .. %d,%d (%ld of %d pixels)\n", rect[0], rect[1], rect[2],
+           rect[3], area, s.width * s.height);
+    CHECK(area > 0 && area < s.width * s.height / 2);
+    tl_frame_uniforms whole = u, none = u;
+    const int all[4] = {0, 0, s.width, s.height}, empty[4] = {0, 0, 0, 0};
+    memcpy(whole.boat_mirror_rect, all, sizeof all);
+    memcpy(none.boat_mirror_rect, empty, sizeof empty);
+    tl_frame culled, everywhere, without;
+    if (render_prepared(r, &u, s.width, s.height, &culled))
+        return;
+    if (render_prepared(r, &whole, s.width, s.height, &everywhere) == 0) {
+        size_t n = (size_t)s.width * s.height * 4;
+        CHECK(memcmp(culled.color, everywhere.color, n * sizeof(float)) == 0);
+        tl_frame_free(&everywhere);
+    }
+    if (render_prepared(r, &none, s.width, s.height, &without) == 0) {
+        long image = differing_pixels(&culled, &without, NULL);
+        printf("mirror image: %ld pixels show it\n", image);
+        CHECK(image > 20);
+        tl_frame_free(&without);
+    }
+    tl_frame_free(&culled);
+}
+
+/* The hero cutscene's frame 120: the camera rides a swell's back, and the
+ * boat lies beyond its crest. The hull's mirror image lands, on screen, on
+ * the swell's near face, which cannot see the hull: the swell stands
+ * between. It once drew the hull's dark image there (and the mast's, a
+ * wavering line); the water nearer than 0.6 of the boat's distance now
+ * shows almost none of it (the frame with no image at all, the mirror's
+ * rectangle empty, is the yardstick). */
+static void test_mirror_hidden(tl_renderer *r, const tl_mesh *m, const char *timelines)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/voyage.tl", timelines);
+    tl_timeline tl;
+    tl_diags diags;
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_timeline_parse_file(path, &tl, &diags, &err) == TL_OK);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    tl_timeline_eval(&tl, tl_timeline_frame_time(&tl, 120), &s);
+    tl_timeline_free(&tl);
+    s.width = 240;
+    s.height = 135;
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_BOAT);
+    CHECK(u.boat_mirror_rect[0] < u.boat_mirror_rect[2]);
+    tl_frame_uniforms none = u;
+    memset(none.boat_mirror_rect, 0, sizeof none.boat_mirror_rect);
+    tl_frame with, without;
+    if (render_prepared(r, &u, s.width, s.height, &with))
+        return;
+    if (render_prepared(r, &none, s.width, s.height, &without)) {
+        tl_frame_free(&with);
+        return;
+    }
+    double d[3];
+    for (int i = 0; i < 3; i++)
+        d[i] = s.boat.position[i] - s.camera.position[i];
+    const double boat = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    unsigned char *near = calloc((size_t)s.width * s.height, 1);
+    long water = 0;
+    for (int i = 0; near && i < s.width * s.height; i++) {
+        near[i] = with.depth[i] < 0.6 * boat;
+        water += near[i];
+    }
+    long shown = near ? differing_pixels(&with, &without, near) : -1;
+    printf("voyage.tl frame 120: the boat %.1f m away; %ld of the %ld water pixels nearer than "
+           "0.6 of that show its mirror image\n",
+           boat, shown, water);
+    CHECK(water > 2000);
+    CHECK(shown >= 0 && shown <= water / 200);
+    free(near);
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+}
+
 /* A boat floating low, its deck below the water around it: looking down
  * into it shows the deck, never water inside the hull. */
 static void test_no_water_on_deck(tl_renderer *r, const tl_mesh *m)
@@ -390,6 +518,8 @@ int main(int argc, char **argv)
     test_hull_antialiased(r, &builtin);
     test_wake_groups(r, &builtin);
     test_wake_swept(r, &builtin, argv[2]);
+    test_mirror_rect(r, &builtin);
+    test_mirror_hidden(r, &builtin, argv[2]);
 
     tl_mesh_free(&builtin);
     tl_mesh_free(&skiff);

@@ -117,11 +117,12 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
     int fits = tl_renderer_defines(features, defines, sizeof defines) == 0;
     size_t n = strlen(defines);
     int more = snprintf(defines + n, sizeof defines - n,
-                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s",
+                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s",
                         key.march_octaves, key.normal_octaves,
                         features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
                         features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "",
-                        features & TL_PASS_SKY ? "#define TL_SKY_ONLY 1\n" : "");
+                        features & TL_PASS_SKY ? "#define TL_SKY_ONLY 1\n" : "",
+                        features & TL_PASS_MIRROR ? "#define TL_BOAT_MIRROR 1\n" : "");
     if (!fits || more < 0 || (size_t)more >= sizeof defines - n) {
         tl_error_set(err, TL_ERR_RUNTIME, "the ocean program's #defines do not fit in %d bytes",
                      TL_DEFINES_SIZE);
@@ -499,7 +500,8 @@ static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_
 }
 
 /* The boat's passes: the lit hull and its distance into r->boat, and its
- * mirror image into r->mirror, for the ocean pass to composite. */
+ * mirror image into r->mirror (its distance in alpha), for the ocean pass
+ * to composite. */
 static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
 {
     const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
@@ -574,6 +576,7 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
         glUniform1i(tl_renderer_loc(program, "u_boat_color"), 1);
         glUniform1i(tl_renderer_loc(program, "u_boat_distance"), 2);
         glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), 3);
+        glUniform1f(tl_renderer_loc(program, "u_boat_water"), u->boat_water);
         glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_to_model"), 1, GL_FALSE,
                            u->boat_to_model);
         glUniform4fv(tl_renderer_loc(program, "u_boat_hull"), 1, u->boat_hull);
@@ -622,39 +625,51 @@ void tl_renderer_set_progress(tl_renderer *r, tl_renderer_progress_fn fn, void *
     r->progress_ctx = ctx;
 }
 
-/* One ocean draw over `area` (x0 y0 x1 y1) with the program of
- * `features`. With the wake, its foam is drawn only inside u->wake_rect;
- * around that the same program without the wake draws the same image (no
- * foam reaches there), and llvmpipe, which runs every `if` body of a
- * program for every pixel, leaves the foam's texture out there. */
-static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned features, float weight,
-                     int write_depth, int only, const int area[4], tl_error *err)
+/* `area` split by `rect` (x0 y0 x1 y1 each): their overlap into `in`,
+ * and the rest of `area` as up to four bands around it; returns the
+ * bands' count, or -1 when they do not overlap. */
+static int split_area(const int area[4], const int rect[4], int in[4], int around[4][4])
 {
-    if (area[0] >= area[2] || area[1] >= area[3])
-        return TL_OK;
-    int in[4], parts = 0, part[5][4];
+    for (int i = 0; i < 2; i++) {
+        in[i] = area[i] > rect[i] ? area[i] : rect[i];
+        in[i + 2] = area[i + 2] < rect[i + 2] ? area[i + 2] : rect[i + 2];
+    }
+    if (in[0] >= in[2] || in[1] >= in[3])
+        return -1;
+    const int band[4][4] = {{area[0], area[1], area[2], in[1]},
+                            {area[0], in[3], area[2], area[3]},
+                            {area[0], in[1], in[0], in[3]},
+                            {in[2], in[1], area[2], in[3]}};
+    int n = 0;
+    for (int i = 0; i < 4; i++)
+        if (band[i][0] < band[i][2] && band[i][1] < band[i][3])
+            memcpy(around[n++], band[i], sizeof band[i]);
+    return n;
+}
+
+/* One ocean draw over `area` with the program of `features`, where the
+ * wake's foam is drawn only inside u->wake_rect: around that the same
+ * program without the wake draws the same image (no foam reaches there),
+ * and llvmpipe, which runs every `if` body of a program for every pixel
+ * and every loop's body at least once, leaves the foam's work out. */
+static int draw_wake_split(tl_renderer *r, const tl_frame_uniforms *u, unsigned features,
+                           float weight, int write_depth, int only, const int area[4],
+                           tl_error *err)
+{
+    int in[4], around[4][4], parts = 0, part[5][4];
     unsigned with[5];
     const unsigned without = features & ~(unsigned)TL_FEATURE_WAKE;
-    for (int i = 0; i < 2; i++) {
-        const int *wr = u->wake_rect;
-        in[i] = area[i] > wr[i] ? area[i] : wr[i];
-        in[i + 2] = area[i + 2] < wr[i + 2] ? area[i + 2] : wr[i + 2];
-    }
-    if (!(features & TL_FEATURE_WAKE) || in[0] >= in[2] || in[1] >= in[3]) {
+    int n = features & TL_FEATURE_WAKE ? split_area(area, u->wake_rect, in, around) : -1;
+    if (n < 0) {
         memcpy(part[0], area, sizeof part[0]);
         with[parts++] = without;
     } else {
-        const int around[4][4] = {{area[0], area[1], area[2], in[1]},
-                                  {area[0], in[3], area[2], area[3]},
-                                  {area[0], in[1], in[0], in[3]},
-                                  {in[2], in[1], area[2], in[3]}};
         memcpy(part[0], in, sizeof part[0]);
         with[parts++] = features;
-        for (int i = 0; i < 4; i++)
-            if (around[i][0] < around[i][2] && around[i][1] < around[i][3]) {
-                memcpy(part[parts], around[i], sizeof part[0]);
-                with[parts++] = without;
-            }
+        for (int i = 0; i < n; i++) {
+            memcpy(part[parts], around[i], sizeof part[0]);
+            with[parts++] = without;
+        }
     }
     for (int i = 0; i < parts; i++) {
         GLuint program = tl_renderer_use_ocean(r, u, with[i], err);
@@ -664,6 +679,30 @@ static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned featur
                    part[i][0], part[i][1], part[i][2], part[i][3]);
     }
     return TL_OK;
+}
+
+/* One ocean draw over `area` (x0 y0 x1 y1) with the program of
+ * `features`. The hull's mirror image is drawn only where it can show:
+ * u->boat_mirror_rect, widened by the most the waves shift its look-ups
+ * (TL_MIRROR_SHIFT in shaders/boat.glsl: 0.05 of the height) and its taps'
+ * reach; the water around that and the sky's rows take the programs
+ * without it (TL_PASS_MIRROR), for the same reason as the wake. */
+static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned features, float weight,
+                     int write_depth, int only, const int area[4], tl_error *err)
+{
+    if (area[0] >= area[2] || area[1] >= area[3])
+        return TL_OK;
+    const int *m = u->boat_mirror_rect, reach = (int)ceil(0.05 * u->height) + 3;
+    const int wide[4] = {m[0] - reach, m[1] - reach, m[2] + reach, m[3] + reach};
+    int in[4], around[4][4], n = -1;
+    if ((features & TL_FEATURE_BOAT) && !(features & TL_PASS_SKY) && m[0] < m[2] && m[1] < m[3])
+        n = split_area(area, wide, in, around);
+    if (n < 0)
+        return draw_wake_split(r, u, features, weight, write_depth, only, area, err);
+    int rc = draw_wake_split(r, u, features | TL_PASS_MIRROR, weight, write_depth, only, in, err);
+    for (int i = 0; i < n && !rc; i++)
+        rc = draw_wake_split(r, u, features, weight, write_depth, only, around[i], err);
+    return rc;
 }
 
 /* The frame's passes into the float target with the blending the caller

@@ -18,9 +18,15 @@
 
 /* Ocean program variants beyond the frame's features (bits above them):
  * a march prepass level, a pass that starts from a coarser level's
- * distances, and the sky alone (the rows above the horizon,
- * tl_frame_uniforms.sky_rows). */
-enum { TL_PASS_PREPASS = 1u << 30, TL_PASS_HINTED = 1u << 29, TL_PASS_SKY = 1u << 28 };
+ * distances, the sky alone (the rows above the horizon,
+ * tl_frame_uniforms.sky_rows), and the water that can mirror the boat's
+ * hull (tl_frame_uniforms.boat_mirror_rect). */
+enum {
+    TL_PASS_PREPASS = 1u << 30,
+    TL_PASS_HINTED = 1u << 29,
+    TL_PASS_SKY = 1u << 28,
+    TL_PASS_MIRROR = 1u << 27
+};
 
 typedef struct cached_program {
     unsigned features;
@@ -78,7 +84,7 @@ struct tl_renderer {
     target scene;   /* colour RGBA32F + depth R32F */
     target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
-    target mirror;  /* the hull reflected in the water RGBA32F + depth */
+    target mirror;  /* the hull reflected in the water RGBA32F (alpha: distance) + depth */
     /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
      * render size (tl_renderer_prepass.c). */
     target hint[TL_PREPASS_LEVELS];

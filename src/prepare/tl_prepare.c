@@ -190,6 +190,17 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
     if (!sphere_in_view(s, world, radius) && !sphere_in_view(s, mirrored, radius))
         return;
     u->features |= TL_FEATURE_BOAT;
+    double corner[8][3];
+    for (int i = 0; i < 8; i++) {
+        vec4 m = {(float)(i & 1 ? b->model_max[0] : b->model_min[0]),
+                  (float)(i & 2 ? b->model_max[1] : b->model_min[1]),
+                  (float)(i & 4 ? b->model_max[2] : b->model_min[2]), 1.0f},
+             w;
+        glm_mat4_mulv(model, m, w);
+        for (int k = 0; k < 3; k++)
+            corner[i][k] = w[k];
+    }
+    tl_prepare_mirror_rect(s, corner, rel[1], u);
 
     double right[3], up[3], fwd[3];
     tl_scene_camera_basis(&s->camera, right, up, fwd);

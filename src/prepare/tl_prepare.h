@@ -141,6 +141,10 @@ typedef struct tl_frame_uniforms {
     float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
     float boat_top;          /* model y of the hull's top */
     float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
+    /* The render target's pixels that can show the hull's mirror image, as
+     * giant_rect (tl_prepare_mirror_rect): the ocean programs look its
+     * texture up only there. */
+    int boat_mirror_rect[4];
     float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,

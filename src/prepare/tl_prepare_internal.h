@@ -13,4 +13,12 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u);
  * giant-wave uniforms filled. */
 void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u);
 
+/* The pixels that can show the boat's mirror image, into
+ * u->boat_mirror_rect (tl_prepare_rect.c): those of the model's bounding
+ * box (its eight corners camera-relative, corner i at the maximum along
+ * axis k where bit k of i is set) above the water plane `water`
+ * (camera-relative y), mirrored in that plane. */
+void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double water,
+                            tl_frame_uniforms *u);
+
 #endif

@@ -252,6 +252,33 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
     box_rect(s, u->width, u->height, dir, cam, lo, hi, u->giant_rect);
 }
 
+void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double water,
+                            tl_frame_uniforms *u)
+{
+    int *rect = u->boat_mirror_rect;
+    rect[0] = rect[1] = rect[2] = rect[3] = 0;
+    /* The box in the frame of the hull's length (its first edge), up and
+     * across; what stands above the water, mirrored below it. */
+    double dx = corner[1][0] - corner[0][0], dz = corner[1][2] - corner[0][2];
+    double len = sqrt(dx * dx + dz * dz);
+    double dir[2] = {len > 0.0 ? dx / len : 1.0, len > 0.0 ? dz / len : 0.0};
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (int i = 0; i < 8; i++) {
+        const double *c = corner[i];
+        const double q[3] = {c[0] * dir[0] + c[2] * dir[1], c[1], c[0] * dir[1] - c[2] * dir[0]};
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], q[k]);
+            hi[k] = fmax(hi[k], q[k]);
+        }
+    }
+    if (!(hi[1] > water))
+        return; /* nothing above the water to mirror */
+    lo[1] = 2.0 * water - hi[1];
+    hi[1] = water;
+    const double cam[3] = {0.0, 0.0, 0.0};
+    box_rect(s, u->width, u->height, dir, cam, lo, hi, rect);
+}
+
 /* The union of the rectangles of the wake's groups: each group's circle
  * (u->wake_groups, camera-relative, already holding every point its foam
  * can reach) as a box from the lowest to the highest the water can be
