@@ -32,8 +32,6 @@ void main()
     vec3 color = diffuse + spec;
     if (any(isnan(color)) || any(isinf(color)))
         color = vec3(0.0);
-    // Alpha: the distance too, where the reflection pass (one target, no
-    // distance plane) keeps it for boat_reflect; 0 where nothing is drawn.
+    out_color = vec4(max(color, vec3(0.0)), 1.0);
     out_depth = length(v_world - u_eye);
-    out_color = vec4(max(color, vec3(0.0)), out_depth);
 }

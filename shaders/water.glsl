@@ -122,7 +122,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     reflection = optics_fog(reflection, max(hit.y, 0.0), r, TL_SKY_DEPTH);
 #endif
 #ifdef TL_BOAT_MIRROR
-    reflection = boat_reflect(reflection, n, ray, hit);
+    reflection = boat_reflect(reflection, n, hit);
 #endif
     // Thicker water in the troughs scatters more blue-green light. Clamp:
     // the depth fraction is held in [0, 1], so a march that stopped off the

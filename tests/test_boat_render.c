@@ -339,11 +339,12 @@ static void test_mirror_rect(tl_renderer *r, const tl_mesh *m)
 
 /* The hero cutscene's frame 120: the camera rides a swell's back, and the
  * boat lies beyond its crest. The hull's mirror image lands, on screen, on
- * the swell's near face, which cannot see the hull: the swell stands
- * between. It once drew the hull's dark image there (and the mast's, a
- * wavering line); the water nearer than 0.6 of the boat's distance now
- * shows almost none of it (the frame with no image at all, the mirror's
- * rectangle empty, is the yardstick). */
+ * the swell's near face, which cannot mirror the hull: it lies far above
+ * the plane the image mirrors in. The hull's dark image was drawn there
+ * (and the mast's, a wavering line; 951 of the near water's pixels at this
+ * size); the water nearer than 0.6 of the boat's distance now shows almost
+ * none of it (the frame with no image at all, the mirror's rectangle
+ * empty, is the yardstick). */
 static void test_mirror_hidden(tl_renderer *r, const tl_mesh *m, const char *timelines)
 {
     char path[1024];

@@ -500,8 +500,7 @@ static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_
 }
 
 /* The boat's passes: the lit hull and its distance into r->boat, and its
- * mirror image into r->mirror (its distance in alpha), for the ocean pass
- * to composite. */
+ * mirror image into r->mirror, for the ocean pass to composite. */
 static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
 {
     const GLenum formats[2] = {GL_RGBA32F, GL_R32F};

@@ -84,7 +84,7 @@ struct tl_renderer {
     target scene;   /* colour RGBA32F + depth R32F */
     target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
     target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
-    target mirror;  /* the hull reflected in the water RGBA32F (alpha: distance) + depth */
+    target mirror;  /* the hull reflected in the water RGBA32F + depth */
     /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
      * render size (tl_renderer_prepass.c). */
     target hint[TL_PREPASS_LEVELS];
