@@ -23,14 +23,17 @@
  * (docs/quality.md). */
 #define RELAX 1.3
 /* With the prepass, a ray whose four coarser neighbours disagree marches
- * 12 steps, then regula falsi searches the rest of their bracket: calm's
- * frames took a third less time at final, a fifth at preview, for the
- * same PSNR against reference (grazing rays close on the water slowly;
- * marched to the end they took 40% of a calm frame's surface
- * evaluations). What it may skip is a crest tip the ray clips after those
- * steps: on a sea twice as steep as the default, at most 0.71 of a pixel
- * deep (docs/rendering.md, test_render). */
-#define BUDGET 12
+ * this many steps, then regula falsi searches the rest of their bracket
+ * (grazing rays close on the water slowly: marched to the end they took
+ * 40% of a calm frame's surface evaluations). What it may skip is a crest
+ * tip the ray clips after those steps: on a sea twice as steep as the
+ * default, under a pixel deep (docs/rendering.md, test_render). 12 steps
+ * when it came; 8 now take final 7% less time on calm + voyage (seed sky)
+ * for the same PSNR against reference, and 6 draft 12-19% and preview
+ * 3-6% less for 0.01-0.07 dB (fewer are slower: regula falsi then fails
+ * on longer brackets; docs/quality-history.md, Round 17). */
+#define BUDGET_FINAL 8
+#define BUDGET_FAST 6
 /* polish: the march's hit stepped onto the normals' finer surface before
  * it is shaded (one Newton step). On calm and voyage (seed sky) preview
  * came 2.2 dB closer to reference, final 1.3, for 13-19% of their time
@@ -43,11 +46,11 @@ static const tl_quality presets[] = {
     /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
      * filtered pixel_filter relax prepass budget giant_prepass polish facing */
     {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85, RELAX,
-     true, BUDGET, true, false, true},
+     true, BUDGET_FAST, true, false, true},
     {"preview", 10, 26, 48, 0.01, 0.01, 1, 5, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX, true, BUDGET, true, true, true},
+     RELAX, true, BUDGET_FAST, true, true, true},
     {"final", 12, 36, 96, 0.005, 0.01, 1, 6, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX, true, BUDGET, true, true, true},
+     RELAX, true, BUDGET_FINAL, true, true, true},
     /* Converged: every octave the normals use is marched too, a hit is
      * 0.1 mm, refined, normals exact, and 64 stratified samples average
      * the pixel (no level of detail: it is the brute-force answer LOD
