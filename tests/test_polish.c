@@ -47,13 +47,16 @@ static void under_scene(tl_scene *s)
 }
 
 typedef struct residual {
-    int hits;     /* water pixels within 150 m */
+    int hits;     /* water pixels within 150 m (in the frame that picks them) */
     double mean;  /* mean |y - surface(x, z)| of their hits, metres */
     double worst; /* the largest */
 } residual;
 
-/* How far the hits in `f` lie off the CPU's surface of `octaves` octaves. */
-static residual hits_off_surface(const tl_scene *s, const tl_frame *f, int octaves)
+/* How far the hits in `f` lie off the CPU's surface of `octaves` octaves,
+ * over the pixels `pick` has water within 150 m at (the same pixels for
+ * two frames: the polish may move a hit across the 150 m line). */
+static residual hits_off_surface(const tl_scene *s, const tl_frame *f, const tl_frame *pick,
+                                 int octaves)
 {
     tl_waves waves;
     tl_waves_init(&waves, &s->ocean);
@@ -63,7 +66,7 @@ static residual hits_off_surface(const tl_scene *s, const tl_frame *f, int octav
     for (int y = 0; y < s->height; y++)
         for (int x = 0; x < s->width; x++) {
             double d = f->depth[(size_t)y * s->width + x];
-            if (d > 150.0)
+            if (pick->depth[(size_t)y * s->width + x] > 150.0)
                 continue; /* sky, the depths, and grazing far water */
             double ray[3], p[3];
             pixel_ray(s, x, y, ray);
@@ -96,9 +99,9 @@ static void check_polish(tl_renderer *r, tl_scene *s, const char *label, double 
         return;
     }
     int normal = s->quality.normal_octaves, march = s->quality.march_octaves;
-    residual before = hits_off_surface(s, &plain, normal);
-    residual after = hits_off_surface(s, &polished, normal);
-    residual marched = hits_off_surface(s, &plain, march);
+    residual before = hits_off_surface(s, &plain, &plain, normal);
+    residual after = hits_off_surface(s, &polished, &plain, normal);
+    residual marched = hits_off_surface(s, &plain, &plain, march);
     int side = 0, far = 0;
     size_t n = (size_t)s->width * s->height;
     for (size_t i = 0; i < n; i++) {
@@ -113,7 +116,6 @@ static void check_polish(tl_renderer *r, tl_scene *s, const char *label, double 
            label, before.hits, normal, before.mean, before.worst, marched.mean, march, after.mean,
            after.worst, far, side);
     CHECK(before.hits > (int)n / 4);
-    CHECK(after.hits == before.hits);
     /* The march itself lands on its own surface, to its hit epsilon. */
     CHECK(marched.mean < 2.0 * s->quality.hit_epsilon);
     /* Without the polish the shading is centimetres off; with it, closer. */
