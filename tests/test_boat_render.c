@@ -232,6 +232,29 @@ static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&all);
 }
 
+/* Frame `frame` of timelines/`name` at 240x135 into `s`, with the mesh
+ * `m` set; 0 when the timeline parsed. */
+static int cutscene_frame(tl_renderer *r, const tl_mesh *m, const char *timelines, const char *name,
+                          int frame, tl_scene *s)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", timelines, name);
+    tl_timeline tl;
+    tl_diags diags;
+    tl_error err;
+    tl_error_clear(&err);
+    int rc = tl_timeline_parse_file(path, &tl, &diags, &err);
+    CHECK(rc == TL_OK);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    if (rc != TL_OK)
+        return rc;
+    tl_timeline_eval(&tl, tl_timeline_frame_time(&tl, frame), s);
+    tl_timeline_free(&tl);
+    s->width = 240;
+    s->height = 135;
+    return 0;
+}
+
 /* The hero cutscene's frame 216: the boat climbs the giant wave's face,
  * its wake's path running up the face behind it. The wave sweeps the wake
  * away, so the frame is the one without the wake; the foam once showed as
@@ -239,19 +262,9 @@ static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
  * height alone gated it). */
 static void test_wake_swept(tl_renderer *r, const tl_mesh *m, const char *timelines)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/giant_wave.tl", timelines);
-    tl_timeline tl;
-    tl_diags diags;
-    tl_error err;
-    tl_error_clear(&err);
-    CHECK(tl_timeline_parse_file(path, &tl, &diags, &err) == TL_OK);
-    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
     tl_scene s;
-    tl_timeline_eval(&tl, tl_timeline_frame_time(&tl, 216), &s);
-    tl_timeline_free(&tl);
-    s.width = 240;
-    s.height = 135;
+    if (cutscene_frame(r, m, timelines, "giant_wave.tl", 216, &s))
+        return;
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_WAKE);
@@ -347,19 +360,9 @@ static void test_mirror_rect(tl_renderer *r, const tl_mesh *m)
  * empty, is the yardstick). */
 static void test_mirror_hidden(tl_renderer *r, const tl_mesh *m, const char *timelines)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/voyage.tl", timelines);
-    tl_timeline tl;
-    tl_diags diags;
-    tl_error err;
-    tl_error_clear(&err);
-    CHECK(tl_timeline_parse_file(path, &tl, &diags, &err) == TL_OK);
-    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
     tl_scene s;
-    tl_timeline_eval(&tl, tl_timeline_frame_time(&tl, 120), &s);
-    tl_timeline_free(&tl);
-    s.width = 240;
-    s.height = 135;
+    if (cutscene_frame(r, m, timelines, "voyage.tl", 120, &s))
+        return;
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_BOAT);
