@@ -279,23 +279,6 @@ static void test_wake_swept(tl_renderer *r, const tl_mesh *m, const char *timeli
     tl_frame_free(&with);
 }
 
-/* Renders the prepared uniforms `u` into `f` (allocated here); 0 when it
- * rendered. */
-static int render_prepared(tl_renderer *r, const tl_frame_uniforms *u, int width, int height,
-                           tl_frame *f)
-{
-    tl_error err;
-    tl_error_clear(&err);
-    CHECK(tl_frame_alloc(f, width, height, &err) == 0);
-    int rc = tl_renderer_render(r, u, f, &err);
-    CHECK(rc == 0);
-    if (rc) {
-        fprintf(stderr, "render failed: %s\n", err.message);
-        tl_frame_free(f);
-    }
-    return rc;
-}
-
 /* Pixels of `a` and `b` whose colour differs by more than 1% (and 1e-4),
  * among those `mask` keeps (NULL: all). */
 static long differing_pixels(const tl_frame *a, const tl_frame *b, const unsigned char *mask)

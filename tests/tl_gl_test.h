@@ -199,21 +199,29 @@ static inline void gl_test_prepare(tl_renderer *r, const tl_scene *scene, tl_fra
         fprintf(stderr, "the sky's tables: %s\n", err.message);
 }
 
-/* Renders `scene` in one pass into `f` (allocated here). */
-static inline int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
+/* Renders the prepared uniforms `u` in one pass into `f` (allocated
+ * here, width x height); 0 when it rendered. */
+static inline int render_prepared(tl_renderer *r, const tl_frame_uniforms *u, int width, int height,
+                                  tl_frame *f)
 {
-    tl_frame_uniforms u;
-    gl_test_prepare(r, scene, &u);
     tl_error err;
     tl_error_clear(&err);
-    CHECK(tl_frame_alloc(f, scene->width, scene->height, &err) == 0);
-    int rc = tl_renderer_render(r, &u, f, &err);
+    CHECK(tl_frame_alloc(f, width, height, &err) == 0);
+    int rc = tl_renderer_render(r, u, f, &err);
     CHECK(rc == 0);
     if (rc) {
         fprintf(stderr, "render failed: %s\n", err.message);
         tl_frame_free(f);
     }
     return rc;
+}
+
+/* Renders `scene` in one pass into `f` (allocated here). */
+static inline int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
+{
+    tl_frame_uniforms u;
+    gl_test_prepare(r, scene, &u);
+    return render_prepared(r, &u, scene->width, scene->height, f);
 }
 
 /* Renders `scene` into `with` and, its wake's strength at 0, into
