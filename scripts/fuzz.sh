@@ -16,9 +16,8 @@ if [ -z "$cc" ]; then
   echo "fuzz: clang not found, fuzzers skipped (scripts/setup.sh installs clang-14 and libclang-rt-14-dev)"
   exit 0
 fi
-CC=$cc cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTIDELINE_FUZZ=ON >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]/#/fuzz_}" -- --no-print-directory |
-  { grep -v '^\[' || true; }
+source scripts/lib/build.sh
+CC=$cc tl_build build-fuzz -DTIDELINE_FUZZ=ON -- "${targets[@]/#/fuzz_}"
 
 export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

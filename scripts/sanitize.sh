@@ -5,7 +5,6 @@
 # tests/sanitizers/). Needs what scripts/setup.sh installs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTIDELINE_SANITIZE=ON >/dev/null
-# Progress lines hidden; a failed build still fails the script (pipefail).
-cmake --build build-asan -j"$(nproc)" -- --no-print-directory | { grep -v '^\[' || true; }
+source scripts/lib/build.sh
+tl_build build-asan -DTIDELINE_SANITIZE=ON
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)"

@@ -35,6 +35,6 @@ if ((${#missing[@]})); then
     apt-get install -y -qq -o DPkg::Lock::Timeout=300 --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build -j"$(nproc)" -- --no-print-directory | grep -v '^\[' || true
+source scripts/lib/build.sh
+tl_build build
 test -x build/tideline

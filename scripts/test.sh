@@ -5,6 +5,9 @@
 # and memcheck over a still and a short render (scripts/valgrind.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Every warning is an error here (and so in CI); scripts/setup.sh alone
+# leaves the build folder's setting as it was.
+export TIDELINE_WERROR=ON
 scripts/setup.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 echo "test: the suite again under AddressSanitizer + UBSan (build-asan/)"
