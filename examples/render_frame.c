@@ -1,5 +1,6 @@
-/* Using tideline as a library: load a timeline, render one frame headless
- * and write it to a file.
+/* Using tideline as a library: load a timeline with everything it
+ * references (its boat's model), render one frame headless and write it to
+ * a file: the frame `tideline still TIMELINE.tl --frame FRAME` draws.
  *
  *   render_frame TIMELINE.tl FRAME OUTPUT.(exr|png) [WIDTHxHEIGHT]
  */
@@ -17,20 +18,20 @@ int main(int argc, char **argv)
     tl_error err;
     tl_error_clear(&err);
 
-    tl_timeline timeline;
+    tl_cutscene cutscene;
     tl_diags diags;
-    if (tl_timeline_parse_file(argv[1], &timeline, &diags, &err)) {
-        if (diags.count)
-            tl_diags_write(&diags, stderr); /* file:line:col errors with carets */
-        else
-            fprintf(stderr, "%s\n", err.message);
+    if (tl_cutscene_load(argv[1], &cutscene, &diags, &err)) {
+        /* file:line:col errors with carets, or the model's failure */
+        tl_cutscene_report(stderr, "render_frame", &diags, &err);
         return 1;
     }
+    if (diags.count)
+        tl_diags_write(&diags, stderr); /* warnings: the timeline still loads */
 
     tl_render_settings settings = {0}; /* the timeline's size and quality */
     if (argc > 4 && sscanf(argv[4], "%dx%d", &settings.width, &settings.height) != 2) {
         fprintf(stderr, "bad size '%s'\n", argv[4]);
-        tl_timeline_free(&timeline);
+        tl_cutscene_free(&cutscene);
         return 2;
     }
     long frame_number = strtol(argv[2], NULL, 10);
@@ -42,17 +43,23 @@ int main(int argc, char **argv)
     tl_scene scene;
     int rc = tl_render_open(&render, &shaders, &err);
     if (!rc)
-        rc = tl_render_timeline_frame(render, &timeline, frame_number, &settings, &frame, &scene,
-                                      &err);
+        rc = tl_render_use_cutscene(render, &cutscene, &err);
+    if (!rc)
+        rc = tl_render_timeline_frame(render, &cutscene.timeline, frame_number, &settings, &frame,
+                                      &scene, &err);
     if (!rc)
         rc = tl_image_write(argv[3], &frame, NULL, &err);
     if (rc)
         fprintf(stderr, "render_frame: %s\n", err.message);
-    else
-        printf("frame %ld (t = %.4f s) -> %s\n", frame_number, scene.time, argv[3]);
+    else {
+        char features[512]; /* what the frame drew: "ocean, ..., boat, ..." */
+        tl_feature_describe(tl_render_last_features(render), features, sizeof features);
+        printf("frame %ld (t = %.4f s) -> %s\nfeatures: %s\n", frame_number, scene.time, argv[3],
+               features);
+    }
 
     tl_frame_free(&frame);
     tl_render_close(render);
-    tl_timeline_free(&timeline);
+    tl_cutscene_free(&cutscene);
     return rc ? 1 : 0;
 }

@@ -5,6 +5,7 @@
 
 #include "cli/tl_cli.h"
 #include "gl/tl_gl_context.h"
+#include "gl/tl_gl_window.h"
 
 static const char usage[] =
     "Usage: tideline COMMAND [options]\n"
@@ -40,7 +41,7 @@ int main(int argc, char **argv)
         if (argc > 2 && (strcmp(argv[2], "-v") == 0 || strcmp(argv[2], "--verbose") == 0)) {
             char libs[256];
             tl_gl_library_versions(libs, sizeof libs);
-            printf("%s\n", libs);
+            printf("%s; GLFW %s\n", libs, tl_gl_window_library_version());
         }
         return 0;
     }

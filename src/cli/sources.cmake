@@ -1,12 +1,8 @@
-set(TL_CLI_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/tl_args.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_common.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_still.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_timeline.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_render.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_writer.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_preview.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_compare.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench_report.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_cli_bench_cache.c)
+# The commands: a library of their own so that tests can call them.
+tl_module(cli
+  SOURCES tl_args.c tl_cli_common.c tl_cli_still.c tl_cli_timeline.c tl_cli_render.c
+          tl_cli_writer.c tl_cli_preview.c tl_cli_compare.c tl_cli_bench.c
+          tl_cli_bench_report.c tl_cli_bench_cache.c
+  DEPS core cutscene gl_window image job mesh metrics movie prepare render render_window scene
+       shader timeline waves
+  EXTERNAL Threads::Threads)

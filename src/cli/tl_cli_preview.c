@@ -2,12 +2,12 @@
  * the headless path, follows the file as it is edited, and trades
  * resolution for frame rate while it plays (sharpening to exactly the
  * `still` frame while paused). */
+#include <dirent.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <dirent.h>
 #include <sys/stat.h>
 #include <time.h>
 
@@ -18,6 +18,7 @@
 #include "mesh/tl_mesh.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
+#include "render/tl_render_window.h"
 #include "timeline/tl_parse.h"
 
 #define DEG (M_PI / 180.0)
@@ -128,8 +129,8 @@ static int parse(int argc, char **argv, options *o, int *help, tl_error *err)
             rc = a.value ? tl_args_double("--watch-interval", a.value, &o->watch_interval, err)
                          : TL_ERR_USAGE;
             if (!rc && !(o->watch_interval >= 0.01 && o->watch_interval <= 60.0))
-                rc = tl_error_set(err, TL_ERR_USAGE,
-                                  "--watch-interval: '%s' is outside 0.01..60 s", a.value);
+                rc = tl_error_set(err, TL_ERR_USAGE, "--watch-interval: '%s' is outside 0.01..60 s",
+                                  a.value);
         } else if (tl_args_match(&a, "--screenshot", NULL, true, err)) {
             o->screenshot = a.value;
             rc = a.value ? 0 : TL_ERR_USAGE;
@@ -168,16 +169,26 @@ static const struct {
     tl_keycode key;
     bool shift;
 } key_names[] = {
-    {"space", TL_KEY_SPACE, false},      {"left", TL_KEY_LEFT, false},
-    {"right", TL_KEY_RIGHT, false},      {"shift+left", TL_KEY_LEFT, true},
-    {"shift+right", TL_KEY_RIGHT, true}, {"home", TL_KEY_HOME, false},
-    {"end", TL_KEY_END, false},          {"[", TL_KEY_BRACKET_LEFT, false},
-    {"]", TL_KEY_BRACKET_RIGHT, false},  {"1", TL_KEY_1, false},
-    {"2", TL_KEY_2, false},              {"3", TL_KEY_3, false},
-    {"4", TL_KEY_4, false},              {"c", TL_KEY_C, false},
-    {"p", TL_KEY_P, false},              {"f", TL_KEY_F, false},
-    {"r", TL_KEY_R, false},              {"l", TL_KEY_L, false},
-    {"h", TL_KEY_H, false},              {"?", TL_KEY_QUESTION, false},
+    {"space", TL_KEY_SPACE, false},
+    {"left", TL_KEY_LEFT, false},
+    {"right", TL_KEY_RIGHT, false},
+    {"shift+left", TL_KEY_LEFT, true},
+    {"shift+right", TL_KEY_RIGHT, true},
+    {"home", TL_KEY_HOME, false},
+    {"end", TL_KEY_END, false},
+    {"[", TL_KEY_BRACKET_LEFT, false},
+    {"]", TL_KEY_BRACKET_RIGHT, false},
+    {"1", TL_KEY_1, false},
+    {"2", TL_KEY_2, false},
+    {"3", TL_KEY_3, false},
+    {"4", TL_KEY_4, false},
+    {"c", TL_KEY_C, false},
+    {"p", TL_KEY_P, false},
+    {"f", TL_KEY_F, false},
+    {"r", TL_KEY_R, false},
+    {"l", TL_KEY_L, false},
+    {"h", TL_KEY_H, false},
+    {"?", TL_KEY_QUESTION, false},
     {"esc", TL_KEY_ESCAPE, false},
 };
 
@@ -205,8 +216,8 @@ static int parse_keys(const char *text, tl_key_press *out, int max, tl_error *er
                 break;
             }
         if (!found) {
-            tl_error_set(err, TL_ERR_USAGE, "--keys: unknown key '%s' (see 'tideline preview --help')",
-                         word);
+            tl_error_set(err, TL_ERR_USAGE,
+                         "--keys: unknown key '%s' (see 'tideline preview --help')", word);
             return -1;
         }
         p += len + (end ? 1 : 0);
@@ -357,8 +368,8 @@ static void set_time(preview *p, double t)
 static void print_pose(const preview *p)
 {
     const tl_camera *c = &p->cam;
-    printf("key camera.position\n  %.3fs  %.3f %.3f %.3f\n", p->t, c->position[0],
-           c->position[1], c->position[2]);
+    printf("key camera.position\n  %.3fs  %.3f %.3f %.3f\n", p->t, c->position[0], c->position[1],
+           c->position[2]);
     printf("key camera.yaw\n  %.3fs  %.2fdeg\n", p->t, c->yaw / DEG);
     printf("key camera.pitch\n  %.3fs  %.2fdeg\n", p->t, c->pitch / DEG);
     fflush(stdout);
@@ -651,8 +662,7 @@ int tl_cli_preview(int argc, char **argv)
                 break;
             continue;
         }
-        tl_render_settings settings = {.quality = &p.quality,
-                                       .camera = p.free_cam ? &p.cam : NULL};
+        tl_render_settings settings = {.quality = &p.quality, .camera = p.free_cam ? &p.cam : NULL};
         settings.width = (int)fmax(16.0, floor(width * p.scale + 0.5));
         settings.height = (int)fmax(9.0, floor(height * p.scale + 0.5));
         int sharp = settings.width == width && settings.height == height;

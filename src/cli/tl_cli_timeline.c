@@ -7,6 +7,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "cutscene/tl_cutscene.h"
 #include "mesh/tl_mesh.h"
 #include "prepare/tl_prepare.h"
 #include "timeline/tl_parse.h"
@@ -49,8 +50,8 @@ static const char eval_usage[] =
 /* The warnings of the last timeline loaded (for check --strict). */
 static int last_warnings;
 
-/* Loads a timeline, printing its diagnostics, and its boat's mesh; returns
- * the exit status. */
+/* Loads a timeline with what it references (tl_cutscene), printing its
+ * diagnostics; returns the exit status. */
 int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_mesh *boat)
 {
     tl_diags diags;
@@ -58,38 +59,21 @@ int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl,
     tl_error_clear(&err);
     if (boat)
         memset(boat, 0, sizeof *boat);
-    if (tl_timeline_parse_file(path, tl, &diags, &err) != TL_OK) {
-        if (diags.count)
-            tl_diags_write(&diags, stderr);
-        else
-            tl_cli_print_error(command, &err);
+    tl_cutscene cs;
+    if (tl_cutscene_load(path, &cs, &diags, &err) != TL_OK) {
+        char program[64];
+        snprintf(program, sizeof program, "tideline %s", command);
+        tl_cutscene_report(stderr, program, &diags, &err);
         return 1;
     }
     if (diags.count) /* warnings: likely mistakes; the timeline loads */
         tl_diags_write(&diags, stderr);
     last_warnings = diags.count;
-    if (!tl->boat_path.present)
-        return 0;
-    tl_mesh mesh;
-    int rc = tl->boat_model[0] ? tl_mesh_load(tl->boat_model, &mesh, &err)
-                               : tl_mesh_default_boat(&mesh, &err);
-    if (rc) {
-        /* At the line that named the model, the message naming the file. */
-        if (tl->boat_model_line) {
-            char message[sizeof err.message];
-            snprintf(message, sizeof message, "%s", err.message);
-            tl_error_set_at(&err, err.status, path, tl->boat_model_line, tl->boat_model_column,
-                            "%s", message);
-        }
-        tl_cli_print_error(command, &err);
-        tl_timeline_free(tl);
-        return 1;
-    }
-    tl_timeline_set_boat_bounds(tl, mesh.bounds_min, mesh.bounds_max);
-    if (boat)
-        *boat = mesh;
-    else
-        tl_mesh_free(&mesh);
+    *tl = cs.timeline;
+    if (boat && cs.has_boat)
+        *boat = cs.boat;
+    else if (cs.has_boat)
+        tl_mesh_free(&cs.boat);
     return 0;
 }
 

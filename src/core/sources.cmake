@@ -1,1 +1,1 @@
-set(TL_CORE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_error.c ${CMAKE_CURRENT_LIST_DIR}/tl_clock.c)
+tl_module(core SOURCES tl_error.c tl_clock.c EXTERNAL ${MATH_LIB})

@@ -1,5 +1,7 @@
-set(TL_GL_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_gl_context.c ${CMAKE_CURRENT_LIST_DIR}/tl_gl_window.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_renderer.c ${CMAKE_CURRENT_LIST_DIR}/tl_renderer_prepass.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_renderer_display.c ${CMAKE_CURRENT_LIST_DIR}/tl_renderer_sky.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_renderer_timers.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_renderer_probe.c)
+# The headless GL layer, and the desktop window (GLFW) apart from it: a
+# program that renders headless does not link the window system.
+tl_module(gl
+  SOURCES tl_gl_context.c tl_renderer.c tl_renderer_prepass.c tl_renderer_display.c
+          tl_renderer_sky.c tl_renderer_timers.c tl_renderer_probe.c
+  DEPS core image mesh prepare shader sky EXTERNAL PkgConfig::EPOXY PkgConfig::EGL)
+tl_module(gl_window SOURCES tl_gl_window.c DEPS core EXTERNAL PkgConfig::EPOXY PkgConfig::GLFW)

@@ -4,7 +4,6 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
-#include <GLFW/glfw3.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -210,6 +209,5 @@ const char *tl_gl_context_describe(const tl_gl_context *c)
 void tl_gl_library_versions(char *out, int out_size)
 {
     const char *egl = eglQueryString(EGL_NO_DISPLAY, EGL_VERSION);
-    snprintf(out, (size_t)out_size, "EGL client %s; GLFW %s", egl ? egl : "1.4",
-             glfwGetVersionString());
+    snprintf(out, (size_t)out_size, "EGL client %s", egl ? egl : "1.4");
 }

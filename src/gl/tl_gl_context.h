@@ -24,7 +24,7 @@ int tl_gl_egl_lists_devices(const char *client_exts);
 /* "EGL <platform>: <GL renderer>, OpenGL <version>" for -v logs. */
 const char *tl_gl_context_describe(const tl_gl_context *ctx);
 
-/* Versions of the GL-side libraries (EGL, GLFW) for `--version -v`. */
+/* The EGL client's version for `--version -v` ("EGL client 1.5"). */
 void tl_gl_library_versions(char *out, int out_size);
 
 #endif

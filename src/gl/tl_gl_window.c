@@ -85,20 +85,20 @@ static void on_button(GLFWwindow *window, int button, int action, int mods)
         w->dragging = action == GLFW_PRESS;
 }
 
-int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *title,
-                      tl_error *err)
+int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *title, tl_error *err)
 {
     *out = NULL;
     if (!glfwInit()) {
         const char *why = NULL;
         glfwGetError(&why);
-        return tl_error_set(err, TL_ERR_RUNTIME,
-                            "cannot open a window: no display (DISPLAY=%s, WAYLAND_DISPLAY=%s%s%s); "
-                            "use 'tideline render' or 'tideline still' without a display, or "
-                            "xvfb-run",
-                            getenv("DISPLAY") ? getenv("DISPLAY") : "unset",
-                            getenv("WAYLAND_DISPLAY") ? getenv("WAYLAND_DISPLAY") : "unset",
-                            why ? ": " : "", why ? why : "");
+        return tl_error_set(
+            err, TL_ERR_RUNTIME,
+            "cannot open a window: no display (DISPLAY=%s, WAYLAND_DISPLAY=%s%s%s); "
+            "use 'tideline render' or 'tideline still' without a display, or "
+            "xvfb-run",
+            getenv("DISPLAY") ? getenv("DISPLAY") : "unset",
+            getenv("WAYLAND_DISPLAY") ? getenv("WAYLAND_DISPLAY") : "unset", why ? ": " : "",
+            why ? why : "");
     }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -115,8 +115,8 @@ int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *tit
         glfwGetError(&why);
         free(w);
         glfwTerminate();
-        return tl_error_set(err, TL_ERR_RUNTIME, "cannot open a %dx%d OpenGL 3.3 window: %s",
-                            width, height, why ? why : "unknown reason");
+        return tl_error_set(err, TL_ERR_RUNTIME, "cannot open a %dx%d OpenGL 3.3 window: %s", width,
+                            height, why ? why : "unknown reason");
     }
     glfwSetWindowUserPointer(w->window, w);
     glfwSetKeyCallback(w->window, on_key);
@@ -193,4 +193,9 @@ double tl_gl_window_time(void)
 const char *tl_gl_window_describe(const tl_gl_window *w)
 {
     return w->description;
+}
+
+const char *tl_gl_window_library_version(void)
+{
+    return glfwGetVersionString();
 }

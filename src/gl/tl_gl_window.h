@@ -14,11 +14,33 @@ typedef struct tl_gl_window tl_gl_window;
 /* The keys the preview knows. */
 typedef enum tl_keycode {
     TL_KEY_NONE = 0,
-    TL_KEY_SPACE, TL_KEY_LEFT, TL_KEY_RIGHT, TL_KEY_UP, TL_KEY_DOWN, TL_KEY_HOME, TL_KEY_END,
-    TL_KEY_BRACKET_LEFT, TL_KEY_BRACKET_RIGHT,
-    TL_KEY_1, TL_KEY_2, TL_KEY_3, TL_KEY_4,
-    TL_KEY_C, TL_KEY_P, TL_KEY_F, TL_KEY_R, TL_KEY_H, TL_KEY_L, TL_KEY_QUESTION, TL_KEY_ESCAPE,
-    TL_KEY_W, TL_KEY_A, TL_KEY_S, TL_KEY_D, TL_KEY_Q, TL_KEY_E,
+    TL_KEY_SPACE,
+    TL_KEY_LEFT,
+    TL_KEY_RIGHT,
+    TL_KEY_UP,
+    TL_KEY_DOWN,
+    TL_KEY_HOME,
+    TL_KEY_END,
+    TL_KEY_BRACKET_LEFT,
+    TL_KEY_BRACKET_RIGHT,
+    TL_KEY_1,
+    TL_KEY_2,
+    TL_KEY_3,
+    TL_KEY_4,
+    TL_KEY_C,
+    TL_KEY_P,
+    TL_KEY_F,
+    TL_KEY_R,
+    TL_KEY_H,
+    TL_KEY_L,
+    TL_KEY_QUESTION,
+    TL_KEY_ESCAPE,
+    TL_KEY_W,
+    TL_KEY_A,
+    TL_KEY_S,
+    TL_KEY_D,
+    TL_KEY_Q,
+    TL_KEY_E,
     TL_KEY_COUNT
 } tl_keycode;
 
@@ -29,8 +51,7 @@ typedef struct tl_key_press {
 
 /* Opens a window of the given size; without a display the message names
  * DISPLAY / WAYLAND_DISPLAY and suggests `tideline render`. */
-int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *title,
-                      tl_error *err);
+int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *title, tl_error *err);
 void tl_gl_window_close(tl_gl_window *w);
 
 /* Processes events; fills up to `max` key presses since the last call. */
@@ -44,6 +65,8 @@ void tl_gl_window_set_title(tl_gl_window *w, const char *title);
 void tl_gl_window_swap(tl_gl_window *w);
 /* Seconds on a monotonic clock. */
 double tl_gl_window_time(void);
+/* GLFW's version string, for `--version -v`. */
+const char *tl_gl_window_library_version(void);
 /* "<renderer>, OpenGL <version>" of the window's context. */
 const char *tl_gl_window_describe(const tl_gl_window *w);
 

@@ -1,5 +1,2 @@
-set(TL_IMAGE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_frame.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_atomic.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_exr.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_png.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_image_io.c)
+tl_module(image SOURCES tl_frame.c tl_atomic.c tl_exr.c tl_png.c tl_image_io.c DEPS core
+  EXTERNAL tl_openexr_core PkgConfig::PNG Threads::Threads)

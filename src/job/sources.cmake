@@ -1,1 +1,1 @@
-set(TL_JOB_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_job.c)
+tl_module(job SOURCES tl_job.c DEPS core)

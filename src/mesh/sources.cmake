@@ -1,1 +1,1 @@
-set(TL_MESH_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_mesh.c ${CMAKE_CURRENT_LIST_DIR}/tl_mesh_boat.c)
+tl_module(mesh SOURCES tl_mesh.c tl_mesh_boat.c DEPS core EXTERNAL PkgConfig::ASSIMP)

@@ -1,1 +1,1 @@
-set(TL_METRICS_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_metrics.c)
+tl_module(metrics SOURCES tl_metrics.c EXTERNAL ${MATH_LIB})

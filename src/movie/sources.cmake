@@ -1,1 +1,1 @@
-set(TL_MOVIE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_movie.c)
+tl_module(movie SOURCES tl_movie.c DEPS core image)

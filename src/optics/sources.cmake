@@ -1,1 +1,1 @@
-set(TL_OPTICS_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_optics.c)
+tl_module(optics SOURCES tl_optics.c DEPS scene)

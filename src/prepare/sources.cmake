@@ -1,2 +1,2 @@
-set(TL_PREPARE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_prepare.c
-                       ${CMAKE_CURRENT_LIST_DIR}/tl_prepare_rect.c)
+tl_module(prepare SOURCES tl_prepare.c tl_prepare_rect.c DEPS core optics scene sky waves
+  EXTERNAL PkgConfig::CGLM)

@@ -1,1 +1,3 @@
-set(TL_RENDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_render.c)
+tl_module(render SOURCES tl_render.c
+  DEPS core cutscene gl image mesh prepare scene shader sky timeline waves)
+tl_module(render_window SOURCES tl_render_window.c DEPS render gl gl_window)

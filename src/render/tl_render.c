@@ -1,4 +1,4 @@
-#include "tl_render.h"
+#include "render/tl_render.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -6,26 +6,11 @@
 
 #include "core/tl_clock.h"
 #include "gl/tl_gl_context.h"
-#include "gl/tl_gl_window.h"
 #include "gl/tl_renderer.h"
 #include "prepare/tl_prepare.h"
+#include "render/tl_render_internal.h"
 #include "sky/tl_sky.h"
 #include "waves/tl_waves.h"
-
-struct tl_render {
-    tl_gl_context *context; /* headless, or */
-    tl_gl_window *window;   /* a desktop window */
-    tl_renderer *renderer;
-    tl_waves waves;
-    tl_ocean waves_ocean; /* the parameters `waves` was built from */
-    int waves_valid;
-    unsigned last_features; /* of the last frame, over all its passes */
-    tl_sky_luts *sky;       /* the physical sky's tables, rebuilt when they change */
-    double render_seconds, readback_seconds; /* of the last timeline frame */
-    tl_render_progress_fn progress;          /* tl_render_set_progress */
-    void *progress_ctx;
-    double progress_done, progress_total; /* pixel samples of the frame being drawn */
-};
 
 /* The renderer's pixel samples as the share of the frame drawn. The
  * sky's rows cost next to nothing: they leave the count, so that the
@@ -55,10 +40,8 @@ static void progress_begin(tl_render *r, double samples)
     r->progress_total = samples;
 }
 
-/* The renderer on whichever context `open_context` made current; headless
- * and windowed differ only in that step. */
-static int open_with(tl_render **out, const tl_shader_lib *lib, tl_error *err,
-                     int (*open_context)(tl_render *r, void *arg, tl_error *err), void *arg)
+int tl_render_open_with(tl_render **out, const tl_shader_lib *lib, tl_error *err,
+                        int (*open_context)(tl_render *r, void *arg, tl_error *err), void *arg)
 {
     *out = NULL;
     tl_render *r = calloc(1, sizeof *r);
@@ -87,30 +70,7 @@ static int open_headless(tl_render *r, void *arg, tl_error *err)
 
 int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err)
 {
-    return open_with(out, lib, err, open_headless, NULL);
-}
-
-typedef struct window_args {
-    int width, height;
-    const char *title;
-} window_args;
-
-static int open_window(tl_render *r, void *arg, tl_error *err)
-{
-    const window_args *w = arg;
-    return tl_gl_window_open(&r->window, w->width, w->height, w->title, err);
-}
-
-int tl_render_open_window(tl_render **out, const tl_shader_lib *lib, int width, int height,
-                          const char *title, tl_error *err)
-{
-    window_args w = {width, height, title};
-    return open_with(out, lib, err, open_window, &w);
-}
-
-tl_gl_window *tl_render_window(tl_render *r)
-{
-    return r->window;
+    return tl_render_open_with(out, lib, err, open_headless, NULL);
 }
 
 int tl_render_reload_shaders(tl_render *r, tl_error *err)
@@ -123,22 +83,13 @@ int tl_render_use_shaders(tl_render *r, const tl_shader_lib *lib, tl_error *err)
     return tl_renderer_use_shaders(r->renderer, lib, err);
 }
 
-int tl_render_present(tl_render *r, tl_error *err)
-{
-    int w, h;
-    tl_gl_window_size(r->window, &w, &h);
-    int rc = tl_renderer_present(r->renderer, w, h, err);
-    if (!rc)
-        tl_gl_window_swap(r->window);
-    return rc;
-}
-
 void tl_render_close(tl_render *r)
 {
     if (!r)
         return;
     tl_renderer_destroy(r->renderer);
-    tl_gl_window_close(r->window);
+    if (r->window)
+        r->close_window(r->window);
     tl_gl_context_destroy(r->context);
     free(r->sky);
     free(r);
@@ -149,6 +100,11 @@ int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err)
     return tl_renderer_set_mesh(r->renderer, mesh, err);
 }
 
+int tl_render_use_cutscene(tl_render *r, const tl_cutscene *cs, tl_error *err)
+{
+    return tl_render_set_boat(r, cs->has_boat ? &cs->boat : NULL, err);
+}
+
 unsigned tl_render_last_features(const tl_render *r)
 {
     return r->last_features;
@@ -156,7 +112,7 @@ unsigned tl_render_last_features(const tl_render *r)
 
 const char *tl_render_describe(const tl_render *r)
 {
-    return r->window ? tl_gl_window_describe(r->window) : tl_gl_context_describe(r->context);
+    return r->window ? r->describe_window(r->window) : tl_gl_context_describe(r->context);
 }
 
 /* The octave table depends only on the ocean parameters: rebuild it when

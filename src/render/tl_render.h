@@ -11,6 +11,7 @@
 #define TL_RENDER_H
 
 #include "core/tl_error.h"
+#include "cutscene/tl_cutscene.h"
 #include "image/tl_frame.h"
 #include "mesh/tl_mesh.h"
 #include "scene/tl_scene.h"
@@ -20,19 +21,11 @@
 typedef struct tl_render tl_render;
 
 int tl_render_open(tl_render **out, const tl_shader_lib *lib, tl_error *err);
-/* The same pipeline drawing into a desktop window (GLFW) of the given size:
- * the live preview. tl_render_close closes the window too. */
-struct tl_gl_window;
-int tl_render_open_window(tl_render **out, const tl_shader_lib *lib, int width, int height,
-                          const char *title, tl_error *err);
-struct tl_gl_window *tl_render_window(tl_render *r);
 /* Compiles the shaders again on the next frame (their files changed). */
 int tl_render_reload_shaders(tl_render *r, tl_error *err);
 /* Renders with the shaders of `lib` from now on (compiled again when they
  * are not the ones in use); on failure the old ones stay. */
 int tl_render_use_shaders(tl_render *r, const tl_shader_lib *lib, tl_error *err);
-/* Shows the last frame rendered (letterboxed) and swaps the window. */
-int tl_render_present(tl_render *r, tl_error *err);
 void tl_render_close(tl_render *r);
 
 /* "EGL surfaceless: llvmpipe (...), OpenGL 4.5 (Core Profile) ..." */
@@ -41,6 +34,9 @@ const char *tl_render_describe(const tl_render *r);
 /* The boat's mesh (the timeline's model or the built-in boat), uploaded
  * once; frames with a boat in view draw it. NULL removes it. */
 int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err);
+/* Uploads what a loaded cutscene references (its boat's mesh, or none), so
+ * that its frames draw as `tideline still` draws them. */
+int tl_render_use_cutscene(tl_render *r, const tl_cutscene *cs, tl_error *err);
 
 /* The shader features (tl_feature bits) of the last frame rendered: the
  * union over its passes. tl_feature_describe turns them into words. */

@@ -1,1 +1,1 @@
-set(TL_SCENE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_scene.c ${CMAKE_CURRENT_LIST_DIR}/tl_quality.c)
+tl_module(scene SOURCES tl_scene.c tl_quality.c DEPS core)

@@ -1,1 +1,2 @@
-set(TL_SHADER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_shader_lib.c)
+# The shaders are embedded into the library (cmake/embed.cmake).
+tl_module(shader SOURCES tl_shader_lib.c ${TL_EMBEDDED_SHADERS_C} DEPS core)

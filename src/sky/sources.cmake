@@ -1,1 +1,1 @@
-set(TL_SKY_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_sky.c)
+tl_module(sky SOURCES tl_sky.c DEPS scene)

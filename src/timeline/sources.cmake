@@ -1,15 +1,5 @@
-set(TL_TIMELINE_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/tl_ease.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_curve.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_curve_prepare.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_curve_smooth.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_path.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_channels.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_timeline.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_float.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_parse.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_diag.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_values.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_checks.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_links.c
-  ${CMAKE_CURRENT_LIST_DIR}/tl_parse_keys.c)
+tl_module(timeline
+  SOURCES tl_ease.c tl_curve.c tl_curve_prepare.c tl_curve_smooth.c tl_path.c tl_channels.c
+          tl_timeline.c tl_float.c tl_parse.c tl_parse_diag.c tl_parse_values.c tl_parse_checks.c
+          tl_parse_links.c tl_parse_keys.c
+  DEPS core scene waves)

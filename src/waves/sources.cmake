@@ -1,1 +1,1 @@
-set(TL_WAVES_SOURCES ${CMAKE_CURRENT_LIST_DIR}/tl_waves.c ${CMAKE_CURRENT_LIST_DIR}/tl_giant.c)
+tl_module(waves SOURCES tl_waves.c tl_giant.c DEPS scene)

@@ -1,0 +1,47 @@
+/* tl_cutscene: a timeline with everything it references, loaded as one.
+ *
+ * A timeline names files of its own (the boat's model today; textures and
+ * sound later). Programs that render a timeline load it through here, so
+ * that a library user draws the same frame as `tideline still`: the CLI's
+ * commands and examples/render_frame.c both do.
+ *
+ *     tl_cutscene cs;
+ *     tl_diags diags;
+ *     if (tl_cutscene_load(path, &cs, &diags, &err))
+ *         tl_cutscene_report(stderr, "myprog", &diags, &err);   // and fail
+ *     ...  tl_render_use_cutscene(render, &cs, &err);  ...
+ *     tl_cutscene_free(&cs);
+ */
+#ifndef TL_CUTSCENE_H
+#define TL_CUTSCENE_H
+
+#include <stdio.h>
+
+#include "core/tl_error.h"
+#include "mesh/tl_mesh.h"
+#include "timeline/tl_parse.h"
+#include "timeline/tl_timeline.h"
+
+typedef struct tl_cutscene {
+    tl_timeline timeline;
+    int has_boat; /* the timeline draws a boat: `boat` holds its mesh */
+    tl_mesh boat; /* the timeline's model (boat.model), or the built-in boat */
+} tl_cutscene;
+
+/* Parses the timeline at `path` and loads every file it references. On
+ * success (TL_OK) `diags` may still hold warnings (likely mistakes; the
+ * timeline loads) and the timeline knows its boat's bounds. On failure
+ * nothing is left allocated: `diags` holds the parser's errors, or `err`
+ * the failure, a model's at the timeline's line that named it. */
+int tl_cutscene_load(const char *path, tl_cutscene *out, tl_diags *diags, tl_error *err);
+
+/* Prints what a load said to `stream`: every diagnostic with its line and
+ * a caret (tl_diags_write); when there are none and err holds a failure,
+ * "file:line:col: error: message", or "program: message" without a
+ * location. */
+void tl_cutscene_report(FILE *stream, const char *program, const tl_diags *diags,
+                        const tl_error *err);
+
+void tl_cutscene_free(tl_cutscene *cs);
+
+#endif
