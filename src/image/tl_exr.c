@@ -193,8 +193,29 @@ static void bind_encode_channels(exr_encode_pipeline_t *enc, const tl_frame *fra
     }
 }
 
+/* OpenEXRCore (Debian 12's 3.1, and later ones) keeps a ZIP chunk's zlib
+ * bytes when they come out exactly as long as the packed pixels; a reader
+ * takes a chunk of that size for uncompressed pixels and decodes garbage
+ * (values of any size, Inf). Small chunks, as in a frame one pixel wide,
+ * meet it often. The format stores the packed pixels in that case; so do
+ * we, around the library's compressor. */
+typedef struct zip_guard {
+    exr_result_t (*compress)(exr_encode_pipeline_t *enc);
+} zip_guard;
+
+static exr_result_t compress_guarded(exr_encode_pipeline_t *enc)
+{
+    const zip_guard *guard = enc->encoding_user_data;
+    exr_result_t r = guard->compress(enc);
+    if (r == EXR_ERR_SUCCESS && enc->compressed_bytes == enc->packed_bytes &&
+        enc->compressed_buffer && enc->compressed_buffer != enc->packed_buffer)
+        memcpy(enc->compressed_buffer, enc->packed_buffer, enc->packed_bytes);
+    return r;
+}
+
 static exr_result_t write_chunks(exr_context_t ctx, const tl_frame *frame)
 {
+    zip_guard guard = {NULL};
     int32_t lines = 0;
     exr_result_t r = exr_get_scanlines_per_chunk(ctx, 0, &lines);
     if (r != EXR_ERR_SUCCESS)
@@ -221,6 +242,11 @@ static exr_result_t write_chunks(exr_context_t ctx, const tl_frame *frame)
             r = exr_encoding_choose_default_routines(ctx, 0, &enc);
             if (r != EXR_ERR_SUCCESS)
                 break;
+            if (enc.compress_fn) {
+                guard.compress = enc.compress_fn;
+                enc.compress_fn = compress_guarded;
+                enc.encoding_user_data = &guard;
+            }
         }
         r = exr_encoding_run(ctx, 0, &enc);
     }
