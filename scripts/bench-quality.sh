@@ -33,7 +33,9 @@ cache=(--reference-cache "$scratch/reference")
 
 # block NAME FILE: replaces the lines between
 #   <!-- bench-quality:begin NAME --> and <!-- bench-quality:end NAME -->
-# in $doc with FILE. A page without the markers is left alone, with a warning.
+# in $doc with FILE. A page without the markers is left alone, with a warning:
+# every table this script prints has a NAME (to NAME below), and the page
+# keeps those it has markers for.
 block() {
   local name=$1 file=$2
   if ! grep -qF "<!-- bench-quality:begin $name -->" "$doc" ||
@@ -185,7 +187,8 @@ echo "## Pass by pass: each preset's median frame on the targets' scenes (ms)"
 for t in calm voyage; do
   echo
   "$tl" bench "$scratch/$t.tl" --size $size --frames 60,180 --repeat 3 -q --time-only --passes \
-    --presets draft,preview,final,seed | sed -n '/^| preset | boat/,$p'
+    --presets draft,preview,final,seed | sed -n '/^| preset | boat/,$p' | to passes-$t
+  block passes-$t "$scratch/b-passes-$t"
 done
 echo
 echo "\`tideline render\` of the seed's scene to PNG (render and write overlap), steady"
@@ -200,25 +203,27 @@ steady() {
   s=$(date +%s.%N); "$tl" render "$tlf" --quality $1 --frames $f-$((f + n + 3)) --size $size -q -o "$scratch/e2e/b_####.png" 2>/dev/null; b=$(echo "$(date +%s.%N) - $s" | bc -l)
   echo "($b - $a) * 1000 / $n" | bc -l
 }
-echo "| preset | render to PNG (ms/frame) | the shader (ms/frame) | ratio |"
-echo "| --- | ---: | ---: | ---: |"
+printf '%s\n' "| preset | render to PNG (ms/frame) | the shader (ms/frame) | ratio |" \
+  "| --- | ---: | ---: | ---: |" | to render-png
 for p in draft preview final seed; do
   h1=$(shader); e=$(steady $p); h2=$(shader)
   printf '| %s | %.1f | %.1f | %.2fx |\n' $p "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
-    "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
+    "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)" | to render-png
 done
+block render-png "$scratch/b-render-png"
 echo
 echo "The same on each target scene (seed sky), frames 174-193 less 170-173:"
 echo
-echo "| preset | scene | render to PNG (ms/frame) | the shader (ms/frame) | ratio |"
-echo "| --- | --- | ---: | ---: | ---: |"
+printf '%s\n' "| preset | scene | render to PNG (ms/frame) | the shader (ms/frame) | ratio |" \
+  "| --- | --- | ---: | ---: | ---: |" | to render-png-scenes
 for p in draft preview; do
   for t in calm voyage; do
     h1=$(shader); e=$(steady $p "$scratch/$t.tl" 170 20); h2=$(shader)
     printf '| %s | %s | %.1f | %.1f | %.2fx |\n' $p $t "$e" "$(echo "($h1 + $h2) / 2" | bc -l)" \
-      "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)"
+      "$(echo "$e * 2 / ($h1 + $h2)" | bc -l)" | to render-png-scenes
   done
 done
+block render-png-scenes "$scratch/b-render-png-scenes"
 echo
 echo "## Presets on the bundled cutscenes ($size, 2 frames each)"
 echo
@@ -249,13 +254,14 @@ trap 'rm -rf "$scratch" "$general"' EXIT
     'set giant.center 0 5000' 'set fog.density 0.000001'; } >"$general"
 for t in timelines/calm.tl "$general"; do
   r=$("$tl" render "$t" --frames 0-11 --size $size -o "$scratch/spec/f_####.png" -v 2>&1)
-  echo "- $(basename "$t"): $(sed -nE 's/.*\(([0-9]+) ms\/frame\).*/\1/p' <<<"$r") ms/frame, features: $(sed -nE 's/.*frame 0: features: (.*)/\1/p' <<<"$r")"
+  echo "- $(basename "$t"): $(sed -nE 's/.*\(([0-9]+) ms\/frame\).*/\1/p' <<<"$r") ms/frame, features: $(sed -nE 's/.*frame 0: features: (.*)/\1/p' <<<"$r")" |
+    to specialisation
 done
+block specialisation "$scratch/b-specialisation"
 echo
 echo "## tideline render, end to end ($size, calm.tl, 12 frames, final)"
 echo
-echo "| output | binary | ms/frame |"
-echo "| --- | --- | ---: |"
+printf '%s\n' "| output | binary | ms/frame |" "| --- | --- | ---: |" | to outputs
 for bin in "$before" "$tl"; do
   [ -n "$bin" ] || continue
   label=$([ "$bin" = "$tl" ] && echo now || echo before)
@@ -267,9 +273,10 @@ for bin in "$before" "$tl"; do
     esac
     r=$("$bin" render timelines/calm.tl --frames 0-11 --size $size --quality final "${args[@]}" -q 2>&1 |
       sed -nE 's/.*\(([0-9]+) ms\/frame\).*/\1/p')
-    echo "| $kind | $label | $r |"
+    echo "| $kind | $label | $r |" | to outputs
   done
 done
+block outputs "$scratch/b-outputs"
 echo
 echo "## Is reference converged? (320x180, the middle frame of each cutscene)"
 echo
