@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The GPU table of docs/quality.md: presets against `reference` and against
-# seed 002's shader at 1920x1080 on a machine with a GPU (a benchmark, not a
-# test). Prints Markdown; writes the bench CSVs and a few frames to OUT.
+# The GPU figures docs/quality.md sums up ("On a GPU"): presets against
+# `reference` and against seed 002's shader at 1920x1080 on a machine with a
+# GPU (a benchmark, not a test). Prints Markdown; writes the bench CSVs and
+# a few frames to OUT.
 #
 #   scripts/bench-gpu.sh [OUT_FOLDER] [WxH]
 #

@@ -1,9 +1,8 @@
 // The pixel filter (quality.pixel_filter): a 3x3 Gaussian over the display
 // image, whose values are already tonemapped. Averaging after the tonemap
 // bounds what one aliased glint adds to its neighbours (the same filter
-// over radiance came out 1 dB further from `reference`), and a pass of its
-// own tonemaps each pixel once, not nine times (14 ms of a 640x360 frame
-// on llvmpipe).
+// over radiance came out further from `reference`), and a pass of its
+// own tonemaps each pixel once, not nine times.
 //
 // The kernel is separable, (a, 1 - 2a, a) along each axis, and bilinear
 // taps give it exactly from four reads instead of nine: along one axis,

@@ -6,9 +6,9 @@
 // level's square as a lit box on the dark face under a sun behind the
 // giant wave). Even the finest level's B-spline, two output pixels a
 // texel and smooth, is as good as whole at a quarter of the resolution
-// once the display pass reads this image bilinearly: 61 dB from the image
-// at half resolution, and the same PSNR against `reference`, for 3-4 ms
-// less a 640x360 frame on llvmpipe. Here, not in the display pass: its
+// once the display pass reads this image bilinearly: nearly the image at
+// half resolution, as close to `reference`, for a quarter of the pixels'
+// work. Here, not in the display pass: its
 // taps per pixel cost a sixteenth as much at a sixteenth of the pixels.
 
 uniform sampler2D u_hdr;   // the scene's radiance (radiance.glsl), with its mip chain

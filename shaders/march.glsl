@@ -281,7 +281,7 @@ float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
 // llvmpipe runs a loop body's code for every pixel, hit or not. It is
 // compiled only for presets that refine (TL_FEATURE_REFINE): a loop that
 // runs zero times still costs llvmpipe one pass of its body, a surface
-// evaluation for every pixel (8% of a `final` frame).
+// evaluation for every pixel.
 float march_end(vec3 ray, bool hit, float t_start, float t_last, float above_last, float t,
                 float above)
 {

@@ -5,7 +5,7 @@
 // the eye, single scattering through the transmittance table plus the
 // multiple-scattering table's psi_ms, and the ground's light where the ray
 // meets it. Rebuilt whenever the sun or the camera's height step moves: on
-// the CPU that was 17-22 ms a frame on two cores, the GPU waiting.
+// the CPU that was a large share of a frame on two cores, the GPU waiting.
 //
 // In float, radii near 6.4e6 m keep about half a metre: every quantity that
 // is a small difference of radii (heights, r^2 - g^2, the distances to the

@@ -19,18 +19,16 @@ float surface_height(vec2 p, int octaves, float footprint)
 // ripples where the ray does not meet them. One Newton step on the finer
 // surface's height, with its exact gradient, moves t onto it, and the
 // normal is then evaluated where the ray meets the surface it describes
-// (quality.polish; docs/quality-history.md, Round 9: 2.2 dB closer to `reference`
-// at `preview`). Held where a step cannot be trusted: a ray within
+// (quality.polish: the largest gain against `reference` at `preview`
+// and `final`). Held where a step cannot be trusted: a ray within
 // TL_POLISH_GRAZE of the surface's tangent, whose step could leap to
 // another wave, and steps beyond TL_POLISH_MOST of t (the finer octaves
 // move the surface by centimetres; a longer step is a bad linearisation).
 // The step's height sums TL_POLISH_EXTRA octaves past the march's, not
 // all of the normals': the octaves beyond those move the surface by a
-// millimetre or two (test_polish), and only the normal needs them. On
-// calm + voyage (seed sky, frames 60 and 180) 9 more octaves brought
-// `preview` 0.02 dB and `final` 0.07 dB closer to `reference` than all 26
-// and 36 did, and took 2-4% off their frames; 6 more cost `preview` 0.07
-// dB, 3 more 0.6 dB (docs/quality-history.md, Round 14).
+// millimetre or two (test_polish), and only the normal needs them. 9 more
+// octaves came as close to `reference` as all of the normals' and cost
+// less; 6 or 3 lost accuracy.
 #define TL_POLISH_GRAZE 0.02
 #define TL_POLISH_MOST 0.01
 #define TL_POLISH_EXTRA 9

@@ -3,8 +3,8 @@
 // an image as wide as the output and as high as the scene. The display
 // pass (present.frag) then runs the same kernel along y. The kernel is
 // separable, so the two make what sixteen taps a pixel did in one pass,
-// for four taps at half the pixels and four: `draft`'s display pass on
-// llvmpipe took 8-9 ms of a 640x360 frame that way. Each axis holds its
+// for four taps at half the pixels and four: sixteen taps were most of
+// `draft`'s display pass on llvmpipe. Each axis holds its
 // result between the two nearest texels (upscale_hold): the kernel's
 // negative lobes rang around a sun glint hundreds of times brighter than
 // the water, a dark ring with bright corners.

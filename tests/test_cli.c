@@ -421,7 +421,7 @@ static void test_lod_close_up(void)
  * filter: the display image's 3x3 Gaussian, against none. Frames 60 and
  * 180 of two bundled cutscenes at 160x90, where a pixel is wide and much
  * is faded; the mean over the four frames, since at this size a few sun
- * glints moved one frame's score by 0.2 dB. */
+ * glints moved one frame's score by as much as the bounds. */
 static void test_filtered_shading(void)
 {
     const char *names[2] = {"voyage.tl", "giant_wave.tl"}, *frames[2] = {"60", "180"};
@@ -475,8 +475,8 @@ static void test_filtered_shading(void)
         printf("mean: %.2f dB final, %.2f without filtered shading, %.2f without the pixel "
                "filter\n",
                sum[0] / 4, sum[1] / 4, sum[2] / 4);
-        /* Measured +1.30 and +0.77 dB (voyage alone +0.18 and +1.07,
-         * giant_wave +2.43 and +0.47). */
+        /* Both gain well above these bounds; per scene they vary
+         * (voyage gains little from filtered shading). */
         CHECK(sum[0] / 4 > sum[1] / 4 + 0.3);
         CHECK(sum[0] / 4 > sum[2] / 4 + 0.2);
     }

@@ -15,7 +15,7 @@ max_kills=16 # then the last run goes uninterrupted, so the test always ends
 work=$(mktemp -d /tmp/tideline-soak-XXXXXX)
 trap 'rm -rf "$work"' EXIT
 # calm.tl's turning camera, but a fixed sun: a moving sun rebuilds the sky's
-# tables every frame (100 ms here), which would leave time for few kills.
+# tables every frame, which would leave time for few kills.
 timeline=$work/soak.tl
 cat >"$timeline" <<'TL'
 tideline 1
@@ -62,7 +62,7 @@ while :; do
     fi
     # Up to a third of the reference run (so a run rarely finishes before
     # several kills, however fast the machine): some kills land in start-up,
-    # most between or inside frames (5 to 15 ms each).
+    # most between or inside frames (milliseconds each).
     delay_ms=$((100 + RANDOM % (ref_ms / 3 + 1)))
     signal=$([ $((kills % 2)) -eq 0 ] && echo KILL || echo TERM)
     waited=0

@@ -378,8 +378,8 @@ typedef struct preset_times {
  * shaders compiles them again). In the first round the frame is
  * then encoded `rounds` times and scored against the reference. The
  * encodes come after the timed render, not between renders: a GPU left
- * idle while the CPU encodes lowers its clock (an H100 timed 16 ms a frame
- * back to back and up to 77 ms with encodes in between). */
+ * idle while the CPU encodes lowers its clock, and its next render is
+ * several times slower. */
 static int measure_shot(bench_state *s, const tl_quality *q, const tl_shader_lib *lib,
                         const char *name, int k, int r, int rounds, preset_times *pt,
                         tl_bench_row *row, tl_frame *frame, tl_error *err)

@@ -32,8 +32,7 @@ GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err)
 /* Reads plane p (a TL_PLANE_*) of the last display pass into dst: a client
  * pointer, or an offset into the bound pixel-pack buffer. The display pass
  * wrote it top row first (present.frag), so its rows arrive in image order:
- * flipping GL's bottom-up rows here took as long as the transfer (3.5 ms
- * of a 1920x1080 float plane's). */
+ * flipping GL's bottom-up rows here took as long as the transfer. */
 static void read_plane(const tl_renderer *r, unsigned p, void *dst)
 {
     int filtered = p == TL_PLANE_DISPLAY && r->display_filtered;
@@ -65,7 +64,7 @@ static int ensure_pass(tl_renderer *r, target *t, int w, int h, GLuint *program,
  * scene), each the 2x2 mean of the one above, by a pass per level
  * (shaders/mip.frag). glGenerateMipmap leaves the filter to the driver:
  * where a size is odd llvmpipe's lost most of the coarse levels' light and
- * NVIDIA's kept it, so the two drivers' frames differed by 31-34 dB
+ * NVIDIA's kept it, so the two drivers' frames differed visibly
  * (docs/rendering.md, "Glare"). While a level is drawn the texture's base
  * and top level are the one above it, so the pass reads no level it
  * writes. */
@@ -131,7 +130,7 @@ static int glare_pass(tl_renderer *r, tl_error *err)
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
     /* glare.frag reads whole levels (an integer lod): a blend between two
      * levels would weigh the second by 0, and llvmpipe would fetch it
-     * anyway (3-4 ms of a 640x360 frame). */
+     * anyway, for nothing. */
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     /* Level 0 too is read bilinearly (a half-size scene's first glare
      * level, u_glare_shift): at lod 0 GL magnifies, and the target's own

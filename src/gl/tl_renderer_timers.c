@@ -1,8 +1,8 @@
 /* Where a frame's time goes: each pass fenced with glFinish on both sides
  * and timed by the clock between the fences, summed per kind of pass
  * (tideline bench --passes). Not timer queries: llvmpipe runs a pass's
- * draws when a later pass reads its target, and its GL_TIME_ELAPSED gave
- * a `seed` frame's 105 ms ocean pass as 0.07 ms even fenced. A GPU idles
+ * draws when a later pass reads its target, so its GL_TIME_ELAPSED gives
+ * a long pass as near zero even fenced. A GPU idles
  * at each fence, so a frame takes a little longer while timing is on. */
 #include "core/tl_clock.h"
 #include "gl/tl_renderer_internal.h"

@@ -37,13 +37,13 @@ typedef struct tl_meta {
 
 /* zlib level of PNGs when the options leave it 0: fast. Level 1 encodes
  * a 640x360 ocean frame several times faster than zlib's default 6, for
- * files about a tenth larger (docs/quality.md has the measurement). */
+ * files about a tenth larger. */
 #define TL_PNG_COMPRESSION_DEFAULT 1
 
 /* zlib level of EXR's ZIP chunks when the options leave it 0. OpenEXR's
- * own default, 6, took 576 ms for a 1920x1080 ocean frame on a 2-core
- * machine; 4 takes 289 ms for files 1.9% larger, 1 takes 247 ms for 11%
- * larger (docs/rendering.md). */
+ * own default, 6, takes about twice as long as 4 for files barely
+ * smaller; 1 is a little faster than 4 for files a tenth larger
+ * (docs/rendering.md). */
 #define TL_EXR_COMPRESSION_DEFAULT 4
 
 typedef struct tl_image_options {

@@ -66,8 +66,8 @@ static unsigned int quantize(float v, unsigned int max)
     if (v >= 1.0f)
         return max;
     /* v·max + 0.5 is positive here, so truncation is floor(), without
-     * floor()'s libm call per sample: 0.6 ms of a 640x360 frame's 7.8-8.5
-     * ms encode (the rest is deflate, ~60%, and libpng's row filter). */
+     * floor()'s libm call per sample, a visible share of the encode (most
+     * of the rest is deflate and libpng's row filter). */
     return (unsigned int)((double)v * max + 0.5);
 }
 
@@ -110,18 +110,16 @@ static int encode_png(png_job *io, const tl_frame *frame, int bits, int dither, 
     png_set_write_fn(png, io, write_cb, flush_cb);
     png_set_compression_level(png, level);
     /* At the fast levels one filter (Sub) for every row: libpng's adaptive
-     * choice tries all five per row, which cost 40% more time than Sub and
-     * gave 2% larger files on the cutscenes' frames. The small-file levels
+     * choice tries all five per row, which cost more time than Sub and
+     * gave no smaller files on the cutscenes' frames. The small-file levels
      * keep the search. */
     if (level <= 3) {
         png_set_filter(png, 0, PNG_FILTER_SUB);
         /* Run-length matches only: after Sub a frame's rows are mostly
          * small repeated differences, which RLE finds as well as deflate's
-         * fast search. It encoded the cutscenes' frames 5-10% faster and
-         * 5-7% smaller (one frame of four 2% larger). Dithered 8-bit rows
-         * have no runs to find: Huffman coding alone encoded the five
-         * cutscenes' frames 25-35% faster and 1-4% smaller (undithered,
-         * 17% larger: RLE stays there). */
+         * fast search, faster and mostly smaller. Dithered 8-bit rows
+         * have no runs to find: Huffman coding alone is faster and smaller
+         * there (undithered it is larger: RLE stays there). */
         png_set_compression_strategy(png, bits == 8 && dither ? Z_HUFFMAN_ONLY : Z_RLE);
     }
     png_set_IHDR(png, info, (png_uint_32)frame->width, (png_uint_32)frame->height, bits,

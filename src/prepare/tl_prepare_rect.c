@@ -48,8 +48,8 @@ static double shadow_reach(const tl_frame_uniforms *u, double top, double *along
  * from a low camera in front of the wave its bottom took in every pixel
  * below the horizon: voyage's first shot.) Only where the lean program
  * starts from the march prepass too: without it (`seed`) the pixels that
- * leave the wave's program march from scratch, and voyage's frame 60 took
- * 8% longer. */
+ * leave the wave's program march from scratch, and voyage's frames took
+ * longer. */
 static void cover_box(const tl_frame_uniforms *u, double cam_y, double min_y, double lo[3],
                       double hi[3])
 {

@@ -6,39 +6,34 @@
  * can always be compared with the look it started from. `final` uses the
  * same octave counts (the look authors see) and a finer hit epsilon;
  * `reference` is the slow ground truth the bench compares against. */
-/* draft renders the ocean at half the output's size: 1.9x faster for
- * 0.4 dB (docs/quality.md). Filtered shading is off there: at half size
- * it took draft 0.23 dB further from reference on the cutscenes, where it
- * brings preview and final 0.2-0.5 dB closer. */
+/* draft renders the ocean at half the output's size: nearly twice as fast
+ * for a small loss against reference. Filtered shading is off there: at
+ * half size it takes draft further from reference on the cutscenes, where
+ * it brings preview and final closer. */
 /* The pixel filter's sigma in preview and final: 0.6 px came closest to
- * reference on the five cutscenes (0.7: -0.05 dB, 0.85: -0.26, 1: -0.44;
- * none: -1.78 dB). Draft's half-size render, upscaled, gains most from
- * 0.85 (+0.63 dB on calm and voyage; 1.0 adds 0.04 dB more blur).
- * docs/quality.md. */
+ * reference on the cutscenes (wider blurs, and none, further). Draft's
+ * half-size render, upscaled, gains most from 0.85 (wider only blurs). */
 #define PIXEL_FILTER 0.6
-/* Over-relaxed march steps: 1.3 took final 9% and preview 3-7% less time
- * on calm and the seed's scene and brought them 0.1-0.2 dB closer to
- * reference (rays that ran out of steps at the horizon now get there);
- * 1.2 gained as much, 1.4 less, 1.6 was slower than plain steps
- * (docs/quality.md). */
+/* Over-relaxed march steps: 1.3 takes final and preview less time and
+ * brings them closer to reference (rays that ran out of steps at the
+ * horizon now get there); 1.2 gained as much, 1.4 less, 1.6 was slower
+ * than plain steps (more steps taken back). */
 #define RELAX 1.3
 /* With the prepass, a ray whose four coarser neighbours disagree marches
  * this many steps, then regula falsi searches the rest of their bracket
  * (grazing rays close on the water slowly: marched to the end they took
  * 40% of a calm frame's surface evaluations). What it may skip is a crest
  * tip the ray clips after those steps: on a sea twice as steep as the
- * default, under a pixel deep (docs/rendering.md, test_render). 12 steps
- * when it came; 8 now take final 7% less time on calm + voyage (seed sky)
- * for the same PSNR against reference, and 6 draft 12-19% and preview
- * 3-6% less for 0.01-0.07 dB (fewer are slower: regula falsi then fails
- * on longer brackets; docs/quality-history.md, Round 17). */
+ * default, under a pixel deep (docs/rendering.md, test_render). 8 steps
+ * save final time for the same accuracy, 6 save draft and preview more for
+ * a hair of it; fewer are slower (regula falsi then fails on longer
+ * brackets). */
 #define BUDGET_FINAL 8
 #define BUDGET_FAST 6
 /* polish: the march's hit stepped onto the normals' finer surface before
- * it is shaded (one Newton step). On calm and voyage (seed sky) preview
- * came 2.2 dB closer to reference, final 1.3, for 13-19% of their time
- * (docs/quality-history.md, Round 9). draft, whose target is time, leaves it off:
- * it gained 0.8 dB for 14%. `seed` keeps the shader's hit; `reference`
+ * it is shaded (one Newton step): the largest gain in accuracy preview and
+ * final have, for a small share of their time. draft, whose target is
+ * time, leaves it off. `seed` keeps the shader's hit; `reference`
  * marches the normals' octaves, where the step is nil. */
 /* One preset a row, its knobs in the order of tl_quality. */
 /* clang-format off */
@@ -55,9 +50,9 @@ static const tl_quality presets[] = {
      * 0.1 mm, refined, normals exact, and 64 stratified samples average
      * the pixel (no level of detail: it is the brute-force answer LOD
      * approximates; plain march steps). Its doubled self differs from it
-     * by the samples alone; 16 of them left that at 36 dB on calm and
-     * dive, 64 bring dive, voyage and giant_wave past 45 dB
-     * (docs/quality.md, "Is `reference` converged?"). */
+     * by the samples alone, and 16 left too much noise; 64 bring three of
+     * the four cutscenes past the 45 dB aim (docs/quality.md, "Is
+     * `reference` converged?"). */
     {"reference", 48, 48, 1000, 0.0001, 0.002, 64, 10, 4, false, true, false, true, 1.0, false, 0.0,
      1.0, false, 0, false, false, true},
     /* The reference shader has no giant wave: it gets final's inversion,
