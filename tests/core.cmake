@@ -10,7 +10,7 @@ tl_add_test(test_docs SOURCES test_docs.c LIBS tideline_core
 add_test(NAME example_render_frame
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_example.sh $<TARGET_FILE:render_frame>
           $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/timelines)
-tl_add_test(test_writer SOURCES test_writer.c ${PROJECT_SOURCE_DIR}/src/cli/tl_cli_writer.c
+tl_add_test(test_writer SOURCES test_writer.c
   LIBS tideline_core)
 tl_add_test(test_render_cmd SOURCES test_render_cmd.c LIBS tideline_gl
   ARGS $<TARGET_FILE:tideline>)

@@ -1,6 +1,9 @@
 /* Frame specs, chunks and output name patterns (src/job). */
+#include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
+#include "image/tl_image_io.h"
 #include "job/tl_job.h"
 #include "tl_test.h"
 
@@ -251,10 +254,51 @@ static void test_pattern(void)
     CHECK(tl_pattern_format("shot_####.exr", 7, 0, exact, sizeof exact - 1, &err) != 0);
 }
 
+/* --skip-existing's test of a frame file: complete and of the run's size,
+ * or rendered again. */
+static void test_frame_complete(void)
+{
+    char dir[] = "/tmp/tideline-job-XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char png[256], exr[256], cut[256], none[256];
+    snprintf(png, sizeof png, "%s/f.png", dir);
+    snprintf(exr, sizeof exr, "%s/f.exr", dir);
+    snprintf(cut, sizeof cut, "%s/cut.png", dir);
+    snprintf(none, sizeof none, "%s/none.png", dir);
+    tl_error err;
+    tl_frame f;
+    CHECK(tl_frame_alloc(&f, 8, 4, &err) == 0);
+    CHECK(tl_image_write(png, &f, NULL, &err) == 0);
+    CHECK(tl_image_write(exr, &f, NULL, &err) == 0);
+    CHECK(tl_job_frame_complete(png, 8, 4) == 1);
+    CHECK(tl_job_frame_complete(exr, 8, 4) == 1);
+    CHECK(tl_job_frame_complete(png, 8, 5) == 0); /* another size */
+    CHECK(tl_job_frame_complete(exr, 4, 4) == 0);
+    CHECK(tl_job_frame_complete(none, 8, 4) == 0);
+    /* A file cut short, as a killed writer without atomic files leaves. */
+    FILE *in = fopen(png, "rb"), *out = fopen(cut, "wb");
+    char bytes[4096];
+    size_t n = in ? fread(bytes, 1, sizeof bytes, in) : 0;
+    CHECK(n > 40);
+    if (out)
+        fwrite(bytes, 1, n / 2, out);
+    if (in)
+        fclose(in);
+    if (out)
+        fclose(out);
+    CHECK(tl_job_frame_complete(cut, 8, 4) == 0);
+    tl_frame_free(&f);
+    unlink(png);
+    unlink(exr);
+    unlink(cut);
+    rmdir(dir);
+}
+
 int main(void)
 {
     test_parse();
     test_chunk();
     test_pattern();
+    test_frame_complete();
     TEST_END();
 }

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "cli/tl_cli_writer.h"
+#include "job/tl_writer.h"
 #include "tl_test.h"
 
 #define FRAMES 40

@@ -1,7 +1,7 @@
 # The commands: a library of their own so that tests can call them.
 tl_module(cli
   SOURCES tl_args.c tl_cli_common.c tl_cli_still.c tl_cli_timeline.c tl_cli_render.c
-          tl_cli_writer.c tl_cli_preview.c tl_cli_compare.c tl_cli_bench.c
+          tl_cli_preview.c tl_cli_compare.c tl_cli_bench.c
           tl_cli_bench_report.c tl_cli_bench_cache.c
   DEPS core cutscene gl_window image job mesh metrics movie prepare render render_window scene
        shader timeline waves

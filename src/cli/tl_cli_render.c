@@ -19,11 +19,11 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
-#include "cli/tl_cli_writer.h"
 #include "core/tl_clock.h"
 #include "image/tl_atomic.h"
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
+#include "job/tl_writer.h"
 #include "movie/tl_movie.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
@@ -179,62 +179,6 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
                             "combined with --%s",
                             o->chunk ? "chunk" : "skip-existing");
     return TL_OK;
-}
-
-/* True when `path` holds a complete frame of the expected size. */
-static int frame_file_complete(const char *path, int width, int height)
-{
-    if (access(path, R_OK) != 0)
-        return 0;
-    tl_frame f = {0};
-    tl_error err;
-    int rc = tl_image_format_from_path(path) == TL_IMAGE_EXR ? tl_exr_read(path, &f, &err)
-                                                             : tl_png_read(path, &f, NULL, &err);
-    int ok = rc == TL_OK && f.width == width && f.height == height;
-    tl_frame_free(&f);
-    return ok;
-}
-
-/* The frames of this run, for recognising their stale temporaries. */
-typedef struct owned_frames {
-    const char *pattern;
-    const tl_frame_list *frames;
-} owned_frames;
-
-static int owns_frame(const char *target, void *ctx)
-{
-    const owned_frames *o = ctx;
-    char path[4096];
-    tl_error ignored;
-    for (size_t i = 0; i < o->frames->count; i++) {
-        if (tl_pattern_format(o->pattern, o->frames->frames[i], o->frames->count == 1, path,
-                              sizeof path, &ignored))
-            continue;
-        const char *slash = strrchr(path, '/');
-        if (strcmp(slash ? slash + 1 : path, target) == 0)
-            return 1;
-    }
-    return 0;
-}
-
-/* A process killed mid-write (SIGKILL, a node lost) leaves its hidden
- * temporary behind; remove those of this run's frames that no live writer
- * holds, so that a resumed run ends with the files alone. */
-static void remove_stale_temporaries(const char *pattern, const tl_frame_list *frames,
-                                     const char *first_path, int quiet)
-{
-    char dir[4096];
-    const char *slash = strrchr(first_path, '/');
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else
-        snprintf(dir, sizeof dir, "%.*s", slash == first_path ? 1 : (int)(slash - first_path),
-                 first_path);
-    owned_frames owned = {pattern, frames};
-    int removed = tl_atomic_remove_stale(dir, owns_frame, &owned);
-    if (removed && !quiet)
-        fprintf(stderr, "tideline render: removed %d temporary file%s left by an interrupted run\n",
-                removed, removed == 1 ? "" : "s");
 }
 
 typedef struct progress {
@@ -461,8 +405,15 @@ int tl_cli_render(int argc, char **argv)
                                : TL_PLANE_DISPLAY;
     if (o.movie)
         settings.planes |= TL_PLANE_DISPLAY;
-    if (o.pattern && frames.count > 0)
-        remove_stale_temporaries(o.pattern, &frames, path, o.quiet);
+    if (o.pattern && frames.count > 0) {
+        /* A process killed mid-write (SIGKILL, a node lost) leaves its
+         * hidden temporary behind; a resumed run ends with the files alone. */
+        int removed = tl_job_remove_stale_temporaries(o.pattern, &frames, path);
+        if (removed && !o.quiet)
+            fprintf(stderr,
+                    "tideline render: removed %d temporary file%s left by an interrupted run\n",
+                    removed, removed == 1 ? "" : "s");
+    }
 
     tl_render *render = NULL;
     tl_movie *movie = NULL;
@@ -508,7 +459,7 @@ int tl_cli_render(int argc, char **argv)
             rc = tl_pattern_format(o.pattern, n, frames.count == 1, path, sizeof path, &err);
         if (rc)
             break;
-        if (o.skip_existing && o.pattern && frame_file_complete(path, width, height)) {
+        if (o.skip_existing && o.pattern && tl_job_frame_complete(path, width, height)) {
             /* The frames in flight are reported first: progress stays in order. */
             rc = submit_pending(render, &writer, &pending, &frame, &prog, &written, &err);
             for (int k = 0; !rc && k < writer.count; k++) {

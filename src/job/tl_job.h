@@ -23,16 +23,15 @@ typedef struct tl_frame_list {
  * quote the spec and name the item: malformed, reversed (A > B), a step < 1,
  * or a frame outside 0..frame_count-1. `flag` (e.g. "--frames") prefixes
  * messages. */
-int tl_frame_list_parse(const char *spec, long frame_count, const char *flag,
-                        tl_frame_list *out, tl_error *err);
+int tl_frame_list_parse(const char *spec, long frame_count, const char *flag, tl_frame_list *out,
+                        tl_error *err);
 void tl_frame_list_free(tl_frame_list *list);
 
 /* Parses "INDEX/COUNT" (0 <= INDEX < COUNT, COUNT >= 1) and keeps only
  * chunk INDEX of `list`, split evenly in order: chunk i holds items
  * [floor(i*n/COUNT), floor((i+1)*n/COUNT)). A chunk may be empty when there
  * are fewer frames than chunks. */
-int tl_frame_list_chunk(tl_frame_list *list, const char *spec, const char *flag,
-                        tl_error *err);
+int tl_frame_list_chunk(tl_frame_list *list, const char *spec, const char *flag, tl_error *err);
 
 /* Output name patterns (Blender's convention): the last run of '#' in the
  * file name becomes the zero-padded frame number, as wide as the run (wider
@@ -40,7 +39,18 @@ int tl_frame_list_chunk(tl_frame_list *list, const char *spec, const char *flag,
  * before the extension -- unless `single_frame` is set, in which case the
  * name is used as it is. Fails if the result does not fit `out_size`. */
 int tl_pattern_has_frame(const char *pattern);
-int tl_pattern_format(const char *pattern, long frame, int single_frame, char *out,
-                      size_t out_size, tl_error *err);
+int tl_pattern_format(const char *pattern, long frame, int single_frame, char *out, size_t out_size,
+                      tl_error *err);
+
+/* Resuming a run (--skip-existing): 1 when `path` holds a complete,
+ * readable frame of width x height (a file cut short or of another size
+ * is rendered again). */
+int tl_job_frame_complete(const char *path, int width, int height);
+/* A process killed mid-write (SIGKILL, a node lost) leaves its hidden
+ * temporary behind: removes those of `frames` (named by `pattern`, in the
+ * folder of `first_path`) that no live writer holds, so that a resumed run
+ * ends with the files alone. Returns how many were removed. */
+int tl_job_remove_stale_temporaries(const char *pattern, const tl_frame_list *frames,
+                                    const char *first_path);
 
 #endif

@@ -1,4 +1,4 @@
-#include "tl_cli_writer.h"
+#include "job/tl_writer.h"
 
 #include <signal.h>
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* tl_cli_writer: writes rendered frames' files on writer threads while the
+/* tl_writer: writes rendered frames' files on writer threads while the
  * next frame renders (render's pipeline). Up to `count` frames are in
  * flight, each on its own thread: on a GPU the encoding of one frame (PNG,
  * EXR) takes longer than rendering it, so several encode side by side.
@@ -8,8 +8,8 @@
  * in submission order, whatever order the writers finish in. Writers never
  * touch GL; each owns the frame buffer it writes, which submit swaps with
  * the caller's. */
-#ifndef TL_CLI_WRITER_H
-#define TL_CLI_WRITER_H
+#ifndef TL_WRITER_H
+#define TL_WRITER_H
 
 #include <pthread.h>
 
