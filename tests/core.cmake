@@ -67,3 +67,6 @@ add_test(NAME test_build_script
 # cmake --install and pkg-config: the example links the installed library.
 add_test(NAME test_install
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_install.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+# The bench's engine without a GPU: preset lists, rounds, medians, the
+# front, the CSV and the reference cache.
+tl_add_test(test_bench_engine SOURCES test_bench_engine.c LIBS tl_bench)

@@ -19,6 +19,7 @@
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "render/tl_render_window.h"
+#include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
 
 #define DEG (M_PI / 180.0)

@@ -27,6 +27,7 @@
 #include "movie/tl_movie.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
+#include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
 
 #define EXIT_INTERRUPTED 130

@@ -13,6 +13,7 @@
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "scene/tl_scene.h"
+#include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
 
 #define MAX_OUTPUTS 8
@@ -124,17 +125,15 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
             double f = 0.0;
             rc = a.value ? tl_args_double(a.flag, a.value, &f, err) : TL_ERR_USAGE;
             if (!rc && (f < 0.0 || f != floor(f) || f > 1e12))
-                rc = tl_error_set(err, TL_ERR_USAGE, "--frame: '%s' is not a frame number",
-                                  a.value);
+                rc =
+                    tl_error_set(err, TL_ERR_USAGE, "--frame: '%s' is not a frame number", a.value);
             o->frame = (long)f;
             o->has_frame = 1;
         } else if (tl_args_match(&a, "--size", NULL, true, err)) {
-            rc = a.value ? tl_args_size(a.flag, a.value, &s->width, &s->height, err)
-                         : TL_ERR_USAGE;
+            rc = a.value ? tl_args_size(a.flag, a.value, &s->width, &s->height, err) : TL_ERR_USAGE;
             o->has_size = 1;
         } else if (tl_args_match(&a, "--camera", NULL, true, err)) {
-            rc = a.value ? tl_args_vec3(a.flag, a.value, s->camera.position, err)
-                         : TL_ERR_USAGE;
+            rc = a.value ? tl_args_vec3(a.flag, a.value, s->camera.position, err) : TL_ERR_USAGE;
             o->has_camera = 1;
         } else if (tl_args_match(&a, "--look-at", NULL, true, err)) {
             rc = a.value ? tl_args_vec3(a.flag, a.value, o->look_at, err) : TL_ERR_USAGE;
@@ -155,8 +154,7 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
                                   a.value);
             o->has_fov = 1;
         } else if (tl_args_match(&a, "--sun-elevation", NULL, true, err)) {
-            rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.elevation, err)
-                         : TL_ERR_USAGE;
+            rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.elevation, err) : TL_ERR_USAGE;
             if (!rc && fabs(s->sun.elevation) > M_PI / 2)
                 rc = tl_error_set(err, TL_ERR_USAGE,
                                   "--sun-elevation: '%s' is outside -90..90 degrees", a.value);

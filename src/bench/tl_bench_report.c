@@ -8,7 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "cli/tl_cli_bench.h"
+#include "bench/tl_bench.h"
 #include "image/tl_atomic.h"
 
 extern char **environ;

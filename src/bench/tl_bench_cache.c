@@ -16,7 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli/tl_cli_bench.h"
+#include "bench/tl_bench.h"
 #include "image/tl_atomic.h"
 
 #define CACHE_MAGIC "tideline reference frame 1\n"
