@@ -70,3 +70,5 @@ add_test(NAME test_install
 # The bench's engine without a GPU: preset lists, rounds, medians, the
 # front, the CSV and the reference cache.
 tl_add_test(test_bench_engine SOURCES test_bench_engine.c LIBS tl_bench)
+# A render run through the library: order, resume, interruption.
+tl_add_test(test_run SOURCES test_run.c LIBS tl_run)

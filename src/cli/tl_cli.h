@@ -35,15 +35,6 @@ int tl_cli_make_parent_dirs(const char *path, tl_error *err);
  * known (negative or not finite). */
 void tl_cli_format_duration(double seconds, char *out, size_t size);
 
-/* Writes the effective quality knobs (preset name and every value the
- * preset or the overrides set) as image metadata entries into out[0..13],
- * so a frame records exactly how it was made. Returns the count
- * (TL_CLI_QUALITY_META). */
-struct tl_quality;
-struct tl_meta;
-#define TL_CLI_QUALITY_META 22
-int tl_cli_quality_meta(const struct tl_quality *q, struct tl_meta *out);
-
 /* Prints err as one line (with file:line:col when it has one). */
 void tl_cli_print_error(const char *command, const tl_error *err);
 

@@ -40,36 +40,6 @@ int tl_cli_make_parent_dirs(const char *path, tl_error *err)
     return TL_OK;
 }
 
-int tl_cli_quality_meta(const tl_quality *q, tl_meta *out)
-{
-    const tl_meta m[TL_CLI_QUALITY_META] = {
-        {"tideline/quality", TL_META_STRING, q->name, 0, 0},
-        {"tideline/spp", TL_META_INT, NULL, 0, q->spp},
-        {"tideline/march_octaves", TL_META_INT, NULL, 0, q->march_octaves},
-        {"tideline/normal_octaves", TL_META_INT, NULL, 0, q->normal_octaves},
-        {"tideline/march_steps", TL_META_INT, NULL, 0, q->march_steps},
-        {"tideline/hit_epsilon", TL_META_DOUBLE, NULL, q->hit_epsilon, 0},
-        {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
-        {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
-        {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
-        {"tideline/polish", TL_META_INT, NULL, 0, q->polish},
-        {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
-        {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
-        {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading},
-        {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0},
-        {"tideline/pixel_filter", TL_META_DOUBLE, NULL, q->pixel_filter, 0},
-        {"tideline/march_relax", TL_META_DOUBLE, NULL, q->march_relax, 0},
-        {"tideline/march_prepass", TL_META_INT, NULL, 0, q->march_prepass},
-        {"tideline/prepass_budget", TL_META_INT, NULL, 0, q->prepass_budget},
-        {"tideline/giant_prepass", TL_META_INT, NULL, 0, q->giant_prepass},
-        {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
-        {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
-        {"tideline/facing_normals", TL_META_INT, NULL, 0, q->facing_normals},
-    };
-    memcpy(out, m, sizeof m);
-    return TL_CLI_QUALITY_META;
-}
-
 void tl_cli_format_duration(double s, char *out, size_t size)
 {
     if (!isfinite(s) || s < 0)

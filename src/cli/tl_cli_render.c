@@ -23,10 +23,11 @@
 #include "image/tl_atomic.h"
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
-#include "job/tl_writer.h"
 #include "movie/tl_movie.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
+#include "job/tl_writer.h"
+#include "run/tl_run.h"
 #include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
 
@@ -185,15 +186,15 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
 typedef struct progress {
     int tty, quiet;
     size_t total, done;
-    double start, busy; /* busy: seconds spent rendering (for ms per frame) */
-    long rendered;
+    double start;
+    double ms; /* drawing time per frame drawn so far */
 } progress;
 
 static void progress_update(progress *p, long frame, const char *what)
 {
     if (p->quiet)
         return;
-    double ms = p->rendered ? p->busy / (double)p->rendered * 1e3 : 0.0;
+    double ms = p->ms;
     double remaining = ms * 1e-3 * (double)(p->total - p->done);
     char eta[32];
     tl_cli_format_duration(remaining, eta, sizeof eta);
@@ -227,104 +228,35 @@ static void progress_note(const progress *p, const char *fmt, ...)
     va_end(ap);
 }
 
-/* 8-bit RGB rows for ffmpeg from the display plane, dithered as 8-bit
- * PNGs are (--dither). */
-static void display_to_rgb8(const tl_frame *f, int dither, uint8_t *rgb)
+/* The run's progress on stderr: a bar on a terminal, a line a frame
+ * elsewhere; -v adds the writers and each new feature set. */
+typedef struct run_lines {
+    progress *prog;
+    int verbose;
+} run_lines;
+
+static void run_report(void *ctx, const tl_run_status *st)
 {
-    for (int y = 0; y < f->height; y++)
-        tl_frame_display_row8(f, y, dither, rgb + (size_t)y * (size_t)f->width * 3);
-}
-
-static int write_frame_files(const render_options *o, const tl_timeline *tl, long frame,
-                             const tl_scene *scene, const tl_frame *f, const char *path,
-                             tl_error *err)
-{
-    char camera[256];
-    const tl_camera *c = &scene->camera;
-    snprintf(camera, sizeof camera,
-             "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
-             c->position[0], c->position[1], c->position[2], c->yaw, c->pitch, c->roll, c->vfov);
-    tl_meta meta[7 + TL_CLI_QUALITY_META] = {
-        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
-        {"tideline/timeline", TL_META_STRING, o->timeline, 0, 0},
-        {"tideline/frame", TL_META_INT, NULL, 0, (int)frame},
-        {"tideline/time", TL_META_DOUBLE, NULL, scene->time, 0},
-        {"tideline/fps", TL_META_DOUBLE, NULL, tl->fps, 0},
-        {"tideline/camera", TL_META_STRING, camera, 0, 0},
-        {"tideline/shutter", TL_META_DOUBLE, NULL, o->shutter, 0},
-    };
-    int n = 7 + tl_cli_quality_meta(&scene->quality, meta + 7);
-    tl_image_options opt = {.png_bits = o->png_bits,
-                            .no_dither = !o->dither,
-                            .png_compression = o->png_compression,
-                            .exr_compression = o->exr_compression,
-                            .meta = meta,
-                            .meta_count = n};
-    return tl_image_write(path, f, &opt, err);
-}
-
-/* What the writer thread needs to write a frame. */
-typedef struct write_context {
-    const render_options *o;
-    const tl_timeline *tl;
-    tl_movie *movie;
-    uint8_t *rgb;
-} write_context;
-
-/* A frame's files: on any writer thread, several frames at once. */
-static int write_files(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
-                       const char *path, tl_error *err)
-{
-    const write_context *w = ctx;
-    return w->o->pattern ? write_frame_files(w->o, w->tl, n, scene, f, path, err) : TL_OK;
-}
-
-/* A frame of the movie: one at a time, in frame order. */
-static int write_movie(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
-                       const char *path, tl_error *err)
-{
-    (void)n;
-    (void)scene;
-    (void)path;
-    const write_context *w = ctx;
-    display_to_rgb8(f, w->o->dither, w->rgb);
-    return tl_movie_write(w->movie, w->rgb, err);
-}
-
-/* Counts a frame the writer finished. */
-static void frame_written(progress *prog, size_t *written, long n, const char *path)
-{
-    if (n < 0)
-        return;
-    (*written)++;
-    prog->done++;
-    progress_update(prog, n, path[0] ? path : "encoded");
-}
-
-/* The frame drawn last, whose planes are still on their way to the CPU
- * (tl_render_timeline_frame_queue): collected once the next one is drawn. */
-typedef struct pending_frame {
-    int queued;
-    long n;
-    tl_scene scene;
-    char path[4096];
-} pending_frame;
-
-/* Collects the pending frame into `frame` and hands it to the writers. */
-static int submit_pending(tl_render *render, tl_writer *writer, pending_frame *p, tl_frame *frame,
-                          progress *prog, size_t *written, tl_error *err)
-{
-    if (!p->queued)
-        return TL_OK;
-    p->queued = 0;
-    int rc = tl_render_collect(render, frame, err);
-    if (!rc) {
-        long done;
-        rc = tl_writer_submit(writer, frame, p->n, &p->scene, p->path, &done, err);
-        frame_written(prog, written, done, tl_writer_path(writer));
-        prog->rendered += !rc;
+    run_lines *l = ctx;
+    progress *p = l->prog;
+    p->done = st->done;
+    p->ms = st->ms_per_frame;
+    switch (st->event) {
+    case TL_RUN_STARTED:
+        if (l->verbose)
+            fprintf(stderr, "tideline render: %d writer thread%s\n", st->writers,
+                    st->writers == 1 ? "" : "s");
+        break;
+    case TL_RUN_FEATURES:
+        if (l->verbose) {
+            char words[256];
+            tl_feature_describe(st->features, words, sizeof words);
+            progress_note(p, "frame %ld: features: %s", st->frame, words);
+        }
+        break;
+    case TL_RUN_WRITTEN: progress_update(p, st->frame, st->path[0] ? st->path : "encoded"); break;
+    case TL_RUN_SKIPPED: progress_update(p, st->frame, "skipped (complete)"); break;
     }
-    return rc;
 }
 
 int tl_cli_render(int argc, char **argv)
@@ -398,14 +330,6 @@ int tl_cli_render(int argc, char **argv)
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
-    /* Read back only what the outputs use: EXR holds colour and depth,
-     * PNG and movies the display image. */
-    if (o.pattern)
-        settings.planes |= tl_image_format_from_path(path) == TL_IMAGE_EXR
-                               ? TL_PLANE_COLOR | TL_PLANE_DEPTH
-                               : TL_PLANE_DISPLAY;
-    if (o.movie)
-        settings.planes |= TL_PLANE_DISPLAY;
     if (o.pattern && frames.count > 0) {
         /* A process killed mid-write (SIGKILL, a node lost) leaves its
          * hidden temporary behind; a resumed run ends with the files alone. */
@@ -418,18 +342,13 @@ int tl_cli_render(int argc, char **argv)
 
     tl_render *render = NULL;
     tl_movie *movie = NULL;
-    tl_frame frame = {0};
-    uint8_t *rgb = NULL;
     rc = tl_render_open(&render, &lib, &err);
     if (!rc && boat.index_count)
         rc = tl_render_set_boat(render, &boat, &err);
     if (!rc && o.verbose)
         fprintf(stderr, "tideline render: %s\n", tl_render_describe(render));
-    if (!rc && o.movie) {
-        rgb = malloc((size_t)width * (size_t)height * 3);
-        rc = rgb ? tl_movie_open(&movie, o.movie, width, height, tl.fps, &err)
-                 : tl_error_set(&err, TL_ERR_RUNTIME, "out of memory");
-    }
+    if (!rc && o.movie)
+        rc = tl_movie_open(&movie, o.movie, width, height, tl.fps, &err);
 
     struct sigaction sa, old_int, old_term;
     memset(&sa, 0, sizeof sa);
@@ -439,82 +358,31 @@ int tl_cli_render(int argc, char **argv)
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
 
-    progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, tl_clock_seconds(), 0.0, 0};
-    size_t written = 0, skipped = 0;
-    unsigned last_features = 0;
-    /* Frame n renders while the frames before it are encoded and written. */
-    write_context wctx = {&o, &tl, movie, rgb};
-    tl_writer writer;
-    tl_writer_init(&writer, write_files, movie ? write_movie : NULL, &wctx,
-                   o.writers ? o.writers : tl_writer_default_count());
-    if (o.verbose)
-        fprintf(stderr, "tideline render: %d writer thread%s\n", writer.count,
-                writer.count == 1 ? "" : "s");
-    /* Frame n draws while frame n-1's planes travel to the CPU and the
-     * frames before it are encoded and written. */
-    long done_frame;
-    pending_frame pending = {0};
-    for (size_t i = 0; !rc && i < frames.count && !stop_signal; i++) {
-        long n = frames.frames[i];
-        if (o.pattern)
-            rc = tl_pattern_format(o.pattern, n, frames.count == 1, path, sizeof path, &err);
-        if (rc)
-            break;
-        if (o.skip_existing && o.pattern && tl_job_frame_complete(path, width, height)) {
-            /* The frames in flight are reported first: progress stays in order. */
-            rc = submit_pending(render, &writer, &pending, &frame, &prog, &written, &err);
-            for (int k = 0; !rc && k < writer.count; k++) {
-                rc = tl_writer_wait(&writer, &done_frame, &err);
-                frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
-            }
-            if (rc)
-                break;
-            skipped++;
-            prog.done++;
-            progress_update(&prog, n, "skipped (complete)");
-            continue;
-        }
-        double t0 = tl_clock_seconds();
-        tl_scene scene;
-        rc = tl_render_timeline_frame_queue(render, &tl, n, &settings, &scene, &err);
-        if (rc)
-            break;
-        if (o.verbose && (i == 0 || tl_render_last_features(render) != last_features)) {
-            char words[256];
-            last_features = tl_render_last_features(render);
-            tl_feature_describe(last_features, words, sizeof words);
-            progress_note(&prog, "frame %ld: features: %s", n, words);
-        }
-        if (stop_signal)
-            break; /* the frame just drawn is discarded: never collected */
-        rc = submit_pending(render, &writer, &pending, &frame, &prog, &written, &err);
-        pending = (pending_frame){1, n, scene, ""};
-        snprintf(pending.path, sizeof pending.path, "%s", o.pattern ? path : "");
-        prog.busy += tl_clock_seconds() - t0;
-    }
-    /* The frame drawn before an interruption or an error is complete too. */
-    if (pending.queued) {
-        int prc = submit_pending(render, &writer, &pending, &frame, &prog, &written,
-                                 rc ? &(tl_error){0} : &err);
-        if (!rc)
-            rc = prc;
-    }
-    /* The frames submitted are complete: they are always written, even
-     * when interrupted (what was rendered is kept, atomically). */
-    double t_last = tl_clock_seconds();
-    for (int i = 0; i < writer.count; i++) { /* each wait takes the oldest */
-        int wrc = tl_writer_wait(&writer, &done_frame, rc ? &(tl_error){0} : &err);
-        if (!rc && wrc)
-            rc = wrc;
-        else if (!wrc)
-            frame_written(&prog, &written, done_frame, tl_writer_path(&writer));
-    }
-    prog.busy += tl_clock_seconds() - t_last;
-    tl_writer_free(&writer);
+    progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, tl_clock_seconds(), 0.0};
+    run_lines lines = {&prog, o.verbose};
+    tl_run_config run = {.timeline = &tl,
+                         .timeline_path = o.timeline,
+                         .settings = settings,
+                         .frames = &frames,
+                         .pattern = o.pattern,
+                         .movie = movie,
+                         .image = {.png_bits = o.png_bits,
+                                   .no_dither = !o.dither,
+                                   .png_compression = o.png_compression,
+                                   .exr_compression = o.exr_compression},
+                         .skip_existing = o.skip_existing,
+                         .writers = o.writers,
+                         .stop = &stop_signal,
+                         .report = run_report,
+                         .report_ctx = &lines};
+    tl_run_result result = {0};
+    if (!rc)
+        rc = tl_run_frames(render, &run, &result, &err);
+    size_t written = result.written, skipped = result.skipped;
     if (prog.tty && !o.quiet && prog.done)
         fputc('\n', stderr);
 
-    int interrupted = stop_signal != 0 && !rc;
+    int interrupted = result.interrupted;
     if (movie) {
         if (!rc && !interrupted)
             rc = tl_movie_finish(movie, &err);
@@ -535,8 +403,8 @@ int tl_cli_render(int argc, char **argv)
             : rc        ? "failed"
                         : "done",
             written, written == 1 ? "" : "s", skipped, written + skipped, frames.count, took);
-    if (prog.rendered)
-        fprintf(stderr, " (%.0f ms/frame)", prog.busy / (double)prog.rendered * 1e3);
+    if (result.drawn)
+        fprintf(stderr, " (%.0f ms/frame)", result.busy_seconds / (double)result.drawn * 1e3);
     fprintf(stderr, "\n");
     if (!rc && !interrupted && o.movie)
         fprintf(stderr, "tideline render: wrote %s\n", o.movie);
@@ -544,8 +412,6 @@ int tl_cli_render(int argc, char **argv)
         fprintf(stderr, "tideline render: %s not written: a movie missing frames is discarded%s\n",
                 o.movie, access(o.movie, F_OK) == 0 ? " (the earlier file is untouched)" : "");
 
-    free(rgb);
-    tl_frame_free(&frame);
     tl_render_close(render);
     tl_mesh_free(&boat);
     tl_frame_list_free(&frames);

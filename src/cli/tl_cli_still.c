@@ -12,6 +12,7 @@
 #include "image/tl_image_io.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
+#include "run/tl_run.h"
 #include "scene/tl_scene.h"
 #include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
@@ -336,7 +337,7 @@ int tl_cli_still(int argc, char **argv)
              "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
              cam->position[0], cam->position[1], cam->position[2], cam->yaw, cam->pitch, cam->roll,
              cam->vfov);
-    tl_meta meta[4 + TL_CLI_QUALITY_META] = {
+    tl_meta meta[4 + TL_RUN_QUALITY_META] = {
         {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
         {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0},
         {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0},
@@ -344,7 +345,7 @@ int tl_cli_still(int argc, char **argv)
     };
     tl_image_options opt = {.no_dither = !o.dither,
                             .meta = meta,
-                            .meta_count = 4 + tl_cli_quality_meta(&scene.quality, meta + 4)};
+                            .meta_count = 4 + tl_run_quality_meta(&scene.quality, meta + 4)};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_write(o.outputs[i], &frame, &opt, &err);
         if (!rc && o.verbose)

@@ -1,0 +1,253 @@
+/* A render run's loop (tl_run.h): draw, collect, hand to the writers. */
+#include "run/tl_run.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/tl_clock.h"
+#include "job/tl_writer.h"
+
+int tl_run_quality_meta(const tl_quality *q, tl_meta *out)
+{
+    const tl_meta m[TL_RUN_QUALITY_META] = {
+        {"tideline/quality", TL_META_STRING, q->name, 0, 0},
+        {"tideline/spp", TL_META_INT, NULL, 0, q->spp},
+        {"tideline/march_octaves", TL_META_INT, NULL, 0, q->march_octaves},
+        {"tideline/normal_octaves", TL_META_INT, NULL, 0, q->normal_octaves},
+        {"tideline/march_steps", TL_META_INT, NULL, 0, q->march_steps},
+        {"tideline/hit_epsilon", TL_META_DOUBLE, NULL, q->hit_epsilon, 0},
+        {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
+        {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
+        {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
+        {"tideline/polish", TL_META_INT, NULL, 0, q->polish},
+        {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
+        {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
+        {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading},
+        {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0},
+        {"tideline/pixel_filter", TL_META_DOUBLE, NULL, q->pixel_filter, 0},
+        {"tideline/march_relax", TL_META_DOUBLE, NULL, q->march_relax, 0},
+        {"tideline/march_prepass", TL_META_INT, NULL, 0, q->march_prepass},
+        {"tideline/prepass_budget", TL_META_INT, NULL, 0, q->prepass_budget},
+        {"tideline/giant_prepass", TL_META_INT, NULL, 0, q->giant_prepass},
+        {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
+        {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
+        {"tideline/facing_normals", TL_META_INT, NULL, 0, q->facing_normals},
+    };
+    memcpy(out, m, sizeof m);
+    return TL_RUN_QUALITY_META;
+}
+
+typedef struct run_state {
+    const tl_run_config *cfg;
+    tl_run_result *result;
+    size_t done;
+    uint8_t *rgb; /* the movie's frame, 8-bit RGB */
+} run_state;
+
+static void report(run_state *s, tl_run_event event, long frame, const char *path,
+                   unsigned features, int writers)
+{
+    if (!s->cfg->report)
+        return;
+    const tl_run_result *r = s->result;
+    tl_run_status status = {.event = event,
+                            .frame = frame,
+                            .path = path,
+                            .features = features,
+                            .writers = writers,
+                            .done = s->done,
+                            .total = s->cfg->frames->count,
+                            .ms_per_frame =
+                                r->drawn ? r->busy_seconds / (double)r->drawn * 1e3 : 0.0};
+    s->cfg->report(s->cfg->report_ctx, &status);
+}
+
+static int write_frame_files(const run_state *s, long frame, const tl_scene *scene,
+                             const tl_frame *f, const char *path, tl_error *err)
+{
+    const tl_run_config *cfg = s->cfg;
+    char camera[256];
+    const tl_camera *c = &scene->camera;
+    snprintf(camera, sizeof camera,
+             "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
+             c->position[0], c->position[1], c->position[2], c->yaw, c->pitch, c->roll, c->vfov);
+    tl_meta meta[7 + TL_RUN_QUALITY_META] = {
+        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
+        {"tideline/timeline", TL_META_STRING, cfg->timeline_path, 0, 0},
+        {"tideline/frame", TL_META_INT, NULL, 0, (int)frame},
+        {"tideline/time", TL_META_DOUBLE, NULL, scene->time, 0},
+        {"tideline/fps", TL_META_DOUBLE, NULL, cfg->timeline->fps, 0},
+        {"tideline/camera", TL_META_STRING, camera, 0, 0},
+        {"tideline/shutter", TL_META_DOUBLE, NULL, cfg->settings.shutter_deg, 0},
+    };
+    tl_image_options opt = cfg->image;
+    opt.meta = meta;
+    opt.meta_count = 7 + tl_run_quality_meta(&scene->quality, meta + 7);
+    return tl_image_write(path, f, &opt, err);
+}
+
+/* A frame's files: on any writer thread, several frames at once. */
+static int write_files(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
+                       const char *path, tl_error *err)
+{
+    const run_state *s = ctx;
+    return s->cfg->pattern ? write_frame_files(s, n, scene, f, path, err) : TL_OK;
+}
+
+/* A frame of the movie: one at a time, in frame order, dithered as 8-bit
+ * PNGs are. */
+static int write_movie(void *ctx, long n, const tl_scene *scene, const tl_frame *f,
+                       const char *path, tl_error *err)
+{
+    (void)n;
+    (void)scene;
+    (void)path;
+    const run_state *s = ctx;
+    for (int y = 0; y < f->height; y++)
+        tl_frame_display_row8(f, y, !s->cfg->image.no_dither,
+                              s->rgb + (size_t)y * (size_t)f->width * 3);
+    return tl_movie_write(s->cfg->movie, s->rgb, err);
+}
+
+/* Counts a frame the writer finished. */
+static void frame_written(run_state *s, long n, const char *path)
+{
+    if (n < 0)
+        return;
+    s->result->written++;
+    s->done++;
+    report(s, TL_RUN_WRITTEN, n, path, 0, 0);
+}
+
+/* The frame drawn last, whose planes are still on their way to the CPU
+ * (tl_render_timeline_frame_queue): collected once the next one is drawn. */
+typedef struct pending_frame {
+    int queued;
+    long n;
+    tl_scene scene;
+    char path[4096];
+} pending_frame;
+
+/* Collects the pending frame into `frame` and hands it to the writers. */
+static int submit_pending(run_state *s, tl_render *render, tl_writer *writer, pending_frame *p,
+                          tl_frame *frame, tl_error *err)
+{
+    if (!p->queued)
+        return TL_OK;
+    p->queued = 0;
+    int rc = tl_render_collect(render, frame, err);
+    if (!rc) {
+        long done;
+        rc = tl_writer_submit(writer, frame, p->n, &p->scene, p->path, &done, err);
+        frame_written(s, done, tl_writer_path(writer));
+        s->result->drawn += !rc;
+    }
+    return rc;
+}
+
+static int stopped(const tl_run_config *cfg)
+{
+    return cfg->stop && *cfg->stop;
+}
+
+int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *out, tl_error *err)
+{
+    memset(out, 0, sizeof *out);
+    run_state s = {cfg, out, 0, NULL};
+    const tl_frame_list *frames = cfg->frames;
+    tl_render_settings settings = cfg->settings;
+    tl_scene first;
+    tl_render_frame_scene(cfg->timeline, 0.0, &settings, &first);
+    const int width = first.width, height = first.height;
+    /* Read back only what the outputs use: EXR holds colour and depth,
+     * PNG and movies the display image. */
+    settings.planes = 0;
+    char path[4096] = "";
+    int rc = TL_OK;
+    if (cfg->pattern && frames->count > 0) {
+        rc = tl_pattern_format(cfg->pattern, frames->frames[0], frames->count == 1, path,
+                               sizeof path, err);
+        settings.planes |= tl_image_format_from_path(path) == TL_IMAGE_EXR
+                               ? TL_PLANE_COLOR | TL_PLANE_DEPTH
+                               : TL_PLANE_DISPLAY;
+    }
+    if (cfg->movie) {
+        settings.planes |= TL_PLANE_DISPLAY;
+        s.rgb = malloc((size_t)width * (size_t)height * 3);
+        if (!s.rgb)
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    }
+    if (rc) {
+        free(s.rgb);
+        return rc;
+    }
+
+    tl_frame frame = {0};
+    tl_writer writer;
+    tl_writer_init(&writer, write_files, cfg->movie ? write_movie : NULL, &s,
+                   cfg->writers ? cfg->writers : tl_writer_default_count());
+    report(&s, TL_RUN_STARTED, -1, "", 0, writer.count);
+    unsigned last_features = 0;
+    long done_frame;
+    pending_frame pending = {0};
+    for (size_t i = 0; !rc && i < frames->count && !stopped(cfg); i++) {
+        long n = frames->frames[i];
+        if (cfg->pattern)
+            rc = tl_pattern_format(cfg->pattern, n, frames->count == 1, path, sizeof path, err);
+        if (rc)
+            break;
+        if (cfg->skip_existing && cfg->pattern && tl_job_frame_complete(path, width, height)) {
+            /* The frames in flight are reported first: progress stays in order. */
+            rc = submit_pending(&s, render, &writer, &pending, &frame, err);
+            for (int k = 0; !rc && k < writer.count; k++) {
+                rc = tl_writer_wait(&writer, &done_frame, err);
+                frame_written(&s, done_frame, tl_writer_path(&writer));
+            }
+            if (rc)
+                break;
+            out->skipped++;
+            s.done++;
+            report(&s, TL_RUN_SKIPPED, n, path, 0, 0);
+            continue;
+        }
+        double t0 = tl_clock_seconds();
+        tl_scene scene;
+        rc = tl_render_timeline_frame_queue(render, cfg->timeline, n, &settings, &scene, err);
+        if (rc)
+            break;
+        if (i == 0 || tl_render_last_features(render) != last_features) {
+            last_features = tl_render_last_features(render);
+            report(&s, TL_RUN_FEATURES, n, path, last_features, 0);
+        }
+        if (stopped(cfg))
+            break; /* the frame just drawn is discarded: never collected */
+        rc = submit_pending(&s, render, &writer, &pending, &frame, err);
+        pending = (pending_frame){1, n, scene, ""};
+        snprintf(pending.path, sizeof pending.path, "%s", cfg->pattern ? path : "");
+        out->busy_seconds += tl_clock_seconds() - t0;
+    }
+    /* The frame drawn before an interruption or an error is complete too. */
+    if (pending.queued) {
+        int prc = submit_pending(&s, render, &writer, &pending, &frame, rc ? &(tl_error){0} : err);
+        if (!rc)
+            rc = prc;
+    }
+    /* The frames submitted are complete: they are always written, even
+     * when interrupted (what was rendered is kept, atomically). */
+    double t_last = tl_clock_seconds();
+    for (int i = 0; i < writer.count; i++) { /* each wait takes the oldest */
+        int wrc = tl_writer_wait(&writer, &done_frame, rc ? &(tl_error){0} : err);
+        if (!rc && wrc)
+            rc = wrc;
+        else if (!wrc)
+            frame_written(&s, done_frame, tl_writer_path(&writer));
+    }
+    out->busy_seconds += tl_clock_seconds() - t_last;
+    tl_writer_free(&writer);
+    out->interrupted = stopped(cfg) && !rc;
+    tl_frame_free(&frame);
+    free(s.rgb);
+    return rc;
+}
