@@ -72,3 +72,6 @@ add_test(NAME test_install
 tl_add_test(test_bench_engine SOURCES test_bench_engine.c LIBS tl_bench)
 # A render run through the library: order, resume, interruption.
 tl_add_test(test_run SOURCES test_run.c LIBS tl_run)
+# The build's check of the module rules catches each kind of break.
+add_test(NAME test_module_rules
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_module_rules.sh ${PROJECT_SOURCE_DIR})
