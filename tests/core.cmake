@@ -4,6 +4,9 @@ tl_add_test(test_still_files SOURCES test_still_files.c LIBS tideline_gl LABELS 
 tl_add_test(test_render_progress SOURCES test_render_progress.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_cli SOURCES test_cli.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders LABELS gl)
+# The presets' image quality through `still` (mostly `reference` frames).
+tl_add_test(test_presets_quality SOURCES test_presets_quality.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/timelines LABELS gl slow)
 tl_add_test(test_docs SOURCES test_docs.c LIBS tideline_core
   ARGS ${PROJECT_SOURCE_DIR}/docs/timeline.md LABELS unit)
 # The library example renders a frame of a bundled timeline.
