@@ -274,7 +274,8 @@ static void progress_eta(bench_state *s, const char *preset, int shot, int round
         return;
     double now = tl_clock_seconds();
     /* Throttled: a frame's share, and lines without an ETA after the first. */
-    if (now - s->last_progress < 0.5 && (share >= 0.0 || (shot > 0 && left < 0.0)))
+    if (now - s->last_progress < 0.5 * tl_cli_progress_delay() &&
+        (share >= 0.0 || (shot > 0 && left < 0.0)))
         return;
     s->last_progress = now;
     const bench_shot *b = &s->shots[shot];
