@@ -20,12 +20,13 @@ csv=$work/out/bench.csv
 head -1 "$csv" | grep -qx 'preset,width,height,frames,repeat,ms_total,ms_render,ms_readback,ms_encode,psnr_db,ssim,p99_levels,worst_psnr_db,worst_frame,pareto' ||
   fail "CSV header: $(head -1 "$csv")"
 [ "$(wc -l <"$csv")" -eq 4 ] || fail "CSV rows"
-# Every numeric field finite; sizes and counts as asked; errors in range;
-# the reference scores the PSNR cap against itself.
+# Every numeric field finite; sizes and counts as asked; times >= 0 (a
+# fast GPU can time a 64x36 frame as 0.0 ms); errors in range; the
+# reference scores the PSNR cap against itself.
 awk -F, 'NR > 1 {
   for (i = 2; i <= 13; i++) if ($i !~ /^-?[0-9]+(\.[0-9]+)?$/) { print "field " i ": " $i; bad = 1 }
   if ($2 != 64 || $3 != 36 || $4 != 2) { print "size/frames: " $0; bad = 1 }
-  if ($6 <= 0) { print "time: " $0; bad = 1 }
+  if ($6 < 0 || $7 < 0 || $8 < 0 || $9 < 0) { print "time: " $0; bad = 1 }
   if ($1 == "reference" && $10 != 200) { print "reference PSNR: " $0; bad = 1 }
   if ($1 != "reference" && ($10 <= 0 || $10 >= 200 || $11 <= 0 || $11 > 1 || $14 !~ /^calm\.tl:(0|120)$/)) {
     print "metrics: " $0; bad = 1 }
@@ -42,15 +43,23 @@ ls -A "$work/out" | grep -q '^\.' && fail "a temporary file was left behind"
 grep -q '^| reference' "$work/t.md" && fail "--time-only rendered the reference"
 grep -q '^| draft | [0-9.]* | [0-9.]* | [0-9.]* | [0-9.]* | | | | |$' "$work/t.md" ||
   fail "--time-only table: $(cat "$work/t.md")"
-awk -F, 'NR == 2 { if ($1 != "draft" || !($6 > 0) || $10 != "" || $15 != 0) exit 1 } END { if (NR != 2) exit 1 }' \
+awk -F, 'NR == 2 { if ($1 != "draft" || $6 !~ /^[0-9]+(\.[0-9]+)?$/ || $10 != "" || $15 != 0) exit 1 }
+  END { if (NR != 2) exit 1 }' \
   "$work/t.csv" || fail "--time-only CSV: $(cat "$work/t.csv")"
 
 # --passes: a second table of the median frame's passes. voyage's frame 120
-# has the boat and the giant wave in view, calm's frame none of them, so
-# their columns are > 0 for the one and 0 for the other; the passes add up
+# has the boat and the giant wave in view (still -v lists them), calm's
+# frame none of them, so their columns are 0 for calm; the passes add up
 # to their total, which the frame's render time holds. seed runs the
-# prepass over the giant wave alone (quality.giant_prepass): on voyage,
-# not on calm.
+# prepass over the giant wave alone (quality.giant_prepass): not on calm.
+# A pass that runs is not asserted to take > 0.0 ms: at 64x36 a GPU draws
+# it in microseconds, which the table's 0.1 ms rounds to 0.0; a pass that
+# does not run is exactly 0.
+"$tideline" still "$timelines/voyage.tl" --frame 120 --size 64x36 --quality draft -v \
+  -o "$work/v120.png" 2>"$work/v120.err"
+grep -q '^tideline still: features: .*giant wave.*boat' "$work/v120.err" ||
+  fail "voyage frame 120 lacks the boat or the giant wave: $(cat "$work/v120.err")"
+
 "$tideline" bench "$timelines/voyage.tl" --size 64x36 --frames 120 --presets draft,seed --repeat 1 \
   --time-only --passes -q >"$work/p.md"
 "$tideline" bench "$timelines/calm.tl" --size 64x36 --frames 120 --presets draft,seed --repeat 1 \
@@ -64,10 +73,9 @@ awk -F' *[|] *' '$2 ~ /^(draft|seed)$/ && NF == 13 {
   for (i = 3; i <= 9; i++) { if ($i !~ /^[0-9]+\.[0-9]$/) { print "field " i ": " $0; bad = 1 }; sum += $i }
   if (sum < $10 - 0.4 || sum > $10 + 0.4) { print "sum " sum ": " $0; bad = 1 }
   if (!($11 >= $10 - 0.1)) { print "render: " $0; bad = 1 }
-  if ($12 == "voyage.tl:120" && !($3 > 0 && $6 > 0)) { print "voyage boat/giant: " $0; bad = 1 }
   if ($12 == "calm.tl:120" && !($3 == 0 && $6 == 0)) { print "calm boat/giant: " $0; bad = 1 }
-  if ($2 == "draft" && !($4 > 0)) { print "draft prepass: " $0; bad = 1 }
-  if ($2 == "seed" && ($12 == "calm.tl:120" ? $4 != 0 : !($4 > 0))) { print "seed prepass: " $0; bad = 1 }
+  if ($2 == "seed" && $12 == "calm.tl:120" && $4 != 0) { print "seed prepass: " $0; bad = 1 }
+  if ($12 != "voyage.tl:120" && $12 != "calm.tl:120") { print "frame: " $0; bad = 1 }
 } END { if (rows != 4) { print "rows " rows; bad = 1 }; exit bad }' "$work/p.md" || fail "--passes table"
 grep -q '^| preset | boat' "$work/t.md" && fail "a passes table without --passes"
 
@@ -85,7 +93,7 @@ grep -q '^bench: reference calm.tl frame 0 (1/3)$' "$work/progress" || fail "pro
 # short, renders afresh.
 cache=$work/cache
 bench_cached() {
-  "$tideline" bench "$1" --size 64x36 --frames 0,120 --presets draft --repeat 1 \
+  "$tideline" bench "$1" --size 32x18 --frames 0,120 --presets draft --repeat 1 \
     --reference-cache "$cache" --csv "$2" -q >"$2.md" 2>"$2.err"
 }
 psnr_of() { awk -F, '$1 == "draft" { print $10 }' "$1"; }
