@@ -13,6 +13,10 @@
 #include "tl_run.h"
 #include "tl_test.h"
 
+#ifndef F_SETPIPE_SZ
+#define F_SETPIPE_SZ 1031 /* Linux's; <fcntl.h> has it only with _GNU_SOURCE */
+#endif
+
 static char dir[] = "/tmp/tideline-render-XXXXXX";
 static char six_path[600], cut_path[600];
 
@@ -341,22 +345,34 @@ static void test_interrupt_and_resume(void)
     in_dir(ref, sizeof ref, "ref");
     char long_tl[256];
     in_dir(long_tl, sizeof long_tl, "long.tl");
-    /* Long enough (several seconds) that the run cannot finish before the
-     * signal lands, even on a loaded machine. */
     write_text(long_tl, "tideline 1\nfps 24\nduration 80f\nsize 128x72\nquality preview\n"
                         "key camera.yaw linear\n  0s 0\n  80f 40\n");
     snprintf(pattern, sizeof pattern, "%s/f_####.exr", out);
     snprintf(first, sizeof first, "%s/f_0000.exr", out);
+    /* The 80 frames take 1.5 s here and a fraction of that on a GPU: the
+     * signal must not race the run's end. The run prints a line a frame
+     * (about 90 bytes, 7 KiB in all) into a pipe of one page that is not
+     * read until the signal is sent, so it stops about half way, however
+     * fast the machine, until the pipe is drained after the signal. */
+    int fds[2];
+    CHECK(pipe(fds) == 0);
+    CHECK(fcntl(fds[0], F_SETPIPE_SZ, 4096) == 4096);
     pid_t pid = fork();
     if (pid == 0) {
-        int devnull = open("/dev/null", O_WRONLY);
-        dup2(devnull, 2);
+        dup2(fds[1], 2);
+        close(fds[0]);
+        close(fds[1]);
         execl(tl_run_binary, tl_run_binary, "render", long_tl, "-o", pattern, (char *)NULL);
         _exit(127);
     }
+    close(fds[1]);
     for (int i = 0; i < 6000 && !exists(first); i++) /* up to 60 s */
         usleep(10000);
     kill(pid, SIGINT);
+    char drain[4096];
+    while (read(fds[0], drain, sizeof drain) > 0)
+        ;
+    close(fds[0]);
     int status = 0;
     waitpid(pid, &status, 0);
     CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 130);
