@@ -17,8 +17,12 @@ set_tests_properties(example_render_frame PROPERTIES LABELS gl
   PASS_REGULAR_EXPRESSION "frame 12 \\(t = 0.5000 s\\) -> example.png\nEXAMPLE_OK")
 tl_add_test(test_writer SOURCES test_writer.c ${PROJECT_SOURCE_DIR}/src/cli/tl_cli_writer.c
   LIBS tideline_core LABELS unit)
+# In two halves of about 10 s each: files and selection, then whole runs.
 tl_add_test(test_render_cmd SOURCES test_render_cmd.c LIBS tideline_gl
-  ARGS $<TARGET_FILE:tideline> LABELS gl)
+  ARGS $<TARGET_FILE:tideline> files LABELS gl)
+add_test(NAME test_render_cmd_runs COMMAND test_render_cmd $<TARGET_FILE:tideline> runs
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(test_render_cmd_runs PROPERTIES LABELS gl)
 # Every bundled timeline is valid.
 add_test(NAME check_bundled_timelines
   COMMAND sh -c "for f in ${PROJECT_SOURCE_DIR}/timelines/*.tl; do $<TARGET_FILE:tideline> check \"$f\" >/dev/null || exit 1; done")
@@ -45,11 +49,16 @@ add_test(NAME test_preview
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_preview.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines)
 set_tests_properties(test_preview PROPERTIES LABELS gl)
-# The bench in miniature: its table, CSV and plot (timings are not checked).
+# The bench in miniature: its table, CSV and plot (timings are not checked);
+# then its options, compare and refusals (the script's two parts).
 add_test(NAME test_bench
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
-          ${PROJECT_SOURCE_DIR}/timelines)
-set_tests_properties(test_bench PROPERTIES LABELS gl PASS_REGULAR_EXPRESSION "BENCH_OK")
+          ${PROJECT_SOURCE_DIR}/timelines measure)
+add_test(NAME test_bench_options
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_bench.sh $<TARGET_FILE:tideline>
+          ${PROJECT_SOURCE_DIR}/timelines options)
+set_tests_properties(test_bench test_bench_options PROPERTIES LABELS gl
+  PASS_REGULAR_EXPRESSION "BENCH_OK")
 # still's and bench's progress on a (pseudo-)terminal.
 add_test(NAME test_progress
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_progress.sh $<TARGET_FILE:tideline>
@@ -59,8 +68,12 @@ set_tests_properties(test_progress PROPERTIES LABELS gl PASS_REGULAR_EXPRESSION 
 # table. The timeout is the "no hang" bound.
 tl_add_test(test_extremes SOURCES test_extremes.c LIBS tideline_gl LABELS gl)
 set_tests_properties(test_extremes PROPERTIES TIMEOUT 300)
-tl_add_test(test_extremes_params SOURCES test_extremes_params.c LIBS tideline_gl LABELS gl)
-set_tests_properties(test_extremes_params PROPERTIES TIMEOUT 300)
+# In two halves: every channel's ends, then keys and boats.
+tl_add_test(test_extremes_params SOURCES test_extremes_params.c LIBS tideline_gl
+  ARGS channels LABELS gl)
+add_test(NAME test_extremes_keys COMMAND test_extremes_params keys
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(test_extremes_params test_extremes_keys PROPERTIES LABELS gl TIMEOUT 300)
 # Soak: renders killed (SIGKILL, SIGTERM) at random moments and resumed with
 # --skip-existing end as an uninterrupted run does, with no temporary left.
 add_test(NAME test_soak
