@@ -83,3 +83,7 @@ set_tests_properties(test_soak PROPERTIES LABELS "gl;slow" PASS_REGULAR_EXPRESSI
 # The bad-input catalogue of docs/errors.md through `render`, over a good frame.
 tl_add_test(test_errors SOURCES test_errors.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders LABELS gl)
+# The timeout is the "in bounded time" of its huge inputs (they take
+# milliseconds; a scan quadratic in the long line's length would take
+# far longer).
+set_tests_properties(test_errors PROPERTIES TIMEOUT 300)
