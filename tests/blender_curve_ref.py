@@ -1,12 +1,21 @@
 #!/usr/bin/env python3
-"""Expected values for tests/test_curve.c and tests/test_curve_ends.c, from
-Blender 3.4's F-curve formulas.
+"""Expected values for tests/test_curve.c, tests/test_curve_ends.c and
+tests/test_timeline.c, from Blender 3.4's F-curve formulas.
 
 Written from the formulas (BLI_easing, BKE_nurb_handle_calc for F-curves,
 BKE_nurb_handle_smooth_fcurve, the Cycles modifier, F-curve extrapolation),
 independently of tideline's C code, in plain Python floats (double; Blender
 itself computes in float, so it agrees to ~1e-7 of the value span). Times are
-in frames, as Blender keeps them. Run: python3 tests/blender_curve_ref.py
+in frames, as Blender keeps them.
+
+It writes the fixture tests/fixtures/curve_reference.txt, which test_curve,
+test_curve_ends and test_timeline read (ctest passes its path): one
+"NAME VALUE" line per expected value, NAME built from the case's inputs, "#"
+lines comments. Plain Python 3, no Blender needed; ctest's
+fixture_curve_reference checks that the file is this script's output. After a
+change here, regenerate it from the repository root and commit both:
+
+    python3 tests/blender_curve_ref.py > tests/fixtures/curve_reference.txt
 """
 import math
 
@@ -85,6 +94,11 @@ def section(title):
     print("\n# " + title)
 
 
+def value(name, v):
+    """One fixture line; %.17g gives back the same double in C's strtod."""
+    print("%s %.17g" % (name, v))
+
+
 def easing_cases():
     section("elastic and back (value - begin), frames at 24 fps")
     fps = 24.0
@@ -101,10 +115,9 @@ def easing_cases():
     ]
     for d, u, change, dur, amp, per in cases:
         v = elastic(d, u * dur, 0.0, change, dur, amp, per)
-        print("elastic %-6s u=%g change=%g dur=%gf amp=%g period=%gf (%.17g s): %.17g"
-              % (d, u, change, dur, amp, per, per / fps, v))
+        value("elastic.%s.u=%g.change=%g.dur=%gf.amp=%g.period=%gf" % (d, u, change, dur, amp, per), v)
     for d, u, s in [("in", 0.4, 3.0), ("out", 0.3, 0.0), ("in-out", 0.2, 2.5)]:
-        print("back %-6s u=%g s=%g change=2: %.17g" % (d, u, s, back(d, u, 0.0, 2.0, 1.0, s)))
+        value("back.%s.u=%g.s=%g.change=2" % (d, u, s), back(d, u, 0.0, 2.0, 1.0, s))
 
 
 # ---- keys and handles (BKE_fcurve_handles_recalc, calchandleNurb_intern) ---
@@ -479,10 +492,6 @@ def bezier_value(k0, k1, x):
     return pt(0.5 * (lo + hi), 1)
 
 
-def fmt(v):
-    return "%.17g" % v
-
-
 def handle_cases():
     fps = 24.0
     section("aligned handles at 24 fps (frame, value) space")
@@ -490,28 +499,36 @@ def handle_cases():
     # left (0,1), right (3,3) s. Blender in frames:
     ks = [key(0, 0), key(24, 1, "aligned", l=(0, 1), r=(72, 3)), key(48, 0)]
     recalc(ks)
-    print("aligned both: left =", fmt(ks[1]["l"][0] / fps), fmt(ks[1]["l"][1]),
-          "right =", fmt(ks[1]["r"][0] / fps), fmt(ks[1]["r"][1]))
+    value("aligned_both.left_t", ks[1]["l"][0] / fps)
+    value("aligned_both.left_v", ks[1]["l"][1])
+    value("aligned_both.right_t", ks[1]["r"][0] / fps)
+    value("aligned_both.right_v", ks[1]["r"][1])
     ks = [key(0, 0), key(24, 1, "aligned", "auto-clamped", l=(12, 1.5)), key(48, 0)]
     recalc(ks)
-    print("aligned left, auto-clamped right: left =", fmt(ks[1]["l"][0] / fps), fmt(ks[1]["l"][1]))
+    value("aligned_left_auto_clamped_right.left_t", ks[1]["l"][0] / fps)
+    value("aligned_left_auto_clamped_right.left_v", ks[1]["l"][1])
     # A missing aligned handle (on its key) gets length 1 in frame space.
     ks = [key(0, 0), key(24, 1, "aligned", l=(24, 1), r=(36, 2)), key(48, 0)]
     recalc(ks)
-    print("aligned, left on its key: left =", fmt(ks[1]["l"][0] / fps), fmt(ks[1]["l"][1]))
+    value("aligned_left_on_its_key.left_t", ks[1]["l"][0] / fps)
+    value("aligned_left_on_its_key.left_v", ks[1]["l"][1])
     # value of a segment with an aligned key at 24 fps
     ks = [key(0, 0, "vector"), key(24, 1, "aligned", l=(12, 0.2), r=(30, 1.5)), key(48, 0, "vector")]
     recalc(ks)
-    print("aligned segment value at t=1.5 s:", fmt(bezier_value(ks[1], ks[2], 36)),
-          "left", fmt(ks[1]["l"][0] / fps), fmt(ks[1]["l"][1]))
+    value("aligned_segment.at=1.5", bezier_value(ks[1], ks[2], 36))
+    value("aligned_segment.left_t", ks[1]["l"][0] / fps)
+    value("aligned_segment.left_v", ks[1]["l"][1])
 
     section("handles on the wrong side: swapped (both) / clamped (one)")
     ks = [key(0, 0, "vector"), key(24, 1, "free", l=(36, 3), r=(12, -1)), key(48, 0, "vector")]
     recalc(ks)
-    print("swapped: left", ks[1]["l"], "right", ks[1]["r"])
+    value("swapped.left_t", ks[1]["l"][0] / fps)
+    value("swapped.left_v", ks[1]["l"][1])
+    value("swapped.right_t", ks[1]["r"][0] / fps)
+    value("swapped.right_v", ks[1]["r"][1])
     for t in (0.5, 1.25, 1.5):
         seg = (ks[0], ks[1]) if t < 1 else (ks[1], ks[2])
-        print("  value at %g s: %s" % (t, fmt(bezier_value(seg[0], seg[1], t * fps))))
+        value("swapped.at=%g" % t, bezier_value(seg[0], seg[1], t * fps))
 
 
 
@@ -563,12 +580,21 @@ def cycle_cases():
     for t in (1.0, 2.0, 3.0, 1.5, -1.0, -0.5, -2.0):
         m = cycles_time(pts[0], pts[-1], t, "cycle", "cycle")
         v = linear_value(pts, t) if m is None else linear_value(pts, m[0]) + m[1]
-        print("cycle 0->1 at %g: %s" % (t, fmt(v)))
+        value("cycle_0_1.at=%g" % t, v)
     pts = [(0.0, 0.0), (1.0, 1.0), (2.0, 0.5)]
     for t in (-0.25, -1.5, -2.0, -3.25, -4.5, -7.0, 2.5, 4.0, 4.5, 3.0, 6.5):
         m = cycles_time(pts[0], pts[-1], t, "mirror", "offset", 3, 2)
         v = linear_value(pts, t) if m is None else linear_value(pts, m[0]) + m[1]
-        print("before ping-pong x3, after offset x2, at %g: %s" % (t, fmt(v)))
+        value("pingpong3_offset2.at=%g" % t, v)
+
+
+def handles(prefix, ks, fps=24.0):
+    """Each key's handles, in seconds: PREFIX.keyI.left_t/left_v/right_t/right_v."""
+    for i, k in enumerate(ks):
+        value("%s.key%d.left_t" % (prefix, i), k["l"][0] / fps)
+        value("%s.key%d.left_v" % (prefix, i), k["l"][1])
+        value("%s.key%d.right_t" % (prefix, i), k["r"][0] / fps)
+        value("%s.key%d.right_v" % (prefix, i), k["r"][1])
 
 
 def smooth_cases():
@@ -582,38 +608,37 @@ def smooth_cases():
     for types in ("auto", "auto-clamped"):
         ks = make(types)
         recalc(ks, smoothing=True)
-        print(types, "handles (left t, v, right t, v):")
-        for k in ks:
-            print("  {%s, %s, %s, %s}," % (fmt(k["l"][0] / fps), fmt(k["l"][1]),
-                                            fmt(k["r"][0] / fps), fmt(k["r"][1])))
+        handles("smooth.%s" % types, ks)
         for t in (0.5, 1.2, 2.2, 3.5, 5.0):
             i = max(j for j in range(len(ks) - 1) if ks[j]["x"] <= t * fps)
-            print("  value at %g s: %s" % (t, fmt(bezier_value(ks[i], ks[i + 1], t * fps))))
+            value("smooth.%s.at=%g" % (types, t), bezier_value(ks[i], ks[i + 1], t * fps))
     section("Continuous Acceleration, a full cycle (auto), keys in seconds at 24 fps")
     cyc = [(0, 0), (1, 1), (2.5, -0.5), (4, 0)]
     ks = [key(x * fps, y, "auto") for x, y in cyc]
     recalc(ks, cyclic=True, smoothing=True)
-    for k in ks:
-        print("  {%s, %s, %s, %s}," % (fmt(k["l"][0] / fps), fmt(k["l"][1]),
-                                        fmt(k["r"][0] / fps), fmt(k["r"][1])))
+    handles("smooth.cycle", ks)
     for t in (0.3, 1.7, 3.6):
         i = max(j for j in range(len(ks) - 1) if ks[j]["x"] <= t * fps)
-        print("  value at %g s: %s" % (t, fmt(bezier_value(ks[i], ks[i + 1], t * fps))))
+        value("smooth.cycle.at=%g" % t, bezier_value(ks[i], ks[i + 1], t * fps))
 
 
 def language_cases():
     section("tests/test_timeline.c (fps 30)")
     for u in (0.3, 0.5):
-        print("ease-out-elastic amplitude 0.5 period 6f, 0 -> 10 over 30 frames, u=%g: %s"
-              % (u, fmt(elastic("out", u * 30, 0.0, 10.0, 30.0, 0.5, 6.0))))
-    print("ease-in-elastic, an inserted key's defaults, 0 -> 10 over 30 frames, u=0.8: %s"
-          % fmt(elastic("in", 0.8 * 30, 0.0, 10.0, 30.0, 0.8, 4.1)))
+        # ease-out-elastic amplitude 0.5 period 6f, 0 -> 10 over 30 frames
+        value("timeline.exposure_elastic.u=%g" % u, elastic("out", u * 30, 0.0, 10.0, 30.0, 0.5, 6.0))
+    # ease-in-elastic, an inserted key's defaults, 0 -> 10 over 30 frames
+    value("timeline.speed_elastic.u=0.8", elastic("in", 0.8 * 30, 0.0, 10.0, 30.0, 0.8, 4.1))
     m = cycles_time((0, 0), (2, 0.5), -3.5, "mirror", "offset", 2, 1)
-    print("before ping-pong 2 at -3.5 s (keys 0 0, 1 1, 2 0.5):",
-          fmt(linear_value([(0, 0), (1, 1), (2, 0.5)], m[0]) + m[1]))
+    # before: ping-pong 2, keys (0 s, 0), (1 s, 1), (2 s, 0.5)
+    value("timeline.pingpong2.at=-3.5", linear_value([(0, 0), (1, 1), (2, 0.5)], m[0]) + m[1])
 
 
 if __name__ == "__main__":
+    print("# Expected values for tests/test_curve.c, test_curve_ends.c and test_timeline.c, written by")
+    print("# tests/blender_curve_ref.py (Blender 3.4's F-curve formulas); do not edit. Regenerate:")
+    print("#   python3 tests/blender_curve_ref.py > tests/fixtures/curve_reference.txt")
+    print("# NAME VALUE a line; times in seconds unless NAME says f (frames).")
     language_cases()
     easing_cases()
     handle_cases()

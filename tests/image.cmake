@@ -1,4 +1,6 @@
 # Image I/O tests.
-tl_add_test(test_image_io SOURCES test_image_io.c LIBS tideline_core)
+tl_add_test(test_image_io SOURCES test_image_io.c LIBS tideline_core LABELS unit)
 # PSNR, SSIM and pixel-error percentiles (tideline compare / bench).
-tl_add_test(test_metrics SOURCES test_metrics.c LIBS tideline_core)
+# Against the values tests/metrics_reference.py wrote (the file says how).
+tl_add_test(test_metrics SOURCES test_metrics.c LIBS tideline_core
+  ARGS ${CMAKE_CURRENT_SOURCE_DIR}/fixtures/metrics_reference.txt LABELS unit)

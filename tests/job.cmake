@@ -1,3 +1,3 @@
 # Job and movie tests.
-tl_add_test(test_job SOURCES test_job.c LIBS tideline_core)
-tl_add_test(test_movie SOURCES test_movie.c LIBS tideline_core)
+tl_add_test(test_job SOURCES test_job.c LIBS tideline_core LABELS unit)
+tl_add_test(test_movie SOURCES test_movie.c LIBS tideline_core LABELS unit)

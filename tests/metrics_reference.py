@@ -1,6 +1,11 @@
 #!/usr/bin/env python3
 # The expected values of tests/test_metrics.c, from an independent
-# implementation in plain Python (double precision). Run: python3 tests/metrics_reference.py
+# implementation in plain Python (double precision). It writes the fixture
+# tests/fixtures/metrics_reference.txt, which test_metrics reads (ctest
+# passes its path): "NAME VALUE" lines, "#" lines comments; ctest's
+# fixture_metrics_reference checks that the file is this script's output.
+# After a change here, regenerate it from the repository root and commit both:
+#     python3 tests/metrics_reference.py > tests/fixtures/metrics_reference.txt
 # Independent SSIM (Wang et al. 2004) with the test's window and border rule:
 # 11-tap Gaussian sigma 1.5, edges replicated, luma of the encoded values.
 import math
@@ -17,14 +22,18 @@ def blur(img):
 prod=lambda P,Q: [[P[y][x]*Q[y][x] for x in range(W)] for y in range(H)]
 ma,mb,maa,mbb,mab=blur(A),blur(B),blur(prod(A,A)),blur(prod(B,B)),blur(prod(A,B))
 c1,c2=0.01**2,0.03**2
+print("# Expected values for tests/test_metrics.c, written by tests/metrics_reference.py; do not")
+print("# edit. Regenerate: python3 tests/metrics_reference.py > tests/fixtures/metrics_reference.txt")
+print("# The textured pair (pattern_a against pattern_b, %dx%d, grey):" % (W, H))
 tot=0
 for y in range(H):
     for x in range(W):
         va=maa[y][x]-ma[y][x]**2; vb=mbb[y][x]-mb[y][x]**2; cv=mab[y][x]-ma[y][x]*mb[y][x]
         tot+=(2*ma[y][x]*mb[y][x]+c1)*(2*cv+c2)/((ma[y][x]**2+mb[y][x]**2+c1)*(va+vb+c2))
-print("ssim %.10f"%(tot/(W*H)))
+print("ssim %.17g"%(tot/(W*H)))
 mse=sum((A[y][x]-B[y][x])**2 for y in range(H) for x in range(W))/(W*H)
-print("psnr %.10f"%(-10*math.log10(mse)))
+print("psnr %.17g"%(-10*math.log10(mse)))
 errs=sorted(abs(A[y][x]-B[y][x])*255 for y in range(H) for x in range(W))
-r=math.ceil(0.99*len(errs)); print("p99 %.10f max %.10f"%(errs[r-1],errs[-1]))
-print("const", (2*.5*.6+c1)/(.25+.36+c1))
+r=math.ceil(0.99*len(errs)); print("p99 %.17g\nmax_error %.17g"%(errs[r-1],errs[-1]))
+print("# Flat 0.5 against flat 0.6: SSIM's luminance term alone.")
+print("flat_ssim %.17g"%((2*.5*.6+c1)/(.25+.36+c1)))

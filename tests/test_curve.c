@@ -1,10 +1,15 @@
 /* Keyframe engine tests: easing, interpolation, Bezier handles and
  * segments (their ends, cuts and limits in test_curve_ends.c). Expected
- * values are derived by hand (closed forms) or by an independent method
- * (dense sampling of the Bezier cubic), never by calling the code under
- * test. */
+ * values are derived by hand (closed forms), by an independent method
+ * (dense sampling of the Bezier cubic), or read from the fixture
+ * tests/fixtures/curve_reference.txt (argv[1]) that
+ * tests/blender_curve_ref.py writes from Blender's formulas; never by
+ * calling the code under test. After changing the script, regenerate the
+ * fixture from the repository root:
+ *     python3 tests/blender_curve_ref.py > tests/fixtures/curve_reference.txt */
 #include "timeline/tl_ease.h"
 #include "tl_curve_test.h"
+#include "tl_fixture.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -129,42 +134,52 @@ static void test_ease(void)
     CHECK_STR_CONTAINS(tl_ease_name(TL_EASE_BOUNCE, TL_EASE_IN), "bounce");
 }
 
-/* Blender's per-key back, amplitude and period. Expected values from
- * tests/blender_curve_ref.py (Blender 3.4's BLI_easing formulas, run in
- * frames at 24 fps; the curve engine gets the same segment in seconds). */
+/* Blender's per-key back, amplitude and period. Expected values from the
+ * fixture (Blender 3.4's BLI_easing formulas, run in frames at 24 fps over
+ * a 24-frame segment; the curve engine gets the same segment in seconds),
+ * named by each case's inputs. */
 static void test_ease_params(void)
 {
     const double fps = 24.0;
+    static const char *const dir_name[TL_EASE_DIR_COUNT] = {
+        [TL_EASE_IN] = "in", [TL_EASE_OUT] = "out", [TL_EASE_IN_OUT] = "in-out"};
     struct {
         tl_ease_family f;
         tl_ease_dir d;
-        double u, change, amplitude, period_frames, want;
+        double u, change, amplitude, period_frames;
     } cases[] = {
         /* an inserted key's defaults: amplitude 0.8, period 4.1 frames */
-        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.3, 10, 0.8, 4.1, 9.9961697266309955},
-        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.02, 10, 0.8, 4.1, 6.3262577994864708}, /* blend */
-        {TL_EASE_ELASTIC, TL_EASE_IN, 0.9, 10, 0.8, 4.1, -0.34382784279488066},
-        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.45, 10, 0.8, 4.1, -0.17191392139744033},
-        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.7, 10, 0.8, 4.1, 10.01358918875003},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.3, 10, 0.8, 4.1},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.02, 10, 0.8, 4.1}, /* blend */
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.9, 10, 0.8, 4.1},
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.45, 10, 0.8, 4.1},
+        {TL_EASE_ELASTIC, TL_EASE_IN_OUT, 0.7, 10, 0.8, 4.1},
         /* amplitude above the change: the asin phase */
-        {TL_EASE_ELASTIC, TL_EASE_IN, 0.7, 1, 2, 6, 0.24453690018345087},
-        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.4, -1, 2, 6, -0.98693394209154306},
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.7, 1, 2, 6},
+        {TL_EASE_ELASTIC, TL_EASE_OUT, 0.4, -1, 2, 6},
         /* amplitude 0, period 0 (0.3 of the segment): only the end blend */
-        {TL_EASE_ELASTIC, TL_EASE_IN, 0.95, 3, 0, 0, 0.35355339059326912},
+        {TL_EASE_ELASTIC, TL_EASE_IN, 0.95, 3, 0, 0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         tl_ease_params p = {TL_EASE_BACK_OVERSHOOT, cases[i].amplitude,
                             cases[i].period_frames / fps};
         double got = tl_ease_segment(cases[i].f, cases[i].d, &p, cases[i].u, cases[i].change, 1.0);
-        CHECK_NEAR(got, cases[i].want, 1e-12);
+        CHECK_NEAR(got,
+                   tl_fixture("elastic.%s.u=%g.change=%g.dur=24f.amp=%g.period=%gf",
+                              dir_name[cases[i].d], cases[i].u, cases[i].change, cases[i].amplitude,
+                              cases[i].period_frames),
+                   1e-12);
     }
     /* back with its own overshoot; 0 overshoots nothing (a plain cubic). */
     tl_ease_params b = {3.0, 0.8, 4.1 / fps};
-    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN, &b, 0.4, 2.0, 1.0), -0.448, 1e-12);
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN, &b, 0.4, 2.0, 1.0),
+               tl_fixture("back.in.u=0.4.s=3.change=2"), 1e-12);
     b.back = 0.0;
-    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_OUT, &b, 0.3, 2.0, 1.0), 1.314, 1e-12);
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_OUT, &b, 0.3, 2.0, 1.0),
+               tl_fixture("back.out.u=0.3.s=0.change=2"), 1e-12);
     b.back = 2.5;
-    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN_OUT, &b, 0.2, 2.0, 1.0), -0.302, 1e-12);
+    CHECK_NEAR(tl_ease_segment(TL_EASE_BACK, TL_EASE_IN_OUT, &b, 0.2, 2.0, 1.0),
+               tl_fixture("back.in-out.u=0.2.s=2.5.change=2"), 1e-12);
     /* The ends are exact, whatever the settings. */
     CHECK(tl_ease_segment(TL_EASE_ELASTIC, TL_EASE_IN_OUT, &b, 1.0, 7.0, 2.0) == 7.0);
     CHECK(tl_ease_segment(TL_EASE_ELASTIC, TL_EASE_OUT, &b, 0.0, 7.0, 2.0) == 0.0);
@@ -339,20 +354,22 @@ static void test_handles(void)
     CHECK_NEAR(c.keys[1].left.v, 1 - sqrt(0.5), 1e-12);
     /* At 24 fps (issue 13, point 2; the old expectation above was the
      * defect at any other rate): the left's 24-frame length lies along the
-     * right's (48 frames, 2). Values from tests/blender_curve_ref.py. */
+     * right's (48 frames, 2). Values from the fixture. */
     c.fps = 24.0;
     c.keys[1].left = (tl_curve_point){0.0, 1.0};
     tl_curve_prepare(&c);
-    CHECK_NEAR(c.keys[1].left.t, 0.00086692690764807645, 1e-12);
-    CHECK_NEAR(c.keys[1].left.v, 0.0008669269076480024, 1e-12);
+    CHECK_NEAR(c.keys[1].left.t, tl_fixture("aligned_both.left_t"), 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, tl_fixture("aligned_both.left_v"), 1e-12);
+    CHECK_NEAR(c.keys[1].right.t, tl_fixture("aligned_both.right_t"), 1e-12);
+    CHECK_NEAR(c.keys[1].right.v, tl_fixture("aligned_both.right_v"), 1e-12);
     /* Aligned left with an auto-clamped right (flat at the maximum): the
      * left's (12 frames, 0.5) becomes 13 frames long, flat. */
     c.keys[1].right_type = TL_HANDLE_AUTO_CLAMPED;
     c.keys[1].left = (tl_curve_point){0.5, 1.5};
     tl_curve_prepare(&c);
     CHECK_NEAR(c.keys[1].right.v, 1, 0);
-    CHECK_NEAR(c.keys[1].left.t, 0.49956616043898694, 1e-12);
-    CHECK_NEAR(c.keys[1].left.v, 1, 1e-15);
+    CHECK_NEAR(c.keys[1].left.t, tl_fixture("aligned_left_auto_clamped_right.left_t"), 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, tl_fixture("aligned_left_auto_clamped_right.left_v"), 1e-15);
     /* Free stays where it is, except a handle on the wrong side of its key
      * in time, which is clamped to the key's time (Blender). */
     c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_FREE;
@@ -386,8 +403,8 @@ static void test_handles(void)
 }
 
 /* Issue 13: Blender's F-curve rules the old engine missed. Expected values
- * from tests/blender_curve_ref.py (Blender 3.4's formulas in frames at
- * 24 fps, independent of this code). */
+ * from the fixture (Blender 3.4's formulas in frames at 24 fps,
+ * independent of this code). */
 static void test_blender_handles(void)
 {
     tl_curve c;
@@ -397,8 +414,8 @@ static void test_blender_handles(void)
     c.keys[1].left_type = c.keys[1].right_type = TL_HANDLE_ALIGNED;
     c.keys[1].right = (tl_curve_point){1.5, 2.0};
     tl_curve_prepare(&c);
-    CHECK_NEAR(c.keys[1].left.t, 0.95847726007312994, 1e-12);
-    CHECK_NEAR(c.keys[1].left.v, 0.91695452014626, 1e-12);
+    CHECK_NEAR(c.keys[1].left.t, tl_fixture("aligned_left_on_its_key.left_t"), 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, tl_fixture("aligned_left_on_its_key.left_v"), 1e-12);
     tl_curve_free(&c);
 
     /* An aligned key between vector ends: the curve's value, not only its
@@ -408,9 +425,9 @@ static void test_blender_handles(void)
     c.keys[1].left = (tl_curve_point){0.5, 0.2};
     c.keys[1].right = (tl_curve_point){1.25, 1.5};
     tl_curve_prepare(&c);
-    CHECK_NEAR(c.keys[1].left.t, 0.50062107538981226, 1e-12);
-    CHECK_NEAR(c.keys[1].left.v, 0.001242150779624418, 1e-12);
-    CHECK_NEAR(tl_curve_eval(&c, 1.5), 0.763849221159555, 1e-9);
+    CHECK_NEAR(c.keys[1].left.t, tl_fixture("aligned_segment.left_t"), 1e-12);
+    CHECK_NEAR(c.keys[1].left.v, tl_fixture("aligned_segment.left_v"), 1e-12);
+    CHECK_NEAR(tl_curve_eval(&c, 1.5), tl_fixture("aligned_segment.at=1.5"), 1e-9);
     tl_curve_free(&c);
 
     /* Both handles on the wrong side of their key: swapped (Blender's
@@ -420,24 +437,27 @@ static void test_blender_handles(void)
     c.keys[1].left = (tl_curve_point){1.5, 3.0};
     c.keys[1].right = (tl_curve_point){0.5, -1.0};
     tl_curve_prepare(&c);
-    CHECK(c.keys[1].left.t == 0.5 && c.keys[1].left.v == -1.0);
-    CHECK(c.keys[1].right.t == 1.5 && c.keys[1].right.v == 3.0);
-    CHECK_NEAR(tl_curve_eval(&c, 0.5), -0.1285626189824795, 1e-9);
-    CHECK_NEAR(tl_curve_eval(&c, 1.25), 1.679723908894482, 1e-9);
-    CHECK_NEAR(tl_curve_eval(&c, 1.5), 1.5476043649707996, 1e-9);
+    CHECK(c.keys[1].left.t == tl_fixture("swapped.left_t") &&
+          c.keys[1].left.v == tl_fixture("swapped.left_v"));
+    CHECK(c.keys[1].right.t == tl_fixture("swapped.right_t") &&
+          c.keys[1].right.v == tl_fixture("swapped.right_v"));
+    static const double swapped_at[] = {0.5, 1.25, 1.5};
+    for (int i = 0; i < 3; i++)
+        CHECK_NEAR(tl_curve_eval(&c, swapped_at[i]), tl_fixture("swapped.at=%g", swapped_at[i]),
+                   1e-9);
     tl_curve_free(&c);
 }
 
-/* Continuous Acceleration smoothing. Expected handles and values from
- * tests/blender_curve_ref.py (BKE_nurb_handle_smooth_fcurve's equations
- * solved by dense Gaussian elimination). */
-static void check_handles(const tl_curve *c, const double want[][4], size_t n)
+/* Continuous Acceleration smoothing. Expected handles and values from the
+ * fixture (BKE_nurb_handle_smooth_fcurve's equations solved by dense
+ * Gaussian elimination), under `prefix`. */
+static void check_handles(const tl_curve *c, const char *prefix, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
-        CHECK_NEAR(c->keys[i].left.t, want[i][0], 1e-12);
-        CHECK_NEAR(c->keys[i].left.v, want[i][1], 1e-12);
-        CHECK_NEAR(c->keys[i].right.t, want[i][2], 1e-12);
-        CHECK_NEAR(c->keys[i].right.v, want[i][3], 1e-12);
+        CHECK_NEAR(c->keys[i].left.t, tl_fixture("%s.key%zu.left_t", prefix, i), 1e-12);
+        CHECK_NEAR(c->keys[i].left.v, tl_fixture("%s.key%zu.left_v", prefix, i), 1e-12);
+        CHECK_NEAR(c->keys[i].right.t, tl_fixture("%s.key%zu.right_t", prefix, i), 1e-12);
+        CHECK_NEAR(c->keys[i].right.v, tl_fixture("%s.key%zu.right_v", prefix, i), 1e-12);
     }
 }
 
@@ -445,27 +465,8 @@ static void test_smoothing(void)
 {
     static const double ts[] = {0, 1, 1.5, 3, 4, 6}, vs[] = {0, 2, 2.5, 1, 1.5, -1};
     static const double at[] = {0.5, 1.2, 2.2, 3.5, 5.0};
-    static const double auto_h[][4] = {
-        {-0.33333333333333331, 0, 0.33333333333333331, 0},
-        {0.66666666666666663, 1.3353825136612021, 1.1666666666666667, 2.3323087431693987},
-        {1.3333333333333333, 2.4969262295081966, 2, 2.5092213114754101},
-        {2.5, 1.0645491803278688, 3.3333333333333335, 0.95696721311475408},
-        {3.6666666666666665, 1.5273224043715847, 4.666666666666667, 1.4453551912568305},
-        {5.333333333333333, -1, 6.666666666666667, -1},
-    };
-    static const double auto_v[] = {0.75076844262295084, 2.3186721311475407, 1.8510528233151182,
-                                    1.2441086065573768, 0.22950819672131151};
-    /* Auto-clamped: the extremes lock flat and split the runs. */
-    static const double clamped_h[][4] = {
-        {-0.33333333333333331, 0, 0.33333333333333331, 0},
-        {0.66666666666666663, 1.3333333333333335, 1.1666666666666667, 2.3333333333333335},
-        {1.3333333333333333, 2.5, 2, 2.5},
-        {2.5, 1, 3.3333333333333335, 1},
-        {3.6666666666666665, 1.5, 4.666666666666667, 1.5},
-        {5.333333333333333, -1, 6.666666666666667, -1},
-    };
-    static const double clamped_v[] = {0.75, 2.3199999999999998, 1.8248888888888886,
-                                       1.2499999999999998, 0.25};
+    /* auto, then auto-clamped: the extremes lock flat and split the runs. */
+    static const char *const prefix[2] = {"smooth.auto", "smooth.auto-clamped"};
     for (int pass = 0; pass < 2; pass++) {
         tl_curve c;
         tl_curve_init(&c);
@@ -476,9 +477,9 @@ static void test_smoothing(void)
         }
         c.smoothing = TL_SMOOTH_CONTINUOUS;
         tl_curve_prepare(&c);
-        check_handles(&c, pass ? clamped_h : auto_h, 6);
+        check_handles(&c, prefix[pass], 6);
         for (int i = 0; i < 5; i++)
-            CHECK_NEAR(tl_curve_eval(&c, at[i]), (pass ? clamped_v : auto_v)[i], 1e-9);
+            CHECK_NEAR(tl_curve_eval(&c, at[i]), tl_fixture("%s.at=%g", prefix[pass], at[i]), 1e-9);
         /* Without smoothing the same keys give other handles (0.39 of each gap). */
         c.smoothing = TL_SMOOTH_NONE;
         tl_curve_prepare(&c);
@@ -489,12 +490,6 @@ static void test_smoothing(void)
     /* A full cycle of auto keys solves as one closed system; the first
      * key's left handle mirrors its right (Blender's endpoint rule). */
     static const double cyc_t[] = {0, 1, 2.5, 4}, cyc_v[] = {0, 1, -0.5, 0};
-    static const double cyc_h[][4] = {
-        {-0.33333333333333331, -0.41269841269841279, 0.33333333333333331, 0.41269841269841279},
-        {0.66666666666666663, 0.96825396825396826, 1.5, 1.0476190476190477},
-        {2, -0.083333333333333204, 3, -0.91666666666666674},
-        {3.5, -0.61904761904761918, 4.5, 0.61904761904761918},
-    };
     tl_curve c;
     tl_curve_init(&c);
     for (int i = 0; i < 4; i++) {
@@ -505,11 +500,11 @@ static void test_smoothing(void)
     c.smoothing = TL_SMOOTH_CONTINUOUS;
     tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
-    check_handles(&c, cyc_h, 4);
-    CHECK_NEAR(tl_curve_eval(&c, 0.3), 0.39200000000000013, 1e-9);
-    CHECK_NEAR(tl_curve_eval(&c, 1.7), 0.48903703703703727, 1e-9);
-    CHECK_NEAR(tl_curve_eval(&c, 3.6), -0.41921693121693149, 1e-9);
-    CHECK_NEAR(tl_curve_eval(&c, 3.6 + 4e5), -0.41921693121693149, 1e-8);
+    check_handles(&c, "smooth.cycle", 4);
+    CHECK_NEAR(tl_curve_eval(&c, 0.3), tl_fixture("smooth.cycle.at=0.3"), 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 1.7), tl_fixture("smooth.cycle.at=1.7"), 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 3.6), tl_fixture("smooth.cycle.at=3.6"), 1e-9);
+    CHECK_NEAR(tl_curve_eval(&c, 3.6 + 4e5), tl_fixture("smooth.cycle.at=3.6"), 1e-8);
     tl_curve_free(&c);
 }
 
@@ -617,8 +612,10 @@ static void test_bezier_segments(void)
         tl_curve_free(&c);
     }
 }
-int main(void)
+int main(int argc, char **argv)
 {
+    if (!tl_fixture_load(argc > 1 ? argv[1] : NULL))
+        TEST_END();
     test_ease();
     test_ease_params();
     test_constant_linear_ease();

@@ -1,9 +1,14 @@
 /* Keyframe engine tests at a curve's ends and limits: extrapolation and
  * cycles, cuts, numerical stability, validation, angle unwrapping and the
  * names (test_curve.c has the curve between its keys). Expected values are
- * derived by hand, never by calling the code under test. */
+ * derived by hand or read from the fixture tests/fixtures/curve_reference.txt
+ * (argv[1]) that tests/blender_curve_ref.py writes from Blender's formulas,
+ * never by calling the code under test. After changing the script,
+ * regenerate the fixture from the repository root:
+ *     python3 tests/blender_curve_ref.py > tests/fixtures/curve_reference.txt */
 #include "timeline/tl_ease.h"
 #include "tl_curve_test.h"
+#include "tl_fixture.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -113,7 +118,7 @@ static void test_extrapolation(void)
 }
 
 /* Cycle seams, per-side modes and repeat counts (Blender's Cycles
- * modifier). Expected values from tests/blender_curve_ref.py. */
+ * modifier). Expected values from the fixture. */
 static void test_cycles_modifier(void)
 {
     /* Issue 13, point 4: the last key's value at the end of every cycle
@@ -125,14 +130,14 @@ static void test_cycles_modifier(void)
     add(&c, key(1.0, 1.0, TL_INTERP_LINEAR));
     tl_curve_set_extrap(&c, TL_EXTRAP_CYCLE);
     tl_curve_prepare(&c);
-    CHECK(tl_curve_eval(&c, 1.0) == 1.0);
-    CHECK(tl_curve_eval(&c, 2.0) == 1.0); /* 0 before issue 13 */
-    CHECK(tl_curve_eval(&c, 3.0) == 1.0);
+    CHECK(tl_curve_eval(&c, 1.0) == tl_fixture("cycle_0_1.at=1"));
+    CHECK(tl_curve_eval(&c, 2.0) == tl_fixture("cycle_0_1.at=2")); /* 0 before issue 13 */
+    CHECK(tl_curve_eval(&c, 3.0) == tl_fixture("cycle_0_1.at=3"));
     CHECK(tl_curve_eval(&c, 1e6) == 1.0);
-    CHECK_NEAR(tl_curve_eval(&c, 1.5), 0.5, 1e-15);
-    CHECK(tl_curve_eval(&c, -1.0) == 0.0);
-    CHECK(tl_curve_eval(&c, -2.0) == 0.0);
-    CHECK_NEAR(tl_curve_eval(&c, -0.5), 0.5, 1e-15);
+    CHECK_NEAR(tl_curve_eval(&c, 1.5), tl_fixture("cycle_0_1.at=1.5"), 1e-15);
+    CHECK(tl_curve_eval(&c, -1.0) == tl_fixture("cycle_0_1.at=-1"));
+    CHECK(tl_curve_eval(&c, -2.0) == tl_fixture("cycle_0_1.at=-2"));
+    CHECK_NEAR(tl_curve_eval(&c, -0.5), tl_fixture("cycle_0_1.at=-0.5"), 1e-15);
     tl_curve_free(&c);
 
     /* Before: ping-pong 3 times; after: cycle-offset twice; then the end
@@ -148,11 +153,11 @@ static void test_cycles_modifier(void)
     c.after_cycles = 2;
     tl_curve_prepare(&c);
     const double t[] = {-0.25, -1.5, -2.0, -3.25, -4.5, -7.0, 2.5, 4.0, 4.5, 3.0, 6.5};
-    const double want[] = {0.25, 0.75, 0.5, 0.75, 0.5, 0.0, 1.0, 1.0, 1.5, 1.5, 0.5};
     for (int i = 0; i < 11; i++) {
-        if (fabs(tl_curve_eval(&c, t[i]) - want[i]) > 1e-12)
+        double want = tl_fixture("pingpong3_offset2.at=%g", t[i]);
+        if (fabs(tl_curve_eval(&c, t[i]) - want) > 1e-12)
             fprintf(stderr, "  cycles at t=%g\n", t[i]);
-        CHECK_NEAR(tl_curve_eval(&c, t[i]), want[i], 1e-12);
+        CHECK_NEAR(tl_curve_eval(&c, t[i]), want, 1e-12);
     }
     /* Cuts repeat only as far as the cycles reach: keys 0, 1, a cut at 1.5,
      * 3 (span 3). */
@@ -418,8 +423,10 @@ static void test_names(void)
     CHECK(k.left_type == TL_HANDLE_AUTO_CLAMPED && k.right_type == TL_HANDLE_AUTO_CLAMPED);
     CHECK(!k.cut);
 }
-int main(void)
+int main(int argc, char **argv)
 {
+    if (!tl_fixture_load(argc > 1 ? argv[1] : NULL))
+        TEST_END();
     test_extrapolation();
     test_cycles_modifier();
     test_cuts();

@@ -1,7 +1,11 @@
 /* tl_metrics against known values: closed forms, and an independent
- * implementation in plain Python (tests/metrics_reference.py prints every
- * expected number below). */
+ * implementation in plain Python, tests/metrics_reference.py, whose
+ * numbers this test reads from the fixture it wrote,
+ * tests/fixtures/metrics_reference.txt (argv[1]). After changing the
+ * script, regenerate the fixture from the repository root:
+ *     python3 tests/metrics_reference.py > tests/fixtures/metrics_reference.txt */
 #include "metrics/tl_metrics.h"
+#include "tl_fixture.h"
 #include "tl_test.h"
 
 #include <math.h>
@@ -27,9 +31,11 @@ static double pattern_b(int x, int y)
     return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     static float a[W * H * 4], b[W * H * 4];
+    if (!tl_fixture_load(argc > 1 ? argv[1] : NULL))
+        TEST_END();
 
     /* Identical images: the PSNR cap, SSIM 1, no error. */
     fill_grey(a, W * H, 0.3);
@@ -45,7 +51,7 @@ int main(void)
     fill_grey(b, W * H, 0.6);
     CHECK(tl_metrics_compare(a, b, W, H, &m) == 0);
     CHECK_NEAR(m.psnr, 20.0, 1e-5);
-    CHECK_NEAR(m.ssim, 0.98360924438616, 1e-6);
+    CHECK_NEAR(m.ssim, tl_fixture("flat_ssim"), 1e-6);
     CHECK_NEAR(m.p99, 25.5, 1e-4);
     CHECK_NEAR(m.max_error, 25.5, 1e-4);
 
@@ -53,7 +59,7 @@ int main(void)
     b[3] = 0.0f;
     CHECK_NEAR(tl_metrics_psnr(a, b, W * H), 20.0, 1e-5);
 
-    /* Textured images: values from metrics_reference.py. */
+    /* Textured images: values from the fixture. */
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
             float *pa = a + 4 * (y * W + x), *pb = b + 4 * (y * W + x);
@@ -62,10 +68,10 @@ int main(void)
             pa[3] = pb[3] = 1.0f;
         }
     CHECK(tl_metrics_compare(a, b, W, H, &m) == 0);
-    CHECK_NEAR(m.ssim, 0.9887672216, 2e-6);
-    CHECK_NEAR(m.psnr, 31.7143712940, 1e-4);
-    CHECK_NEAR(m.p99, 15.5442856569, 1e-3);
-    CHECK_NEAR(m.max_error, 15.7042675198, 1e-3);
+    CHECK_NEAR(m.ssim, tl_fixture("ssim"), 2e-6);
+    CHECK_NEAR(m.psnr, tl_fixture("psnr"), 1e-4);
+    CHECK_NEAR(m.p99, tl_fixture("p99"), 1e-3);
+    CHECK_NEAR(m.max_error, tl_fixture("max_error"), 1e-3);
     /* Symmetric. */
     tl_metrics back;
     CHECK(tl_metrics_compare(b, a, W, H, &back) == 0);

@@ -34,6 +34,11 @@ int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 /* A time left for progress lines: "48s", "3m05s", "2h10m"; "--" when not
  * known (negative or not finite). */
 void tl_cli_format_duration(double seconds, char *out, size_t size);
+/* Seconds a frame draws before still shows its progress line; progress
+ * lines (still's, bench's) come at most every half of it. 1, or
+ * TIDELINE_PROGRESS_DELAY when that is a number >= 0 (0: every update,
+ * which the tests use so as not to depend on a slow frame). */
+double tl_cli_progress_delay(void);
 
 /* Prints err as one line (with file:line:col when it has one). */
 void tl_cli_print_error(const char *command, const tl_error *err);

@@ -157,7 +157,8 @@ static void show_progress(void *ctx, const tl_bench_progress *p)
         return;
     }
     double now = tl_clock_seconds();
-    if (now - l->last < 0.5 && (p->share >= 0.0 || (p->shot > 0 && p->seconds_left < 0.0)))
+    if (now - l->last < 0.5 * tl_cli_progress_delay() &&
+        (p->share >= 0.0 || (p->shot > 0 && p->seconds_left < 0.0)))
         return;
     l->last = now;
     char eta[48] = "", of[32] = "", drawn[16] = "";

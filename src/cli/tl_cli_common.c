@@ -1,6 +1,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -50,4 +51,12 @@ void tl_cli_format_duration(double s, char *out, size_t size)
         snprintf(out, size, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
     else
         snprintf(out, size, "%dh%02dm", (int)(s / 3600), (int)fmod(s / 60, 60));
+}
+
+double tl_cli_progress_delay(void)
+{
+    const char *text = getenv("TIDELINE_PROGRESS_DELAY");
+    char *end = NULL;
+    double v = text ? strtod(text, &end) : 1.0;
+    return text && end != text && *end == '\0' && v >= 0.0 && isfinite(v) ? v : 1.0;
 }

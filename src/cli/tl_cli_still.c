@@ -21,9 +21,9 @@
 
 /* The progress line of a long frame (a `reference` still takes minutes on
  * a CPU renderer): on a terminal only, from its first second on, at most
- * two updates a second. */
+ * two updates a second (`delay`: tl_cli_progress_delay, 1 s). */
 typedef struct still_progress {
-    double start, last;
+    double start, last, delay;
     int shown;
 } still_progress;
 
@@ -31,7 +31,7 @@ static void still_progress_update(void *ctx, double fraction)
 {
     still_progress *p = ctx;
     double now = tl_clock_seconds(), spent = now - p->start;
-    if (spent < 1.0 || (now - p->last < 0.5 && fraction < 1.0) || fraction <= 0.0)
+    if (spent < p->delay || (now - p->last < 0.5 * p->delay && fraction < 1.0) || fraction <= 0.0)
         return;
     p->last = now;
     p->shown = 1;
@@ -315,7 +315,7 @@ int tl_cli_still(int argc, char **argv)
     if (!rc && o.verbose)
         fprintf(stderr, "tideline still: %s\n", tl_render_describe(render));
     double t1 = tl_clock_seconds();
-    still_progress progress = {t1, 0.0, 0};
+    still_progress progress = {t1, 0.0, tl_cli_progress_delay(), 0};
     if (!rc && isatty(STDERR_FILENO))
         tl_render_set_progress(render, still_progress_update, &progress);
     if (!rc)
