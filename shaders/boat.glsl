@@ -38,10 +38,10 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 }
 
 #ifdef TL_BOAT_MIRROR
-// The look-up's shift is held to this share of the height (facets steeper
-// than about 20 degrees): the program with the image runs only that far
-// around it (draw_area in src/gl/tl_renderer.c).
-#define TL_MIRROR_SHIFT 0.05
+// The look-up's shift is held to TL_MIRROR_SHIFT of the height (facets
+// steeper than about 20 degrees; src/gl/tl_renderer_internal.h defines it):
+// the program with the image runs only that far around it (draw_area in
+// src/gl/tl_renderer.c).
 
 // The sky's reflection in the water with the hull's mirror image over it,
 // looked up where the pixel is, shifted by the wave's slope (the classic

@@ -90,10 +90,12 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_WAKE_GROUPS %d\n"
                      "#define TL_WAKE_SPEED_NONE %.3f\n"
                      "#define TL_WAKE_SPEED_FULL %.3f\n"
-                     "#define TL_MARCH_RELAX 1.3\n",
+                     "#define TL_MARCH_RELAX %g\n"
+                     "#define TL_MIRROR_SHIFT %g\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, TL_WAKE_POINTS, TL_WAKE_GROUP,
-                     TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL);
+                     TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
+                     TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -341,7 +343,8 @@ void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u)
         glUniform3fv(tl_renderer_loc(p, "u_sun_light"), 1, u->sun_light);
         glUniform1f(tl_renderer_loc(p, "u_sun_cos_radius"), u->sun_cos_radius);
         glUniform3fv(tl_renderer_loc(p, "u_sky_ambient"), 1, u->sky_ambient);
-        glUniform1i(tl_renderer_loc(p, "u_sky_view"), 4); /* bound by tl_renderer_prepare_sky */
+        glUniform1i(tl_renderer_loc(p, "u_sky_view"),
+                    TL_UNIT_SKY_VIEW); /* bound by tl_renderer_prepare_sky */
     }
     if (u->features & TL_FEATURE_FOG) {
         glUniform2fv(tl_renderer_loc(p, "u_fog"), 1, u->fog);
@@ -568,13 +571,13 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
     if (features & TL_FEATURE_BOAT) {
         const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
         for (int i = 0; i < 3; i++) {
-            glActiveTexture(GL_TEXTURE1 + (GLenum)i);
+            glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_COLOR + (GLenum)i);
             glBindTexture(GL_TEXTURE_2D, textures[i]);
         }
-        glActiveTexture(GL_TEXTURE0);
-        glUniform1i(tl_renderer_loc(program, "u_boat_color"), 1);
-        glUniform1i(tl_renderer_loc(program, "u_boat_distance"), 2);
-        glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), 3);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+        glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
+        glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
+        glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
         glUniform1f(tl_renderer_loc(program, "u_boat_water"), u->boat_water);
         glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_to_model"), 1, GL_FALSE,
                            u->boat_to_model);
@@ -582,7 +585,7 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
         glUniform1f(tl_renderer_loc(program, "u_boat_top"), u->boat_top);
     }
     if (features & TL_PASS_HINTED) { /* the prepass's finest level (tl_renderer_prepass) */
-        glUniform1i(tl_renderer_loc(program, "u_march_hint"), 5);
+        glUniform1i(tl_renderer_loc(program, "u_march_hint"), TL_UNIT_MARCH_HINT);
         glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), 1.0f);
     }
     return program;
@@ -683,15 +686,14 @@ static int draw_wake_split(tl_renderer *r, const tl_frame_uniforms *u, unsigned 
 /* One ocean draw over `area` (x0 y0 x1 y1) with the program of
  * `features`. The hull's mirror image is drawn only where it can show:
  * u->boat_mirror_rect, widened by the most the waves shift its look-ups
- * (TL_MIRROR_SHIFT in shaders/boat.glsl: 0.05 of the height) and its taps'
- * reach; the water around that and the sky's rows take the programs
- * without it (TL_PASS_MIRROR), for the same reason as the wake. */
+ * (TL_MIRROR_SHIFT of the height, shaders/boat.glsl) and its taps' reach; the water around that and
+ * the sky's rows take the programs without it (TL_PASS_MIRROR), for the same reason as the wake. */
 static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned features, float weight,
                      int write_depth, int only, const int area[4], tl_error *err)
 {
     if (area[0] >= area[2] || area[1] >= area[3])
         return TL_OK;
-    const int *m = u->boat_mirror_rect, reach = (int)ceil(0.05 * u->height) + 3;
+    const int *m = u->boat_mirror_rect, reach = (int)ceil(TL_MIRROR_SHIFT * u->height) + 3;
     const int wide[4] = {m[0] - reach, m[1] - reach, m[2] + reach, m[3] + reach};
     int in[4], around[4][4], n = -1;
     if ((features & TL_FEATURE_BOAT) && !(features & TL_PASS_SKY) && m[0] < m[2] && m[1] < m[3])

@@ -51,10 +51,10 @@ int tl_renderer_prepass_scope(const tl_frame_uniforms *u, unsigned features, con
 
 static void bind_hint(GLuint program, const target *coarser, float pixel)
 {
-    glActiveTexture(GL_TEXTURE5);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_MARCH_HINT);
     glBindTexture(GL_TEXTURE_2D, coarser->tex[0]);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(tl_renderer_loc(program, "u_march_hint"), 5);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glUniform1i(tl_renderer_loc(program, "u_march_hint"), TL_UNIT_MARCH_HINT);
     glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), pixel);
 }
 
@@ -133,9 +133,9 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
     const target *finest = &r->hint[0];
     if (reuse && finest->fbo && finest->width == (u->width + 1) / 2 &&
         finest->height == (u->height + 1) / 2) {
-        glActiveTexture(GL_TEXTURE5);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_MARCH_HINT);
         glBindTexture(GL_TEXTURE_2D, finest->tex[0]);
-        glActiveTexture(GL_TEXTURE0);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
         return TL_OK;
     }
     glDisable(GL_DEPTH_TEST);
@@ -149,8 +149,8 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
     if (rc)
         return rc;
     /* The frame's passes start from the finest level. */
-    glActiveTexture(GL_TEXTURE5);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_MARCH_HINT);
     glBindTexture(GL_TEXTURE_2D, r->hint[0].tex[0]);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     return tl_renderer_check("march prepass", err);
 }
