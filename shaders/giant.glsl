@@ -289,7 +289,7 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
 float giant_hg(float mu, float g)
 {
     float d = 1.0 + g * g - 2.0 * g * mu;
-    return (1.0 - g * g) / (12.5663706 * d * sqrt(d));
+    return (1.0 - g * g) / (4.0 * TL_PI * d * sqrt(d));
 }
 
 // Light through the thin, displaced crest (seed 003's subsurface term):

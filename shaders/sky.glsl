@@ -23,7 +23,7 @@ vec3 sky_atmosphere(vec3 dir, vec3 sun)
     float az = acos(clamp(c, -1.0, 1.0));
     // The table's latitude mapping crowds rows at the horizon (tl_sky.c).
     float l = sqrt(abs(lat) / 1.5707963);
-    vec2 uv = vec2(az / 3.1415927, 0.5 + 0.5 * (lat < 0.0 ? -l : l));
+    vec2 uv = vec2(az / TL_PI, 0.5 + 0.5 * (lat < 0.0 ? -l : l));
     return texture(u_sky_view, uv).rgb * u_sky_scale;
 }
 
@@ -36,7 +36,7 @@ vec3 sky_disc(vec3 dir, float cos_radius)
     float c = dot(dir, u_sun_dir);
     if (c < cos_radius)
         return vec3(0.0);
-    float solid = 6.2831853 * (1.0 - cos_radius);
+    float solid = 2.0 * TL_PI * (1.0 - cos_radius);
     float edge = sqrt(max(0.0, 1.0 - (1.0 - c) / (1.0 - cos_radius))); // cos at the limb point
     float limb = (1.0 - 0.6 * (1.0 - edge)) / 0.8;
     return u_sun_light / solid * limb;
@@ -118,7 +118,7 @@ vec3 sky_reflected(vec3 dir, float sunlit)
 vec3 sky_sun_light()
 {
 #ifdef TL_FEATURE_SUN_DISC
-    return vec3(u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0));
+    return vec3(u_sun_intensity * (2.0 * TL_PI) / (u_sun_sharpness + 1.0));
 #else
     return vec3(0.0);
 #endif

@@ -3,6 +3,8 @@
 // x and z are relative to the camera, and per-octave phases are reduced on
 // the CPU in double.
 
+#include "constants.glsl"
+
 uniform vec2 u_resolution;      // pixels
 uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;
