@@ -301,7 +301,7 @@ float giant_hg(float mu, float g)
 // sun's own colour shows through; deeper green and darker down the face.
 vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
 {
-    float mu = dot(refract(ray, n, 0.75), u_sun_dir);
+    float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
     float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);

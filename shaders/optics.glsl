@@ -26,10 +26,11 @@ float optics_fresnel(float cos_i, float n1, float n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
+uniform float u_water_ior;       // the water's refractive index (the giant wave's crest too)
+
 #ifdef TL_FEATURE_UNDERWATER
 uniform vec3 u_water_sigma;      // extinction per metre, R G B
 uniform float u_water_scattering; // per metre, grey
-uniform float u_water_ior;
 uniform float u_cam_depth;       // metres below the surface at the camera
 uniform float u_lens;            // the lens plane's distance ahead of the camera
 uniform vec3 u_sun_water;        // the direction sunlight travels in the water

@@ -22,7 +22,7 @@ vec3 sky_atmosphere(vec3 dir, vec3 sun)
     float c = lf > 1.0e-6 && ls > 1.0e-6 ? dot(flat_dir, flat_sun) / (lf * ls) : 1.0;
     float az = acos(clamp(c, -1.0, 1.0));
     // The table's latitude mapping crowds rows at the horizon (tl_sky.c).
-    float l = sqrt(abs(lat) / 1.5707963);
+    float l = sqrt(abs(lat) / (0.5 * TL_PI));
     vec2 uv = vec2(az / TL_PI, 0.5 + 0.5 * (lat < 0.0 ? -l : l));
     return texture(u_sky_view, uv).rgb * u_sky_scale;
 }

@@ -316,6 +316,7 @@ void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     glUniform1i(tl_renderer_loc(p, "u_spp"), u->spp);
     glUniform1i(tl_renderer_loc(p, "u_spp_step"), u->spp_step);
     glUniform1ui(tl_renderer_loc(p, "u_seed"), u->seed);
+    glUniform1f(tl_renderer_loc(p, "u_water_ior"), u->water_ior); /* the giant wave's too */
     if (u->features & TL_FEATURE_GIANT_WAVE) {
         glUniform4fv(tl_renderer_loc(p, "u_giant_frame"), 1, u->giant_frame);
         glUniform4fv(tl_renderer_loc(p, "u_giant_shape"), 1, u->giant_shape);
@@ -332,7 +333,6 @@ void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u)
     if (u->features & TL_FEATURE_UNDERWATER) {
         glUniform3fv(tl_renderer_loc(p, "u_water_sigma"), 1, u->water_sigma);
         glUniform1f(tl_renderer_loc(p, "u_water_scattering"), u->water_scattering);
-        glUniform1f(tl_renderer_loc(p, "u_water_ior"), u->water_ior);
         glUniform1f(tl_renderer_loc(p, "u_cam_depth"), u->cam_depth);
         glUniform1f(tl_renderer_loc(p, "u_lens"), u->lens);
         glUniform3fv(tl_renderer_loc(p, "u_sun_water"), 1, u->sun_water);

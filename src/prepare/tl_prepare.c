@@ -356,6 +356,8 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
 static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
                                tl_frame_uniforms *u)
 {
+    /* Above the water too: the giant wave's crest refracts the sun with it. */
+    u->water_ior = (float)s->water.ior;
     double gap;
     tl_water_side side = tl_prepare_water_side(s, w, giant, &gap);
     if (side == TL_WATER_ABOVE)
@@ -367,7 +369,6 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     tl_optics_water_extinction(&s->water, sigma);
     to_float3(sigma, u->water_sigma);
     u->water_scattering = (float)s->water.scattering;
-    u->water_ior = (float)s->water.ior;
     u->cam_depth = (float)fmax(-gap, 0.0);
     u->lens = (float)TL_LENS_DISTANCE;
     /* The sun's light below the surface: refracted at a flat surface (a

@@ -87,8 +87,8 @@ typedef struct tl_frame_uniforms {
     int march_octaves, normal_octaves, march_steps;
     float hit_epsilon, normal_epsilon;
     int refine_steps, miss_at_start, normalize_smoothed, facing_normals;
-    float march_relax; /* quality.march_relax: the ocean march's over-relaxation */
-    int march_prepass; /* quality.march_prepass */
+    float march_relax;  /* quality.march_relax: the ocean march's over-relaxation */
+    int march_prepass;  /* quality.march_prepass */
     int prepass_budget; /* quality.prepass_budget */
     int giant_prepass;  /* quality.giant_prepass */
     /* Level of detail: the water one pixel covers per metre of distance
@@ -102,8 +102,8 @@ typedef struct tl_frame_uniforms {
     float sun_intensity, sun_sharpness, sky_brightness;
     float fresnel_f0, scatter_color[3], scatter_strength, scatter_base;
     float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
-    float exposure; /* render.exposure × 2^-render.ev: the display's scale */
-    float bloom;    /* render.bloom: the display's glare */
+    float exposure;     /* render.exposure × 2^-render.ev: the display's scale */
+    float bloom;        /* render.bloom: the display's glare */
     float pixel_filter; /* quality.pixel_filter: the display's Gaussian, sigma in pixels */
 
     /* The giant wave (TL_FEATURE_GIANT_WAVE), see shaders/giant.glsl:
@@ -145,12 +145,12 @@ typedef struct tl_frame_uniforms {
      * giant_rect (tl_prepare_mirror_rect): the ocean programs look its
      * texture up only there. */
     int boat_mirror_rect[4];
-    float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
+    float boat_sunlit; /* the share of the sun its hull sees past the giant wave's crest */
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */
     float wake[TL_WAKE_POINTS][4];
-    float wake_params[4];  /* half beam, fade time, strength, unused */
+    float wake_params[4];             /* half beam, fade time, strength, unused */
     float wake_along[TL_WAKE_POINTS]; /* tl_boat.wake_along, wrapped every 65536 m */
     /* Per group of TL_WAKE_GROUP segments: a circle (camera-relative x z,
      * radius, unused) holding every point the group's foam can reach. */
@@ -162,7 +162,8 @@ typedef struct tl_frame_uniforms {
     int wake_rect[4];
     float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
 
-    /* Under water (TL_FEATURE_UNDERWATER). */
+    /* Under water (TL_FEATURE_UNDERWATER); water_ior in every frame, the
+     * giant wave's crest refracts the sun with it too. */
     float water_sigma[3];   /* extinction per metre, R G B */
     float water_scattering; /* per metre, grey */
     float water_ior;
