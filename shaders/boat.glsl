@@ -7,11 +7,7 @@
 
 uniform sampler2D u_boat_color;      // lit hull, alpha = covered
 uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
-uniform float u_boat_water;          // camera-relative y of that plane (the hull's waterline)
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
-uniform mat4 u_boat_to_model;      // camera-relative world -> model
-uniform vec4 u_boat_hull;          // ellipse centre x z, semi-axes x z (model units)
-uniform float u_boat_top;          // model y of the hull's top
 
 // Whether the water point (camera-relative x z, absolute y) is inside the hull.
 bool boat_contains(vec3 p)

@@ -6,19 +6,8 @@
 //
 // (s, w): along and across the travel direction, relative to the crest on
 // the centre line; s0: the undisplaced position along, which the surface
-// point at s = s0 + lambda(w)·D(s0) started from.
-
-uniform vec4 u_giant_frame;  // (dir.x, dir.z, camera s, camera w)
-uniform vec4 u_giant_shape;  // (k, height, steepness, curl), clamped on the CPU
-uniform vec4 u_giant_mask;   // (half length, falloff along, half width, falloff across)
-uniform vec4 u_giant_bounds; // (reach along, Newton bracket, slope bound, fade)
-uniform vec4 u_giant_foam;   // (Jacobian where foam starts, trail metres, amount, breaking)
-uniform vec4 u_giant_scatter;     // (strength, forward g, backward g, unused)
-uniform vec3 u_giant_scatter_color;
-uniform int u_giant_iterations;
-uniform vec2 u_giant_world; // the crest's world (s, w), wrapped every 65536 m
-uniform float u_giant_slope[TL_GIANT_SLOPE_BINS]; // slope bound per bin of s
-uniform vec2 u_giant_rise; // s where the wave reaches the camera's height (empty: none)
+// point at s = s0 + lambda(w)·D(s0) started from. The u_giant_* uniforms
+// are frame_uniforms.glsl's (src/prepare/tl_uniform_list.h).
 
 struct GiantSample {
     float height;       // metres added to the ocean

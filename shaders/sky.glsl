@@ -9,10 +9,6 @@
 
 #ifdef TL_FEATURE_SKY_PHYSICAL
 uniform sampler2D u_sky_view;  // radiance for a sun of illuminance 1: azimuth from the sun, latitude
-uniform float u_sky_scale;     // the sun's illuminance above the air
-uniform vec3 u_sun_light;      // its light at the camera: illuminance × transmittance
-uniform float u_sun_cos_radius; // cos of the disc's angular radius
-uniform vec3 u_sky_ambient;    // the sky's irradiance on a surface facing up, over pi
 
 vec3 sky_atmosphere(vec3 dir, vec3 sun)
 {

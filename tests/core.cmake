@@ -23,6 +23,7 @@ add_test(NAME example_farm_xargs
   COMMAND sh -c "rm -rf farm && TIDELINE=$<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/examples/farm/xargs.sh ${PROJECT_SOURCE_DIR}/timelines/calm.tl farm 3 --frames 0-239:24 --size 32x18 --quality draft && test $(ls farm | wc -l) -eq 10 && ls farm/calm_0216.exr && rm -rf farm"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 tl_add_test(test_giant SOURCES test_giant.c LIBS tideline_core)
+tl_add_test(test_uniform_list SOURCES test_uniform_list.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/shaders)
 tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl)
 tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes)

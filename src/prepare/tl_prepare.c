@@ -10,6 +10,7 @@
 #include <cglm/cglm.h>
 
 #include "optics/tl_optics.h"
+#include "prepare/tl_uniform_list.h"
 #include "sky/tl_sky.h"
 #include "waves/tl_giant.h"
 
@@ -500,10 +501,21 @@ void tl_prepare_boat_sample(tl_frame_uniforms *u, int sample)
     }
 }
 
+/* Every row of the uniform table names a field of its size: the renderer
+ * uploads that many bytes from it. */
+#define CHECK_ROW(kind, field, array, feature, doc)                                                \
+    _Static_assert(sizeof(((tl_frame_uniforms *)0)->field) ==                                      \
+                       TL_UNIFORM_BYTES_##kind * TL_UNIFORM_COUNT(array),                          \
+                   "tl_uniform_list.h: u_" #field " does not match its field");
+TL_FRAME_UNIFORMS(CHECK_ROW)
+#undef CHECK_ROW
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
     tl_prepare_render_size(s, &u->width, &u->height);
+    u->resolution[0] = (float)u->width;
+    u->resolution[1] = (float)u->height;
     u->out_width = s->width;
     u->out_height = s->height;
 

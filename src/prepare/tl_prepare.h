@@ -53,9 +53,14 @@ const char *tl_feature_label(int index);
 /* "ocean, sun disc, giant wave": every feature of `features`, for logs. */
 void tl_feature_describe(unsigned features, char *out, size_t size);
 
+/* What the GPU needs for one frame. The fields the shaders read are the
+ * rows of tl_uniform_list.h, which declares them to GLSL and uploads them;
+ * the rest drive the renderer (sizes, the screen rectangles, the boat's
+ * mesh pass, the display). */
 typedef struct tl_frame_uniforms {
     unsigned features;
     int width, height;         /* the ocean's render size (quality.render_scale) */
+    float resolution[2];       /* the same, for the shaders */
     int out_width, out_height; /* the frame's */
 
     /* Camera: basis vectors and lens; the camera sits at the xz origin. */
