@@ -175,7 +175,7 @@ static void test_view_table(tl_renderer *r)
             tl_prepare_frame(&s, &w, &u);
             tl_error err;
             tl_error_clear(&err);
-            CHECK(tl_renderer_prepare_sky(r, &s, &gpu, &u, &err) == 0);
+            CHECK(tl_render_prepare_sky(r, &s, &gpu, &u, &err) == 0);
             tl_atmosphere a;
             tl_sky_atmosphere_of(&s, &a);
             tl_sky_luts_update(&cpu, &a, s.sun.elevation, tl_prepare_sky_altitude(&s));
@@ -247,7 +247,7 @@ static int render_with(tl_renderer *r, tl_sky_luts *luts, const tl_scene *s, tl_
     tl_error_clear(&err);
     int rc = tl_frame_alloc(f, s->width, s->height, &err);
     if (!rc)
-        rc = tl_renderer_prepare_sky(r, s, luts, &u, &err);
+        rc = tl_render_prepare_sky(r, s, luts, &u, &err);
     if (!rc)
         rc = tl_renderer_render(r, &u, f, &err);
     CHECK(rc == 0);

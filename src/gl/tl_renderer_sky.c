@@ -124,12 +124,9 @@ static int build_view(tl_renderer *r, tl_sky_luts *l, double sun_elevation, doub
     return tl_renderer_check("building the sky-view table", err);
 }
 
-int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, tl_sky_luts *luts,
-                            tl_frame_uniforms *u, tl_error *err)
+int tl_renderer_prepare_sky(tl_renderer *r, tl_sky_luts *luts, double sun_elevation,
+                            double altitude, tl_error *err)
 {
-    double sun_elevation, altitude;
-    if (!tl_prepare_sky_tables(scene, luts, u, &sun_elevation, &altitude))
-        return TL_OK;
     /* Both the texture and luts->view (the ambient's source) must be this
      * frame's: a table kept from a frame before, or built by another
      * renderer into the same luts, is built again. */
@@ -154,7 +151,6 @@ int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, tl_sky_luts *
     glActiveTexture(GL_TEXTURE0 + TL_UNIT_SKY_VIEW);
     glBindTexture(GL_TEXTURE_2D, r->sky_view.tex[0]);
     glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
-    tl_prepare_sky_ambient(scene, luts, u);
     return TL_OK;
 }
 

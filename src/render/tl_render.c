@@ -198,6 +198,18 @@ static int accumulate(tl_render *r, const tl_frame_uniforms *u, float weight, in
     return rc;
 }
 
+int tl_render_prepare_sky(tl_renderer *renderer, const tl_scene *scene, tl_sky_luts *luts,
+                          tl_frame_uniforms *u, tl_error *err)
+{
+    double sun_elevation, altitude;
+    if (!tl_prepare_sky_tables(scene, luts, u, &sun_elevation, &altitude))
+        return TL_OK;
+    int rc = tl_renderer_prepare_sky(renderer, luts, sun_elevation, altitude, err);
+    if (!rc)
+        tl_prepare_sky_ambient(scene, luts, u);
+    return rc;
+}
+
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err)
 {
     int rc = tl_scene_validate(scene, err);
@@ -209,7 +221,7 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
     progress_begin(r, (double)u.width * u.height * (u.spp < 1 ? 1 : u.spp));
-    rc = tl_renderer_prepare_sky(r->renderer, scene, r->sky, &u, err);
+    rc = tl_render_prepare_sky(r->renderer, scene, r->sky, &u, err);
     if (!rc)
         rc = tl_renderer_begin(r->renderer, u.width, u.height, u.out_width, u.out_height, err);
     if (!rc)
@@ -341,7 +353,7 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
             break;
         tl_frame_uniforms u;
         tl_prepare_frame(&sub, waves_for(r, &sub.ocean), &u);
-        rc = tl_renderer_prepare_sky(r->renderer, &sub, r->sky, &u, err);
+        rc = tl_render_prepare_sky(r->renderer, &sub, r->sky, &u, err);
         if (rc)
             break;
         u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
@@ -417,7 +429,7 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     tl_frame_uniforms u;
     if (!rc) {
         tl_prepare_frame(&scene, waves_for(r, &scene.ocean), &u);
-        rc = tl_renderer_prepare_sky(r->renderer, &scene, r->sky, &u, err);
+        rc = tl_render_prepare_sky(r->renderer, &scene, r->sky, &u, err);
     }
     if (!rc) {
         u.seed = 0; /* the pattern tl_render_timeline_frame's one pass uses */
