@@ -592,7 +592,7 @@ static int split_area(const int area[4], const int rect[4], int in[4], int aroun
 }
 
 /* One ocean draw over `area` with the program of `features`, where the
- * wake's foam is drawn only inside u->wake_rect: around that the same
+ * wake's foam is drawn only inside u->plan.wake_rect: around that the same
  * program without the wake draws the same image (no foam reaches there),
  * and llvmpipe, which runs every `if` body of a program for every pixel
  * and every loop's body at least once, leaves the foam's work out. */
@@ -603,7 +603,7 @@ static int draw_wake_split(tl_renderer *r, const tl_frame_uniforms *u, unsigned 
     int in[4], around[4][4], parts = 0, part[5][4];
     unsigned with[5];
     const unsigned without = features & ~(unsigned)TL_FEATURE_WAKE;
-    int n = features & TL_FEATURE_WAKE ? split_area(area, u->wake_rect, in, around) : -1;
+    int n = features & TL_FEATURE_WAKE ? split_area(area, u->plan.wake_rect, in, around) : -1;
     if (n < 0) {
         memcpy(part[0], area, sizeof part[0]);
         with[parts++] = without;
@@ -627,7 +627,7 @@ static int draw_wake_split(tl_renderer *r, const tl_frame_uniforms *u, unsigned 
 
 /* One ocean draw over `area` (x0 y0 x1 y1) with the program of
  * `features`. The hull's mirror image is drawn only where it can show:
- * u->boat_mirror_rect, widened by the most the waves shift its look-ups
+ * u->plan.boat_mirror_rect, widened by the most the waves shift its look-ups
  * (TL_MIRROR_SHIFT of the height, shaders/boat.glsl) and its taps' reach; the water around that and
  * the sky's rows take the programs without it (TL_PASS_MIRROR), for the same reason as the wake. */
 static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned features, float weight,
@@ -635,7 +635,7 @@ static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned featur
 {
     if (area[0] >= area[2] || area[1] >= area[3])
         return TL_OK;
-    const int *m = u->boat_mirror_rect, reach = (int)ceil(TL_MIRROR_SHIFT * u->height) + 3;
+    const int *m = u->plan.boat_mirror_rect, reach = (int)ceil(TL_MIRROR_SHIFT * u->height) + 3;
     const int wide[4] = {m[0] - reach, m[1] - reach, m[2] + reach, m[3] + reach};
     int in[4], around[4][4], n = -1;
     if ((features & TL_FEATURE_BOAT) && !(features & TL_PASS_SKY) && m[0] < m[2] && m[1] < m[3])
@@ -668,12 +668,12 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     }
     glBindVertexArray(r->vao);
     /* The giant wave's program only over the pixels that can see its box
-     * (u->giant_rect), the lean program, the same image there, around it. */
+     * (u->plan.giant_rect), the lean program, the same image there, around it. */
     const int w = u->width, h = u->height;
     int rect[4] = {0, 0, 0, 0};
     unsigned lean = features & ~(unsigned)TL_FEATURE_GIANT_WAVE;
     if (features & TL_FEATURE_GIANT_WAVE)
-        memcpy(rect, u->giant_rect, sizeof rect);
+        memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;
     const int scope = tl_renderer_prepass_scope(u, features, rect);
     if (scope != TL_PREPASS_NONE) {

@@ -41,8 +41,8 @@ enum {
 /* Ocean program variants beyond the frame's features (bits above them):
  * a march prepass level, a pass that starts from a coarser level's
  * distances, the sky alone (the rows above the horizon,
- * tl_frame_uniforms.sky_rows), and the water that can mirror the boat's
- * hull (tl_frame_uniforms.boat_mirror_rect). */
+ * tl_frame_uniforms.plan.sky_rows), and the water that can mirror the boat's
+ * hull (tl_frame_uniforms.plan.boat_mirror_rect). */
 enum {
     TL_PASS_PREPASS = 1u << 30,
     TL_PASS_HINTED = 1u << 29,
@@ -184,7 +184,7 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
  * `rect` itself holds any pixel (without one, the one band is the frame). */
 int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has_rect);
 /* The first row (GL's y) of a target `h` rows high, each row standing for
- * `scale` of the render's, whose rays all rise (u->sky_rows); h if none. */
+ * `scale` of the render's, whose rays all rise (u->plan.sky_rows); h if none. */
 int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h);
 
 /* Which of the frame's ocean passes start from the march prepass: none,

@@ -445,7 +445,7 @@ static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
     to_float3(s->fog.color, u->fog_color);
 }
 
-/* The top rows whose every ray rises (u->sky_rows). From a camera above
+/* The top rows whose every ray rises (u->plan.sky_rows). From a camera above
  * the water such a ray meets neither the ocean, whose crests lie at
  * y <= 0, nor the boat (composited from its own pass) nor anything else
  * the lean program marches; the giant wave's box has its own rectangle.
@@ -457,7 +457,7 @@ static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
 #define TL_SKY_MARGIN 1e-4
 static void sky_rows(tl_frame_uniforms *u)
 {
-    u->sky_rows = 0;
+    u->plan.sky_rows = 0;
     if (!(u->cam_height > 0.0f) || (u->features & TL_FEATURE_UNDERWATER) || !(u->cam_up[1] > 0.0f))
         return;
     double ty = u->tan_half_vfov, tx = ty * u->width / u->height;
@@ -473,7 +473,7 @@ static void sky_rows(tl_frame_uniforms *u)
             if (!(d[1] >= TL_SKY_MARGIN * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
                 return;
         }
-        u->sky_rows = u->height - row;
+        u->plan.sky_rows = u->height - row;
     }
 }
 
@@ -574,9 +574,9 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
         u->features |= TL_FEATURE_POLISH;
     u->miss_at_start = q->miss_at_start;
     u->march_relax = (float)q->march_relax;
-    u->march_prepass = q->march_prepass;
+    u->plan.march_prepass = q->march_prepass;
     u->prepass_budget = q->prepass_budget;
-    u->giant_prepass = q->giant_prepass;
+    u->plan.giant_prepass = q->giant_prepass;
     u->normalize_smoothed = q->normalize_smoothed;
     u->facing_normals = q->facing_normals;
     if (q->analytic_normals)
