@@ -249,38 +249,6 @@ void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_sett
         scene->camera = *settings->camera;
 }
 
-/* Narrows (lo, hi] around the cut inside it to ~1e-12 relative. */
-static void locate_cut(const tl_timeline *tl, double *lo, double *hi)
-{
-    for (int i = 0; i < 200 && *hi - *lo > 1e-12 * fmax(1.0, fabs(*hi)); i++) {
-        double mid = 0.5 * (*lo + *hi);
-        if (tl_timeline_has_cut_between(tl, *lo, mid))
-            *hi = mid;
-        else
-            *lo = mid;
-    }
-}
-
-void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg, double *open,
-                                double *close)
-{
-    double t = tl_timeline_frame_time(tl, frame);
-    double half = 0.5 * (shutter_deg / 360.0) / tl->fps;
-    double a = t - half, b = t + half;
-    if (tl_timeline_has_cut_between(tl, a, t)) { /* a cut before: open at it */
-        double lo = a, hi = t;
-        locate_cut(tl, &lo, &hi);
-        a = hi; /* the cut's own time already shows the new shot */
-    }
-    if (tl_timeline_has_cut_between(tl, t, b)) { /* a cut after: close before it */
-        double lo = t, hi = b;
-        locate_cut(tl, &lo, &hi);
-        b = lo;
-    }
-    *open = a;
-    *close = b;
-}
-
 /* The display pass's settings from the scene's exposure, glare and pixel
  * filter. */
 static tl_display_settings display_of(const tl_scene *scene)
@@ -321,28 +289,20 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         rc = tl_renderer_begin(r->renderer, rw, rh, scene->width, scene->height, err);
     if (rc)
         return rc;
+    /* The timeline gives the sub-frames' times (never across a cut);
+     * depth comes from the one nearest t. */
     int samples = 1;
-    double open = t, close = t;
-    if (settings->shutter_deg > 0.0) {
+    if (settings->shutter_deg > 0.0)
         samples = settings->shutter_samples > 0 ? settings->shutter_samples : 8;
-        tl_render_shutter_interval(tl, frame, settings->shutter_deg, &open, &close);
-    }
+    double *times = malloc(sizeof *times * (size_t)samples);
+    if (!times)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    int depth_sample = tl_timeline_shutter_times(tl, frame, settings->shutter_deg, samples, times);
     progress_begin(r,
                    (double)rw * rh * (scene->quality.spp < 1 ? 1 : scene->quality.spp) * samples);
-    /* Sub-frame k sits at the centre of the k-th of `samples` equal slices
-     * of the shutter interval; depth comes from the one nearest t. */
-    int depth_sample = 0;
-    double best = INFINITY;
     r->last_features = 0;
-    for (int k = 0; k < samples; k++) {
-        double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
-        if (fabs(tk - t) < best) {
-            best = fabs(tk - t);
-            depth_sample = k;
-        }
-    }
     for (int k = 0; !rc && k < samples; k++) {
-        double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
+        double tk = times[k];
         tl_scene sub;
         if (samples == 1)
             sub = *scene;
@@ -360,6 +320,7 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         r->last_features |= u.features;
         rc = accumulate(r, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
+    free(times);
     return rc;
 }
 

@@ -84,15 +84,9 @@ typedef struct tl_render_settings {
 void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_settings *settings,
                            tl_scene *scene);
 
-/* The shutter interval of a frame: centred on its time, `shutter_deg`/360
- * of a frame long, and cut short at any cut inside it so that motion blur
- * never mixes two shots. */
-void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg, double *open,
-                                double *close);
-
 /* Renders frame `frame` of `tl` (time = frame / fps, from the integer) into
- * `out`. With a shutter, radiance averages `shutter_samples` sub-frames
- * spread evenly over the shutter interval; depth comes from the sub-frame
+ * `out`. With a shutter, radiance averages `shutter_samples` sub-frames at
+ * the times tl_timeline_shutter_times gives; depth comes from the sub-frame
  * nearest the frame's time. `scene_out` (may be NULL) receives the scene
  * at the frame's time. With `out` NULL nothing is read back: the frame
  * stays on the GPU for tl_render_present. */

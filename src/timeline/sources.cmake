@@ -7,6 +7,7 @@ set(TL_TIMELINE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/tl_channels.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_timeline.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_float.c
+  ${CMAKE_CURRENT_LIST_DIR}/tl_shutter.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_diag.c
   ${CMAKE_CURRENT_LIST_DIR}/tl_parse_values.c
