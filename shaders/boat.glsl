@@ -7,11 +7,7 @@
 
 uniform sampler2D u_boat_color;      // lit hull, alpha = covered
 uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
-uniform float u_boat_water;          // camera-relative y of that plane (the hull's waterline)
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
-uniform mat4 u_boat_to_model;      // camera-relative world -> model
-uniform vec4 u_boat_hull;          // ellipse centre x z, semi-axes x z (model units)
-uniform float u_boat_top;          // model y of the hull's top
 
 // Whether the water point (camera-relative x z, absolute y) is inside the hull.
 bool boat_contains(vec3 p)
@@ -38,10 +34,10 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 }
 
 #ifdef TL_BOAT_MIRROR
-// The look-up's shift is held to this share of the height (facets steeper
-// than about 20 degrees): the program with the image runs only that far
-// around it (draw_area in src/gl/tl_renderer.c).
-#define TL_MIRROR_SHIFT 0.05
+// The look-up's shift is held to TL_MIRROR_SHIFT of the height (facets
+// steeper than about 20 degrees; src/gl/tl_renderer_internal.h defines it):
+// the program with the image runs only that far around it (draw_area in
+// src/gl/tl_renderer.c).
 
 // The sky's reflection in the water with the hull's mirror image over it,
 // looked up where the pixel is, shifted by the wave's slope (the classic

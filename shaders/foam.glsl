@@ -65,7 +65,7 @@ float foam_detail(vec2 p, float footprint)
 // scatter.
 vec3 foam_daylight(float sunlit)
 {
-    return sky_ambient() + sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) / 3.1415927;
+    return sky_ambient() + sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) / TL_PI;
 }
 
 // Water full of bubbles under foam scatters light: a milky layer tinted by
@@ -92,7 +92,7 @@ vec3 foam_aerated(vec3 ray, vec3 n, float aerated, vec3 hue, float sunlit)
 // shadow, where the wrapped term lit foam on a dark face).
 vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness, float sunlit)
 {
-    vec3 sun = sky_sun_light() * sunlit * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / 3.1415927;
+    vec3 sun = sky_sun_light() * sunlit * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / TL_PI;
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
     return mix(color, albedo * (sky_ambient() + sun), foam * (0.5 + 0.5 * thickness));
 }

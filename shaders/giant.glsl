@@ -6,19 +6,8 @@
 //
 // (s, w): along and across the travel direction, relative to the crest on
 // the centre line; s0: the undisplaced position along, which the surface
-// point at s = s0 + lambda(w)·D(s0) started from.
-
-uniform vec4 u_giant_frame;  // (dir.x, dir.z, camera s, camera w)
-uniform vec4 u_giant_shape;  // (k, height, steepness, curl), clamped on the CPU
-uniform vec4 u_giant_mask;   // (half length, falloff along, half width, falloff across)
-uniform vec4 u_giant_bounds; // (reach along, Newton bracket, slope bound, fade)
-uniform vec4 u_giant_foam;   // (Jacobian where foam starts, trail metres, amount, breaking)
-uniform vec4 u_giant_scatter;     // (strength, forward g, backward g, unused)
-uniform vec3 u_giant_scatter_color;
-uniform int u_giant_iterations;
-uniform vec2 u_giant_world; // the crest's world (s, w), wrapped every 65536 m
-uniform float u_giant_slope[TL_GIANT_SLOPE_BINS]; // slope bound per bin of s
-uniform vec2 u_giant_rise; // s where the wave reaches the camera's height (empty: none)
+// point at s = s0 + lambda(w)·D(s0) started from. The u_giant_* uniforms
+// are frame_uniforms.glsl's (src/prepare/tl_uniform_list.h).
 
 struct GiantSample {
     float height;       // metres added to the ocean
@@ -289,7 +278,7 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
 float giant_hg(float mu, float g)
 {
     float d = 1.0 + g * g - 2.0 * g * mu;
-    return (1.0 - g * g) / (12.5663706 * d * sqrt(d));
+    return (1.0 - g * g) / (4.0 * TL_PI * d * sqrt(d));
 }
 
 // Light through the thin, displaced crest (seed 003's subsurface term):
@@ -301,7 +290,7 @@ float giant_hg(float mu, float g)
 // sun's own colour shows through; deeper green and darker down the face.
 vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
 {
-    float mu = dot(refract(ray, n, 0.75), u_sun_dir);
+    float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
     float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);

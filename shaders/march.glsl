@@ -71,9 +71,18 @@ vec3 march_hint()
 
 // The walk through the prepass's bracket, inside the march's own loop:
 // llvmpipe runs a loop's body at least once for every pixel, so a second
-// loop would cost every pixel a surface evaluation. stage 1: at the
-// bracket's near end (or the start short of a silhouette), 2: at its far
-// end, 3 + k: after k regula falsi steps; 0: marching.
+// loop would cost every pixel a surface evaluation. Its stages:
+#define HINT_MARCHING 0 // not walking: the march steps on its own
+#define HINT_FIRST    1 // at the first point (the four's blend, the bracket's near end,
+                        // or the start short of a silhouette)
+#define HINT_ENDS     2 // at the bracket's other end (side: which one)
+#define HINT_FALSI    3 // HINT_FALSI + k: after k regula falsi steps
+// and the side the last regula falsi step moved (Illinois halves the other
+// end's height when the same side moves twice):
+#define HINT_SIDE_NONE  0
+#define HINT_SIDE_NEAR  1  // the near end, b0
+#define HINT_SIDE_FAR   -1 // the far end, b1
+#define HINT_CHECK_NEAR 2  // at HINT_ENDS: the near end is the one to check
 struct hint_walk {
     int stage, side, budget;
     bool bracket;
@@ -89,7 +98,7 @@ struct hint_walk {
 // rising ray).
 hint_walk hint_begin(inout float t, inout int steps, float budget_from, float t_far)
 {
-    hint_walk w = hint_walk(0, 0, 0, false, 0.0, 0.0, 0.0, 0.0, 0.0);
+    hint_walk w = hint_walk(HINT_MARCHING, HINT_SIDE_NONE, 0, false, 0.0, 0.0, 0.0, 0.0, 0.0);
     vec3 hint = march_hint();
     // Next to the sky (the horizon, a crest's silhouette) the ray may clip
     // the crest nearer than any of the four saw water: it starts further
@@ -100,7 +109,7 @@ hint_walk hint_begin(inout float t, inout int steps, float budget_from, float t_
         w.b0 = max(short_of, t);
         w.resume = w.b0;
         w.b1 = hint.y * (1.0 + TL_HINT_WIDEN);
-        w.stage = 1;
+        w.stage = HINT_FIRST;
         t = w.b0;
         steps += 3 + TL_HINT_REFINE;
         if (hint.y >= 1e30)
@@ -125,7 +134,7 @@ bool hint_give_up(inout hint_walk w, inout float t, float above)
     w.b0 = t;
     w.c0 = above;
     w.resume = t;
-    w.stage = 2;
+    w.stage = HINT_ENDS;
     t = w.b1;
     return true;
 }
@@ -138,82 +147,82 @@ const int HINT_FOUND = 2; // t is the hit
 // march would have started without the prepass.
 int hint_step(inout hint_walk w, float above, inout float t, float t_start)
 {
-    if (w.stage == 0)
+    if (w.stage == HINT_MARCHING)
         return HINT_MARCH;
-    if (w.stage == 1 && !w.bracket) {
+    if (w.stage == HINT_FIRST && !w.bracket) {
         if (!(above > 0.0)) { // under a crest between the prepass rays
-            w.stage = 0;
+            w.stage = HINT_MARCHING;
             w.budget = 0; // the crest lies before the bracket: march all the way
             t = t_start;
             return HINT_NEXT;
         }
-        w.stage = 0; // march on from short of the silhouette
+        w.stage = HINT_MARCHING; // march on from short of the silhouette
         return HINT_MARCH;
     }
-    if (abs(above) < (w.stage > 1 ? 1.0 : 0.25) * u_hit_epsilon) {
-        w.stage = 0;
+    if (abs(above) < (w.stage > HINT_FIRST ? 1.0 : 0.25) * u_hit_epsilon) {
+        w.stage = HINT_MARCHING;
         return HINT_FOUND; // within the hit epsilon of the surface
     }
-    if (w.stage == 1) { // the blend of the four: it splits the bracket
+    if (w.stage == HINT_FIRST) { // the blend of the four: it splits the bracket
         if (above > 0.0) {
             w.b0 = t;
             w.c0 = above;
-            w.stage = 2;
+            w.stage = HINT_ENDS;
             t = w.b1;
         } else if (above <= 0.0) {
             w.b1 = t;
             w.c1 = above;
-            w.stage = 2;
-            w.side = 2; // the near end is still to check
+            w.stage = HINT_ENDS;
+            w.side = HINT_CHECK_NEAR; // the near end is still to check
             t = w.b0;
         } else { // NaN: start over
-            w.stage = 0;
+            w.stage = HINT_MARCHING;
             t = t_start;
         }
         return HINT_NEXT;
     }
-    if (w.stage == 2) {
-        if (w.side == 2) { // the near end
-            w.side = 0;
+    if (w.stage == HINT_ENDS) {
+        if (w.side == HINT_CHECK_NEAR) { // the near end
+            w.side = HINT_SIDE_NONE;
             if (!(above > 0.0)) { // under a crest before the bracket: march all the way
-                w.stage = 0;
+                w.stage = HINT_MARCHING;
                 t = t_start;
                 return HINT_NEXT;
             }
             w.c0 = above;
-            w.stage = 3;
+            w.stage = HINT_FALSI;
         } else {
             if (above > 0.0) {
                 // No crossing at the bracket's ends: there may be two between
                 // them (a crest the ray clips), so the march goes on from the
                 // near end, where nothing was skipped.
-                w.stage = 0;
+                w.stage = HINT_MARCHING;
                 t = w.resume;
                 return HINT_NEXT;
             }
-            w.stage = 0;
+            w.stage = HINT_MARCHING;
             if (!(above <= 0.0)) { // NaN: start over
                 t = t_start;
                 return HINT_NEXT;
             }
             w.c1 = above;
-            w.stage = 3;
+            w.stage = HINT_FALSI;
         }
-    } else if (w.stage == 3 + TL_HINT_REFINE) {
-        w.stage = 0; // not converged (a steep face): march on from the last proven point
+    } else if (w.stage == HINT_FALSI + TL_HINT_REFINE) {
+        w.stage = HINT_MARCHING; // not converged (a steep face): march on from the last proven point
         t = w.resume;
         return HINT_NEXT;
     } else if (above > 0.0) { // Illinois: the bracket always holds the crossing
         w.b0 = t;
         w.c0 = above;
-        w.c1 *= w.side == 1 ? 0.5 : 1.0;
-        w.side = 1;
+        w.c1 *= w.side == HINT_SIDE_NEAR ? 0.5 : 1.0;
+        w.side = HINT_SIDE_NEAR;
         w.stage++;
     } else {
         w.b1 = t;
         w.c1 = above;
-        w.c0 *= w.side == -1 ? 0.5 : 1.0;
-        w.side = -1;
+        w.c0 *= w.side == HINT_SIDE_FAR ? 0.5 : 1.0;
+        w.side = HINT_SIDE_FAR;
         w.stage++;
     }
     t = w.b1 + w.c1 * (w.b1 - w.b0) / (w.c0 - w.c1);
@@ -273,6 +282,86 @@ float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
 }
 #endif
 
+// What both marches carry from step to step, and their common step.
+struct march_state {
+    float t;                  // the point being evaluated
+    float t_start;            // where the march began (a miss's answer in `seed`)
+    float t_last, above_last; // the last point above the surface, for refinement
+    bool hit;                 // t is within the hit epsilon of the surface
+    float above_hit;          // the height above it there
+    // Over-relaxation (enhanced sphere tracing): a step of more than the
+    // point's free radius stands when the free interval around the point
+    // it reaches overlaps the last point's; otherwise the march goes back
+    // to the last point plus its radius, which is always safe.
+    float t_prev, r_prev; // the last point and its radius
+    bool relaxed;         // the step that led to t was over-relaxed
+#ifdef TL_MARCH_HINT
+    hint_walk walk;
+#endif
+};
+
+march_state march_begin(float t)
+{
+    march_state m;
+    m.t = t;
+    m.t_start = t;
+    m.t_last = t;
+    m.above_last = -1.0;
+    m.hit = false;
+    m.above_hit = 0.0;
+    m.t_prev = 0.0;
+    m.r_prev = 0.0;
+    m.relaxed = false;
+    return m;
+}
+
+#define MARCH_STEP  0 // the caller steps on from t (march_advance)
+#define MARCH_NEXT  1 // t moved: evaluate the new t
+#define MARCH_HIT   2 // t is the hit (m.hit): the march ends
+#define MARCH_FOUND 3 // the prepass's walk found the hit at t: return t as it is
+
+// One point of a march: `above` the surface at m.t, `radius` of it surely
+// free along the ray (above itself for the ocean; less in the giant
+// wave's box, where the slope bound divides it).
+int march_step(inout march_state m, float above, float radius)
+{
+#ifdef TL_MARCH_HINT
+    int act = hint_step(m.walk, above, m.t, m.t_start);
+    if (act == HINT_FOUND)
+        return MARCH_FOUND;
+    if (act == HINT_NEXT)
+        return MARCH_NEXT;
+#endif
+    if (m.relaxed && m.t - radius > m.t_prev + m.r_prev) {
+        m.t = m.t_prev + m.r_prev; // the relaxed step may have crossed the surface
+        m.relaxed = false;
+        return MARCH_NEXT;
+    }
+    march_note_pass(m.t, above);
+    if (above < u_hit_epsilon) {
+        m.hit = true;
+        m.above_hit = above;
+        return MARCH_HIT;
+    }
+#ifdef TL_MARCH_HINT
+    if (hint_give_up(m.walk, m.t, above))
+        return MARCH_NEXT;
+#endif
+    m.t_last = m.t;
+    m.above_last = above;
+    return MARCH_STEP;
+}
+
+// The step from m.t (free for `radius`) to `next`, at least that radius
+// on; over-relaxed when it is further.
+void march_advance(inout march_state m, float radius, float next)
+{
+    m.t_prev = m.t;
+    m.r_prev = radius;
+    m.relaxed = next > m.t + radius;
+    m.t = next;
+}
+
 // How a march ends: at a hit (`above` there), refined
 // from the last point above the surface; or out of steps, where the last
 // position is the best estimate of the hit (the reference returns the start
@@ -282,16 +371,15 @@ float march_refine(vec3 ray, float t0, float a0, float t1, float a1)
 // compiled only for presets that refine (TL_FEATURE_REFINE): a loop that
 // runs zero times still costs llvmpipe one pass of its body, a surface
 // evaluation for every pixel.
-float march_end(vec3 ray, bool hit, float t_start, float t_last, float above_last, float t,
-                float above)
+float march_end(vec3 ray, march_state m)
 {
-    if (!hit)
-        return u_miss_at_start ? t_start : t;
+    if (!m.hit)
+        return u_miss_at_start ? m.t_start : m.t;
 #ifdef TL_FEATURE_REFINE
-    if (above_last > 0.0)
-        return march_refine(ray, t_last, above_last, t, above);
+    if (m.above_last > 0.0)
+        return march_refine(ray, m.t_last, m.above_last, m.t, m.above_hit);
 #endif
-    return t;
+    return m.t;
 }
 
 // Distance along `ray` to the surface, or a negative value for a miss;
@@ -316,60 +404,31 @@ float march_water(vec3 ray, float t_min)
         return -1.0;
     float t_high = ray.y < 0.0 ? max((0.0 - u_cam_height) / ray.y, 0.0) : 0.0;
     float t_end = min((ray.y < 0.0 ? -u_depth - u_cam_height : -u_cam_height) / ray.y, TL_FAR);
-    float t = max(t_high, t_min);
-    float t_start = t;
-    float t_last = t, above_last = -1.0, above_hit = 0.0;
-    bool hit = false;
-    // Over-relaxation (u_march_relax > 1, enhanced sphere tracing): a step
-    // of that many heights above the surface stands when the free interval
-    // around the point it reaches overlaps the last point's; otherwise the
-    // march goes back to the last point plus its height, which is always
-    // safe. r_safe: the last point's height after a relaxed step, 1e30
-    // ("nothing to check") after a plain one.
-    float t_safe = 0.0, r_safe = 1e30;
+    march_state m = march_begin(max(t_high, t_min));
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps, 0.0, ray.y < 0.0 ? t_end : 0.0);
+    m.walk = hint_begin(m.t, steps, 0.0, ray.y < 0.0 ? t_end : 0.0);
 #endif
     for (int i = 0; i < steps; i++) {
-        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
-        float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
-#ifdef TL_MARCH_HINT
-        int act = hint_step(walk, above, t, t_start);
-        if (act == HINT_FOUND)
-            return t;
-        if (act == HINT_NEXT)
-            continue;
-#endif
-        if (t - above > t_safe + r_safe) {
-            t = t_safe + r_safe; // the relaxed step may have crossed the surface
-            r_safe = 1e30;
-            continue;
-        }
-        march_note_pass(t, above);
-        if (above < u_hit_epsilon) {
-            hit = true;
-            above_hit = above;
+        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * m.t;
+        float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, m.t * u_lod_angle);
+        int act = march_step(m, above, above);
+        if (act == MARCH_FOUND)
+            return m.t;
+        if (act == MARCH_HIT)
             break;
-        }
-#ifdef TL_MARCH_HINT
-        if (hint_give_up(walk, t, above))
+        if (act == MARCH_NEXT)
             continue;
-#endif
-        t_last = t;
-        above_last = above;
         // A relaxed step ends at the band's far plane at most, where the next
         // point checks it; only a plain step leaves the band.
-        float next = t + u_march_relax * above;
+        float next = m.t + u_march_relax * above;
         if (next > t_end)
-            next = max(t + above, t_end);
-        t_safe = t;
-        r_safe = next > t + above ? above : 1e30;
-        t = next;
-        if (t > t_end)
+            next = max(m.t + above, t_end);
+        march_advance(m, above, next);
+        if (m.t > t_end)
             return ray.y < 0.0 ? t_end : -1.0;
     }
-    return march_end(ray, hit, t_start, t_last, above_last, t, above_hit);
+    return march_end(ray, m);
 }
 #else
 // With the giant wave: the band and the wave's box.
@@ -384,79 +443,54 @@ float march_water(vec3 ray, float t_min)
     // Rays that graze the horizon meet the trough plane very far away; the
     // limit keeps the distance finite (the normal is fully smoothed there).
     float t_low = ray.y < 0.0 ? min((-u_depth - u_cam_height) / ray.y, TL_FAR) : TL_FAR;
-    float t = max(has_box ? min(t_high, box.x) : t_high, t_min);
-    float t_start = t;
-    float t_last = t, above_last = -1.0; // the previous point, for refinement
-    float above_hit = 0.0;
-    bool hit = false;
-    // Over-relaxation as in the lean march above, over radii: a relaxed step
-    // stands when the free interval around the point it reaches overlaps the
-    // last point's; otherwise the march goes back to one radius past the
-    // last point.
-    float t_prev = 0.0, r_prev = 0.0;
-    bool relaxed = false; // the step that led to t was over-relaxed
+    march_state m = march_begin(max(has_box ? min(t_high, box.x) : t_high, t_min));
     int steps = u_march_steps;
 #ifdef TL_MARCH_HINT
-    hint_walk walk = hint_begin(t, steps, has_box ? box.y : 0.0, ray.y < 0.0 ? t_low : 0.0);
+    m.walk = hint_begin(m.t, steps, has_box ? box.y : 0.0, ray.y < 0.0 ? t_low : 0.0);
     // A bracket that lies where the wave is gentle (its slope bound over
     // the bracket's s below TL_GIANT_GENTLE, a swell on the sea's own
     // slopes) takes the budget too: no crest lies there to pass.
-    if (has_box && walk.stage == 1 && !walk.bracket && walk.budget == 0 && u_prepass_budget > 0) {
-        float s0 = giant_coords(ray.xz * walk.b0).x, s1 = giant_coords(ray.xz * walk.b1).x;
+    if (has_box && m.walk.stage == HINT_FIRST && !m.walk.bracket && m.walk.budget == 0 &&
+        u_prepass_budget > 0) {
+        float s0 = giant_coords(ray.xz * m.walk.b0).x, s1 = giant_coords(ray.xz * m.walk.b1).x;
         if (giant_slope_near(0.5 * (s0 + s1), 0.5 * abs(s1 - s0)) < TL_GIANT_GENTLE) {
-            walk.budget = u_prepass_budget;
+            m.walk.budget = u_prepass_budget;
             steps += 1 + TL_HINT_REFINE;
         }
     }
 #endif
     for (int i = 0; i < steps; i++) {
-        bool in_box = t >= box.x && t <= box.y;
-        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * t;
+        bool in_box = m.t >= box.x && m.t <= box.y;
+        vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * m.t;
         // Rays leaving the ocean band upward see the sky (camera in the
         // band), unless the wave's box still lies ahead of them.
         bool walking = false; // still in the prepass's bracket: no shortcut to the sky
 #ifdef TL_MARCH_HINT
-        walking = walk.stage != 0;
+        walking = m.walk.stage != HINT_MARCHING;
 #endif
         if (ray.y >= 0.0 && pos.y > 0.0 && !in_box && !walking) {
-            if (t > box.y)
+            if (m.t > box.y)
                 return -1.0;
-            t = box.x;
-            above_last = -1.0;
+            m.t = box.x;
+            m.above_last = -1.0;
             continue;
         }
-        float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, t * u_lod_angle);
-#ifdef TL_MARCH_HINT
-        int act = hint_step(walk, above, t, t_start);
-        if (act == HINT_FOUND)
-            return t;
-        if (act == HINT_NEXT)
-            continue;
-#endif
+        float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, m.t * u_lod_angle);
         float radius = above; // how far along the ray is surely free
         // A step no longer than `above` moves at most above·ray_along in s.
         if (in_box)
             radius /= 1.0 + ray_flat * giant_slope_near(giant_coords(pos.xz).x, above * ray_along);
-        if (relaxed && t - radius > t_prev + r_prev) {
-            t = t_prev + r_prev;
-            relaxed = false;
-            continue;
-        }
-        march_note_pass(t, above);
-        if (above < u_hit_epsilon) {
-            hit = true;
-            above_hit = above;
+        int act = march_step(m, above, radius);
+        if (act == MARCH_FOUND)
+            return m.t;
+        if (act == MARCH_HIT)
             break;
-        }
-#ifdef TL_MARCH_HINT
-        if (hint_give_up(walk, t, above))
+        if (act == MARCH_NEXT)
             continue;
-#endif
-        t_last = t;
-        above_last = above;
         // Over-relax: inside the box by TL_MARCH_RELAX, staying in it;
         // outside by the preset's u_march_relax on the way down (a rising
         // ray's plain step is what tells it has left the band for the sky).
+        float t = m.t;
         float relax = in_box ? TL_MARCH_RELAX : ray.y < 0.0 ? u_march_relax : 1.0;
         float next = t + relax * radius;
         if (in_box)
@@ -467,16 +501,13 @@ float march_water(vec3 ray, float t_min)
         // point checks it; only a plain step goes below.
         if (next > t_low && (next < box.x || next > box.y))
             next = max(t + radius, t_low);
-        t_prev = t;
-        r_prev = radius;
-        relaxed = next > t + radius;
-        t = next;
+        march_advance(m, radius, next);
         // Below the trough plane outside the box: the surface was crossed
         // (past the box only if the ray has one: a miss's box.y means
         // nothing, and the lean program returns t_low there too).
-        if (t > t_low && (t < box.x || t > box.y))
-            return has_box && t > box.y ? max(t_low, box.y) : t_low;
+        if (m.t > t_low && (m.t < box.x || m.t > box.y))
+            return has_box && m.t > box.y ? max(t_low, box.y) : t_low;
     }
-    return march_end(ray, hit, t_start, t_last, above_last, t, above_hit);
+    return march_end(ray, m);
 }
 #endif

@@ -26,7 +26,7 @@ void main()
     float lambert = max(dot(n, u_sun_dir), 0.0);
     // The sky lights what faces up more than what faces down.
     vec3 ambient = sky_ambient() * (0.6 + 0.4 * n.y);
-    vec3 diffuse = v_color * (ambient + sun * (lambert / 3.1415927));
+    vec3 diffuse = v_color * (ambient + sun * (lambert / TL_PI));
     vec3 h = normalize(u_sun_dir - view);
     vec3 spec = sun * (pow(max(dot(n, h), 0.0), 48.0) * 0.04 * lambert);
     vec3 color = diffuse + spec;

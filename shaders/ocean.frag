@@ -37,9 +37,6 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 // samples over draws: llvmpipe caps a fragment's loop iterations), and
 // u_sample_weight scales their average by the draw's share of the pixel
 // and of the sub-frame passes (motion blur).
-uniform int u_spp;
-uniform int u_spp_step;
-uniform uint u_seed;
 uniform int u_sample_first;
 uniform int u_sample_count;
 uniform float u_sample_weight;

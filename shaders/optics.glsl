@@ -27,14 +27,6 @@ float optics_fresnel(float cos_i, float n1, float n2)
 }
 
 #ifdef TL_FEATURE_UNDERWATER
-uniform vec3 u_water_sigma;      // extinction per metre, R G B
-uniform float u_water_scattering; // per metre, grey
-uniform float u_water_ior;
-uniform float u_cam_depth;       // metres below the surface at the camera
-uniform float u_lens;            // the lens plane's distance ahead of the camera
-uniform vec3 u_sun_water;        // the direction sunlight travels in the water
-uniform float u_sun_water_trans; // the share of it that crossed the surface
-
 // Beer-Lambert: the share of light left after `dist` metres of water.
 vec3 optics_water_transmittance(float dist)
 {
@@ -43,9 +35,6 @@ vec3 optics_water_transmittance(float dist)
 #endif
 
 #ifdef TL_FEATURE_FOG
-uniform vec2 u_fog;       // density per metre at the water, height over which it thins by e
-uniform vec3 u_fog_color;
-
 // Optical depth along `dist` metres of a ray from height y0 with vertical
 // component ray_y, through fog of density u_fog.x·exp(-y / u_fog.y).
 float optics_fog_depth(float y0, float ray_y, float dist)

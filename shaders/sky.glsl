@@ -9,10 +9,6 @@
 
 #ifdef TL_FEATURE_SKY_PHYSICAL
 uniform sampler2D u_sky_view;  // radiance for a sun of illuminance 1: azimuth from the sun, latitude
-uniform float u_sky_scale;     // the sun's illuminance above the air
-uniform vec3 u_sun_light;      // its light at the camera: illuminance × transmittance
-uniform float u_sun_cos_radius; // cos of the disc's angular radius
-uniform vec3 u_sky_ambient;    // the sky's irradiance on a surface facing up, over pi
 
 vec3 sky_atmosphere(vec3 dir, vec3 sun)
 {
@@ -22,8 +18,8 @@ vec3 sky_atmosphere(vec3 dir, vec3 sun)
     float c = lf > 1.0e-6 && ls > 1.0e-6 ? dot(flat_dir, flat_sun) / (lf * ls) : 1.0;
     float az = acos(clamp(c, -1.0, 1.0));
     // The table's latitude mapping crowds rows at the horizon (tl_sky.c).
-    float l = sqrt(abs(lat) / 1.5707963);
-    vec2 uv = vec2(az / 3.1415927, 0.5 + 0.5 * (lat < 0.0 ? -l : l));
+    float l = sqrt(abs(lat) / (0.5 * TL_PI));
+    vec2 uv = vec2(az / TL_PI, 0.5 + 0.5 * (lat < 0.0 ? -l : l));
     return texture(u_sky_view, uv).rgb * u_sky_scale;
 }
 
@@ -36,7 +32,7 @@ vec3 sky_disc(vec3 dir, float cos_radius)
     float c = dot(dir, u_sun_dir);
     if (c < cos_radius)
         return vec3(0.0);
-    float solid = 6.2831853 * (1.0 - cos_radius);
+    float solid = 2.0 * TL_PI * (1.0 - cos_radius);
     float edge = sqrt(max(0.0, 1.0 - (1.0 - c) / (1.0 - cos_radius))); // cos at the limb point
     float limb = (1.0 - 0.6 * (1.0 - edge)) / 0.8;
     return u_sun_light / solid * limb;
@@ -118,7 +114,7 @@ vec3 sky_reflected(vec3 dir, float sunlit)
 vec3 sky_sun_light()
 {
 #ifdef TL_FEATURE_SUN_DISC
-    return vec3(u_sun_intensity * 6.2831853 / (u_sun_sharpness + 1.0));
+    return vec3(u_sun_intensity * (2.0 * TL_PI) / (u_sun_sharpness + 1.0));
 #else
     return vec3(0.0);
 #endif

@@ -13,6 +13,8 @@
 // along the ray instead, and the smaller root of each quadratic is taken
 // as c / (larger root).
 
+#include "constants.glsl"
+
 uniform sampler2D u_transmittance; // tl_sky_luts.transmittance (Bruneton's mapping)
 uniform sampler2D u_ms;            // tl_sky_luts.ms: psi_ms over (mu_s, sqrt(h / H))
 uniform ivec2 u_view_size;         // TL_SKY_VIEW_W x TL_SKY_VIEW_H
@@ -33,7 +35,6 @@ uniform float u_ground_albedo;
 
 layout(location = 0) out vec4 out_radiance;
 
-const float PI = 3.14159265358979;
 const int VIEW_STEPS = 40;
 
 // Scattering and extinction at height h above the ground.
@@ -68,12 +69,12 @@ vec3 transmittance(float r, float rho2, float mu_s)
 
 float phase_rayleigh(float c)
 {
-    return 3.0 / (16.0 * PI) * (1.0 + c * c);
+    return 3.0 / (16.0 * TL_PI) * (1.0 + c * c);
 }
 
 float phase_mie(float c, float g) // Cornette-Shanks
 {
-    float k = 3.0 / (8.0 * PI) * (1.0 - g * g) / (2.0 + g * g);
+    float k = 3.0 / (8.0 * TL_PI) * (1.0 - g * g) / (2.0 + g * g);
     return k * (1.0 + c * c) / pow(1.0 + g * g - 2.0 * g * c, 1.5);
 }
 
@@ -85,9 +86,9 @@ void main()
     float rho2_eye = h0 * (2.0 * g + h0); // r^2 - g^2
     // The table's latitude mapping: rows crowd at the horizon.
     float l = 2.0 * (float(texel.y) + 0.5) / float(u_view_size.y) - 1.0;
-    float lat = sign(l) * l * l * 0.5 * PI;
+    float lat = sign(l) * l * l * 0.5 * TL_PI;
     float mu = sin(lat), cos_lat = cos(lat);
-    float az = PI * (float(texel.x) + 0.5) / float(u_view_size.x), cos_az = cos(az);
+    float az = TL_PI * (float(texel.x) + 0.5) / float(u_view_size.x), cos_az = cos(az);
     float sin_s = sin(u_sun_elevation), cos_s = cos(u_sun_elevation);
 
     // The ray's length: to the ground (the nearer root) or to the top.
@@ -128,7 +129,7 @@ void main()
     if (ground) { // the Lambertian ground's light, through the whole ray's air
         float mu_g = (d * cos_sun + r * sin_s) / g;
         vec3 ts = transmittance(g, 0.0, mu_g);
-        L += exp(-depth) * ts * max(mu_g, 0.0) * u_ground_albedo / PI;
+        L += exp(-depth) * ts * max(mu_g, 0.0) * u_ground_albedo / TL_PI;
     }
     out_radiance = vec4(L, 1.0);
 }

@@ -45,7 +45,7 @@ vec3 underwater_inscatter(vec3 ray)
     vec3 albedo = min(vec3(u_water_scattering) / sigma, vec3(1.0));
     float mu = dot(u_sun_water, -ray);
     const float g = 0.75;
-    float phase = (1.0 - g * g) / (12.5663706 * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
+    float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
     vec3 sun = sky_sun_light() * (u_sun_water_trans * phase) *
                exp(-sigma * u_cam_depth / max(-u_sun_water.y, 0.1));
     vec3 sky = sky_ambient() * 0.25 * exp(-sigma * u_cam_depth);

@@ -2,13 +2,8 @@
 // its past positions (u_wake, filled on the CPU from the boat's path, so
 // every frame renders alone): a turbulent band behind the hull that widens
 // slowly, and the two arms of the Kelvin wedge (half-angle 19.47 deg),
-// both fading with age.
-
-uniform vec4 u_wake[TL_WAKE_POINTS]; // camera-relative x z, age (s), distance behind the boat (m)
-uniform vec4 u_wake_params;          // half beam, fade time, strength, unused
-uniform vec4 u_wake_groups[TL_WAKE_GROUPS]; // per TL_WAKE_GROUP segments: circle x z, radius
-uniform float u_wake_along[TL_WAKE_POINTS];  // metres along the boat's path, wrapped every 65536 m
-uniform vec2 u_world_offset;         // camera x z wrapped every 65536 m: texture coordinates
+// both fading with age. u_wake and the other u_wake_* uniforms are
+// frame_uniforms.glsl's (src/prepare/tl_uniform_list.h).
 
 // Foam cover in [0, 1] at p; `footprint`: the water a pixel covers there
 // (metres, 0: no level of detail). Out: the foam's thickness, and the

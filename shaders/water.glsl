@@ -136,7 +136,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // 10 deg (its luminance there is 0.94) so the water keeps the seed's
     // look there, dark in the blue hour.
     scattering *=
-        (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + 3.1415927 * sky_ambient()) / 0.94;
+        (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + TL_PI * sky_ambient()) / 0.94;
 #endif
     vec3 color = fresnel * reflection + scattering;
     // The water a pixel covers (0 without level of detail), more as the

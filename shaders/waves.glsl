@@ -24,7 +24,7 @@ const float TL_WAVE_MEAN = 0.4657596;
 // or more, 0 at two and below (level of detail).
 float waves_detail(float frequency, float footprint)
 {
-    return smoothstep(2.0, 4.0, 6.2831853 / (frequency * footprint));
+    return smoothstep(2.0, 4.0, 2.0 * TL_PI / (frequency * footprint));
 }
 
 // Normalised wave value in (0, 1] from the first `octaves` octaves.

@@ -31,6 +31,8 @@ add_test(NAME example_farm_xargs
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(example_farm_xargs PROPERTIES LABELS gl)
 tl_add_test(test_giant SOURCES test_giant.c LIBS tideline_core LABELS unit)
+tl_add_test(test_uniform_list SOURCES test_uniform_list.c LIBS tideline_core
+  ARGS ${PROJECT_SOURCE_DIR}/shaders LABELS unit)
 tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes LABELS unit)

@@ -294,7 +294,7 @@ static long differing_pixels(const tl_frame *a, const tl_frame *b, const unsigne
 }
 
 /* The hull's mirror image in the water next to it (boat_scene): the
- * programs that draw it run only inside u.boat_mirror_rect, which culls
+ * programs that draw it run only inside u.plan.boat_mirror_rect, which culls
  * none of it (the frame equals the one with the rectangle covering the
  * whole frame, bit for bit), and there is an image to cull (the frame
  * with an empty rectangle, no image anywhere, differs). */
@@ -307,15 +307,15 @@ static void test_mirror_rect(tl_renderer *r, const tl_mesh *m)
     boat_scene(&s);
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
-    const int *rect = u.boat_mirror_rect;
+    const int *rect = u.plan.boat_mirror_rect;
     long area = (long)(rect[2] - rect[0]) * (rect[3] - rect[1]);
     printf("mirror image: rectangle %d,%d .. %d,%d (%ld of %d pixels)\n", rect[0], rect[1], rect[2],
            rect[3], area, s.width * s.height);
     CHECK(area > 0 && area < s.width * s.height / 2);
     tl_frame_uniforms whole = u, none = u;
     const int all[4] = {0, 0, s.width, s.height}, empty[4] = {0, 0, 0, 0};
-    memcpy(whole.boat_mirror_rect, all, sizeof all);
-    memcpy(none.boat_mirror_rect, empty, sizeof empty);
+    memcpy(whole.plan.boat_mirror_rect, all, sizeof all);
+    memcpy(none.plan.boat_mirror_rect, empty, sizeof empty);
     tl_frame culled, everywhere, without;
     if (render_prepared(r, &u, s.width, s.height, &culled))
         return;
@@ -349,9 +349,9 @@ static void test_mirror_hidden(tl_renderer *r, const tl_mesh *m, const char *tim
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_BOAT);
-    CHECK(u.boat_mirror_rect[0] < u.boat_mirror_rect[2]);
+    CHECK(u.plan.boat_mirror_rect[0] < u.plan.boat_mirror_rect[2]);
     tl_frame_uniforms none = u;
-    memset(none.boat_mirror_rect, 0, sizeof none.boat_mirror_rect);
+    memset(none.plan.boat_mirror_rect, 0, sizeof none.plan.boat_mirror_rect);
     tl_frame with, without;
     if (render_prepared(r, &u, s.width, s.height, &with))
         return;

@@ -7,13 +7,12 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
+#include "core/tl_math.h"
 #include "timeline/tl_parse.h"
 #include "tl_run.h"
 #include "tl_test.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
-
-#define DEG (M_PI / 180.0)
 
 static const char *timelines, *meshes;
 static char dir[] = "/tmp/tideline-cutscene-XXXXXX";
@@ -58,12 +57,12 @@ static void test_floating(void)
     printf("giant_wave.tl, %ld frames: boat up to %.2f m, waterline at most %.3f m under the "
            "water at its centre, largest pitch/roll step %.2f deg, camera at least %.2f m above "
            "the water\n",
-           frames, highest, sink, step / DEG, camera_clearance);
+           frames, highest, sink, step / TL_DEG, camera_clearance);
     CHECK(finite);
     /* The deck (8% of the built-in hull's length above its waterline) stays
      * above the water: the waterline sinks at most 5% of the length. */
     CHECK(sink <= TL_FLOAT_MAX_SINK * 9.0 + 1e-9);
-    CHECK(step < 8.0 * DEG);
+    CHECK(step < 8.0 * TL_DEG);
     CHECK(highest > 10.0); /* the wave lifts it */
     CHECK(camera_clearance > 1.0);
     tl_timeline_free(&tl);

@@ -206,7 +206,7 @@ static probe_result probe_scene(tl_renderer *r, const tl_scene *s)
                        a[0] * b[1] - a[1] * b[0]};
         double angle = atan2(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
                              a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) /
-                       DEG;
+                       TL_DEG;
         if (!(angle <= res.normal))
             res.normal = angle;
     }
@@ -379,9 +379,9 @@ static void test_rays(tl_renderer *r)
             s.camera.position[0] = spots[k].x;
             s.camera.position[1] = spots[k].y;
             s.camera.position[2] = spots[k].z;
-            s.camera.pitch = look_up ? 20.0 * DEG : -20.0 * DEG;
+            s.camera.pitch = look_up ? 20.0 * TL_DEG : -20.0 * TL_DEG;
             snprintf(label, sizeof label, "camera %s (y = %.4f m), pitch %+.0f deg", spots[k].name,
-                     spots[k].y, s.camera.pitch / DEG);
+                     spots[k].y, s.camera.pitch / TL_DEG);
             render_checked(r, &s, label, NULL);
         }
 
@@ -415,12 +415,12 @@ static void test_rays(tl_renderer *r)
         }
 
     /* Fields of view from the channel's minimum to its maximum. */
-    const double fovs[] = {fov->min, 60.0 * DEG, fov->max};
+    const double fovs[] = {fov->min, 60.0 * TL_DEG, fov->max};
     for (int i = 0; i < 3; i++) {
         tl_scene s;
         ray_scene(&s);
         s.camera.vfov = fovs[i];
-        snprintf(label, sizeof label, "field of view %g deg", fovs[i] / DEG);
+        snprintf(label, sizeof label, "field of view %g deg", fovs[i] / TL_DEG);
         render_checked(r, &s, label, NULL);
     }
 
@@ -446,7 +446,7 @@ static void test_rays(tl_renderer *r)
 
 static void test_sun(tl_renderer *r)
 {
-    const double elevations[] = {90.0 * DEG, 0.0, -0.5 * DEG, -90.0 * DEG};
+    const double elevations[] = {90.0 * TL_DEG, 0.0, -0.5 * TL_DEG, -90.0 * TL_DEG};
     const char *const names[] = {"at the zenith", "on the horizon", "just below the horizon",
                                  "far below the horizon"};
     for (int model = 0; model < 2; model++) {

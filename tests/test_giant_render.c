@@ -284,7 +284,7 @@ static int ray_sees_wave(const void *ctx, const double ray[3])
     return 0;
 }
 
-/* The pixels that can show the wave (u.giant_rect), where the renderer
+/* The pixels that can show the wave (u.plan.giant_rect), where the renderer
  * draws the giant wave's program: every ray through every pixel outside
  * it, at the pixel's centre, corners and edge midpoints, cannot show the
  * wave (ray_sees_wave); inside, some ray can. Cameras beside, above,
@@ -323,7 +323,7 @@ static void test_screen_rect(void)
         CHECK(u.features & TL_FEATURE_GIANT_WAVE);
         tl_giant g;
         tl_giant_prepare(&g, &s.giant, s.time);
-        const int *rect = u.giant_rect;
+        const int *rect = u.plan.giant_rect;
         int missed, inside_hits, area;
         const wave_view view = {&s, &u, &g};
         rect_rays(&s, rect, ray_sees_wave, &view, &missed, &inside_hits, &area);
@@ -348,10 +348,11 @@ static void split_matches_whole(tl_renderer *r, const tl_scene *sp, const char *
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     const int w = u.width, h = u.height;
-    int area = (u.giant_rect[2] - u.giant_rect[0]) * (u.giant_rect[3] - u.giant_rect[1]);
+    int area = (u.plan.giant_rect[2] - u.plan.giant_rect[0]) *
+               (u.plan.giant_rect[3] - u.plan.giant_rect[1]);
     CHECK(area > 0 && area < w * h);
     int differ;
-    double worst = split_against_whole(r, &u, u.giant_rect, &differ, NULL);
+    double worst = split_against_whole(r, &u, u.plan.giant_rect, &differ, NULL);
     printf("split against whole, %s (rectangle %.0f%% of the frame): %d of %d display values "
            "differ, by at most %.3g\n",
            what, 100.0 * area / (w * h), differ, w * h * 4, worst);
@@ -578,13 +579,13 @@ static void test_giant_prepass(tl_renderer *r)
     CHECK(!s.quality.march_prepass && s.quality.giant_prepass);
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
-    const int w = u.width, h = u.height, *rect = u.giant_rect;
+    const int w = u.width, h = u.height, *rect = u.plan.giant_rect;
     CHECK(rect[0] > 0 || rect[1] > 0 || rect[2] < w || rect[3] < h);
     tl_frame with, without;
     CHECK(tl_frame_alloc(&with, w, h, &err) == 0);
     CHECK(tl_frame_alloc(&without, w, h, &err) == 0);
     CHECK(tl_renderer_render(r, &u, &with, &err) == 0);
-    u.giant_prepass = 0;
+    u.plan.giant_prepass = 0;
     CHECK(tl_renderer_render(r, &u, &without, &err) == 0);
     int outside = 0, outside_differ = 0, inside_differ = 0;
     for (int y = 0; y < h; y++)

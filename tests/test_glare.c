@@ -9,9 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/tl_math.h"
 #include "tl_gl_test.h"
 
-#define DEG    (M_PI / 180.0)
 /* Not powers of two, as frames are: the levels halve 176x90 down to 2x1,
  * and three of them (45 -> 22, 11 -> 5 rows, 11 -> 5 columns) leave out an
  * odd last row or column (shaders/mip.frag). The driver's own mipmaps
@@ -140,11 +140,11 @@ int main(void)
     tl_scene_defaults(&s);
     s.width = W;
     s.height = H;
-    s.sun.elevation = 4.0 * DEG;
+    s.sun.elevation = 4.0 * TL_DEG;
     s.sun.azimuth = 0.0;
     s.camera.yaw = 0.0;
     s.camera.pitch = 0.0;
-    s.camera.vfov = 12.0 * DEG;
+    s.camera.vfov = 12.0 * TL_DEG;
     s.bloom = 0.5;
     s.quality.pixel_filter = 0.0; /* the model is per pixel (test_render checks the filter) */
     tl_frame f;

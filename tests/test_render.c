@@ -680,7 +680,7 @@ static int row_rises(const tl_scene *s, int row)
 }
 
 /* The rows above the horizon are shaded with the sky alone
- * (tl_frame_uniforms.sky_rows): every ray there rises, nearly every row
+ * (tl_frame_uniforms.plan.sky_rows): every ray there rises, nearly every row
  * that rises is counted, and the frame is bit for bit the frame the march
  * gives everywhere: with and without the prepass, supersampled, rolled,
  * and at half the render size. A camera under the water, upside down or
@@ -711,14 +711,14 @@ static void test_sky_rows(tl_renderer *r)
         for (int row = u.height - 1; row >= 0 && row_rises(&at_render, row); row--)
             rising++;
         int wrong = 0;
-        for (int row = u.height - u.sky_rows; row < u.height; row++) /* GL's rows */
+        for (int row = u.height - u.plan.sky_rows; row < u.height; row++) /* GL's rows */
             wrong += !row_rises(&at_render, row);
         tl_frame split, marched;
         CHECK(tl_frame_alloc(&split, s.width, s.height, &err) == 0);
         CHECK(tl_frame_alloc(&marched, s.width, s.height, &err) == 0);
         CHECK(tl_renderer_render(r, &u, &split, &err) == 0);
-        const int sky_rows = u.sky_rows;
-        u.sky_rows = 0;
+        const int sky_rows = u.plan.sky_rows;
+        u.plan.sky_rows = 0;
         CHECK(tl_renderer_render(r, &u, &marched, &err) == 0);
         size_t n = (size_t)s.width * s.height;
         int same = memcmp(split.color, marched.color, n * 4 * sizeof(float)) == 0 &&
@@ -758,9 +758,9 @@ static void test_sky_rows(tl_renderer *r)
         for (int y = 0; y < s.height; y++)
             for (int x = 0; x < s.width; x++)
                 misplaced +=
-                    (f.color[((size_t)y * s.width + x) * 4] == 1000.0f) != (y < u.sky_rows);
+                    (f.color[((size_t)y * s.width + x) * 4] == 1000.0f) != (y < u.plan.sky_rows);
         printf("sky rows, marked: %d pixels misplaced\n", misplaced);
-        CHECK(u.sky_rows > 0 && misplaced == 0);
+        CHECK(u.plan.sky_rows > 0 && misplaced == 0);
         tl_frame_free(&f);
         tl_renderer_destroy(marked);
     }
@@ -779,8 +779,8 @@ static void test_sky_rows(tl_renderer *r)
             s.camera.pitch = -1.2;
         tl_frame_uniforms u;
         gl_test_prepare(r, &s, &u);
-        printf("sky rows, %s: %d\n", none[k], u.sky_rows);
-        CHECK(u.sky_rows == 0);
+        printf("sky rows, %s: %d\n", none[k], u.plan.sky_rows);
+        CHECK(u.plan.sky_rows == 0);
     }
 }
 

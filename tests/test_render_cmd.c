@@ -248,18 +248,18 @@ static void test_motion_blur(void)
     tl_diags diags;
     CHECK(tl_timeline_parse_text("cut.tl", with_cut, strlen(with_cut), &tl, &diags, &err) == 0);
     double open, close;
-    tl_render_shutter_interval(&tl, 2, 360.0, &open, &close);
+    tl_timeline_shutter_interval(&tl, 2, 360.0, &open, &close);
     CHECK_NEAR(open, 2.0 / 24 - 0.5 / 24, 1e-12);
     CHECK(close < 0.1 && close > 0.1 - 1e-9);
     /* Frame 3 (0.104..0.146 s) does not contain the cut: untouched. */
-    tl_render_shutter_interval(&tl, 3, 360.0, &open, &close);
+    tl_timeline_shutter_interval(&tl, 3, 360.0, &open, &close);
     CHECK_NEAR(open, 3.0 / 24 - 0.5 / 24, 1e-12);
     CHECK_NEAR(close, 3.0 / 24 + 0.5 / 24, 1e-12);
     /* A frame just after a cut opens at the cut: frame 3 at 720 deg would
      * open at 0.0833 s, before the cut at 0.1 s. */
-    tl_render_shutter_interval(&tl, 3, 720.0, &open, &close);
+    tl_timeline_shutter_interval(&tl, 3, 720.0, &open, &close);
     CHECK(open >= 0.1 && open < 0.1 + 1e-9);
-    tl_render_shutter_interval(&tl, 0, 180.0, &open, &close);
+    tl_timeline_shutter_interval(&tl, 0, 180.0, &open, &close);
     CHECK_NEAR(open, -0.25 / 24, 1e-15);
     CHECK_NEAR(close, 0.25 / 24, 1e-15);
     tl_timeline_free(&tl);

@@ -6,10 +6,9 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/tl_math.h"
 #include "image/tl_image_io.h"
 #include "tl_gl_test.h"
-
-#define DEG (M_PI / 180.0)
 
 static const char *refs;
 
@@ -26,14 +25,14 @@ static void test_against_reference(tl_renderer *r)
     for (int k = 0; k < 4; k++) {
         tl_scene s;
         tl_scene_defaults(&s);
-        s.sun.elevation = suns[k] * DEG;
+        s.sun.elevation = suns[k] * TL_DEG;
         s.sun.azimuth = 0.0;
         tl_frame_uniforms u;
         gl_test_prepare(r, &s, &u);
         float in[8], out[16];
         for (int d = 0; d < 4; d++) {
-            in[2 * d] = (float)(dirs[d][0] * DEG);
-            in[2 * d + 1] = (float)(dirs[d][1] * DEG);
+            in[2 * d] = (float)(dirs[d][0] * TL_DEG);
+            in[2 * d + 1] = (float)(dirs[d][1] * TL_DEG);
         }
         tl_error err;
         tl_error_clear(&err);
@@ -42,8 +41,8 @@ static void test_against_reference(tl_renderer *r)
         tl_sky_atmosphere_of(&s, &a);
         for (int d = 0; d < 4; d++) {
             double ref[3];
-            tl_sky_reference(&a, s.sun.elevation, tl_prepare_sky_altitude(&s), dirs[d][0] * DEG,
-                             dirs[d][1] * DEG, ref);
+            tl_sky_reference(&a, s.sun.elevation, tl_prepare_sky_altitude(&s), dirs[d][0] * TL_DEG,
+                             dirs[d][1] * TL_DEG, ref);
             double e = 0.0;
             for (int c = 0; c < 3; c++) {
                 double want = ref[c] * s.sky.sun_illuminance;
@@ -66,12 +65,12 @@ static void sun_scene(tl_scene *s, double elevation, double fov, int size)
 {
     tl_scene_defaults(s);
     s->width = s->height = size;
-    s->sun.elevation = elevation * DEG;
+    s->sun.elevation = elevation * TL_DEG;
     s->sun.azimuth = 0.0;
     s->camera.position[1] = 3.0;
     s->camera.yaw = 0.0;
-    s->camera.pitch = elevation * DEG;
-    s->camera.vfov = fov * DEG;
+    s->camera.pitch = elevation * TL_DEG;
+    s->camera.vfov = fov * TL_DEG;
 }
 
 /* Orange-red at 1 deg, near white at 60 deg, gone at -2 deg with the sky
@@ -97,7 +96,7 @@ static void test_sun(tl_renderer *r)
 
     tl_scene s;
     sun_scene(&s, -2.0, 30.0, 64);
-    s.camera.pitch = 8.0 * DEG;
+    s.camera.pitch = 8.0 * TL_DEG;
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(!(u.features & TL_FEATURE_SUN_DISC));
@@ -125,16 +124,17 @@ static void test_sun(tl_renderer *r)
     int inside = 0;
     for (size_t i = 0; i < (size_t)201 * 201; i++)
         inside += luminance(f.color + 4 * i) > 0.5 * centre;
-    double per_pixel = 2.0 / (2.0 * tan(1.0 * DEG)) * tan(1.0 * DEG) / 100.5;
+    double per_pixel = 2.0 / (2.0 * tan(1.0 * TL_DEG)) * tan(1.0 * TL_DEG) / 100.5;
     double diameter = 2.0 * sqrt(inside / M_PI) * per_pixel;
-    printf("the sun's disc: %d pixels over half the centre's radiance, %.3f deg across (set %.2f)\n",
-           inside, diameter, s.sun.angular_diameter / DEG);
+    printf(
+        "the sun's disc: %d pixels over half the centre's radiance, %.3f deg across (set %.2f)\n",
+        inside, diameter, s.sun.angular_diameter / TL_DEG);
     CHECK(fabs(diameter - 0.53) <= 0.053);
     tl_frame_free(&f);
 
     /* The night: the sun far below, everything finite and dark. */
     sun_scene(&s, -30.0, 60.0, 64);
-    s.camera.pitch = 10.0 * DEG;
+    s.camera.pitch = 10.0 * TL_DEG;
     if (render(r, &s, &f))
         return;
     double brightest = 0.0;
@@ -167,7 +167,7 @@ static void test_view_table(tl_renderer *r)
         for (int h = 0; h < 3; h++) {
             tl_scene s;
             tl_scene_defaults(&s);
-            s.sun.elevation = suns[k] * DEG;
+            s.sun.elevation = suns[k] * TL_DEG;
             s.camera.position[1] = heights[h];
             tl_frame_uniforms u;
             tl_waves w;
@@ -175,7 +175,7 @@ static void test_view_table(tl_renderer *r)
             tl_prepare_frame(&s, &w, &u);
             tl_error err;
             tl_error_clear(&err);
-            CHECK(tl_renderer_prepare_sky(r, &s, &gpu, &u, &err) == 0);
+            CHECK(tl_render_prepare_sky(r, &s, &gpu, &u, &err) == 0);
             tl_atmosphere a;
             tl_sky_atmosphere_of(&s, &a);
             tl_sky_luts_update(&cpu, &a, s.sun.elevation, tl_prepare_sky_altitude(&s));
@@ -247,7 +247,7 @@ static int render_with(tl_renderer *r, tl_sky_luts *luts, const tl_scene *s, tl_
     tl_error_clear(&err);
     int rc = tl_frame_alloc(f, s->width, s->height, &err);
     if (!rc)
-        rc = tl_renderer_prepare_sky(r, s, luts, &u, &err);
+        rc = tl_render_prepare_sky(r, s, luts, &u, &err);
     if (!rc)
         rc = tl_renderer_render(r, &u, f, &err);
     CHECK(rc == 0);
@@ -267,7 +267,7 @@ static void test_two_renderers(tl_renderer *r)
     tl_scene_defaults(&s);
     s.width = 64;
     s.height = 36;
-    s.sun.elevation = 3.0 * DEG;
+    s.sun.elevation = 3.0 * TL_DEG;
     tl_frame before, other, after;
     if (render_with(r, &mine, &s, &before))
         return;
@@ -278,7 +278,7 @@ static void test_two_renderers(tl_renderer *r)
     tl_error_clear(&err);
     CHECK(tl_renderer_create(&second, &lib, &err) == 0);
     tl_scene high = s;
-    high.sun.elevation = 30.0 * DEG;
+    high.sun.elevation = 30.0 * TL_DEG;
     if (second && !render_with(second, &theirs, &high, &other)) {
         if (!render_with(r, &mine, &s, &after)) {
             size_t n = (size_t)64 * 36 * 4;

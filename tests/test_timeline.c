@@ -8,13 +8,12 @@
  *     python3 tests/blender_curve_ref.py > tests/fixtures/curve_reference.txt */
 #include <stdlib.h>
 
+#include "core/tl_math.h"
 #include "scene/tl_quality.h"
 #include "timeline/tl_parse.h"
 #include "tl_fixture.h"
 #include "tl_test.h"
 #include "waves/tl_waves.h"
-
-#define DEG (M_PI / 180.0)
 
 /* Parses `text`; on failure prints the diagnostics and counts a failure. */
 static int parse_ok(const char *text, tl_timeline *tl)
@@ -281,11 +280,11 @@ static void test_blender_options(void)
     CHECK(c->keys[0].ease.back == TL_EASE_BACK_OVERSHOOT && c->keys[0].ease.period == 4.1);
     CHECK(c->keys[1].left_type == TL_HANDLE_VECTOR && c->keys[1].right_type == TL_HANDLE_FREE);
     CHECK_NEAR(c->keys[1].right.t, 1.5, 1e-15);
-    CHECK_NEAR(c->keys[1].right.v, 52.0 * DEG, 1e-15);
+    CHECK_NEAR(c->keys[1].right.v, 52.0 * TL_DEG, 1e-15);
     CHECK(c->keys[2].left_type == TL_HANDLE_ALIGNED && c->keys[2].right_type == TL_HANDLE_AUTO);
     /* back 0: a plain cubic from 45 to 50 degrees. */
     CHECK(c->keys[3].interp == TL_INTERP_EASE && c->keys[3].ease.back == 0.0);
-    CHECK_NEAR(at(&tl, 3.5, "camera.fov", 0), (45.0 + 5.0 / 8.0) * DEG, 1e-12);
+    CHECK_NEAR(at(&tl, 3.5, "camera.fov", 0), (45.0 + 5.0 / 8.0) * TL_DEG, 1e-12);
     const tl_track *exp = &tl.tracks[tl_channel_index(tl_channel_find("render.exposure"))];
     CHECK(exp->curve[0].keys[0].ease.amplitude == 0.5);
     CHECK_NEAR(exp->curve[0].keys[0].ease.period, 6.0, 1e-12); /* frames */
@@ -311,8 +310,8 @@ static void test_shortest(void)
     double mid = at(&tl, 1.0, "camera.yaw", 0);
     CHECK_NEAR(wrapped(mid - M_PI), 0.0, 1e-12);
     CHECK_NEAR(cos(mid), -1.0, 1e-12);
-    CHECK_NEAR(wrapped(at(&tl, 0.5, "camera.yaw", 0) - 175.0 * DEG), 0.0, 1e-12);
-    CHECK_NEAR(wrapped(at(&tl, 2.0, "camera.yaw", 0) + 170.0 * DEG), 0.0, 1e-12);
+    CHECK_NEAR(wrapped(at(&tl, 0.5, "camera.yaw", 0) - 175.0 * TL_DEG), 0.0, 1e-12);
+    CHECK_NEAR(wrapped(at(&tl, 2.0, "camera.yaw", 0) + 170.0 * TL_DEG), 0.0, 1e-12);
     tl_timeline_free(&tl);
 
     /* Without `shortest` the same keys sweep through 0. */
@@ -542,7 +541,7 @@ static void test_boat_heading_and_float(void)
     tl_timeline tl;
     if (!parse_ok("tideline 1\npath boat\n  0s 0 0\n  10s 100 0\nset boat.heading 30\n", &tl))
         return;
-    CHECK_NEAR(at(&tl, 5.0, "boat.heading", 0), 30.0 * DEG, 1e-15);
+    CHECK_NEAR(at(&tl, 5.0, "boat.heading", 0), 30.0 * TL_DEG, 1e-15);
     tl_timeline_free(&tl);
 
     /* Floating on a still sea (no wave moves, the boat rests): the spring
@@ -601,9 +600,9 @@ static void test_boat_heading_and_float(void)
         sane &= memcmp(&again.boat, &s.boat, sizeof s.boat) == 0;
     }
     printf("floating on the default sea: largest pitch/roll change between frames %.3g deg\n",
-           worst / DEG);
+           worst / TL_DEG);
     CHECK(sane);
-    CHECK(worst < 1.0 * DEG);
+    CHECK(worst < 1.0 * TL_DEG);
     tl_timeline_free(&tl);
 }
 
@@ -675,12 +674,12 @@ static void check_no_flip(const char *label, const char *text)
         prev = s;
         memcpy(prev_f, f, sizeof prev_f);
     }
-    CHECK(worst_yaw < 10.0 * DEG);
-    CHECK(worst_pitch < 10.0 * DEG);
-    CHECK(worst_fwd < 10.0 * DEG);
-    if (!(worst_yaw < 10.0 * DEG && worst_pitch < 10.0 * DEG))
-        fprintf(stderr, "  %s: largest step yaw %.3g deg, pitch %.3g deg\n", label, worst_yaw / DEG,
-                worst_pitch / DEG);
+    CHECK(worst_yaw < 10.0 * TL_DEG);
+    CHECK(worst_pitch < 10.0 * TL_DEG);
+    CHECK(worst_fwd < 10.0 * TL_DEG);
+    if (!(worst_yaw < 10.0 * TL_DEG && worst_pitch < 10.0 * TL_DEG))
+        fprintf(stderr, "  %s: largest step yaw %.3g deg, pitch %.3g deg\n", label,
+                worst_yaw / TL_DEG, worst_pitch / TL_DEG);
     tl_timeline_free(&tl);
 }
 

@@ -5,10 +5,9 @@
  * mode's flip, and fog 0 as no fog. */
 #include <string.h>
 
+#include "core/tl_math.h"
 #include "optics/tl_optics.h"
 #include "tl_gl_test.h"
-
-#define DEG (M_PI / 180.0)
 
 static void prepare(const tl_scene *s, tl_frame_uniforms *u)
 {
@@ -44,7 +43,7 @@ static void test_fresnel(tl_renderer *r)
     prepare(&s, &u);
     float in[2 * N], out[4 * N];
     for (int i = 0; i < N; i++) {
-        in[2 * i] = (float)cos(angles[i] * DEG);
+        in[2 * i] = (float)cos(angles[i] * TL_DEG);
         in[2 * i + 1] = 1.333f;
     }
     tl_error err;
@@ -52,22 +51,23 @@ static void test_fresnel(tl_renderer *r)
     CHECK(tl_renderer_probe(r, &u, 1, in, N, 1, out, &err) == 0);
     double worst_gpu = 0.0, worst_cpu = 0.0;
     for (int i = 0; i < N; i++) {
-        double exact = fresnel_by_angles(angles[i] * DEG, 1.333, 1.0);
+        double exact = fresnel_by_angles(angles[i] * TL_DEG, 1.333, 1.0);
         /* The GPU saw cos rounded to float: compare at that cosine. */
         double at = acos((double)in[2 * i]);
         worst_gpu = fmax(worst_gpu, fabs(out[4 * i] - fresnel_by_angles(at, 1.333, 1.0)));
-        worst_cpu = fmax(worst_cpu, fabs(tl_optics_fresnel(cos(angles[i] * DEG), 1.333, 1.0) - exact));
+        worst_cpu =
+            fmax(worst_cpu, fabs(tl_optics_fresnel(cos(angles[i] * TL_DEG), 1.333, 1.0) - exact));
         if (angles[i] > 48.6) /* total internal reflection */
             CHECK(out[4 * i] == 1.0f);
     }
-    double schlick48 = 0.02 + 0.98 * pow(1.0 - cos(48.0 * DEG), 5.0);
+    double schlick48 = 0.02 + 0.98 * pow(1.0 - cos(48.0 * TL_DEG), 5.0);
     printf("Fresnel from the water side: |GPU - exact| <= %.2g, |CPU - exact| <= %.2g; at 48 deg "
            "exact %.3f, Schlick %.3f; window half-angle %.3f deg\n",
-           worst_gpu, worst_cpu, fresnel_by_angles(48.0 * DEG, 1.333, 1.0), schlick48,
-           tl_optics_snell_window(1.333) / DEG);
+           worst_gpu, worst_cpu, fresnel_by_angles(48.0 * TL_DEG, 1.333, 1.0), schlick48,
+           tl_optics_snell_window(1.333) / TL_DEG);
     CHECK(worst_gpu <= 1e-4);
     CHECK(worst_cpu <= 1e-12);
-    CHECK_NEAR(tl_optics_snell_window(1.333) / DEG, 48.6, 0.05);
+    CHECK_NEAR(tl_optics_snell_window(1.333) / TL_DEG, 48.6, 0.05);
 }
 
 /* Snell's window: 5 m under a flat sea, looking straight up with a wide
@@ -80,9 +80,9 @@ static void test_snell_window(tl_renderer *r)
     s.width = s.height = 241;
     s.ocean.depth = 0.001;
     s.camera.position[1] = -5.0;
-    s.camera.pitch = 90.0 * DEG;
-    s.camera.vfov = 130.0 * DEG;
-    s.sun.elevation = 60.0 * DEG;
+    s.camera.pitch = 90.0 * TL_DEG;
+    s.camera.vfov = 130.0 * TL_DEG;
+    s.sun.elevation = 60.0 * TL_DEG;
     s.sun.azimuth = 0.0;
     /* The window's optics, not the sky's: the seed sky's dim sun keeps the
      * water body's glow toward it below the window's light. */
@@ -99,20 +99,19 @@ static void test_snell_window(tl_renderer *r)
     const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     double worst = 0.0;
     for (int d = 0; d < 4; d++) {
-        double inside = luminance(f.color + ((size_t)(c + 10 * dirs[d][1]) * s.width +
-                                             (size_t)(c + 10 * dirs[d][0])) *
-                                                4);
-        double outside = luminance(f.color + ((size_t)(c + 115 * dirs[d][1]) * s.width +
-                                              (size_t)(c + 115 * dirs[d][0])) *
-                                                 4);
+        double inside = luminance(
+            f.color +
+            ((size_t)(c + 10 * dirs[d][1]) * s.width + (size_t)(c + 10 * dirs[d][0])) * 4);
+        double outside = luminance(
+            f.color +
+            ((size_t)(c + 115 * dirs[d][1]) * s.width + (size_t)(c + 115 * dirs[d][0])) * 4);
         double half = 0.5 * (inside + outside);
         int k = 10;
-        while (k < 118 &&
-               luminance(f.color + ((size_t)(c + k * dirs[d][1]) * s.width +
-                                    (size_t)(c + k * dirs[d][0])) *
-                                       4) > half)
+        while (k < 118 && luminance(f.color + ((size_t)(c + k * dirs[d][1]) * s.width +
+                                               (size_t)(c + k * dirs[d][0])) *
+                                                  4) > half)
             k++;
-        double edge = atan((k - 0.5) / focal) / DEG;
+        double edge = atan((k - 0.5) / focal) / TL_DEG;
         printf("Snell's window along (%d, %d): edge at %.2f deg (inside %.3f, outside %.4f)\n",
                dirs[d][0], dirs[d][1], edge, inside, outside);
         worst = fmax(worst, fabs(edge - 48.6));
@@ -126,7 +125,7 @@ static void test_snell_window(tl_renderer *r)
     int blue = 1;
     for (int y = 0; y < s.height; y++)
         for (int x = 0; x < s.width; x++) {
-            double angle = atan(hypot(x - c, y - c) / focal) / DEG;
+            double angle = atan(hypot(x - c, y - c) / focal) / TL_DEG;
             if (angle < 49.6)
                 continue;
             const float *p = f.color + ((size_t)y * s.width + x) * 4;
@@ -213,8 +212,7 @@ static void test_fog_transmittance(tl_renderer *r)
     int monotone = 1;
     for (int a = 0; a < NS; a++)
         for (int b = 0; b < ND; b++) {
-            double want =
-                exp(-tl_optics_fog_depth(0.02, 40.0, 7.0, slopes[a], dist[b]));
+            double want = exp(-tl_optics_fog_depth(0.02, 40.0, 7.0, slopes[a], dist[b]));
             worst = fmax(worst, fabs(out[4 * (a * ND + b)] - want));
             if (b > 0)
                 monotone &= out[4 * (a * ND + b)] <= out[4 * (a * ND + b - 1)];
@@ -256,9 +254,9 @@ static void test_haze_after_sunset(tl_renderer *r)
     s.camera.position[1] = 3.0;
     s.camera.yaw = 0.0;
     s.camera.pitch = 0.0;
-    s.camera.vfov = 20.0 * DEG;
+    s.camera.vfov = 20.0 * TL_DEG;
     s.sky.model = TL_SKY_PHYSICAL;
-    s.sun.elevation = -3.0 * DEG;
+    s.sun.elevation = -3.0 * TL_DEG;
     s.sun.azimuth = 0.0;
     tl_scene fogged = s;
     fogged.fog.density = 0.002;
@@ -277,7 +275,7 @@ static void test_haze_after_sunset(tl_renderer *r)
     int horizon = row_luminance(&s, &clear, a);
     CHECK(row_luminance(&fogged, &hazy, b) == horizon);
     double focal = 0.5 * s.height / tan(0.5 * s.camera.vfov);
-    int up5 = (int)(0.5 * s.height - focal * tan(5.0 * DEG));
+    int up5 = (int)(0.5 * s.height - focal * tan(5.0 * TL_DEG));
     CHECK(horizon > up5 && horizon < s.height);
     double least = INFINITY;
     for (int y = up5; y < horizon; y++)
@@ -305,8 +303,8 @@ static void test_waterline(tl_renderer *r)
     tl_waves w;
     tl_waves_init(&w, &s.ocean);
     /* The camera level with the surface at the centre pixel's lens point. */
-    s.camera.position[1] = tl_waves_height(&w, 0.0, TL_LENS_DISTANCE, s.time,
-                                           s.quality.march_octaves);
+    s.camera.position[1] =
+        tl_waves_height(&w, 0.0, TL_LENS_DISTANCE, s.time, s.quality.march_octaves);
     tl_frame_uniforms u;
     prepare(&s, &u);
     CHECK((u.features & TL_FEATURE_WATERLINE) && (u.features & TL_FEATURE_UNDERWATER));

@@ -243,7 +243,7 @@ static int ray_reaches_wake(const void *ctx, const double ray[3])
     return 0;
 }
 
-/* The pixels whose rays can meet the wake's foam (u.wake_rect), where the
+/* The pixels whose rays can meet the wake's foam (u.plan.wake_rect), where the
  * renderer draws the programs with the wake: every ray through every pixel
  * outside it, at the pixel's centre, corners and edge midpoints, meets
  * water no group's circle holds; inside, some ray meets such water. From
@@ -271,7 +271,7 @@ static void test_rect(void)
         tl_frame_uniforms u;
         tl_prepare_frame(&s, &w, &u);
         CHECK(u.features & TL_FEATURE_WAKE);
-        const int *rect = u.wake_rect;
+        const int *rect = u.plan.wake_rect;
         int missed, inside_hits, area;
         const wake_view view = {&s, &u};
         rect_rays(&s, rect, ray_reaches_wake, &view, &missed, &inside_hits, &area);
@@ -301,11 +301,12 @@ static void test_split_matches_whole(tl_renderer *r)
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     const int w = u.width, h = u.height;
-    int area = (u.wake_rect[2] - u.wake_rect[0]) * (u.wake_rect[3] - u.wake_rect[1]);
+    int area =
+        (u.plan.wake_rect[2] - u.plan.wake_rect[0]) * (u.plan.wake_rect[3] - u.plan.wake_rect[1]);
     CHECK(area > 0 && area < w * h);
     int differ;
     tl_frame whole;
-    double worst = split_against_whole(r, &u, u.wake_rect, &differ, &whole), foam = 0.0;
+    double worst = split_against_whole(r, &u, u.plan.wake_rect, &differ, &whole), foam = 0.0;
     /* The wake is in the picture: the rectangle's pixels are brighter with it. */
     tl_frame none;
     tl_scene calm = s;

@@ -7,9 +7,8 @@
 #include <stdio.h>
 #include <time.h>
 
+#include "core/tl_math.h"
 #include "tl_gl_test.h"
-
-#define DEG (M_PI / 180.0)
 
 static inline double now(void)
 {

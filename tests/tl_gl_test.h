@@ -195,7 +195,7 @@ static inline void gl_test_prepare(tl_renderer *r, const tl_scene *scene, tl_fra
     tl_prepare_frame(scene, &w, u);
     tl_error err;
     tl_error_clear(&err);
-    if (tl_renderer_prepare_sky(r, scene, &luts, u, &err))
+    if (tl_render_prepare_sky(r, scene, &luts, u, &err))
         fprintf(stderr, "the sky's tables: %s\n", err.message);
 }
 

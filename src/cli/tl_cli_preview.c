@@ -13,6 +13,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "core/tl_math.h"
 #include "gl/tl_gl_window.h"
 #include "image/tl_image_io.h"
 #include "mesh/tl_mesh.h"
@@ -22,7 +23,6 @@
 #include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
 
-#define DEG (M_PI / 180.0)
 
 static const char usage[] =
     "Usage: tideline preview FILE.tl [options]\n"
@@ -371,8 +371,8 @@ static void print_pose(const preview *p)
     const tl_camera *c = &p->cam;
     printf("key camera.position\n  %.3fs  %.3f %.3f %.3f\n", p->t, c->position[0], c->position[1],
            c->position[2]);
-    printf("key camera.yaw\n  %.3fs  %.2fdeg\n", p->t, c->yaw / DEG);
-    printf("key camera.pitch\n  %.3fs  %.2fdeg\n", p->t, c->pitch / DEG);
+    printf("key camera.yaw\n  %.3fs  %.2fdeg\n", p->t, c->yaw / TL_DEG);
+    printf("key camera.pitch\n  %.3fs  %.2fdeg\n", p->t, c->pitch / TL_DEG);
     fflush(stdout);
 }
 
@@ -477,7 +477,7 @@ static void fly(preview *p, tl_gl_window *w, double dt)
     if (!p->free_cam)
         return;
     p->cam.yaw += dx * 0.003;
-    p->cam.pitch = fmax(-89.0 * DEG, fmin(89.0 * DEG, p->cam.pitch - dy * 0.003));
+    p->cam.pitch = fmax(-89.0 * TL_DEG, fmin(89.0 * TL_DEG, p->cam.pitch - dy * 0.003));
     double speed = 6.0 * dt, fx = sin(p->cam.yaw), fz = cos(p->cam.yaw);
     double move[3] = {0, 0, 0};
     if (tl_gl_window_key_held(w, TL_KEY_W))

@@ -7,6 +7,7 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "core/tl_math.h"
 #include "cutscene/tl_cutscene.h"
 #include "mesh/tl_mesh.h"
 #include "prepare/tl_prepare.h"
@@ -14,7 +15,6 @@
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
 
-#define DEG (M_PI / 180.0)
 
 static const char check_usage[] =
     "Usage: tideline check FILE.tl... [--strict]\n"
@@ -214,7 +214,7 @@ static const char *num(double v)
 /* A channel's value as the language writes it: angles in degrees. */
 static const char *value_text(const tl_channel *ch, double v)
 {
-    return shortest(v, ch->unit == TL_UNIT_ANGLE ? DEG : 1.0);
+    return shortest(v, ch->unit == TL_UNIT_ANGLE ? TL_DEG : 1.0);
 }
 
 static const char *unit_suffix(tl_unit unit)
@@ -349,7 +349,7 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame)
         printf("  %-26s %s %s %s m\n", "boat.position", num(s.boat.position[0]),
                num(s.boat.position[1]), num(s.boat.position[2]));
         printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", "boat pose",
-               s.boat.pitch / DEG, s.boat.roll / DEG, s.boat.length, s.boat.beam);
+               s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
     }
     print_report_text(&s);
 }
@@ -386,8 +386,8 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
     if (s.boat.enabled)
         printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g, \"pitch\": %.17g, "
                "\"roll\": %.17g, \"length\": %.17g, \"beam\": %.17g}",
-               s.boat.position[0], s.boat.position[1], s.boat.position[2], s.boat.heading / DEG,
-               s.boat.pitch / DEG, s.boat.roll / DEG, s.boat.length, s.boat.beam);
+               s.boat.position[0], s.boat.position[1], s.boat.position[2], s.boat.heading / TL_DEG,
+               s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
     else
         printf("null");
     print_report_json(&s);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "gl/tl_renderer_internal.h"
+#include "prepare/tl_uniform_list.h"
 
 int tl_renderer_check(const char *what, tl_error *err)
 {
@@ -90,10 +91,12 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_WAKE_GROUPS %d\n"
                      "#define TL_WAKE_SPEED_NONE %.3f\n"
                      "#define TL_WAKE_SPEED_FULL %.3f\n"
-                     "#define TL_MARCH_RELAX 1.3\n",
+                     "#define TL_MARCH_RELAX %g\n"
+                     "#define TL_MIRROR_SHIFT %g\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, TL_WAKE_POINTS, TL_WAKE_GROUP,
-                     TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL);
+                     TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
+                     TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -269,91 +272,38 @@ GLint tl_renderer_loc(GLuint p, const char *name)
     return glGetUniformLocation(p, name);
 }
 
-/* Uploads everything in `u`. Uniforms a program does not use are
- * optimised away and have location -1, which GL ignores. */
+/* One row of the uniform table: `count` values of `kind` from `data`. */
+static void upload_row(GLint loc, tl_uniform_kind kind, GLsizei count, const void *data)
+{
+    if (loc < 0)
+        return;
+    switch (kind) {
+    case TL_UNIFORM_FLOAT: glUniform1fv(loc, count, data); break;
+    case TL_UNIFORM_VEC2: glUniform2fv(loc, count, data); break;
+    case TL_UNIFORM_VEC3: glUniform3fv(loc, count, data); break;
+    case TL_UNIFORM_VEC4: glUniform4fv(loc, count, data); break;
+    case TL_UNIFORM_INT:
+    case TL_UNIFORM_BOOL: /* GL sets a bool from an int */ glUniform1iv(loc, count, data); break;
+    case TL_UNIFORM_UINT: glUniform1uiv(loc, count, data); break;
+    case TL_UNIFORM_MAT4: glUniformMatrix4fv(loc, count, GL_FALSE, data); break;
+    }
+}
+
+/* Uploads the rows of tl_uniform_list.h that the frame's features use.
+ * Uniforms a program does not use are optimised away and have location
+ * -1, which GL ignores. */
 void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u)
 {
-    glUniform2f(tl_renderer_loc(p, "u_resolution"), (float)u->width, (float)u->height);
-    glUniform3fv(tl_renderer_loc(p, "u_cam_right"), 1, u->cam_right);
-    glUniform3fv(tl_renderer_loc(p, "u_cam_up"), 1, u->cam_up);
-    glUniform3fv(tl_renderer_loc(p, "u_cam_forward"), 1, u->cam_forward);
-    glUniform1f(tl_renderer_loc(p, "u_tan_half_vfov"), u->tan_half_vfov);
-    glUniform1f(tl_renderer_loc(p, "u_cam_height"), u->cam_height);
-    glUniform2fv(tl_renderer_loc(p, "u_radial_dir"), 1, u->radial_dir);
-    glUniform1f(tl_renderer_loc(p, "u_radial_len"), u->radial_len);
-    glUniform1f(tl_renderer_loc(p, "u_radial_phase"), u->radial_phase);
-    glUniform4fv(tl_renderer_loc(p, "u_wave"), u->octaves, &u->wave[0][0]);
-    glUniform1fv(tl_renderer_loc(p, "u_wave_weight"), u->octaves, u->wave_weight);
-    glUniform1fv(tl_renderer_loc(p, "u_wave_weight_tail"), TL_MAX_OCTAVES + 1, u->wave_weight_tail);
-    glUniform1fv(tl_renderer_loc(p, "u_wave_slope_tail"), TL_MAX_OCTAVES + 1, u->wave_slope_tail);
-    glUniform1f(tl_renderer_loc(p, "u_lod_angle"), u->lod_angle);
-    glUniform1f(tl_renderer_loc(p, "u_drag"), u->drag);
-    glUniform1f(tl_renderer_loc(p, "u_depth"), u->depth);
-    glUniform1i(tl_renderer_loc(p, "u_march_octaves"), u->march_octaves);
-    glUniform1i(tl_renderer_loc(p, "u_normal_octaves"), u->normal_octaves);
-    glUniform1i(tl_renderer_loc(p, "u_march_steps"), u->march_steps);
-    glUniform1f(tl_renderer_loc(p, "u_hit_epsilon"), u->hit_epsilon);
-    glUniform1f(tl_renderer_loc(p, "u_normal_epsilon"), u->normal_epsilon);
-    glUniform1i(tl_renderer_loc(p, "u_refine_steps"), u->refine_steps);
-    glUniform1i(tl_renderer_loc(p, "u_miss_at_start"), u->miss_at_start);
-    glUniform1f(tl_renderer_loc(p, "u_march_relax"), u->march_relax);
-    glUniform1i(tl_renderer_loc(p, "u_prepass_budget"), u->prepass_budget);
-    glUniform1i(tl_renderer_loc(p, "u_normalize_smoothed"), u->normalize_smoothed);
-    glUniform1i(tl_renderer_loc(p, "u_facing_normals"), u->facing_normals);
-    glUniform3fv(tl_renderer_loc(p, "u_sun_dir"), 1, u->sun_dir);
-    glUniform1f(tl_renderer_loc(p, "u_sun_intensity"), u->sun_intensity);
-    glUniform1f(tl_renderer_loc(p, "u_sun_sharpness"), u->sun_sharpness);
-    glUniform1f(tl_renderer_loc(p, "u_sky_brightness"), u->sky_brightness);
-    glUniform1f(tl_renderer_loc(p, "u_fresnel_f0"), u->fresnel_f0);
-    glUniform3fv(tl_renderer_loc(p, "u_scatter_color"), 1, u->scatter_color);
-    glUniform1f(tl_renderer_loc(p, "u_scatter_strength"), u->scatter_strength);
-    glUniform1f(tl_renderer_loc(p, "u_scatter_base"), u->scatter_base);
-    glUniform1f(tl_renderer_loc(p, "u_normal_smooth_max"), u->normal_smooth_max);
-    glUniform1f(tl_renderer_loc(p, "u_normal_smooth_rate"), u->normal_smooth_rate);
-    glUniform1f(tl_renderer_loc(p, "u_normal_smooth_gain"), u->normal_smooth_gain);
-    glUniform1i(tl_renderer_loc(p, "u_spp"), u->spp);
-    glUniform1i(tl_renderer_loc(p, "u_spp_step"), u->spp_step);
-    glUniform1ui(tl_renderer_loc(p, "u_seed"), u->seed);
-    if (u->features & TL_FEATURE_GIANT_WAVE) {
-        glUniform4fv(tl_renderer_loc(p, "u_giant_frame"), 1, u->giant_frame);
-        glUniform4fv(tl_renderer_loc(p, "u_giant_shape"), 1, u->giant_shape);
-        glUniform4fv(tl_renderer_loc(p, "u_giant_mask"), 1, u->giant_mask);
-        glUniform4fv(tl_renderer_loc(p, "u_giant_bounds"), 1, u->giant_bounds);
-        glUniform4fv(tl_renderer_loc(p, "u_giant_foam"), 1, u->giant_foam);
-        glUniform4fv(tl_renderer_loc(p, "u_giant_scatter"), 1, u->giant_scatter);
-        glUniform3fv(tl_renderer_loc(p, "u_giant_scatter_color"), 1, u->giant_scatter_color);
-        glUniform1i(tl_renderer_loc(p, "u_giant_iterations"), u->giant_iterations);
-        glUniform1fv(tl_renderer_loc(p, "u_giant_slope"), TL_GIANT_SLOPE_BINS, u->giant_slope);
-        glUniform2fv(tl_renderer_loc(p, "u_giant_world"), 1, u->giant_world);
-        glUniform2fv(tl_renderer_loc(p, "u_giant_rise"), 1, u->giant_rise);
-    }
-    if (u->features & TL_FEATURE_UNDERWATER) {
-        glUniform3fv(tl_renderer_loc(p, "u_water_sigma"), 1, u->water_sigma);
-        glUniform1f(tl_renderer_loc(p, "u_water_scattering"), u->water_scattering);
-        glUniform1f(tl_renderer_loc(p, "u_water_ior"), u->water_ior);
-        glUniform1f(tl_renderer_loc(p, "u_cam_depth"), u->cam_depth);
-        glUniform1f(tl_renderer_loc(p, "u_lens"), u->lens);
-        glUniform3fv(tl_renderer_loc(p, "u_sun_water"), 1, u->sun_water);
-        glUniform1f(tl_renderer_loc(p, "u_sun_water_trans"), u->sun_water_trans);
-    }
-    if (u->features & TL_FEATURE_SKY_PHYSICAL) {
-        glUniform1f(tl_renderer_loc(p, "u_sky_scale"), u->sky_scale);
-        glUniform3fv(tl_renderer_loc(p, "u_sun_light"), 1, u->sun_light);
-        glUniform1f(tl_renderer_loc(p, "u_sun_cos_radius"), u->sun_cos_radius);
-        glUniform3fv(tl_renderer_loc(p, "u_sky_ambient"), 1, u->sky_ambient);
-        glUniform1i(tl_renderer_loc(p, "u_sky_view"), 4); /* bound by tl_renderer_prepare_sky */
-    }
-    if (u->features & TL_FEATURE_FOG) {
-        glUniform2fv(tl_renderer_loc(p, "u_fog"), 1, u->fog);
-        glUniform3fv(tl_renderer_loc(p, "u_fog_color"), 1, u->fog_color);
-    }
-    if (u->features & TL_FEATURE_WAKE) {
-        glUniform4fv(tl_renderer_loc(p, "u_wake"), TL_WAKE_POINTS, &u->wake[0][0]);
-        glUniform4fv(tl_renderer_loc(p, "u_wake_params"), 1, u->wake_params);
-        glUniform4fv(tl_renderer_loc(p, "u_wake_groups"), TL_WAKE_GROUPS, &u->wake_groups[0][0]);
-        glUniform1fv(tl_renderer_loc(p, "u_wake_along"), TL_WAKE_POINTS, u->wake_along);
-        glUniform2fv(tl_renderer_loc(p, "u_world_offset"), 1, u->world_offset);
-    }
+#define UPLOAD(kind, field, array, feature, doc)                                                   \
+    if (!(feature) || (u->features & (unsigned)(feature)))                                         \
+        upload_row(tl_renderer_loc(p, "u_" #field), TL_UNIFORM_##kind, TL_UNIFORM_COUNT(array),    \
+                   &u->field);
+    TL_FRAME_UNIFORMS(UPLOAD)
+#undef UPLOAD
+    /* The one sampler every program that shades the sky reads: the table
+     * tl_renderer_prepare_sky bound. */
+    if (u->features & TL_FEATURE_SKY_PHYSICAL)
+        glUniform1i(tl_renderer_loc(p, "u_sky_view"), TL_UNIT_SKY_VIEW);
 }
 
 int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
@@ -568,21 +518,16 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
     if (features & TL_FEATURE_BOAT) {
         const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
         for (int i = 0; i < 3; i++) {
-            glActiveTexture(GL_TEXTURE1 + (GLenum)i);
+            glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_COLOR + (GLenum)i);
             glBindTexture(GL_TEXTURE_2D, textures[i]);
         }
-        glActiveTexture(GL_TEXTURE0);
-        glUniform1i(tl_renderer_loc(program, "u_boat_color"), 1);
-        glUniform1i(tl_renderer_loc(program, "u_boat_distance"), 2);
-        glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), 3);
-        glUniform1f(tl_renderer_loc(program, "u_boat_water"), u->boat_water);
-        glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_to_model"), 1, GL_FALSE,
-                           u->boat_to_model);
-        glUniform4fv(tl_renderer_loc(program, "u_boat_hull"), 1, u->boat_hull);
-        glUniform1f(tl_renderer_loc(program, "u_boat_top"), u->boat_top);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+        glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
+        glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
+        glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
     }
     if (features & TL_PASS_HINTED) { /* the prepass's finest level (tl_renderer_prepass) */
-        glUniform1i(tl_renderer_loc(program, "u_march_hint"), 5);
+        glUniform1i(tl_renderer_loc(program, "u_march_hint"), TL_UNIT_MARCH_HINT);
         glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), 1.0f);
     }
     return program;
@@ -647,7 +592,7 @@ static int split_area(const int area[4], const int rect[4], int in[4], int aroun
 }
 
 /* One ocean draw over `area` with the program of `features`, where the
- * wake's foam is drawn only inside u->wake_rect: around that the same
+ * wake's foam is drawn only inside u->plan.wake_rect: around that the same
  * program without the wake draws the same image (no foam reaches there),
  * and llvmpipe, which runs every `if` body of a program for every pixel
  * and every loop's body at least once, leaves the foam's work out. */
@@ -658,7 +603,7 @@ static int draw_wake_split(tl_renderer *r, const tl_frame_uniforms *u, unsigned 
     int in[4], around[4][4], parts = 0, part[5][4];
     unsigned with[5];
     const unsigned without = features & ~(unsigned)TL_FEATURE_WAKE;
-    int n = features & TL_FEATURE_WAKE ? split_area(area, u->wake_rect, in, around) : -1;
+    int n = features & TL_FEATURE_WAKE ? split_area(area, u->plan.wake_rect, in, around) : -1;
     if (n < 0) {
         memcpy(part[0], area, sizeof part[0]);
         with[parts++] = without;
@@ -682,16 +627,15 @@ static int draw_wake_split(tl_renderer *r, const tl_frame_uniforms *u, unsigned 
 
 /* One ocean draw over `area` (x0 y0 x1 y1) with the program of
  * `features`. The hull's mirror image is drawn only where it can show:
- * u->boat_mirror_rect, widened by the most the waves shift its look-ups
- * (TL_MIRROR_SHIFT in shaders/boat.glsl: 0.05 of the height) and its taps'
- * reach; the water around that and the sky's rows take the programs
- * without it (TL_PASS_MIRROR), for the same reason as the wake. */
+ * u->plan.boat_mirror_rect, widened by the most the waves shift its look-ups
+ * (TL_MIRROR_SHIFT of the height, shaders/boat.glsl) and its taps' reach; the water around that and
+ * the sky's rows take the programs without it (TL_PASS_MIRROR), for the same reason as the wake. */
 static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned features, float weight,
                      int write_depth, int only, const int area[4], tl_error *err)
 {
     if (area[0] >= area[2] || area[1] >= area[3])
         return TL_OK;
-    const int *m = u->boat_mirror_rect, reach = (int)ceil(0.05 * u->height) + 3;
+    const int *m = u->plan.boat_mirror_rect, reach = (int)ceil(TL_MIRROR_SHIFT * u->height) + 3;
     const int wide[4] = {m[0] - reach, m[1] - reach, m[2] + reach, m[3] + reach};
     int in[4], around[4][4], n = -1;
     if ((features & TL_FEATURE_BOAT) && !(features & TL_PASS_SKY) && m[0] < m[2] && m[1] < m[3])
@@ -724,12 +668,12 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     }
     glBindVertexArray(r->vao);
     /* The giant wave's program only over the pixels that can see its box
-     * (u->giant_rect), the lean program, the same image there, around it. */
+     * (u->plan.giant_rect), the lean program, the same image there, around it. */
     const int w = u->width, h = u->height;
     int rect[4] = {0, 0, 0, 0};
     unsigned lean = features & ~(unsigned)TL_FEATURE_GIANT_WAVE;
     if (features & TL_FEATURE_GIANT_WAVE)
-        memcpy(rect, u->giant_rect, sizeof rect);
+        memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;
     const int scope = tl_renderer_prepass_scope(u, features, rect);
     if (scope != TL_PREPASS_NONE) {

@@ -38,15 +38,16 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err);
  * keeps the shaders it had. */
 int tl_renderer_use_shaders(tl_renderer *r, const tl_shader_lib *lib, tl_error *err);
 
-/* For frames with TL_FEATURE_SKY_PHYSICAL: brings the physical sky's
- * tables up to date for the scene (the atmosphere's two on the CPU when
- * the air changed; the sky-view table drawn here, shaders/sky_view.frag,
- * when the sun or the altitude step moved, and read back into
- * luts->view) and fills u->sky_ambient. The table stays bound to texture
- * unit 4, where those frames read it. Nothing for other frames. */
+/* For frames with TL_FEATURE_SKY_PHYSICAL, after tl_prepare_sky_tables
+ * brought the atmosphere's tables in `luts` up to date: draws the sky-view
+ * table for the sun's elevation and the altitude it gave
+ * (shaders/sky_view.frag) when either moved or the tables changed, and
+ * reads it back into luts->view, where tl_prepare_sky_ambient finds it.
+ * The table stays bound to its texture unit, where those frames read it.
+ * tl_render_prepare_sky runs the three steps. */
 struct tl_sky_luts;
-int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, struct tl_sky_luts *luts,
-                            tl_frame_uniforms *u, tl_error *err);
+int tl_renderer_prepare_sky(tl_renderer *r, struct tl_sky_luts *luts, double sun_elevation,
+                            double altitude, tl_error *err);
 
 /* Uploads the boat's mesh (replacing any before it; NULL removes it). Frames
  * whose uniforms carry TL_FEATURE_BOAT draw it; without a mesh they do not. */

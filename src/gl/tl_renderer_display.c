@@ -84,7 +84,7 @@ static int mip_chain(tl_renderer *r, tl_error *err)
     }
     if (!r->mip_fbo)
         glGenFramebuffers(1, &r->mip_fbo);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     glBindTexture(GL_TEXTURE_2D, t->tex[0]);
     if (t->mip_levels != top) { /* a new scene target: its levels' storage */
         for (int k = 1; k <= top; k++) {
@@ -97,7 +97,7 @@ static int mip_chain(tl_renderer *r, tl_error *err)
     glBindVertexArray(r->vao);
     glBindFramebuffer(GL_FRAMEBUFFER, r->mip_fbo);
     glUseProgram(r->mip_program);
-    glUniform1i(tl_renderer_loc(r->mip_program, "u_src"), 0);
+    glUniform1i(tl_renderer_loc(r->mip_program, "u_src"), TL_UNIT_INPUT);
     for (int k = 1; k <= top; k++) {
         int w = t->width >> k, h = t->height >> k;
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, k - 1);
@@ -126,7 +126,7 @@ static int glare_pass(tl_renderer *r, tl_error *err)
     rc = mip_chain(r, err);
     if (rc)
         return rc;
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
     /* glare.frag reads whole levels (an integer lod): a blend between two
      * levels would weigh the second by 0, and llvmpipe would fetch it
@@ -140,7 +140,7 @@ static int glare_pass(tl_renderer *r, tl_error *err)
     glBindFramebuffer(GL_FRAMEBUFFER, r->glare.fbo);
     glViewport(0, 0, w, h);
     glUseProgram(r->glare_program);
-    glUniform1i(tl_renderer_loc(r->glare_program, "u_hdr"), 0);
+    glUniform1i(tl_renderer_loc(r->glare_program, "u_hdr"), TL_UNIT_INPUT);
     glUniform2f(tl_renderer_loc(r->glare_program, "u_glare_size"), (float)w, (float)h);
     /* The scene at render_scale < 1: its levels are that much wider. */
     double shift = round(log2((double)r->display.height / r->scene.height));
@@ -164,13 +164,13 @@ static int filter_pass(tl_renderer *r, float sigma, tl_error *err)
     glBindFramebuffer(GL_FRAMEBUFFER, r->filtered.fbo);
     glViewport(0, 0, w, h);
     glUseProgram(r->filter_program);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     glBindTexture(GL_TEXTURE_2D, r->display.tex[0]);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glUniform1i(tl_renderer_loc(r->filter_program, "u_display"), 0);
+    glUniform1i(tl_renderer_loc(r->filter_program, "u_display"), TL_UNIT_INPUT);
     glUniform1f(tl_renderer_loc(r->filter_program, "u_filter_offset"),
                 (float)(2.0 * side / (1.0 + 2.0 * side)));
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -190,9 +190,9 @@ static int upscale_rows(tl_renderer *r, tl_error *err)
     glBindFramebuffer(GL_FRAMEBUFFER, r->upscaled.fbo);
     glViewport(0, 0, w, h);
     glUseProgram(r->upscale_program);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[0]);
-    glUniform1i(tl_renderer_loc(r->upscale_program, "u_hdr"), 0);
+    glUniform1i(tl_renderer_loc(r->upscale_program, "u_hdr"), TL_UNIT_INPUT);
     glUniform1i(tl_renderer_loc(r->upscale_program, "u_out_width"), w);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return tl_renderer_check("the upscale's rows", err);
@@ -231,15 +231,15 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     if (!program)
         return err ? (int)err->status : TL_ERR_RUNTIME;
     glUseProgram(program);
-    glActiveTexture(GL_TEXTURE2);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_DISPLAY_GLARE);
     glBindTexture(GL_TEXTURE_2D, bloom > 0.0f ? r->glare.tex[0] : 0);
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_DISPLAY_DISTANCE);
     glBindTexture(GL_TEXTURE_2D, r->scene.tex[1]);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_DISPLAY_HDR);
     glBindTexture(GL_TEXTURE_2D, upscale ? r->upscaled.tex[0] : r->scene.tex[0]);
-    glUniform1i(tl_renderer_loc(program, "u_hdr"), 0);
-    glUniform1i(tl_renderer_loc(program, "u_distance"), 1);
-    glUniform1i(tl_renderer_loc(program, "u_glare"), 2);
+    glUniform1i(tl_renderer_loc(program, "u_hdr"), TL_UNIT_DISPLAY_HDR);
+    glUniform1i(tl_renderer_loc(program, "u_distance"), TL_UNIT_DISPLAY_DISTANCE);
+    glUniform1i(tl_renderer_loc(program, "u_glare"), TL_UNIT_DISPLAY_GLARE);
     glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
     glUniform1f(tl_renderer_loc(program, "u_exposure"), d->exposure);
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);

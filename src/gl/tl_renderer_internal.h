@@ -15,12 +15,34 @@
 #define MAX_PROGRAMS 24
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
 #define TL_PREPASS_LEVELS 2
+/* The most the waves shift the hull's mirror image, as a share of the
+ * frame's height: boat.glsl holds its look-ups to it, and the program
+ * with the image runs that far around the image's rectangle. */
+#define TL_MIRROR_SHIFT 0.05
+
+/* Texture units, one name for each sampler's. The ocean's programs take
+ * 1 to 5 (unit 0 is where the other passes bind their input, and where
+ * textures are bound to be set up); the sky-view table's pass and the
+ * display pass number their own inputs from 0. */
+enum {
+    TL_UNIT_INPUT = 0,             /* a post pass's one input; the probe's points */
+    TL_UNIT_BOAT_COLOR = 1,        /* the ocean's: the hull's radiance, */
+    TL_UNIT_BOAT_DISTANCE = 2,     /* its distance along the ray, */
+    TL_UNIT_BOAT_REFLECTION = 3,   /* its mirror image, */
+    TL_UNIT_SKY_VIEW = 4,          /* the physical sky's sky-view table, */
+    TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances */
+    TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
+    TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
+    TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
+    TL_UNIT_DISPLAY_DISTANCE = 1,  /* its distances, */
+    TL_UNIT_DISPLAY_GLARE = 2      /* the glare */
+};
 
 /* Ocean program variants beyond the frame's features (bits above them):
  * a march prepass level, a pass that starts from a coarser level's
  * distances, the sky alone (the rows above the horizon,
- * tl_frame_uniforms.sky_rows), and the water that can mirror the boat's
- * hull (tl_frame_uniforms.boat_mirror_rect). */
+ * tl_frame_uniforms.plan.sky_rows), and the water that can mirror the boat's
+ * hull (tl_frame_uniforms.plan.boat_mirror_rect). */
 enum {
     TL_PASS_PREPASS = 1u << 30,
     TL_PASS_HINTED = 1u << 29,
@@ -162,7 +184,7 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
  * `rect` itself holds any pixel (without one, the one band is the frame). */
 int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has_rect);
 /* The first row (GL's y) of a target `h` rows high, each row standing for
- * `scale` of the render's, whose rays all rise (u->sky_rows); h if none. */
+ * `scale` of the render's, whose rays all rise (u->plan.sky_rows); h if none. */
 int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h);
 
 /* Which of the frame's ocean passes start from the march prepass: none,

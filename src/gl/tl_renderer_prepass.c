@@ -29,10 +29,10 @@ int tl_renderer_split(int w, int h, const int rect[4], int bands[4][4], int *has
 
 int tl_renderer_sky_from(const tl_frame_uniforms *u, int scale, int h)
 {
-    if (u->sky_rows <= 0)
+    if (u->plan.sky_rows <= 0)
         return h;
     /* A row j's ray passes through the render's row scale * (j + 0.5). */
-    int from = u->height - u->sky_rows;
+    int from = u->height - u->plan.sky_rows;
     int j = (2 * from + scale - 1) / (2 * scale);
     return j < 0 ? 0 : j > h ? h : j;
 }
@@ -43,18 +43,18 @@ int tl_renderer_prepass_scope(const tl_frame_uniforms *u, unsigned features, con
 {
     if (features & TL_FEATURE_UNDERWATER)
         return TL_PREPASS_NONE;
-    if (u->march_prepass)
+    if (u->plan.march_prepass)
         return TL_PREPASS_FRAME;
     int has_rect = (features & TL_FEATURE_GIANT_WAVE) && rect[0] < rect[2] && rect[1] < rect[3];
-    return u->giant_prepass && has_rect ? TL_PREPASS_GIANT : TL_PREPASS_NONE;
+    return u->plan.giant_prepass && has_rect ? TL_PREPASS_GIANT : TL_PREPASS_NONE;
 }
 
 static void bind_hint(GLuint program, const target *coarser, float pixel)
 {
-    glActiveTexture(GL_TEXTURE5);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_MARCH_HINT);
     glBindTexture(GL_TEXTURE_2D, coarser->tex[0]);
-    glActiveTexture(GL_TEXTURE0);
-    glUniform1i(tl_renderer_loc(program, "u_march_hint"), 5);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glUniform1i(tl_renderer_loc(program, "u_march_hint"), TL_UNIT_MARCH_HINT);
     glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), pixel);
 }
 
@@ -133,9 +133,9 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
     const target *finest = &r->hint[0];
     if (reuse && finest->fbo && finest->width == (u->width + 1) / 2 &&
         finest->height == (u->height + 1) / 2) {
-        glActiveTexture(GL_TEXTURE5);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_MARCH_HINT);
         glBindTexture(GL_TEXTURE_2D, finest->tex[0]);
-        glActiveTexture(GL_TEXTURE0);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
         return TL_OK;
     }
     glDisable(GL_DEPTH_TEST);
@@ -149,8 +149,8 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
     if (rc)
         return rc;
     /* The frame's passes start from the finest level. */
-    glActiveTexture(GL_TEXTURE5);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_MARCH_HINT);
     glBindTexture(GL_TEXTURE_2D, r->hint[0].tex[0]);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     return tl_renderer_check("march prepass", err);
 }

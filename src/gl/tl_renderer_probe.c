@@ -50,7 +50,7 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
     }
     GLuint points;
     glGenTextures(1, &points);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     glBindTexture(GL_TEXTURE_2D, points);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, texels);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -65,9 +65,9 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
         glUseProgram(program);
         tl_renderer_upload_uniforms(program, u);
         /* target_ensure bound its own texture to unit 0: bind the points again. */
-        glActiveTexture(GL_TEXTURE0);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
         glBindTexture(GL_TEXTURE_2D, points);
-        glUniform1i(tl_renderer_loc(program, "u_points"), 0);
+        glUniform1i(tl_renderer_loc(program, "u_points"), TL_UNIT_INPUT);
         glUniform1i(tl_renderer_loc(program, "u_probe_octaves"), octaves);
         glUniform1i(tl_renderer_loc(program, "u_probe_mode"), mode);
         glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -95,12 +95,12 @@ static int build_view(tl_renderer *r, tl_sky_luts *l, double sun_elevation, doub
     glBindFramebuffer(GL_FRAMEBUFFER, r->sky_view.fbo);
     glViewport(0, 0, TL_SKY_VIEW_W, TL_SKY_VIEW_H);
     glUseProgram(p);
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_SKY_TRANSMITTANCE);
     glBindTexture(GL_TEXTURE_2D, r->sky_transmittance);
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_SKY_MULTIPLE);
     glBindTexture(GL_TEXTURE_2D, r->sky_ms);
-    glUniform1i(tl_renderer_loc(p, "u_transmittance"), 0);
-    glUniform1i(tl_renderer_loc(p, "u_ms"), 1);
+    glUniform1i(tl_renderer_loc(p, "u_transmittance"), TL_UNIT_SKY_TRANSMITTANCE);
+    glUniform1i(tl_renderer_loc(p, "u_ms"), TL_UNIT_SKY_MULTIPLE);
     glUniform2i(tl_renderer_loc(p, "u_view_size"), TL_SKY_VIEW_W, TL_SKY_VIEW_H);
     glUniform1f(tl_renderer_loc(p, "u_height"), (float)height);
     glUniform1f(tl_renderer_loc(p, "u_sun_elevation"), (float)sun_elevation);
@@ -124,12 +124,9 @@ static int build_view(tl_renderer *r, tl_sky_luts *l, double sun_elevation, doub
     return tl_renderer_check("building the sky-view table", err);
 }
 
-int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, tl_sky_luts *luts,
-                            tl_frame_uniforms *u, tl_error *err)
+int tl_renderer_prepare_sky(tl_renderer *r, tl_sky_luts *luts, double sun_elevation,
+                            double altitude, tl_error *err)
 {
-    double sun_elevation, altitude;
-    if (!tl_prepare_sky_tables(scene, luts, u, &sun_elevation, &altitude))
-        return TL_OK;
     /* Both the texture and luts->view (the ambient's source) must be this
      * frame's: a table kept from a frame before, or built by another
      * renderer into the same luts, is built again. */
@@ -151,10 +148,9 @@ int tl_renderer_prepare_sky(tl_renderer *r, const tl_scene *scene, tl_sky_luts *
     }
     /* Bound every frame, built or not: texture units belong to the
      * context, which another renderer may share. */
-    glActiveTexture(GL_TEXTURE4);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_SKY_VIEW);
     glBindTexture(GL_TEXTURE_2D, r->sky_view.tex[0]);
-    glActiveTexture(GL_TEXTURE0);
-    tl_prepare_sky_ambient(scene, luts, u);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     return TL_OK;
 }
 

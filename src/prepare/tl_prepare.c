@@ -10,6 +10,7 @@
 #include <cglm/cglm.h>
 
 #include "optics/tl_optics.h"
+#include "prepare/tl_uniform_list.h"
 #include "sky/tl_sky.h"
 #include "waves/tl_giant.h"
 
@@ -356,6 +357,8 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
 static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
                                tl_frame_uniforms *u)
 {
+    /* Above the water too: the giant wave's crest refracts the sun with it. */
+    u->water_ior = (float)s->water.ior;
     double gap;
     tl_water_side side = tl_prepare_water_side(s, w, giant, &gap);
     if (side == TL_WATER_ABOVE)
@@ -367,7 +370,6 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     tl_optics_water_extinction(&s->water, sigma);
     to_float3(sigma, u->water_sigma);
     u->water_scattering = (float)s->water.scattering;
-    u->water_ior = (float)s->water.ior;
     u->cam_depth = (float)fmax(-gap, 0.0);
     u->lens = (float)TL_LENS_DISTANCE;
     /* The sun's light below the surface: refracted at a flat surface (a
@@ -443,7 +445,7 @@ static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
     to_float3(s->fog.color, u->fog_color);
 }
 
-/* The top rows whose every ray rises (u->sky_rows). From a camera above
+/* The top rows whose every ray rises (u->plan.sky_rows). From a camera above
  * the water such a ray meets neither the ocean, whose crests lie at
  * y <= 0, nor the boat (composited from its own pass) nor anything else
  * the lean program marches; the giant wave's box has its own rectangle.
@@ -455,7 +457,7 @@ static void prepare_fog(const tl_scene *s, tl_frame_uniforms *u)
 #define TL_SKY_MARGIN 1e-4
 static void sky_rows(tl_frame_uniforms *u)
 {
-    u->sky_rows = 0;
+    u->plan.sky_rows = 0;
     if (!(u->cam_height > 0.0f) || (u->features & TL_FEATURE_UNDERWATER) || !(u->cam_up[1] > 0.0f))
         return;
     double ty = u->tan_half_vfov, tx = ty * u->width / u->height;
@@ -471,7 +473,7 @@ static void sky_rows(tl_frame_uniforms *u)
             if (!(d[1] >= TL_SKY_MARGIN * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2])))
                 return;
         }
-        u->sky_rows = u->height - row;
+        u->plan.sky_rows = u->height - row;
     }
 }
 
@@ -499,10 +501,21 @@ void tl_prepare_boat_sample(tl_frame_uniforms *u, int sample)
     }
 }
 
+/* Every row of the uniform table names a field of its size: the renderer
+ * uploads that many bytes from it. */
+#define CHECK_ROW(kind, field, array, feature, doc)                                                \
+    _Static_assert(sizeof(((tl_frame_uniforms *)0)->field) ==                                      \
+                       TL_UNIFORM_BYTES_##kind * TL_UNIFORM_COUNT(array),                          \
+                   "tl_uniform_list.h: u_" #field " does not match its field");
+TL_FRAME_UNIFORMS(CHECK_ROW)
+#undef CHECK_ROW
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
     tl_prepare_render_size(s, &u->width, &u->height);
+    u->resolution[0] = (float)u->width;
+    u->resolution[1] = (float)u->height;
     u->out_width = s->width;
     u->out_height = s->height;
 
@@ -561,9 +574,9 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
         u->features |= TL_FEATURE_POLISH;
     u->miss_at_start = q->miss_at_start;
     u->march_relax = (float)q->march_relax;
-    u->march_prepass = q->march_prepass;
+    u->plan.march_prepass = q->march_prepass;
     u->prepass_budget = q->prepass_budget;
-    u->giant_prepass = q->giant_prepass;
+    u->plan.giant_prepass = q->giant_prepass;
     u->normalize_smoothed = q->normalize_smoothed;
     u->facing_normals = q->facing_normals;
     if (q->analytic_normals)

@@ -53,9 +53,43 @@ const char *tl_feature_label(int index);
 /* "ocean, sun disc, giant wave": every feature of `features`, for logs. */
 void tl_feature_describe(unsigned features, char *out, size_t size);
 
+/* How the renderer draws a frame, beside what it uploads: the screen
+ * rectangles each program variant covers and the prepass the frame's
+ * rays start from. tl_prepare_frame fills it (tl_frame_uniforms.plan);
+ * the renderer's draw code reads it, and none of it reaches a shader. */
+typedef struct tl_draw_plan {
+    /* The render target's pixels whose rays can meet the giant wave's box,
+     * as x0, y0, x1, y1 (x1 and y1 one past the last; GL's lower-left
+     * origin); empty (all 0) when none can. The renderer runs the giant
+     * wave's program only there (tl_prepare_giant_rect). */
+    int giant_rect[4];
+    /* Rows at the top of the render target (GL's y from height - sky_rows
+     * up) where every ray rises from a camera above the water: outside
+     * giant_rect they meet nothing, and the renderer shades them with the
+     * sky alone (sky_rows in tl_prepare.c). 0: none. */
+    int sky_rows;
+    /* The pixels that can show the hull's mirror image, as giant_rect
+     * (tl_prepare_mirror_rect): the ocean programs look its texture up
+     * only there. */
+    int boat_mirror_rect[4];
+    /* The pixels whose rays can meet water the wake's foam
+     * reaches, as giant_rect's; the renderer leaves the foam out of the
+     * programs it draws elsewhere (tl_prepare_wake_rect). Empty without
+     * the wake. */
+    int wake_rect[4];
+    int march_prepass; /* quality.march_prepass: the prepass before every pass */
+    int giant_prepass; /* quality.giant_prepass: the prepass over giant_rect alone */
+} tl_draw_plan;
+
+/* What the GPU needs for one frame. The fields the shaders read are the
+ * rows of tl_uniform_list.h, which declares them to GLSL and uploads them;
+ * the rest drive the renderer (sizes, the screen rectangles, the boat's
+ * mesh pass, the display). */
 typedef struct tl_frame_uniforms {
     unsigned features;
+    tl_draw_plan plan;         /* how it is drawn; the rest is what the shaders read */
     int width, height;         /* the ocean's render size (quality.render_scale) */
+    float resolution[2];       /* the same, for the shaders */
     int out_width, out_height; /* the frame's */
 
     /* Camera: basis vectors and lens; the camera sits at the xz origin. */
@@ -87,10 +121,8 @@ typedef struct tl_frame_uniforms {
     int march_octaves, normal_octaves, march_steps;
     float hit_epsilon, normal_epsilon;
     int refine_steps, miss_at_start, normalize_smoothed, facing_normals;
-    float march_relax; /* quality.march_relax: the ocean march's over-relaxation */
-    int march_prepass; /* quality.march_prepass */
+    float march_relax;  /* quality.march_relax: the ocean march's over-relaxation */
     int prepass_budget; /* quality.prepass_budget */
-    int giant_prepass;  /* quality.giant_prepass */
     /* Level of detail: the water one pixel covers per metre of distance
      * (radians; 0 = none): pixel angle / sqrt(samples per pixel). */
     float lod_angle;
@@ -102,8 +134,8 @@ typedef struct tl_frame_uniforms {
     float sun_intensity, sun_sharpness, sky_brightness;
     float fresnel_f0, scatter_color[3], scatter_strength, scatter_base;
     float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
-    float exposure; /* render.exposure × 2^-render.ev: the display's scale */
-    float bloom;    /* render.bloom: the display's glare */
+    float exposure;     /* render.exposure × 2^-render.ev: the display's scale */
+    float bloom;        /* render.bloom: the display's glare */
     float pixel_filter; /* quality.pixel_filter: the display's Gaussian, sigma in pixels */
 
     /* The giant wave (TL_FEATURE_GIANT_WAVE), see shaders/giant.glsl:
@@ -122,16 +154,6 @@ typedef struct tl_frame_uniforms {
      * The whole reach when the camera is at or under the still water. */
     float giant_rise[2];
     int giant_iterations;
-    /* The render target's pixels whose rays can meet the wave's box, as
-     * x0, y0, x1, y1 (x1 and y1 one past the last; GL's lower-left origin);
-     * empty (all 0) when none can. The renderer runs the giant wave's
-     * program only there (giant_screen_rect in tl_prepare.c). */
-    int giant_rect[4];
-    /* Rows at the top of the render target (GL's y from height - sky_rows
-     * up) where every ray rises from a camera above the water: outside
-     * giant_rect they meet nothing, and the renderer shades them with the
-     * sky alone (sky_rows in tl_prepare.c). 0: none. */
-    int sky_rows;
 
     /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
      * camera-relative metres (the camera at the origin, y too). */
@@ -141,28 +163,20 @@ typedef struct tl_frame_uniforms {
     float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
     float boat_top;          /* model y of the hull's top */
     float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
-    /* The render target's pixels that can show the hull's mirror image, as
-     * giant_rect (tl_prepare_mirror_rect): the ocean programs look its
-     * texture up only there. */
-    int boat_mirror_rect[4];
     float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */
     float wake[TL_WAKE_POINTS][4];
-    float wake_params[4];  /* half beam, fade time, strength, unused */
+    float wake_params[4];             /* half beam, fade time, strength, unused */
     float wake_along[TL_WAKE_POINTS]; /* tl_boat.wake_along, wrapped every 65536 m */
     /* Per group of TL_WAKE_GROUP segments: a circle (camera-relative x z,
      * radius, unused) holding every point the group's foam can reach. */
     float wake_groups[TL_WAKE_GROUPS][4];
-    /* The render target's pixels whose rays can meet water the wake's foam
-     * reaches, as giant_rect's; the renderer leaves the foam out of the
-     * programs it draws elsewhere (tl_prepare_wake_rect). Empty without
-     * the wake. */
-    int wake_rect[4];
     float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
 
-    /* Under water (TL_FEATURE_UNDERWATER). */
+    /* Under water (TL_FEATURE_UNDERWATER); water_ior in every frame, the
+     * giant wave's crest refracts the sun with it too. */
     float water_sigma[3];   /* extinction per metre, R G B */
     float water_scattering; /* per metre, grey */
     float water_ior;

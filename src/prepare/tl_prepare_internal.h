@@ -5,16 +5,16 @@
 #include "tl_prepare.h"
 
 /* The pixels where the renderer draws the giant wave's program, into
- * u->giant_rect (tl_prepare_rect.c). Needs u's giant-wave, sun and depth
+ * u->plan.giant_rect (tl_prepare_rect.c). Needs u's giant-wave, sun and depth
  * uniforms filled. */
 void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u);
-/* The pixels where the renderer draws the wake's foam, into u->wake_rect
+/* The pixels where the renderer draws the wake's foam, into u->plan.wake_rect
  * (tl_prepare_rect.c). Needs u's features, wake groups, depth and
  * giant-wave uniforms filled. */
 void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u);
 
 /* The pixels that can show the boat's mirror image, into
- * u->boat_mirror_rect (tl_prepare_rect.c): those of the model's bounding
+ * u->plan.boat_mirror_rect (tl_prepare_rect.c): those of the model's bounding
  * box (its eight corners camera-relative, corner i at the maximum along
  * axis k where bit k of i is set) above the water plane `water`
  * (camera-relative y), mirrored in that plane. */

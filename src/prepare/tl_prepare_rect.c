@@ -60,7 +60,7 @@ static void cover_box(const tl_frame_uniforms *u, double cam_y, double min_y, do
     hi[1] = top;
     lo[2] = -(double)u->giant_mask[2];
     hi[2] = u->giant_mask[2];
-    if (cam_y >= min_y && u->march_prepass)
+    if (cam_y >= min_y && u->plan.march_prepass)
         lo[1] = -(double)u->depth;
     double along, across, shadow = shadow_reach(u, top, &along, &across);
     if (shadow <= 0.0)
@@ -249,13 +249,13 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
     double dir[2] = {u->giant_frame[0], u->giant_frame[1]};
     double lo[3], hi[3];
     cover_box(u, cam[1], near, lo, hi);
-    box_rect(s, u->width, u->height, dir, cam, lo, hi, u->giant_rect);
+    box_rect(s, u->width, u->height, dir, cam, lo, hi, u->plan.giant_rect);
 }
 
 void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double water,
                             tl_frame_uniforms *u)
 {
-    int *rect = u->boat_mirror_rect;
+    int *rect = u->plan.boat_mirror_rect;
     rect[0] = rect[1] = rect[2] = rect[3] = 0;
     /* The box in the frame of the hull's length (its first edge), up and
      * across; what stands above the water, mirrored below it. */
@@ -287,7 +287,7 @@ void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double
  * and the surface's rays from below are left as they are. */
 void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u)
 {
-    int *rect = u->wake_rect;
+    int *rect = u->plan.wake_rect;
     rect[0] = rect[1] = rect[2] = rect[3] = 0;
     if (!(u->features & TL_FEATURE_WAKE))
         return;

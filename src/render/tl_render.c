@@ -154,6 +154,18 @@ static int accumulate(tl_render *r, const tl_frame_uniforms *u, float weight, in
     return rc;
 }
 
+int tl_render_prepare_sky(tl_renderer *renderer, const tl_scene *scene, tl_sky_luts *luts,
+                          tl_frame_uniforms *u, tl_error *err)
+{
+    double sun_elevation, altitude;
+    if (!tl_prepare_sky_tables(scene, luts, u, &sun_elevation, &altitude))
+        return TL_OK;
+    int rc = tl_renderer_prepare_sky(renderer, luts, sun_elevation, altitude, err);
+    if (!rc)
+        tl_prepare_sky_ambient(scene, luts, u);
+    return rc;
+}
+
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err)
 {
     int rc = tl_scene_validate(scene, err);
@@ -165,7 +177,7 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
     progress_begin(r, (double)u.width * u.height * (u.spp < 1 ? 1 : u.spp));
-    rc = tl_renderer_prepare_sky(r->renderer, scene, r->sky, &u, err);
+    rc = tl_render_prepare_sky(r->renderer, scene, r->sky, &u, err);
     if (!rc)
         rc = tl_renderer_begin(r->renderer, u.width, u.height, u.out_width, u.out_height, err);
     if (!rc)
@@ -191,38 +203,6 @@ void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_sett
         scene->quality.spp = settings->spp;
     if (settings->camera)
         scene->camera = *settings->camera;
-}
-
-/* Narrows (lo, hi] around the cut inside it to ~1e-12 relative. */
-static void locate_cut(const tl_timeline *tl, double *lo, double *hi)
-{
-    for (int i = 0; i < 200 && *hi - *lo > 1e-12 * fmax(1.0, fabs(*hi)); i++) {
-        double mid = 0.5 * (*lo + *hi);
-        if (tl_timeline_has_cut_between(tl, *lo, mid))
-            *hi = mid;
-        else
-            *lo = mid;
-    }
-}
-
-void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg, double *open,
-                                double *close)
-{
-    double t = tl_timeline_frame_time(tl, frame);
-    double half = 0.5 * (shutter_deg / 360.0) / tl->fps;
-    double a = t - half, b = t + half;
-    if (tl_timeline_has_cut_between(tl, a, t)) { /* a cut before: open at it */
-        double lo = a, hi = t;
-        locate_cut(tl, &lo, &hi);
-        a = hi; /* the cut's own time already shows the new shot */
-    }
-    if (tl_timeline_has_cut_between(tl, t, b)) { /* a cut after: close before it */
-        double lo = t, hi = b;
-        locate_cut(tl, &lo, &hi);
-        b = lo;
-    }
-    *open = a;
-    *close = b;
 }
 
 /* The display pass's settings from the scene's exposure, glare and pixel
@@ -265,28 +245,20 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         rc = tl_renderer_begin(r->renderer, rw, rh, scene->width, scene->height, err);
     if (rc)
         return rc;
+    /* The timeline gives the sub-frames' times (never across a cut);
+     * depth comes from the one nearest t. */
     int samples = 1;
-    double open = t, close = t;
-    if (settings->shutter_deg > 0.0) {
+    if (settings->shutter_deg > 0.0)
         samples = settings->shutter_samples > 0 ? settings->shutter_samples : 8;
-        tl_render_shutter_interval(tl, frame, settings->shutter_deg, &open, &close);
-    }
+    double *times = malloc(sizeof *times * (size_t)samples);
+    if (!times)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    int depth_sample = tl_timeline_shutter_times(tl, frame, settings->shutter_deg, samples, times);
     progress_begin(r,
                    (double)rw * rh * (scene->quality.spp < 1 ? 1 : scene->quality.spp) * samples);
-    /* Sub-frame k sits at the centre of the k-th of `samples` equal slices
-     * of the shutter interval; depth comes from the one nearest t. */
-    int depth_sample = 0;
-    double best = INFINITY;
     r->last_features = 0;
-    for (int k = 0; k < samples; k++) {
-        double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
-        if (fabs(tk - t) < best) {
-            best = fabs(tk - t);
-            depth_sample = k;
-        }
-    }
     for (int k = 0; !rc && k < samples; k++) {
-        double tk = samples == 1 ? t : open + (close - open) * (k + 0.5) / samples;
+        double tk = times[k];
         tl_scene sub;
         if (samples == 1)
             sub = *scene;
@@ -297,13 +269,14 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
             break;
         tl_frame_uniforms u;
         tl_prepare_frame(&sub, waves_for(r, &sub.ocean), &u);
-        rc = tl_renderer_prepare_sky(r->renderer, &sub, r->sky, &u, err);
+        rc = tl_render_prepare_sky(r->renderer, &sub, r->sky, &u, err);
         if (rc)
             break;
         u.seed = (unsigned)k * 0x9E3779B9u; /* new jitter per sub-frame */
         r->last_features |= u.features;
         rc = accumulate(r, &u, 1.0f / (float)samples, k == depth_sample, err);
     }
+    free(times);
     return rc;
 }
 
@@ -373,7 +346,7 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     tl_frame_uniforms u;
     if (!rc) {
         tl_prepare_frame(&scene, waves_for(r, &scene.ocean), &u);
-        rc = tl_renderer_prepare_sky(r->renderer, &scene, r->sky, &u, err);
+        rc = tl_render_prepare_sky(r->renderer, &scene, r->sky, &u, err);
     }
     if (!rc) {
         u.seed = 0; /* the pattern tl_render_timeline_frame's one pass uses */

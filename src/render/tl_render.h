@@ -52,6 +52,18 @@ void tl_render_set_progress(tl_render *r, tl_render_progress_fn fn, void *ctx);
 /* Renders `scene` into `frame`, (re)allocating it to the scene's size. */
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err);
 
+/* The physical sky of a prepared frame, in the order its data flows: the
+ * scene's atmosphere into the tables in `luts` (tl_prepare_sky_tables),
+ * the sky-view table drawn from them on the GPU (tl_renderer_prepare_sky),
+ * and u->sky_ambient from that table (tl_prepare_sky_ambient). Nothing
+ * for frames without TL_FEATURE_SKY_PHYSICAL. For code that drives a
+ * tl_renderer itself; tl_render's frames call it. */
+struct tl_renderer;
+struct tl_sky_luts;
+struct tl_frame_uniforms;
+int tl_render_prepare_sky(struct tl_renderer *renderer, const tl_scene *scene,
+                          struct tl_sky_luts *luts, struct tl_frame_uniforms *u, tl_error *err);
+
 /* How a timeline's frames are rendered; zero fields keep the timeline's. */
 typedef struct tl_render_settings {
     int width, height;         /* 0: the timeline's size */
@@ -68,15 +80,9 @@ typedef struct tl_render_settings {
 void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_settings *settings,
                            tl_scene *scene);
 
-/* The shutter interval of a frame: centred on its time, `shutter_deg`/360
- * of a frame long, and cut short at any cut inside it so that motion blur
- * never mixes two shots. */
-void tl_render_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg, double *open,
-                                double *close);
-
 /* Renders frame `frame` of `tl` (time = frame / fps, from the integer) into
- * `out`. With a shutter, radiance averages `shutter_samples` sub-frames
- * spread evenly over the shutter interval; depth comes from the sub-frame
+ * `out`. With a shutter, radiance averages `shutter_samples` sub-frames at
+ * the times tl_timeline_shutter_times gives; depth comes from the sub-frame
  * nearest the frame's time. `scene_out` (may be NULL) receives the scene
  * at the frame's time. With `out` NULL nothing is read back: the frame
  * stays on the GPU for tl_render_present. */

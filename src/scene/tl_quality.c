@@ -18,7 +18,7 @@
  * brings them closer to reference (rays that ran out of steps at the
  * horizon now get there); 1.2 gained as much, 1.4 less, 1.6 was slower
  * than plain steps (more steps taken back). */
-#define RELAX 1.3
+#define RELAX TL_QUALITY_MARCH_RELAX
 /* With the prepass, a ray whose four coarser neighbours disagree marches
  * this many steps, then regula falsi searches the rest of their bracket
  * (grazing rays close on the water slowly: marched to the end they took
@@ -29,23 +29,86 @@
  * a hair of it; fewer are slower (regula falsi then fails on longer
  * brackets). */
 #define BUDGET_FINAL 8
-#define BUDGET_FAST 6
+#define BUDGET_FAST  6
 /* polish: the march's hit stepped onto the normals' finer surface before
  * it is shaded (one Newton step): the largest gain in accuracy preview and
  * final have, for a small share of their time. draft, whose target is
  * time, leaves it off. `seed` keeps the shader's hit; `reference`
  * marches the normals' octaves, where the step is nil. */
-/* One preset a row, its knobs in the order of tl_quality. */
-/* clang-format off */
+/* The presets, every knob named (tl_quality documents each). */
 static const tl_quality presets[] = {
-    /* name  march normal steps hit normal spp giant refine lod analytic start renorm scale
-     * filtered pixel_filter relax prepass budget giant_prepass polish facing */
-    {"draft", 8, 18, 32, 0.02, 0.02, 1, 4, 0, true, true, false, true, 0.5, false, 0.85, RELAX,
-     true, BUDGET_FAST, true, false, true},
-    {"preview", 10, 26, 48, 0.01, 0.01, 1, 5, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX, true, BUDGET_FAST, true, true, true},
-    {"final", 12, 36, 96, 0.005, 0.01, 1, 6, 0, true, true, false, true, 1.0, true, PIXEL_FILTER,
-     RELAX, true, BUDGET_FINAL, true, true, true},
+    {
+        .name = "draft",
+        .march_octaves = 8,
+        .normal_octaves = 18,
+        .march_steps = 32,
+        .hit_epsilon = 0.02,
+        .normal_epsilon = 0.02,
+        .spp = 1,
+        .giant_iterations = 4,
+        .refine_steps = 0,
+        .lod = true,
+        .analytic_normals = true,
+        .miss_at_start = false,
+        .normalize_smoothed = true,
+        .render_scale = 0.5,
+        .filtered_shading = false,
+        .pixel_filter = 0.85,
+        .march_relax = RELAX,
+        .march_prepass = true,
+        .prepass_budget = BUDGET_FAST,
+        .giant_prepass = true,
+        .polish = false,
+        .facing_normals = true,
+    },
+    {
+        .name = "preview",
+        .march_octaves = 10,
+        .normal_octaves = 26,
+        .march_steps = 48,
+        .hit_epsilon = 0.01,
+        .normal_epsilon = 0.01,
+        .spp = 1,
+        .giant_iterations = 5,
+        .refine_steps = 0,
+        .lod = true,
+        .analytic_normals = true,
+        .miss_at_start = false,
+        .normalize_smoothed = true,
+        .render_scale = 1.0,
+        .filtered_shading = true,
+        .pixel_filter = PIXEL_FILTER,
+        .march_relax = RELAX,
+        .march_prepass = true,
+        .prepass_budget = BUDGET_FAST,
+        .giant_prepass = true,
+        .polish = true,
+        .facing_normals = true,
+    },
+    {
+        .name = "final",
+        .march_octaves = 12,
+        .normal_octaves = 36,
+        .march_steps = 96,
+        .hit_epsilon = 0.005,
+        .normal_epsilon = 0.01,
+        .spp = 1,
+        .giant_iterations = 6,
+        .refine_steps = 0,
+        .lod = true,
+        .analytic_normals = true,
+        .miss_at_start = false,
+        .normalize_smoothed = true,
+        .render_scale = 1.0,
+        .filtered_shading = true,
+        .pixel_filter = PIXEL_FILTER,
+        .march_relax = RELAX,
+        .march_prepass = true,
+        .prepass_budget = BUDGET_FINAL,
+        .giant_prepass = true,
+        .polish = true,
+        .facing_normals = true,
+    },
     /* Converged: every octave the normals use is marched too, a hit is
      * 0.1 mm, refined, normals exact, and 64 stratified samples average
      * the pixel (no level of detail: it is the brute-force answer LOD
@@ -53,16 +116,59 @@ static const tl_quality presets[] = {
      * by the samples alone, and 16 left too much noise; 64 bring three of
      * the four cutscenes past the 45 dB aim (docs/quality.md, "Is
      * `reference` converged?"). */
-    {"reference", 48, 48, 1000, 0.0001, 0.002, 64, 10, 4, false, true, false, true, 1.0, false, 0.0,
-     1.0, false, 0, false, false, true},
+    {
+        .name = "reference",
+        .march_octaves = 48,
+        .normal_octaves = 48,
+        .march_steps = 1000,
+        .hit_epsilon = 0.0001,
+        .normal_epsilon = 0.002,
+        .spp = 64,
+        .giant_iterations = 10,
+        .refine_steps = 4,
+        .lod = false,
+        .analytic_normals = true,
+        .miss_at_start = false,
+        .normalize_smoothed = true,
+        .render_scale = 1.0,
+        .filtered_shading = false,
+        .pixel_filter = 0.0,
+        .march_relax = 1.0,
+        .march_prepass = false,
+        .prepass_budget = 0,
+        .giant_prepass = false,
+        .polish = false,
+        .facing_normals = true,
+    },
     /* The reference shader has no giant wave: it gets final's inversion,
      * and its pixels march from a prepass over the wave's rectangle alone
      * (no shader image to keep there; the open water is the shader's own
      * march). */
-    {"seed", 12, 36, 64, 0.01, 0.01, 1, 6, 0, false, false, true, false, 1.0, false, 0.0, 1.0,
-     false, 0, true, false, false},
+    {
+        .name = "seed",
+        .march_octaves = 12,
+        .normal_octaves = 36,
+        .march_steps = 64,
+        .hit_epsilon = 0.01,
+        .normal_epsilon = 0.01,
+        .spp = 1,
+        .giant_iterations = 6,
+        .refine_steps = 0,
+        .lod = false,
+        .analytic_normals = false,
+        .miss_at_start = true,
+        .normalize_smoothed = false,
+        .render_scale = 1.0,
+        .filtered_shading = false,
+        .pixel_filter = 0.0,
+        .march_relax = 1.0,
+        .march_prepass = false,
+        .prepass_budget = 0,
+        .giant_prepass = true,
+        .polish = false,
+        .facing_normals = false,
+    },
 };
-/* clang-format on */
 
 int tl_quality_preset(const char *name, tl_quality *out, tl_error *err)
 {

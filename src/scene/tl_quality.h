@@ -12,6 +12,10 @@
 #define TL_MAX_OCTAVES 64
 /* Upper bound on samples per pixel (each one a full ray march). */
 #define TL_MAX_SPP 1024
+/* Over-relaxation of the march's steps: the presets that relax use it, and
+ * the march always steps by it inside the giant wave's bounding box (the
+ * shaders' TL_MARCH_RELAX, from tl_renderer_defines). */
+#define TL_QUALITY_MARCH_RELAX 1.3
 
 typedef struct tl_quality {
     const char *name;

@@ -2,7 +2,7 @@
 
 #include <math.h>
 
-#define TL_DEG (M_PI / 180.0)
+#include "core/tl_math.h"
 
 void tl_scene_defaults(tl_scene *s)
 {

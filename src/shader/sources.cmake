@@ -1,2 +1,3 @@
 # The shaders are embedded into the library (cmake/embed.cmake).
-tl_module(shader SOURCES tl_shader_lib.c ${TL_EMBEDDED_SHADERS_C} DEPS core)
+# The frame uniforms' GLSL declarations come from prepare's table.
+tl_module(shader SOURCES tl_shader_lib.c ${TL_EMBEDDED_SHADERS_C} DEPS core prepare)

@@ -6,6 +6,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "prepare/tl_uniform_list.h"
+
 #define MAX_INCLUDE_DEPTH     8
 #define MAX_SHADER_FILE_BYTES (1 << 20)
 
@@ -66,9 +68,38 @@ int tl_shader_lib_from_dir(tl_shader_lib *lib, const char *dir, tl_error *err)
     return TL_OK;
 }
 
+char *tl_shader_frame_uniforms(void)
+{
+    buffer b = {0};
+    buf_printf(&b, "// The frame's uniforms, written by tl_shader_frame_uniforms from\n"
+                   "// src/prepare/tl_uniform_list.h (edit that table, not this text).\n");
+    /* The array's length is the table's text: the TL_* names in it are
+     * #defines in every program (tl_renderer_defines). */
+#define DECLARE(kind, field, array, feature, doc)                                                  \
+    {                                                                                              \
+        int single = strcmp(#array, "0") == 0;                                                     \
+        buf_printf(&b, "uniform %s u_%s%s%s%s;%s%s\n", TL_UNIFORM_GLSL_##kind, #field,             \
+                   single ? "" : "[", single ? "" : #array, single ? "" : "]",                     \
+                   doc[0] ? " // " : "", doc);                                                     \
+    }
+    TL_FRAME_UNIFORMS(DECLARE)
+#undef DECLARE
+    if (b.failed) {
+        free(b.data);
+        return NULL;
+    }
+    return b.data;
+}
+
 /* Returns a malloc'd copy of the named file's text. */
 static char *load_text(const tl_shader_lib *lib, const char *name, tl_error *err)
 {
+    if (strcmp(name, TL_FRAME_UNIFORMS_FILE) == 0) {
+        char *text = tl_shader_frame_uniforms();
+        if (!text)
+            tl_error_set(err, TL_ERR_RUNTIME, "out of memory writing '%s'", name);
+        return text;
+    }
     if (!lib->dir[0]) {
         for (int i = 0; i < tl_embedded_shader_count; i++)
             if (strcmp(tl_embedded_shaders[i].name, name) == 0)

@@ -42,6 +42,12 @@ int tl_shader_compose(const tl_shader_lib *lib, const char *entry, const char *d
                       tl_shader_source *out, tl_error *err);
 void tl_shader_source_free(tl_shader_source *src);
 
+/* The GLSL declarations of the frame's uniforms, one line per row of
+ * prepare/tl_uniform_list.h: the text of "frame_uniforms.glsl"
+ * (TL_FRAME_UNIFORMS_FILE), which compose serves whichever folder the
+ * other files come from. malloc'd; NULL when out of memory. */
+char *tl_shader_frame_uniforms(void);
+
 /* Rewrites a driver's info log so "0:12(5)" style locations name files:
  * "water.glsl:12(5)". Returns a malloc'd string (NULL on out of memory). */
 char *tl_shader_annotate_log(const tl_shader_source *src, const char *log);

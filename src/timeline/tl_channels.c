@@ -4,7 +4,8 @@
 #include <math.h>
 #include <string.h>
 
-#define DEG (M_PI / 180.0)
+#include "core/tl_math.h"
+
 #define BIG 1.0e9 /* positions and sizes: far beyond any scene, still finite */
 
 static const char *const underwater_names[] = {"auto", "on", "off", NULL};
@@ -31,20 +32,20 @@ static const tl_channel channels[] = {
          "camera position x y z (metres; +Y up, +Z north)"),
     REAL("camera.yaw", 1, TL_UNIT_ANGLE, -BIG, BIG, camera.yaw,
          "heading: 0 looks along +Z, 90 along +X"),
-    REAL("camera.pitch", 1, TL_UNIT_ANGLE, -90 * DEG, 90 * DEG, camera.pitch,
+    REAL("camera.pitch", 1, TL_UNIT_ANGLE, -90 * TL_DEG, 90 * TL_DEG, camera.pitch,
          "up/down, positive looks up"),
     REAL("camera.roll", 1, TL_UNIT_ANGLE, -BIG, BIG, camera.roll, "roll about the view direction"),
-    REAL("camera.fov", 1, TL_UNIT_ANGLE, 0.1 * DEG, 179 * DEG, camera.vfov,
+    REAL("camera.fov", 1, TL_UNIT_ANGLE, 0.1 * TL_DEG, 179 * TL_DEG, camera.vfov,
          "vertical field of view"),
 
-    REAL("sun.elevation", 1, TL_UNIT_ANGLE, -90 * DEG, 90 * DEG, sun.elevation,
+    REAL("sun.elevation", 1, TL_UNIT_ANGLE, -90 * TL_DEG, 90 * TL_DEG, sun.elevation,
          "sun above the horizon"),
     REAL("sun.azimuth", 1, TL_UNIT_ANGLE, -BIG, BIG, sun.azimuth, "sun compass direction"),
     REAL("sun.intensity", 1, TL_UNIT_NONE, 0.0, 1e6, sun.intensity,
          "peak radiance of the seed sky's sun lobe"),
     REAL("sun.sharpness", 1, TL_UNIT_NONE, 1.0, 1e6, sun.sharpness,
          "exponent of the seed sky's sun lobe (larger = smaller sun)"),
-    REAL("sun.angular_diameter", 1, TL_UNIT_ANGLE, 0.01 * DEG, 20 * DEG, sun.angular_diameter,
+    REAL("sun.angular_diameter", 1, TL_UNIT_ANGLE, 0.01 * TL_DEG, 20 * TL_DEG, sun.angular_diameter,
          "the sun's disc (physical sky)"),
     {"sky.model", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, sky.model),
      sky_model_names, "physical: Rayleigh, Mie, ozone, multiple scattering; seed: the cheap one"},

@@ -3,9 +3,9 @@
 #ifndef TL_PARSE_INTERNAL_H
 #define TL_PARSE_INTERNAL_H
 
+#include "core/tl_math.h"
 #include "timeline/tl_parse.h"
 
-#define DEG        (M_PI / 180.0)
 #define MAX_TOKENS 64
 #define MAX_TIME   1.0e9 /* seconds: ~31 years, far past any cutscene */
 

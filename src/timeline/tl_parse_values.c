@@ -12,7 +12,7 @@
 
 static double display_value(tl_unit unit, double v)
 {
-    return unit == TL_UNIT_ANGLE ? v / DEG : v;
+    return unit == TL_UNIT_ANGLE ? v / TL_DEG : v;
 }
 
 static const char *display_unit(tl_unit unit)
@@ -73,7 +73,7 @@ int tl_parse_quantity(parser *p, const token *t, tl_unit unit, double *out)
         }
         break;
     case TL_UNIT_ANGLE:
-        scale = DEG; /* bare numbers are degrees */
+        scale = TL_DEG; /* bare numbers are degrees */
         if (strcmp(suffix, "deg") == 0) {
             ok = 1;
         } else if (strcmp(suffix, "rad") == 0) {
@@ -143,7 +143,7 @@ int tl_parse_channel_value(parser *p, const tl_channel *ch, const token *t, doub
     /* A bare angle is degrees; a small one was likely meant as radians. */
     char last = t->len > 0 ? t->s[t->len - 1] : '\0';
     int bare = (last >= '0' && last <= '9') || last == '.';
-    double deg = fabs(v) / DEG;
+    double deg = fabs(v) / TL_DEG;
     int fov = strcmp(ch->name, "camera.fov") == 0;
     if (ch->unit == TL_UNIT_ANGLE && bare && deg > 0.0 && deg < (fov ? 5.0 : 3.0)) {
         p->warning = 1;

@@ -47,7 +47,7 @@ typedef struct tl_timeline {
     double duration; /* seconds */
     int width, height;
     tl_quality quality;
-    tl_track *tracks; /* tl_channel_count() entries */
+    tl_track *tracks;          /* tl_channel_count() entries */
     tl_path_track boat_path;   /* points x 0 z */
     tl_path_track camera_path; /* points x y z */
     tl_link camera_look;
@@ -90,6 +90,20 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *scene);
 
 /* True if any keyed channel jumps at a cut in (t0, t1]. */
 bool tl_timeline_has_cut_between(const tl_timeline *tl, double t0, double t1);
+
+/* Frame `frame`'s shutter interval (tl_shutter.c): centred on its time,
+ * `shutter_deg`/360 of a frame long, cut short at any cut inside it so
+ * that motion blur never mixes two shots (a cut's own time belongs to the
+ * shot after it). */
+void tl_timeline_shutter_interval(const tl_timeline *tl, long frame, double shutter_deg,
+                                  double *open, double *close);
+/* The times of frame `frame`'s `samples` shutter samples into `times`:
+ * the centres of `samples` equal slices of its shutter interval, in
+ * order; without a shutter (shutter_deg <= 0, or one sample) the frame's
+ * own time alone. Returns the index of the sample nearest the frame's
+ * time (the first of two as near). */
+int tl_timeline_shutter_times(const tl_timeline *tl, long frame, double shutter_deg, int samples,
+                              double *times);
 
 /* Features the timeline needs over its whole duration (for `check`). */
 typedef struct tl_timeline_features {
