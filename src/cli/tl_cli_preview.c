@@ -23,7 +23,6 @@
 #include "shader/tl_shader_lib.h"
 #include "timeline/tl_parse.h"
 
-
 static const char usage[] =
     "Usage: tideline preview FILE.tl [options]\n"
     "\n"

@@ -15,7 +15,6 @@
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
 
-
 static const char check_usage[] =
     "Usage: tideline check FILE.tl... [--strict]\n"
     "\n"

@@ -47,11 +47,11 @@ typedef struct tl_meta {
 #define TL_EXR_COMPRESSION_DEFAULT 4
 
 typedef struct tl_image_options {
-    int png_bits;          /* 8 (default when 0) or 16 */
-    int no_dither;         /* 8-bit PNG rounded to nearest (default: dithered) */
-    int png_compression;   /* zlib level 1..9; 0: TL_PNG_COMPRESSION_DEFAULT */
-    int exr_compression;   /* zlib level 1..9; 0: TL_EXR_COMPRESSION_DEFAULT */
-    const tl_meta *meta;   /* may be NULL */
+    int png_bits;        /* 8 (default when 0) or 16 */
+    int no_dither;       /* 8-bit PNG rounded to nearest (default: dithered) */
+    int png_compression; /* zlib level 1..9; 0: TL_PNG_COMPRESSION_DEFAULT */
+    int exr_compression; /* zlib level 1..9; 0: TL_EXR_COMPRESSION_DEFAULT */
+    const tl_meta *meta; /* may be NULL */
     int meta_count;
 } tl_image_options;
 
@@ -85,8 +85,7 @@ int tl_exr_read(const char *path, tl_frame *frame, tl_error *err);
 /* Reads one string/double/int attribute from an EXR header (tests). */
 int tl_exr_read_attr_string(const char *path, const char *name, char *out, int out_size,
                             tl_error *err);
-int tl_exr_read_attr_double(const char *path, const char *name, double *out,
-                            tl_error *err);
+int tl_exr_read_attr_double(const char *path, const char *name, double *out, tl_error *err);
 
 /* Reads a PNG (8- or 16-bit RGB/RGBA) into frame->display as values in
  * [0,1]; *bits_out (may be NULL) receives the bit depth. */
