@@ -229,16 +229,6 @@ static void test_success(void)
     unlink(exr);
 }
 
-static void write_file(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (f) {
-        fputs(text, f);
-        fclose(f);
-    }
-}
-
 /* check on several files, warnings and --strict; eval's number format;
  * the quality knobs recorded in an EXR. */
 static void test_papercuts(void)
@@ -246,10 +236,10 @@ static void test_papercuts(void)
     const char *good = in_dir(0, "good.tl");
     const char *warn = in_dir(1, "warn.tl");
     const char *bad = in_dir(2, "bad.tl");
-    write_file(good, "tideline 1\nset camera.fov 60\nset camera.position 0 2.5 0\n");
-    write_file(warn, "tideline 1\nduration 2s\nset camera.pitch 0.2\n"
-                     "key camera.yaw\n  0s 0\n  5s 10\n");
-    write_file(bad, "tideline 1\nset camera.fovv 60\n");
+    tl_test_write_file(good, "tideline 1\nset camera.fov 60\nset camera.position 0 2.5 0\n");
+    tl_test_write_file(warn, "tideline 1\nduration 2s\nset camera.pitch 0.2\n"
+                             "key camera.yaw\n  0s 0\n  5s 10\n");
+    tl_test_write_file(bad, "tideline 1\nset camera.fovv 60\n");
 
     CHECK(run(NULL, "check", good, warn, NULL) == 0);
     CHECK_STR_CONTAINS(out_text, "good.tl: ok\n");

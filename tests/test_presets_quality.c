@@ -28,16 +28,6 @@ static const char *in_dir(int slot, const char *name)
     return path_buf[slot];
 }
 
-static void write_file(const char *path, const char *text)
-{
-    FILE *f = fopen(path, "w");
-    CHECK(f != NULL);
-    if (f) {
-        fputs(text, f);
-        fclose(f);
-    }
-}
-
 /* A low sunrise camera with its horizon across a pixel row, supersampled
  * with still's --spp. Grazing samples there meet the water 1e4 m away,
  * where a fixed finite-difference step was rounding noise: the normal
@@ -47,10 +37,10 @@ static void test_supersampled_horizon(void)
 {
     const char *tl = in_dir(0, "horizon.tl");
     const char *exr = in_dir(1, "horizon.exr");
-    write_file(tl, "tideline 1\nset ocean.drag 0.3\nset ocean.depth 0.8\n"
-                   "set sun.elevation 2deg\nset sun.azimuth -10deg\n"
-                   "set camera.position 0 1.8 0\nset camera.yaw -35deg\n"
-                   "set camera.pitch -4deg\n");
+    tl_test_write_file(tl, "tideline 1\nset ocean.drag 0.3\nset ocean.depth 0.8\n"
+                           "set sun.elevation 2deg\nset sun.azimuth -10deg\n"
+                           "set camera.position 0 1.8 0\nset camera.yaw -35deg\n"
+                           "set camera.pitch -4deg\n");
     CHECK(run(NULL, "still", tl, "--size", "640x360", "--spp", "2", "-o", exr, NULL) == 0);
     tl_frame f = {0};
     tl_error err;
@@ -122,7 +112,7 @@ static void test_lod_close_up(void)
         char text[512], png[64];
         snprintf(text, sizeof text, "%s%s", shot, tails[i]);
         const char *tl = in_dir(0, names[i]);
-        write_file(tl, text);
+        tl_test_write_file(tl, text);
         snprintf(png, sizeof png, "%s.png", names[i]);
         const char *out = in_dir(1, png);
         CHECK(run(NULL, "still", tl, "-o", out, NULL) == 0);
@@ -173,7 +163,7 @@ static void test_filtered_shading(void)
             for (int i = 0; i < 4; i++) {
                 snprintf(text + used, sizeof text - used, "%s", tails[i]);
                 const char *tl = in_dir(0, "filtered.tl"), *out = in_dir(1, "filtered.png");
-                write_file(tl, text);
+                tl_test_write_file(tl, text);
                 CHECK(run(NULL, "still", tl, "--frame", frames[fr], "--size", "160x90", "-o", out,
                           NULL) == 0);
                 tl_error err;
@@ -222,7 +212,7 @@ static void test_analytic_normals(void)
         char text[512];
         snprintf(text, sizeof text, "%s%s", shot, knob[i]);
         const char *tl = in_dir(0, "normals.tl"), *out = in_dir(1, "normals.png");
-        write_file(tl, text);
+        tl_test_write_file(tl, text);
         CHECK(run(NULL, "still", tl, "-o", out, NULL) == 0);
         tl_error err;
         CHECK(tl_png_read(out, &img[i], NULL, &err) == 0);
@@ -253,7 +243,7 @@ static void test_render_scale(void)
         char text[256];
         snprintf(text, sizeof text, "%s%s", shot, knob[i]);
         const char *tl = in_dir(0, "scale.tl"), *png = in_dir(1, "scale.png");
-        write_file(tl, text);
+        tl_test_write_file(tl, text);
         const char *exr_path = in_dir(2, "scale.exr");
         CHECK(run(NULL, "still", tl, "-o", png, "-o", exr_path, NULL) == 0);
         tl_error err;

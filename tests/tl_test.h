@@ -53,6 +53,18 @@ static int tl_test_checks = 0;
         }                                                                                          \
     } while (0)
 
+/* Writes `text` to `path` (a test's input file); a failure is a failed
+ * check. */
+static inline void tl_test_write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+}
+
 /* Ends main(): prints a summary and returns the process status. */
 #define TEST_END()                                                                                 \
     do {                                                                                           \
