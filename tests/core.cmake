@@ -91,9 +91,13 @@ set_tests_properties(test_errors PROPERTIES TIMEOUT 300)
 add_test(NAME test_build_script
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_build_script.sh ${PROJECT_SOURCE_DIR})
 set_tests_properties(test_build_script PROPERTIES LABELS unit)
-# cmake --install and pkg-config: the example links the installed library.
+# cmake --install and pkg-config: the example links the installed library
+# (compiled with the sanitizers too in the sanitizer build, whose libraries
+# need their runtimes).
+string(REPLACE ";" " " tl_install_cflags "${TL_SANITIZE_FLAGS}")
 add_test(NAME test_install
-  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_install.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR})
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_install.sh ${PROJECT_BINARY_DIR} ${PROJECT_SOURCE_DIR}
+          "${tl_install_cflags}")
 set_tests_properties(test_install PROPERTIES LABELS gl)
 # The bench's engine without a GPU: preset lists, rounds, medians, the
 # front, the CSV and the reference cache.
