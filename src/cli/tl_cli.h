@@ -20,8 +20,11 @@ int tl_cli_bench(int argc, char **argv);
  * file or its model is invalid or unreadable; the timeline is then freed). */
 struct tl_timeline;
 struct tl_mesh;
+struct tl_cutscene;
 int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl,
                          struct tl_mesh *boat);
+/* The same, keeping the cutscene whole (tl_cutscene_free frees it). */
+int tl_cli_load_cutscene(const char *command, const char *path, struct tl_cutscene *cs);
 
 /* Warns on stderr when time t (seconds; `flag` `given` on the command
  * line) lies outside the timeline: a frame past the end is most often a

@@ -223,12 +223,9 @@ int tl_cli_bench(int argc, char **argv)
     tl_bench_timeline timelines[MAX_TIMELINES];
     int loaded = 0;
     for (; loaded < o.timeline_count; loaded++) {
-        tl_cutscene *cs = &cutscenes[loaded];
-        memset(cs, 0, sizeof *cs);
-        if (tl_cli_load_timeline("bench", o.timelines[loaded], &cs->timeline, &cs->boat))
+        if (tl_cli_load_cutscene("bench", o.timelines[loaded], &cutscenes[loaded]))
             break;
-        cs->has_boat = cs->boat.index_count > 0;
-        timelines[loaded] = (tl_bench_timeline){o.timelines[loaded], cs};
+        timelines[loaded] = (tl_bench_timeline){o.timelines[loaded], &cutscenes[loaded]};
     }
     int status = loaded < o.timeline_count ? 1 : 0;
 

@@ -49,17 +49,14 @@ static const char eval_usage[] =
 /* The warnings of the last timeline loaded (for check --strict). */
 static int last_warnings;
 
-/* Loads a timeline with what it references (tl_cutscene), printing its
- * diagnostics; returns the exit status. */
-int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_mesh *boat)
+/* Loads a timeline with what it references, printing its diagnostics;
+ * returns the exit status. */
+int tl_cli_load_cutscene(const char *command, const char *path, tl_cutscene *cs)
 {
     tl_diags diags;
     tl_error err;
     tl_error_clear(&err);
-    if (boat)
-        memset(boat, 0, sizeof *boat);
-    tl_cutscene cs;
-    if (tl_cutscene_load(path, &cs, &diags, &err) != TL_OK) {
+    if (tl_cutscene_load(path, cs, &diags, &err) != TL_OK) {
         char program[64];
         snprintf(program, sizeof program, "tideline %s", command);
         tl_cutscene_report(stderr, program, &diags, &err);
@@ -68,6 +65,16 @@ int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl,
     if (diags.count) /* warnings: likely mistakes; the timeline loads */
         tl_diags_write(&diags, stderr);
     last_warnings = diags.count;
+    return 0;
+}
+
+int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_mesh *boat)
+{
+    if (boat)
+        memset(boat, 0, sizeof *boat);
+    tl_cutscene cs;
+    if (tl_cli_load_cutscene(command, path, &cs))
+        return 1;
     *tl = cs.timeline;
     if (boat && cs.has_boat)
         *boat = cs.boat;
