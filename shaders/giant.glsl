@@ -78,14 +78,70 @@ vec2 giant_coords(vec2 p)
     return u_giant_frame.zw + vec2(dot(d, p), dot(vec2(d.y, -d.x), p));
 }
 
-// The fade times the width mask at w across, and its derivative in *dl.
+// Distance from the peak toward the end on w's side (0 at the peak, 1 at
+// the end) and its derivative in *dr.
+float giant_from_peak(float w, out float dr)
+{
+    float H = u_giant_mask.z, p = u_giant_crest.x;
+    dr = w >= p ? 1.0 / (H - p) : -1.0 / (H + p);
+    return min(w >= p ? (w - p) / (H - p) : (p - w) / (H + p), 1.0);
+}
+
+// The crest's lag behind its peak at w (<= 0) and its derivative in *db.
+float giant_bow(float w, out float db)
+{
+    float dr, r = giant_from_peak(w, dr);
+    db = r < 1.0 ? -2.0 * u_giant_crest.z * r * dr : 0.0;
+    return -u_giant_crest.z * r * r;
+}
+
+#ifdef TL_FEATURE_GIANT_BREAK
+// Seconds since the lip began to throw at w (negative before).
+float giant_break_age(float w)
+{
+    return u_giant_break.x - abs(w - u_giant_crest.x) / u_giant_break.y;
+}
+#endif
+
+// How far the break has gone at w: 0 before the lip throws, 1 once it has
+// landed. Without a scripted break, the crest's compression says how much
+// it breaks, all along (u_giant_foam.w).
+float giant_breaking(float w)
+{
+#ifdef TL_FEATURE_GIANT_BREAK
+    return smoothstep(0.0, 1.0, giant_break_age(w) / u_giant_break.z);
+#else
+    return u_giant_foam.w;
+#endif
+}
+
+// The crest's envelope at w across: the fade times the width mask, the
+// taper from the peak, the seeded variation and the settling after the
+// break; its derivative in *dl.
 float giant_lambda(float w, out float dl)
 {
-    float ds;
+    float ds, dr;
     float fw = u_giant_mask.w;
-    float mask = 1.0 - giant_smooth((abs(w) - (u_giant_mask.z - fw)) / fw, ds);
-    dl = -u_giant_bounds.w * ds / fw * (w < 0.0 ? -1.0 : 1.0);
-    return u_giant_bounds.w * mask;
+    float sgn = w < 0.0 ? -1.0 : 1.0;
+    float m = 1.0 - giant_smooth((abs(w) - (u_giant_mask.z - fw)) / fw, ds);
+    float dm = -ds / fw * sgn;
+    float r = giant_from_peak(w, dr);
+    float taper = 1.0 - u_giant_crest.y * r * r;
+    float dtaper = r < 1.0 ? -2.0 * u_giant_crest.y * r * dr : 0.0;
+    const vec3 weights = vec3(TL_GIANT_VARIATION_WEIGHTS);
+    vec3 a = u_giant_vary_k * w + u_giant_vary_phase;
+    float vary = 1.0 + u_giant_crest.w * dot(weights, sin(a));
+    float dvary = u_giant_crest.w * dot(weights * u_giant_vary_k, cos(a));
+    float settle = 1.0, dsettle = 0.0;
+#ifdef TL_FEATURE_GIANT_BREAK
+    float T = u_giant_break.z, dx;
+    settle = 1.0 - u_giant_break.w * giant_smooth((giant_break_age(w) - T) / (2.0 * T), dx);
+    dsettle = u_giant_break.w * dx / (2.0 * T * u_giant_break.y) * (w < u_giant_crest.x ? -1.0 : 1.0);
+#endif
+    float F = u_giant_fade;
+    dl = F * (dm * taper * vary * settle + m * dtaper * vary * settle + m * taper * dvary * settle +
+              m * taper * vary * dsettle);
+    return F * m * taper * vary * settle;
 }
 
 GiantSample giant_sample(vec2 p)
@@ -96,9 +152,10 @@ GiantSample giant_sample(vec2 p)
     g.w = sw.y;
     if (abs(sw.x) >= u_giant_bounds.x || abs(sw.y) >= u_giant_mask.z)
         return g;
-    float dlambda;
+    float dlambda, dbow;
     float lambda = giant_lambda(sw.y, dlambda);
-    float s0 = giant_invert(sw.x, lambda);
+    float bow = giant_bow(sw.y, dbow);
+    float s0 = giant_invert(sw.x - bow, lambda);
     vec4 pr = giant_profile(s0);
     // Guard: the CPU's clamps keep J >= 0.1 on the scanned profile.
     float j = max(1.0 + lambda * pr.w, 1.0e-3);
@@ -107,9 +164,10 @@ GiantSample giant_sample(vec2 p)
     g.lambda = lambda;
     g.jacobian = j;
     g.displacement = lambda * pr.z;
-    // Implicit differentiation: ds0/ds = 1/J, ds0/dw = -lambda'·D/J.
+    // Implicit differentiation of s = s0 + lambda·D(s0) + bow: ds0/ds = 1/J,
+    // ds0/dw = -(lambda'·D + bow')/J.
     float dh_ds = lambda * pr.y / j;
-    float dh_dw = dlambda * (pr.x - lambda * pr.y * pr.z / j);
+    float dh_dw = dlambda * pr.x - dh_ds * (dlambda * pr.z + dbow);
     vec2 d = u_giant_frame.xy;
     g.grad = dh_ds * d + dh_dw * vec2(d.y, -d.x);
     return g;
@@ -122,8 +180,8 @@ float giant_height(vec2 p)
 
 // How much of the sun a point of the water at camera-relative p and
 // height y sees past the wave's crest: 0 in its shadow, 1 in the open.
-// The crest is the line across the travel where s0 = 0: at s = lambda·C/k
-// (the curl's push, D(0) = C/k) and lambda·A high. The ray toward the sun
+// The crest is the line across the travel where s0 = 0: at s = bow +
+// lambda·C/k (the curl's push, D(0) = C/k) and lambda·A high. The ray toward the sun
 // is followed to that line, lambda taken where it crosses it; the shadow's
 // edge is soft over a penumbra that widens with the distance (the sun's
 // half degree, and a rounded crest). Light through the crest
@@ -138,8 +196,8 @@ float giant_sunlit(vec2 p, float y)
     if (sun.y <= 0.0 || abs(along) < 1.0e-4)
         return 1.0; // no light to shadow, or a crest in line with the sun
     vec2 sw = giant_coords(p);
-    float k = u_giant_shape.x, A = u_giant_shape.y, C = u_giant_shape.w, dl;
-    float crest = giant_lambda(sw.y, dl) * C / k;
+    float k = u_giant_shape.x, A = u_giant_shape.y, C = u_giant_shape.w, dl, db;
+    float crest = giant_bow(sw.y, db) + giant_lambda(sw.y, dl) * C / k;
     float dist = (crest - sw.x) / along; // metres toward the sun to the crest line
     if (dist <= 0.0)
         return 1.0; // the sun's side of the crest
@@ -201,10 +259,11 @@ vec2 giant_ray_interval(vec3 ray)
     return vec2(t0, t1);
 }
 
-// Height up the faded crest, 0 at the sea's mean level to 1 at the top.
+// Height up the crest where the point is (its envelope's), 0 at the sea's
+// mean level to 1 at the top.
 float giant_top(GiantSample g)
 {
-    return clamp(g.height / max(u_giant_shape.y * u_giant_bounds.w, 1.0e-3), 0.0, 1.0);
+    return clamp(g.height / max(u_giant_shape.y * g.lambda, 1.0e-3), 0.0, 1.0);
 }
 
 // Streaks down the face: value noise stretched along the travel direction
@@ -281,57 +340,86 @@ float giant_hg(float mu, float g)
     return (1.0 - g * g) / (4.0 * TL_PI * d * sqrt(d));
 }
 
-// Light through the thin, displaced crest (seed 003's subsurface term):
-// strongest in the upper part of the wave where the surface moved
-// furthest, shaped by a two-lobe phase function of the angle between the
-// sun and the ray refracted into the face (so the face's ripples texture
-// it), less what the Fresnel term keeps inside. Its colour is the water's
-// transmittance over the depth crossed: thin under the lip, where the
-// sun's own colour shows through; deeper green and darker down the face.
-vec3 giant_scatter(GiantSample g, vec3 ray, vec3 n)
+// The water the sunlight crossed to reach a point just under the surface
+// at camera-relative `hit`: followed back toward the sun, in steps that
+// double from TL_GIANT_GLOW_STEP metres, to where it leaves the water; the
+// crossing is interpolated between the last point under the surface and
+// the first above it. The path is straight: the light entered through the
+// crest's far side, whose slope is unknown here, and the refraction there
+// bends it less than the crest curves. The surface is the wave's with the
+// ocean's height at the hit held: the small waves change the path by
+// centimetres, the crest by metres.
+#define TL_GIANT_GLOW_STEPS 7
+#define TL_GIANT_GLOW_STEP 0.2
+// Returns (metres crossed, the wave's height where the light came in):
+// light that came in through the open sea rather than the crest is the
+// ocean's own scattering (water_shade), not this.
+vec2 giant_thickness(vec3 hit, GiantSample g)
 {
+    vec3 toward = u_sun_dir;
+    float ocean = hit.y - g.height;
+    float t_in = 0.0, a_in = -0.02, t = 0.0, step = TL_GIANT_GLOW_STEP, wave_in = g.height;
+    for (int i = 0; i < TL_GIANT_GLOW_STEPS; i++) {
+        t += step;
+        step *= 2.0;
+        vec3 p = hit + toward * t;
+        float wave = giant_height(p.xz);
+        float above = p.y - (ocean + wave);
+        if (above > 0.0)
+            return vec2(t_in + (t - t_in) * (-a_in) / (above - a_in), wave);
+        t_in = t;
+        a_in = above;
+        wave_in = wave;
+    }
+    // Still under water: the rest of the way estimated as the depth left
+    // over the rate the ray climbs (the surface held level beyond).
+    return vec2(t - a_in / max(toward.y, 0.1), wave_in);
+}
+
+
+// Light through the crest (seed 003's subsurface term, with its depth
+// from the wave's shape): sunlight that crossed the water to a point just
+// under the surface, scattered there toward the eye by a two-lobe phase
+// function of the angle between the sun and the ray refracted into the
+// face (so the face's ripples texture it), less what the Fresnel term
+// keeps inside. It is attenuated per colour by the water's own extinction
+// over the path it crossed (giant_thickness): under a thin, backlit lip
+// the sun's colour shows through, turquoise; where the wave is thick it
+// fades to deep blue and then to nothing. giant.scatter_color tints what
+// the water scatters (its suspended matter's colour).
+vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n)
+{
+    float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
+    if (daylight <= 0.0)
+        return vec3(0.0);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
-    float reach = max(u_giant_bounds.y / 1.25, 1.0e-3);
-    // |D| with a floor of 0.3 of its largest: D changes sign on the face,
-    // and the glow fell to nothing along that line (a dark crease in the
-    // lit band of a distant backlit wave).
-    float moved = sqrt(clamp(length(vec2(g.displacement, 0.3 * reach)) / reach, 0.0, 1.0));
-    // Times a displacement noise, as seed 003 weights its displacement:
-    // the crest is not equally thin all along, and without it the glow
-    // was an even green band (cells 7 m along the crest by 16 m down the
-    // face, so the light falls in broad shafts; 0.3 to 1.7, mean 1).
+    vec2 path = giant_thickness(hit, g);
+    // Only light that came in high up the crest, not through the open sea.
+    float through = smoothstep(0.0, 0.3, path.y / max(u_giant_shape.y, 1.0e-3));
+    vec3 crossed = exp(-u_giant_sigma * path.x) * through;
+    // Times a noise of the crest's thinness (cells 7 m along the crest by
+    // 16 m down the face, 0.6 to 1.4): the lip is not equally thin all
+    // along, and the light falls in broad shafts.
     vec2 q = vec2(g.w / 7.0, g.s0 / 16.0);
-    moved *= 0.3 + 1.4 * (0.65 * foam_noise(q) + 0.35 * foam_noise(q * 2.3 + vec2(3.7, 1.1)));
-    float top = giant_top(g);
-    // Times the fade: `top` is relative to the faded crest, and a wave
-    // fading into a low swell kept its full glow over the swell's whole
-    // top (voyage's last frames: a flat teal field around the boat).
-    // Nothing in the lowest quarter: down there the wave is too thick for
-    // the sun to cross (from 0.1, a big face glowed green to its foot).
-    float thin = smoothstep(0.25, 1.0, top) * u_giant_bounds.w;
-    // giant.scatter_color is the transmittance over one unit of depth,
-    // reached about a quarter of the way down from the crest; a colour
-    // brighter than 1 is a gain on that hue (divided out, then put back).
-    float depth = 0.3 + 2.7 * (1.0 - top);
-    float gain = max(1.0, max(u_giant_scatter_color.r,
-                              max(u_giant_scatter_color.g, u_giant_scatter_color.b)));
-    vec3 tint = gain * pow(max(u_giant_scatter_color / gain, vec3(1.0e-4)), vec3(depth));
-    float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
-    return tint * sky_sun_light() *
-           (u_giant_scatter.x * phase * moved * thin * daylight * leaves);
+    float shafts = 0.6 + 0.8 * (0.65 * foam_noise(q) + 0.35 * foam_noise(q * 2.3 + vec2(3.7, 1.1)));
+    // Times the envelope: a wave fading into a low swell scatters as the
+    // swell does (the ocean's own term), not as a crest.
+    float crest = clamp(g.lambda, 0.0, 1.0);
+    return u_giant_scatter_color * crossed * sky_sun_light() *
+           (u_giant_scatter.x * phase * shafts * crest * daylight * leaves);
 }
 
-// Foam and light through the crest over the water's colour.
-// `footprint`: the water a pixel covers there, metres (0: no level of
+// Foam and light through the crest over the water's colour at
+// camera-relative `hit`. `footprint`: the water a pixel covers there, metres (0: no level of
 // detail); `sunlit`: the share of the sun the foam sees (giant_sunlit).
-vec3 giant_shade(vec3 color, vec3 ray, vec3 n, GiantSample g, float ocean_value, float footprint,
-                 float sunlit)
+vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float ocean_value,
+                 float footprint, float sunlit)
 {
     float thickness, aerated;
     float foam = giant_foam(g, ocean_value, footprint, thickness, aerated);
-    vec3 glow = giant_scatter(g, ray, n);
+    vec3 glow = giant_scatter(g, hit, ray, n);
     color += glow * (1.0 - foam);
     // The bubbles behind the crest, tinted by the water above them, under
     // the trail's web (which on the dark water alone read as cracks in mud).

@@ -143,7 +143,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // view grazes the surface: foam's detail and veins stay a pixel wide.
     float footprint = dist * u_lod_angle / max(abs(dot(ray, n)), 0.2);
 #ifdef TL_FEATURE_GIANT_WAVE
-    color = giant_shade(color, ray, n, giant, value, footprint, sunlit);
+    color = giant_shade(color, hit, ray, n, giant, value, footprint, sunlit);
 #endif
 #ifdef TL_FEATURE_WAKE
     float thickness, aerated;

@@ -79,6 +79,7 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
 
 int tl_renderer_defines(unsigned features, char *out, size_t size)
 {
+    static const double variation[3] = TL_GIANT_VARIATION_WEIGHTS;
     int n = snprintf(out, size,
                      "#define TL_MAX_OCTAVES %d\n"
                      "#define TL_SKY_DEPTH %.1f\n"
@@ -86,6 +87,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_GIANT_SLOPE_BINS %d\n"
                      "#define TL_GIANT_CONVERGED %.1e\n"
                      "#define TL_GIANT_SHADOW_FADE %.3f\n"
+                     "#define TL_GIANT_VARIATION_WEIGHTS %.17g, %.17g, %.17g\n"
                      "#define TL_WAKE_POINTS %d\n"
                      "#define TL_WAKE_GROUP %d\n"
                      "#define TL_WAKE_GROUPS %d\n"
@@ -94,7 +96,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_MARCH_RELAX %g\n"
                      "#define TL_MIRROR_SHIFT %g\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
-                     TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, TL_WAKE_POINTS, TL_WAKE_GROUP,
+                     TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
+                     variation[2], TL_WAKE_POINTS, TL_WAKE_GROUP,
                      TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
                      TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
@@ -671,7 +674,7 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
      * (u->plan.giant_rect), the lean program, the same image there, around it. */
     const int w = u->width, h = u->height;
     int rect[4] = {0, 0, 0, 0};
-    unsigned lean = features & ~(unsigned)TL_FEATURE_GIANT_WAVE;
+    unsigned lean = features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK);
     if (features & TL_FEATURE_GIANT_WAVE)
         memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;

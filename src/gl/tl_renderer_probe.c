@@ -18,7 +18,7 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
     /* The features that change what the probe computes. */
     unsigned features =
         u->features &
-        (TL_FEATURE_GIANT_WAVE | TL_FEATURE_UNDERWATER | TL_FEATURE_WATERLINE | TL_FEATURE_FOG |
+        (TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_UNDERWATER | TL_FEATURE_WATERLINE | TL_FEATURE_FOG |
          TL_FEATURE_SKY_PHYSICAL | TL_FEATURE_SUN_DISC | TL_FEATURE_WAKE);
     GLuint program = 0;
     for (int i = 0; i < r->probe_count; i++)

@@ -21,12 +21,13 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_FOG",         "TL_FEATURE_SKY_PHYSICAL",
     "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
     "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
-    "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH"};
+    "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
+    "TL_FEATURE_GIANT_BREAK"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
     "sun disc",        "giant wave",       "boat",          "wake",
     "underwater",      "waterline",        "fog",           "physical sky",
     "level of detail", "analytic normals", "supersampling", "filtered shading",
-    "root refinement", "hit polish"};
+    "root refinement", "hit polish",       "breaking crest"};
 
 const char *tl_feature_define(int index)
 {
@@ -106,7 +107,24 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
     u->giant_bounds[0] = (float)g.reach_along;
     u->giant_bounds[1] = (float)(TL_GIANT_BRACKET * g.max_displacement);
     u->giant_bounds[2] = (float)g.max_slope;
-    u->giant_bounds[3] = (float)g.fade;
+    u->giant_bounds[3] = (float)g.lambda_max;
+    u->giant_crest[0] = (float)g.peak;
+    u->giant_crest[1] = (float)g.taper;
+    u->giant_crest[2] = (float)g.bow;
+    u->giant_crest[3] = (float)g.variation;
+    to_float3(g.vary_k, u->giant_vary_k);
+    to_float3(g.vary_phase, u->giant_vary_phase);
+    u->giant_fade = (float)g.fade;
+    double sigma[3];
+    tl_optics_water_extinction(&s->water, sigma);
+    to_float3(sigma, u->giant_sigma);
+    if (g.breaks) {
+        u->features |= TL_FEATURE_GIANT_BREAK;
+        u->giant_break[0] = (float)g.break_age;
+        u->giant_break[1] = (float)g.peel_speed;
+        u->giant_break[2] = (float)g.throw_time;
+        u->giant_break[3] = (float)g.break_drop;
+    }
     u->giant_foam[0] = (float)s->giant.foam_compression;
     u->giant_foam[1] = (float)s->giant.foam_trail;
     u->giant_foam[2] = (float)s->water.foam;

@@ -37,9 +37,11 @@ typedef enum tl_feature {
     TL_FEATURE_FILTERED_SHADING = 1u << 11, /* quality.filtered_shading with quality.lod */
     TL_FEATURE_REFINE = 1u << 12,           /* quality.refine_steps > 0 */
     TL_FEATURE_POLISH = 1u << 13,           /* quality.polish */
+    /* Parts of a feature */
+    TL_FEATURE_GIANT_BREAK = 1u << 14, /* the giant wave's crest has begun to break */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 14
+#define TL_FEATURE_COUNT 15
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -142,11 +144,16 @@ typedef struct tl_frame_uniforms {
      * frame = (dir.x, dir.z, s, w of the camera relative to the crest),
      * shape = (k, height, steepness, curl) after the clamps,
      * mask = (half length, falloff along, half width, falloff across),
-     * bounds = (reach along, Newton bracket half width, slope bound, fade),
-     * foam = (Jacobian where foam starts, trail length, amount, breaking),
-     * scatter = (strength, forward g, backward g, unused). */
+     * bounds = (reach along, Newton bracket half width, slope bound,
+     * largest lambda), crest = (peak w, taper, bow, variation), the
+     * variation's sines, break = (seconds since the break began at the
+     * peak, peel speed, throw time, drop) with TL_FEATURE_GIANT_BREAK,
+     * foam = (Jacobian where foam starts, trail length, amount, breaking
+     * without a scripted break), scatter = (strength, forward g, backward
+     * g, unused), sigma the water's extinction. */
     float giant_frame[4], giant_shape[4], giant_mask[4], giant_bounds[4];
-    float giant_foam[4], giant_scatter[4], giant_scatter_color[3];
+    float giant_crest[4], giant_vary_k[3], giant_vary_phase[3], giant_fade, giant_break[4];
+    float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */
     /* The s (crest-relative, as giant_frame's) between which the wave can

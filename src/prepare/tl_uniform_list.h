@@ -78,7 +78,13 @@
     X(VEC4, giant_frame, 0, TL_FEATURE_GIANT_WAVE, "(dir.x, dir.z, camera s, camera w)") \
     X(VEC4, giant_shape, 0, TL_FEATURE_GIANT_WAVE, "(k, height, steepness, curl), clamped on the CPU") \
     X(VEC4, giant_mask, 0, TL_FEATURE_GIANT_WAVE, "(half length, falloff along, half width, falloff across)") \
-    X(VEC4, giant_bounds, 0, TL_FEATURE_GIANT_WAVE, "(reach along, Newton bracket, slope bound, fade)") \
+    X(VEC4, giant_bounds, 0, TL_FEATURE_GIANT_WAVE, "(reach along, Newton bracket, slope bound, largest lambda)") \
+    X(VEC4, giant_crest, 0, TL_FEATURE_GIANT_WAVE, "(peak w, taper, bow, variation)") \
+    X(VEC3, giant_vary_k, 0, TL_FEATURE_GIANT_WAVE, "wavenumbers of the variation's sines") \
+    X(VEC3, giant_vary_phase, 0, TL_FEATURE_GIANT_WAVE, "their phases (giant.seed)") \
+    X(FLOAT, giant_fade, 0, TL_FEATURE_GIANT_WAVE, "giant.fade") \
+    X(VEC3, giant_sigma, 0, TL_FEATURE_GIANT_WAVE, "the water's extinction per metre: light through the crest") \
+    X(VEC4, giant_break, 0, TL_FEATURE_GIANT_BREAK, "(age at the peak, peel speed, throw time, drop)") \
     X(VEC4, giant_foam, 0, TL_FEATURE_GIANT_WAVE, "(Jacobian where foam starts, trail metres, amount, breaking)") \
     X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, unused)") \
     X(VEC3, giant_scatter_color, 0, TL_FEATURE_GIANT_WAVE, "") \

@@ -88,6 +88,15 @@ void tl_scene_defaults(tl_scene *s)
     s->giant.steepness = 0.6;
     s->giant.curve_strength = 0.3;
     s->giant.fade = 1.0;
+    s->giant.peak = 0.0;
+    s->giant.taper = 0.45;
+    s->giant.bow = 10.0;
+    s->giant.variation = 0.12;
+    s->giant.seed = 1;
+    s->giant.breaking = false;
+    s->giant.break_time = 0.0;
+    s->giant.peel_speed = 8.0;
+    s->giant.break_drop = 0.3;
     s->giant.foam_compression = 0.35;
     s->giant.foam_trail = 40.0;
     s->giant.scatter = 1.0;

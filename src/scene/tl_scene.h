@@ -108,6 +108,15 @@ typedef struct tl_giant_wave {
     double steepness;        /* Gerstner steepness q·k·A in [0, 1] */
     double curve_strength;   /* crest curl toward the travel direction, [0, 1] */
     double fade;             /* 0 invisible .. 1 full strength */
+    double peak;             /* metres across from the centre line to the crest's peak */
+    double taper;            /* how much lower the ends stand than the peak, [0, 1] */
+    double bow;              /* metres the crest's ends lag behind its peak */
+    double variation;        /* seeded height variation along the crest, a fraction */
+    int seed;                /* seed of that variation */
+    bool breaking;           /* the crest breaks, from the peak outward */
+    double break_time;       /* seconds: when the lip begins to throw at the peak */
+    double peel_speed;       /* m/s the break runs along the crest */
+    double break_drop;       /* fraction of its height a broken crest loses */
     double foam_compression; /* Jacobian below which the surface foams, (0, 1] */
     double foam_trail;       /* metres over which foam fades behind the crest */
     double scatter;          /* strength of the light through the crest */

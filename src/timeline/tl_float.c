@@ -93,8 +93,9 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     const int follows = tl->giant_follow.target == TL_TARGET_BOAT;
 
     /* The spring, at the boat's past poses. The giant wave of a past
-     * moment is this one moved back along its travel (and with the boat,
-     * when its centre follows the boat). */
+     * moment is this one moved back along its travel (and across with the
+     * boat, when its centre follows the boat). Its break and envelope are
+     * this moment's: they change over seconds, the spring's past is short. */
     const double w = 1.0 / b->float_time, h = FLOAT_SPAN / FLOAT_NODES;
     hull_pose sum = {0.0, 0.0, 0.0};
     double weights = 0.0;
@@ -113,9 +114,11 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
             double back = giant.speed * (t - past);
             then.origin[0] -= giant.dir[0] * back;
             then.origin[1] -= giant.dir[1] * back;
-            if (follows) {
-                then.origin[0] += px - b->position[0];
-                then.origin[1] += pz - b->position[2];
+            if (follows) { /* the centre line follows the boat across */
+                double across = giant.across[0] * (px - b->position[0]) +
+                                giant.across[1] * (pz - b->position[2]);
+                then.origin[0] += giant.across[0] * across;
+                then.origin[1] += giant.across[1] * across;
             }
             giant_ctx gc = {&then, s->quality.giant_iterations};
             hull_pose g = sample_hull(b, px, pz, heading, giant_height, &gc);

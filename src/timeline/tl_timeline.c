@@ -102,6 +102,27 @@ static void boat_wake(const tl_path *path, double t, tl_boat *b)
     }
 }
 
+/* `follow giant.center boat` aims the wave; it does not carry it. Along
+ * its travel the centre is where the boat (plus the link's offset) is at
+ * giant.arrival, so the crest moves over the water at its own speed and
+ * meets the boat then; across, the centre line is where the boat is now,
+ * so the boat stays within the crest's width (a crest sliding along its
+ * own line does not change its speed over the water). */
+static void aim_giant(const tl_timeline *tl, tl_scene *s)
+{
+    const double *off = tl->giant_follow.offset;
+    double then[3] = {s->boat.position[0], 0.0, s->boat.position[2]};
+    if (tl->boat_path.present)
+        tl_path_eval(&tl->boat_path.path, s->giant.arrival, then, NULL);
+    double dir[2] = {sin(s->giant.angle), cos(s->giant.angle)};
+    double now[2] = {s->boat.position[0] + off[0], s->boat.position[2] + off[2]};
+    double at[2] = {then[0] + off[0], then[2] + off[2]};
+    double along = dir[0] * at[0] + dir[1] * at[1];
+    double across = dir[1] * now[0] - dir[0] * now[1];
+    s->giant.center[0] = along * dir[0] + across * dir[1];
+    s->giant.center[1] = along * dir[1] - across * dir[0];
+}
+
 /* The scene at t; floating (the costly part) only when asked. */
 static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_boat)
 {
@@ -154,10 +175,8 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
 
     if (tl->camera_path.present)
         tl_path_eval(&tl->camera_path.path, t, s->camera.position, NULL);
-    if (tl->giant_follow.target == TL_TARGET_BOAT) {
-        s->giant.center[0] = s->boat.position[0] + tl->giant_follow.offset[0];
-        s->giant.center[1] = s->boat.position[2] + tl->giant_follow.offset[2];
-    }
+    if (tl->giant_follow.target == TL_TARGET_BOAT)
+        aim_giant(tl, s);
     /* Where it was, for its wake: twice the fade time back. */
     if (s->boat.enabled)
         boat_wake(&tl->boat_path.path, t, &s->boat);
@@ -228,7 +247,7 @@ void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *f)
          * crest (the ocean's plane at 0, or the giant wave's top); each
          * frame decides exactly from the surface. */
         bool giant = s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
-        double crests = giant ? s.giant.fade * s.giant.height : 0.0;
+        double crests = giant ? s.giant.fade * (1.0 + s.giant.variation) * s.giant.height : 0.0;
         f->underwater |=
             s.underwater.mode == TL_UNDERWATER_ON ||
             (s.underwater.mode == TL_UNDERWATER_AUTO && s.camera.position[1] < crests + 0.5);

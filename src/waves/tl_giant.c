@@ -1,6 +1,7 @@
 #include "tl_giant.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 /* Hermite smoothstep on [0, 1] and its derivative. */
@@ -27,6 +28,78 @@ double tl_giant_width_mask(const tl_giant *g, double w, double *dmask)
     double m = 1.0 - smooth01((a - (g->half_width - g->falloff_across)) / g->falloff_across, &ds);
     *dmask = -ds / g->falloff_across * (w < 0.0 ? -1.0 : 1.0);
     return m;
+}
+
+/* Distance from the peak toward the end on w's side, 0 at the peak and 1
+ * at the end (|w| = half width), and its derivative with respect to w. */
+static double from_peak(const tl_giant *g, double w, double *dr)
+{
+    double H = g->half_width, p = g->peak;
+    if (w >= p) {
+        *dr = 1.0 / (H - p);
+        return fmin((w - p) / (H - p), 1.0);
+    }
+    *dr = -1.0 / (H + p);
+    return fmin((p - w) / (H + p), 1.0);
+}
+
+double tl_giant_bow(const tl_giant *g, double w, double *db)
+{
+    double dr, r = from_peak(g, w, &dr);
+    *db = r < 1.0 ? -2.0 * g->bow * r * dr : 0.0;
+    return -g->bow * r * r;
+}
+
+double tl_giant_break_age(const tl_giant *g, double w)
+{
+    return g->break_age - fabs(w - g->peak) / g->peel_speed;
+}
+
+double tl_giant_break_progress(const tl_giant *g, double w, double *dprogress)
+{
+    *dprogress = 0.0;
+    if (!g->breaks)
+        return 0.0;
+    double ds, p = smooth01(tl_giant_break_age(g, w) / g->throw_time, &ds);
+    *dprogress = -ds / (g->throw_time * g->peel_speed) * (w < g->peak ? -1.0 : 1.0);
+    return p;
+}
+
+/* The seeded variation along the crest: a sum of sines in [-1, 1]. */
+static double variation(const tl_giant *g, double w, double *dv)
+{
+    static const double weights[3] = TL_GIANT_VARIATION_WEIGHTS;
+    double v = 0.0;
+    *dv = 0.0;
+    for (int i = 0; i < 3; i++) {
+        double a = g->vary_k[i] * w + g->vary_phase[i];
+        v += weights[i] * sin(a);
+        *dv += weights[i] * g->vary_k[i] * cos(a);
+    }
+    return v;
+}
+
+double tl_giant_lambda(const tl_giant *g, double w, double *dl)
+{
+    double dm, dr, dv;
+    double m = tl_giant_width_mask(g, w, &dm);
+    double r = from_peak(g, w, &dr);
+    double taper = 1.0 - g->taper * r * r, dtaper = r < 1.0 ? -2.0 * g->taper * r * dr : 0.0;
+    double n = variation(g, w, &dv);
+    double vary = 1.0 + g->variation * n, dvary = g->variation * dv;
+    /* The settling after the lip has landed: from progress 1 over twice the
+     * throw's time, smoothly. */
+    double settle = 1.0, ds = 0.0;
+    if (g->breaks) {
+        double age = tl_giant_break_age(g, w);
+        double dx;
+        settle = 1.0 - g->break_drop * smooth01((age - g->throw_time) / (2.0 * g->throw_time), &dx);
+        ds = g->break_drop * dx / (2.0 * g->throw_time * g->peel_speed) * (w < g->peak ? -1.0 : 1.0);
+    }
+    double F = g->fade;
+    *dl = F * (dm * taper * vary * settle + m * dtaper * vary * settle + m * taper * dvary * settle +
+               m * taper * vary * ds);
+    return F * m * taper * vary * settle;
 }
 
 /* Profile with explicit steepness S and curl C (the clamps scan it with
@@ -59,14 +132,14 @@ static double clampd(double v, double lo, double hi)
 
 /* Scales steepness and curl by one factor beta <= 1, the largest that
  * keeps 1 + lambda·D'(s0) >= TL_GIANT_MIN_JACOBIAN for every lambda in
- * [0, fade] (the map is then one-to-one and the surface a height field),
+ * [0, lambda_max] (the map is then one-to-one and the surface a height field),
  * then bounds displacement and slope. D' is linear in both knobs, so beta
  * is exact on the scanned profile. */
 static void clamp_and_bound(tl_giant *g, double steep, double curl)
 {
     const int n = TL_GIANT_PROFILE_SAMPLES;
     const double reach = g->half_length + g->falloff_along;
-    const double budget = 1.0 - TL_GIANT_MIN_JACOBIAN, F = g->fade;
+    const double budget = 1.0 - TL_GIANT_MIN_JACOBIAN, F = g->lambda_max;
     double y, dy, d, dd;
 
     double worst = 0.0; /* max of -D' at the asked knobs */
@@ -82,7 +155,7 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
     g->steepness = steep;
     g->curl = curl;
 
-    /* Bounds at lambda = fade, the worst case: |λ·Y'/J| and λ/J both grow
+    /* Bounds at lambda = lambda_max, the worst case: |λ·Y'/J| and λ/J both grow
      * with λ while J stays positive. */
     double max_d = 0.0, min_j = 1.0;
     for (int i = 0; i <= n; i++) {
@@ -92,12 +165,13 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
     }
     g->max_displacement = max_d;
     g->min_jacobian = min_j;
-    g->reach_along = reach + F * max_d;
+    g->reach_along = reach + F * max_d + g->bow;
 
     /* Slope per bin of world s. The point that starts at s0 sits anywhere
-     * between s0 and s0 + F·D(s0) as lambda runs over [0, F]: its bound goes
-     * to every bin that range (widened by a sample) touches. The width
-     * mask's slope is at most 1.5 / falloff_across. */
+     * between s0 - bow and s0 + F·D(s0) as lambda runs over [0, F] and the
+     * bow over [-bow, 0]: its bound goes to every bin that range (widened
+     * by a sample) touches. Across, dh/dw = λ'·Y + (λ·Y'/J)·(-bow' - λ'·D),
+     * bounded with the envelope's bounds. */
     const double bin = 2.0 * g->reach_along / TL_GIANT_SLOPE_BINS, spacing = 2.0 * reach / n;
     for (int b = 0; b < TL_GIANT_SLOPE_BINS; b++)
         g->slope_bin[b] = g->height_bin[b] = 0.0;
@@ -106,13 +180,15 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
         tl_giant_profile(g, s0, &y, &dy, &d, &dd);
         double j = fmax(1.0 + F * dd, 0.5 * TL_GIANT_MIN_JACOBIAN);
         double along = fabs(F * dy) / j;
-        double across = F * 1.5 / g->falloff_across * (fabs(y) + fabs(F * dy * d) / j);
+        double across = g->max_dlambda * fabs(y) +
+                        fabs(F * dy) / j * (g->max_dbow + g->max_dlambda * fabs(d));
         double slope = hypot(along, across);
         /* Its height, lambda·Y for lambda in [0, F], is at most F·Y or 0;
          * what lies between samples, at most a sample's spacing up the
          * slope (along s, where the samples are spaced). */
         double height = fmax(F * y, 0.0) + (fabs(F * dy) / j) * spacing;
-        double lo = s0 + fmin(0.0, F * d) - spacing, hi = s0 + fmax(0.0, F * d) + spacing;
+        double lo = s0 + fmin(0.0, F * d) - g->bow - spacing,
+               hi = s0 + fmax(0.0, F * d) + spacing;
         int b0 = (int)floor((lo + g->reach_along) / bin),
             b1 = (int)floor((hi + g->reach_along) / bin);
         for (int b = b0 < 0 ? 0 : b0; b <= b1 && b < TL_GIANT_SLOPE_BINS; b++) {
@@ -126,6 +202,53 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
         g->slope_bin[b] *= 1.05;
         g->max_slope = fmax(g->max_slope, g->slope_bin[b]);
     }
+}
+
+/* A 64-bit mix (splitmix64): the variation's phases are the same on every
+ * machine. */
+static uint64_t mix64(uint64_t x)
+{
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+/* The envelope's parameters, and bounds on its slopes from a scan across. */
+static void prepare_envelope(tl_giant *g, const tl_giant_wave *p, double t)
+{
+    static const double periods[3] = TL_GIANT_VARIATION_PERIODS;
+    double L = 2.0 * M_PI / g->k;
+    g->peak = clampd(p->peak, -TL_GIANT_PEAK_LIMIT * g->half_width,
+                     TL_GIANT_PEAK_LIMIT * g->half_width);
+    g->taper = p->taper;
+    g->bow = p->bow;
+    g->variation = p->variation;
+    for (int i = 0; i < 3; i++) {
+        g->vary_k[i] = 2.0 * M_PI / (periods[i] * L);
+        uint64_t h = mix64((uint64_t)(uint32_t)p->seed * 3u + (uint64_t)i);
+        g->vary_phase[i] = 2.0 * M_PI * (double)(h >> 11) / 9007199254740992.0;
+    }
+    g->break_age = t - p->break_time;
+    g->peel_speed = p->peel_speed > 0.0 ? p->peel_speed : 1.0;
+    g->throw_time = TL_GIANT_THROW_FALLS * sqrt(2.0 * p->height / TL_GIANT_GRAVITY);
+    g->break_drop = p->break_drop;
+    g->breaks = p->breaking && g->break_age > 0.0 && g->throw_time > 0.0;
+    g->lambda_max = g->fade * (1.0 + g->variation);
+
+    /* |lambda'| and |bow'| across, sampled; 5% margin for what falls
+     * between the samples. */
+    const int n = TL_GIANT_PROFILE_SAMPLES;
+    double max_dl = 0.0, max_db = 0.0, dl, db;
+    for (int i = 0; i <= n; i++) {
+        double w = -g->half_width + 2.0 * g->half_width * i / n;
+        tl_giant_lambda(g, w, &dl);
+        tl_giant_bow(g, w, &db);
+        max_dl = fmax(max_dl, fabs(dl));
+        max_db = fmax(max_db, fabs(db));
+    }
+    g->max_dlambda = 1.05 * max_dl;
+    g->max_dbow = 1.05 * max_db;
 }
 
 void tl_giant_prepare(tl_giant *g, const tl_giant_wave *p, double t)
@@ -155,6 +278,7 @@ void tl_giant_prepare(tl_giant *g, const tl_giant_wave *p, double t)
                               TL_GIANT_MAX_FALLOFF_WAVELENGTHS * L);
     g->half_width = 0.5 * p->width;
     g->falloff_across = fmin(fmax(p->falloff, TL_GIANT_MIN_FALLOFF_WAVELENGTHS * L), g->half_width);
+    prepare_envelope(g, p, t);
     clamp_and_bound(g, p->steepness, p->curve_strength);
 }
 
@@ -196,9 +320,9 @@ void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations, t
     out->jacobian = 1.0;
     if (fabs(out->w) >= g->half_width || fabs(out->s) >= g->reach_along)
         return;
-    double dmask, mask = tl_giant_width_mask(g, out->w, &dmask);
-    double lambda = g->fade * mask, dlambda = g->fade * dmask;
-    double s0 = tl_giant_invert(g, out->s, lambda, iterations);
+    double dlambda, lambda = tl_giant_lambda(g, out->w, &dlambda);
+    double dbow, bow = tl_giant_bow(g, out->w, &dbow);
+    double s0 = tl_giant_invert(g, out->s - bow, lambda, iterations);
     double y, dy, d, dd;
     tl_giant_profile(g, s0, &y, &dy, &d, &dd);
     /* Guard: the clamps keep J >= TL_GIANT_MIN_JACOBIAN on the scanned
@@ -208,11 +332,12 @@ void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations, t
     out->lambda = lambda;
     out->jacobian = j;
     out->displacement = lambda * d;
+    out->bow = bow;
     out->height = lambda * y;
-    /* Implicit differentiation of s = s0 + λ(w)·D(s0): ∂s0/∂s = 1/J,
-     * ∂s0/∂w = -λ'·D/J. */
+    /* Implicit differentiation of s = s0 + λ(w)·D(s0) + bow(w):
+     * ∂s0/∂s = 1/J, ∂s0/∂w = -(λ'·D + bow')/J. */
     double dh_ds = lambda * dy / j;
-    double dh_dw = dlambda * (y - lambda * dy * d / j);
+    double dh_dw = dlambda * y - dh_ds * (dlambda * d + dbow);
     out->grad[0] = dh_ds * g->dir[0] + dh_dw * g->across[0];
     out->grad[1] = dh_ds * g->dir[1] + dh_dw * g->across[1];
 }
@@ -235,13 +360,12 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
         return 1.0; /* a crest in line with the sun */
     double rx = x - g->origin[0], rz = z - g->origin[1];
     double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
-    double dm, crest = g->fade * tl_giant_width_mask(g, w, &dm) * g->curl / g->k;
+    double dl, db, crest = tl_giant_bow(g, w, &db) + tl_giant_lambda(g, w, &dl) * g->curl / g->k;
     double dist = (crest - s) / along; /* metres toward the sun to the crest line */
     if (dist <= 0.0)
         return 1.0; /* the sun's side of the crest */
     double wc = w + dist * across;
-    double crest_height =
-        fabs(wc) < g->half_width ? g->fade * tl_giant_width_mask(g, wc, &dm) * g->amplitude : 0.0;
+    double crest_height = fabs(wc) < g->half_width ? tl_giant_lambda(g, wc, &dl) * g->amplitude : 0.0;
     double ray_height = y + dist * sun[1] / flat;
     /* The penumbra: the sun's half degree over the distance, and the thin
      * lip near the top of a tall crest, through which light still comes. */

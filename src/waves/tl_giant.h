@@ -13,8 +13,11 @@
  * (positive = ahead of it, toward the centre and beyond); `w` runs across,
  * relative to the centre line. `s0` is the undisplaced ("Lagrangian")
  * position along: the surface point that started at s0 sits at
- * s = s0 + lambda(w)·D(s0) at height lambda(w)·Y(s0), with lambda the
- * fade times the width mask. */
+ * s = s0 + lambda(w)·D(s0) + bow(w) at height lambda(w)·Y(s0). lambda(w),
+ * the crest's envelope, is the fade times the width mask, the taper from
+ * the peak toward the ends, the seeded variation along the crest and what
+ * the break has let down; bow(w) <= 0 is how far the crest lags behind its
+ * peak there. */
 #ifndef TL_GIANT_H
 #define TL_GIANT_H
 
@@ -37,8 +40,22 @@
  * steps, and a loop that stops early saves a giant-wave frame 12%. The
  * CPU, the accuracy reference, always runs the full count. */
 #define TL_GIANT_CONVERGED 1.0e-4
-/* Samples of the along-profile scanned for the clamps and bounds. */
+/* Samples of the along-profile scanned for the clamps and bounds, and of
+ * the envelope across for its slope bounds. */
 #define TL_GIANT_PROFILE_SAMPLES 2048
+/* The peak stays within this fraction of the half width of the centre
+ * line, so that the taper has room on both sides. */
+#define TL_GIANT_PEAK_LIMIT 0.9
+/* The variation along the crest: three sines of these wavelengths (in
+ * wavelengths of the wave) and weights (summing to 1), their phases drawn
+ * from giant.seed. Long against the small waves, short against the crest:
+ * the height changes gently, and no stretch of the crest repeats another. */
+#define TL_GIANT_VARIATION_PERIODS {0.9, 0.53, 0.31}
+#define TL_GIANT_VARIATION_WEIGHTS {0.5, 0.3, 0.2}
+/* A breaking crest's lip throws and lands over this many times the time a
+ * body takes to fall the crest's height; the broken crest then settles
+ * (loses giant.break_drop of its height) over twice that. */
+#define TL_GIANT_THROW_FALLS 1.5
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32
@@ -63,6 +80,20 @@ typedef struct tl_giant {
     double falloff_along;    /* the crest mask reaches 0 at half_length + this */
     double half_width;       /* width / 2: the width mask is 0 beyond |w| >= this */
     double falloff_across;   /* the width mask is 1 inside |w| <= half_width - this */
+    double peak;             /* w of the peak (giant.peak, held within TL_GIANT_PEAK_LIMIT) */
+    double taper;            /* giant.taper: the ends' height below the peak's, a fraction */
+    double bow;              /* giant.bow: metres the ends lag behind the peak */
+    double variation;        /* giant.variation: a fraction of the height */
+    double vary_k[3];        /* wavenumbers of the variation's sines, rad/m */
+    double vary_phase[3];    /* their phases, from giant.seed */
+    bool breaks;             /* giant.breaking and the break has begun somewhere */
+    double break_age;        /* seconds since the break began at the peak (t - giant.break_time) */
+    double peel_speed;       /* m/s the break runs along the crest from the peak */
+    double throw_time;       /* seconds the lip takes to throw and land */
+    double break_drop;       /* giant.break_drop: the height a broken crest loses */
+    double lambda_max;       /* bound on lambda: fade·(1 + variation) */
+    double max_dlambda;      /* bound on |lambda'(w)| */
+    double max_dbow;         /* bound on |bow'(w)| */
     double max_displacement; /* max |D(s0)| over the profile */
     double reach_along;      /* |s| beyond this: no wave (mask support + displacement) */
     double min_jacobian;     /* smallest Jacobian of the map at this fade */
@@ -85,6 +116,22 @@ void tl_giant_profile(const tl_giant *g, double s0, double *y, double *dy, doubl
 /* Width mask in [0, 1] and its derivative with respect to w. */
 double tl_giant_width_mask(const tl_giant *g, double w, double *dmask);
 
+/* How far the break has gone at w across: 0 before the lip throws there,
+ * 1 once it has landed; *dprogress its derivative with respect to w. 0
+ * everywhere for a wave that does not break. */
+double tl_giant_break_progress(const tl_giant *g, double w, double *dprogress);
+
+/* The break's age at w: seconds since the lip began to throw there
+ * (negative before). */
+double tl_giant_break_age(const tl_giant *g, double w);
+
+/* The crest's envelope lambda(w) (see above) and its derivative in *dl. */
+double tl_giant_lambda(const tl_giant *g, double w, double *dl);
+
+/* The crest's lag behind its peak at w, metres (<= 0), and its derivative
+ * in *db. */
+double tl_giant_bow(const tl_giant *g, double w, double *db);
+
 /* Solves s = s0 + lambda·D(s0) for s0 with `iterations` safeguarded Newton
  * steps (the shader's algorithm). */
 double tl_giant_invert(const tl_giant *g, double s, double lambda, int iterations);
@@ -94,9 +141,10 @@ typedef struct tl_giant_sample {
     double height;       /* metres added to the ocean */
     double grad[2];      /* d height / d (x, z) */
     double s, w, s0;     /* wave coordinates (see above) */
-    double lambda;       /* fade × width mask */
+    double lambda;       /* the envelope lambda(w) */
     double jacobian;     /* 1 + lambda·D'(s0) */
     double displacement; /* lambda·D(s0): how far the point moved along */
+    double bow;          /* bow(w): the crest's lag behind its peak there */
 } tl_giant_sample;
 
 void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations,
@@ -108,7 +156,7 @@ double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
 /* How much of the sun (unit direction `sun`, toward it) a point at world
  * (x, z) and height y sees past the wave's crest: 0 in its shadow, 1 in
  * the open, soft in between. The crest is the line where s0 = 0, at
- * s = lambda·curl/k and lambda·amplitude high; the ray toward the sun is
+ * s = bow + lambda·curl/k and lambda·amplitude high; the ray toward the sun is
  * followed to it. shaders/giant.glsl's giant_sunlit is the same rule. */
 double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const double sun[3]);
 
