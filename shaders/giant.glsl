@@ -285,24 +285,35 @@ float giant_streaks(float s0, float w)
 // Foam of a breaking crest, a function of this frame's wave only. Where
 // foam can be (its coverage): whitewater capping the crest and where the
 // surface compresses, streaks running down the face, and a trail behind
-// the crest that fades with distance; u_giant_foam.w (how far the crest
-// breaks) scales all but compression. A lacy texture then keeps the part
+// the crest that fades with distance; how far the crest breaks there
+// (giant_breaking) scales all but compression. A lacy texture then keeps the part
 // of it that its coverage allows. The cap and streaks ride with the crest;
 // the trail's texture stays where the crest left it (world coordinates,
 // wrapped every 65536 m on the CPU).
 float giant_foam(GiantSample g, float ocean_value, float footprint, out float thickness,
                  out float aerated)
 {
-    float breaking = u_giant_foam.w;
+    float breaking = giant_breaking(g.w);
     float top = giant_top(g);
     float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
     float cap = smoothstep(0.9, 1.0, top) * breaking;
     float streaks = giant_streaks(g.s0, g.w);
-    float face = 0.75 * smoothstep(0.45, 0.85, streaks) * smoothstep(0.0, 0.8, top) *
-                 smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x) * breaking;
+    float front = smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x);
+    float face = 0.75 * smoothstep(0.45, 0.85, streaks) * smoothstep(0.0, 0.8, top) * front * breaking;
     float behind = max(-g.s0, 0.0);
     float fresh = exp(-behind / max(u_giant_foam.y, 1.0e-3));
     float trail = breaking * fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
+#ifdef TL_FEATURE_GIANT_BREAK
+    // The whitewater of a scripted break: it tumbles from the crest down
+    // the front as the lip throws and lands (down to the foot once it has),
+    // and the trail behind is there only where the crest had already broken
+    // when it passed (the break's age there, less the time since).
+    float tumble = smoothstep(1.0 - 1.1 * breaking, 1.1 - 1.1 * breaking, top) * front * breaking;
+    face = max(face, tumble * (0.55 + 0.45 * smoothstep(0.3, 0.7, streaks)));
+    float passed = behind / max(u_giant_speed, 1.0e-3);
+    trail = fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind) *
+            smoothstep(0.0, 0.5 * u_giant_break.z, giant_break_age(g.w) - passed);
+#endif
     float coverage = max(max(compressed, cap), face) * g.lambda;
     vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));
     float detail = foam_detail(at, footprint);

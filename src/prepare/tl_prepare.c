@@ -124,6 +124,7 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
         u->giant_break[1] = (float)g.peel_speed;
         u->giant_break[2] = (float)g.throw_time;
         u->giant_break[3] = (float)g.break_drop;
+        u->giant_speed = (float)g.speed;
     }
     u->giant_foam[0] = (float)s->giant.foam_compression;
     u->giant_foam[1] = (float)s->giant.foam_trail;

@@ -153,6 +153,7 @@ typedef struct tl_frame_uniforms {
      * g, unused), sigma the water's extinction. */
     float giant_frame[4], giant_shape[4], giant_mask[4], giant_bounds[4];
     float giant_crest[4], giant_vary_k[3], giant_vary_phase[3], giant_fade, giant_break[4];
+    float giant_speed;
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */

@@ -378,3 +378,49 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
     double crest01 = fmin(fmax(crest_height / TL_GIANT_SHADOW_FADE, 0.0), 1.0);
     return 1.0 - shade * crest01 * crest01 * (3.0 - 2.0 * crest01);
 }
+
+/* GLSL's smoothstep. */
+static double smoothstep(double e0, double e1, double x)
+{
+    double d;
+    return smooth01((x - e0) / (e1 - e0), &d);
+}
+
+double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, double amount,
+                              double foam_compression, double foam_trail)
+{
+    if (!g->active || !(smp->lambda > 0.0))
+        return 0.0;
+    double dp, breaking;
+    if (g->breaks)
+        breaking = tl_giant_break_progress(g, smp->w, &dp);
+    else if (foam_compression <= TL_GIANT_MIN_JACOBIAN)
+        breaking = 0.0;
+    else
+        breaking = clampd((foam_compression - g->min_jacobian) /
+                              (foam_compression - TL_GIANT_MIN_JACOBIAN),
+                          0.0, 1.0);
+    double top = clampd(smp->height / fmax(g->amplitude * smp->lambda, 1e-3), 0.0, 1.0);
+    double compressed = 1.0 - smoothstep(0.1, foam_compression, smp->jacobian);
+    double cap = smoothstep(0.9, 1.0, top) * breaking;
+    double front = smoothstep(-0.35, 0.0, smp->s0 / g->half_length);
+    double behind = fmax(-smp->s0, 0.0);
+    double fresh = exp(-behind / fmax(foam_trail, 1e-3));
+    double trail = breaking * fresh * smoothstep(0.0, 0.1 * g->half_length, behind);
+    double face = 0.0;
+    if (g->breaks) {
+        face = smoothstep(1.0 - 1.1 * breaking, 1.1 - 1.1 * breaking, top) * front * breaking;
+        double passed = behind / fmax(g->speed, 1e-3);
+        trail = fresh * smoothstep(0.0, 0.1 * g->half_length, behind) *
+                smoothstep(0.0, 0.5 * g->throw_time, tl_giant_break_age(g, smp->w) - passed);
+    }
+    double c = fmax(fmax(compressed, cap), fmax(face, trail)) * smp->lambda * amount;
+    return clampd(c, 0.0, 1.0);
+}
+
+int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, double base,
+                         double *heights, int max)
+{
+    (void)g, (void)x, (void)z, (void)floor, (void)base, (void)heights, (void)max;
+    return 0;
+}

@@ -153,6 +153,21 @@ void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations,
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
 
+/* The heights above `floor` (the height field's there) at which a
+ * vertical line at world (x, z) crosses the lip's faces, lowest first, at
+ * most `max`; `base` is the ocean's mean level (-depth / 2). Returns the
+ * count: 0 where no lip overhangs. */
+int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, double base,
+                         double *heights, int max);
+
+/* Where the wave's foam can be at a sample and how much, before its
+ * texture: the coverage giant_foam in shaders/giant.glsl computes (the
+ * compressed surface, the cap and whitewater of a breaking crest, the trail
+ * behind it; the streaks' noise left out), times `amount` (water.foam),
+ * in [0, 1]. `foam_compression` and `foam_trail` are the channels'. */
+double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, double amount,
+                              double foam_compression, double foam_trail);
+
 /* How much of the sun (unit direction `sun`, toward it) a point at world
  * (x, z) and height y sees past the wave's crest: 0 in its shadow, 1 in
  * the open, soft in between. The crest is the line where s0 = 0, at

@@ -59,6 +59,18 @@ double tl_waves_surface_height(const tl_waves *w, const tl_giant *g, double x, d
     return g && g->active ? h + tl_giant_height(g, x, z, giant_iterations) : h;
 }
 
+int tl_waves_surfaces(const tl_waves *w, const tl_giant *g, double x, double z, double t,
+                      int octaves, int giant_iterations, double *heights, int max)
+{
+    if (max < 1)
+        return 0;
+    heights[0] = tl_waves_surface_height(w, g, x, z, t, octaves, giant_iterations);
+    int n = 1;
+    if (g && g->active)
+        n += tl_giant_lip_heights(g, x, z, heights[0], -0.5 * w->depth, heights + 1, max - 1);
+    return n;
+}
+
 void tl_waves_phases(const tl_waves *w, double ref_x, double ref_z, double t, int octaves,
                      double *phase_out)
 {

@@ -45,6 +45,14 @@ double tl_waves_height(const tl_waves *w, double x, double z, double t, int octa
 double tl_waves_surface_height(const tl_waves *w, const tl_giant *g, double x, double z, double t,
                                int octaves, int giant_iterations);
 
+/* Every height at which a vertical line at world (x, z) meets the water
+ * surface, lowest first, at most `max` of them: the ocean plus the giant
+ * wave's height field first, then, where the giant wave's lip overhangs
+ * the point, the lip's lower and upper faces above it. Returns the count
+ * (at least 1). The boat floats on the highest. */
+int tl_waves_surfaces(const tl_waves *w, const tl_giant *g, double x, double z, double t,
+                      int octaves, int giant_iterations, double *heights, int max);
+
 /* Per-octave phase offsets for a GPU frame centred on (ref_x, ref_z):
  * fmod(f·dot(d, ref) + speed·t + radial·|ref|, 2π), so the shader adds only
  * terms that are small near the camera. */
