@@ -24,6 +24,9 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #include "boat.glsl"
 #endif
 #include "water.glsl"
+#ifdef TL_FEATURE_GIANT_LIP
+#include "lip.glsl"
+#endif
 #ifdef TL_FEATURE_UNDERWATER
 #include "underwater.glsl"
 #endif
@@ -84,6 +87,14 @@ vec3 camera_ray(vec2 pixel)
 vec3 trace_water(vec3 ray, float t_min, out float dist)
 {
     float t = march_water(ray, t_min);
+#if defined(TL_FEATURE_GIANT_LIP) && !defined(TL_MARCH_PREPASS)
+    // The lip overhangs the height field: the nearer of the two.
+    float t_lip = giant_lip_march(ray, t_min, t < 0.0 ? TL_FAR : t);
+    if (t_lip >= 0.0) {
+        dist = t_lip;
+        return giant_lip_color(ray, vec3(0.0, u_cam_height, 0.0) + ray * t_lip);
+    }
+#endif
     if (t < 0.0) {
         dist = TL_SKY_DEPTH;
         return sky_color(ray);

@@ -88,6 +88,12 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_GIANT_CONVERGED %.1e\n"
                      "#define TL_GIANT_SHADOW_FADE %.3f\n"
                      "#define TL_GIANT_VARIATION_WEIGHTS %.17g, %.17g, %.17g\n"
+                     "#define TL_GIANT_LIP_RADIUS %.17g\n"
+                     "#define TL_GIANT_LIP_THICKNESS %.17g\n"
+                     "#define TL_GIANT_LIP_ANCHOR %.17g\n"
+                     "#define TL_GIANT_LIP_ROOT %.17g\n"
+                     "#define TL_GIANT_LIP_SWEEP %.17g\n"
+                     "#define TL_GIANT_LIP_FADE %.17g\n"
                      "#define TL_WAKE_POINTS %d\n"
                      "#define TL_WAKE_GROUP %d\n"
                      "#define TL_WAKE_GROUPS %d\n"
@@ -97,7 +103,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_MIRROR_SHIFT %g\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
-                     variation[2], TL_WAKE_POINTS, TL_WAKE_GROUP,
+                     variation[2], TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_ANCHOR,
+                     TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_WAKE_POINTS, TL_WAKE_GROUP,
                      TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
                      TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
@@ -674,7 +681,8 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
      * (u->plan.giant_rect), the lean program, the same image there, around it. */
     const int w = u->width, h = u->height;
     int rect[4] = {0, 0, 0, 0};
-    unsigned lean = features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK);
+    unsigned lean =
+        features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP);
     if (features & TL_FEATURE_GIANT_WAVE)
         memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;

@@ -22,12 +22,12 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
     "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
-    "TL_FEATURE_GIANT_BREAK"};
+    "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
     "sun disc",        "giant wave",       "boat",          "wake",
     "underwater",      "waterline",        "fog",           "physical sky",
     "level of detail", "analytic normals", "supersampling", "filtered shading",
-    "root refinement", "hit polish",       "breaking crest"};
+    "root refinement", "hit polish",       "breaking crest",   "lip"};
 
 const char *tl_feature_define(int index)
 {
@@ -125,6 +125,14 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
         u->giant_break[2] = (float)g.throw_time;
         u->giant_break[3] = (float)g.break_drop;
         u->giant_speed = (float)g.speed;
+        double box[4], across[2];
+        if (tl_giant_lip_bounds(&g, -0.5 * s->ocean.depth, box, across)) {
+            u->features |= TL_FEATURE_GIANT_LIP;
+            for (int i = 0; i < 4; i++)
+                u->giant_lip_box[i] = (float)box[i];
+            u->giant_lip_w[0] = (float)across[0];
+            u->giant_lip_w[1] = (float)across[1];
+        }
     }
     u->giant_foam[0] = (float)s->giant.foam_compression;
     u->giant_foam[1] = (float)s->giant.foam_trail;

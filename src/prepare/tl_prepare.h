@@ -39,9 +39,10 @@ typedef enum tl_feature {
     TL_FEATURE_POLISH = 1u << 13,           /* quality.polish */
     /* Parts of a feature */
     TL_FEATURE_GIANT_BREAK = 1u << 14, /* the giant wave's crest has begun to break */
+    TL_FEATURE_GIANT_LIP = 1u << 15,   /* and its lip is thrown somewhere along it */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 15
+#define TL_FEATURE_COUNT 16
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -154,6 +155,7 @@ typedef struct tl_frame_uniforms {
     float giant_frame[4], giant_shape[4], giant_mask[4], giant_bounds[4];
     float giant_crest[4], giant_vary_k[3], giant_vary_phase[3], giant_fade, giant_break[4];
     float giant_speed;
+    float giant_lip_box[4], giant_lip_w[2]; /* TL_FEATURE_GIANT_LIP */
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */

@@ -86,6 +86,8 @@
     X(VEC3, giant_sigma, 0, TL_FEATURE_GIANT_WAVE, "the water's extinction per metre: light through the crest") \
     X(VEC4, giant_break, 0, TL_FEATURE_GIANT_BREAK, "(age at the peak, peel speed, throw time, drop)") \
     X(FLOAT, giant_speed, 0, TL_FEATURE_GIANT_BREAK, "the crest's speed over the water, m/s") \
+    X(VEC4, giant_lip_box, 0, TL_FEATURE_GIANT_LIP, "the lip's box: (s low, s high, y low, y high)") \
+    X(VEC2, giant_lip_w, 0, TL_FEATURE_GIANT_LIP, "and its w range") \
     X(VEC4, giant_foam, 0, TL_FEATURE_GIANT_WAVE, "(Jacobian where foam starts, trail metres, amount, breaking)") \
     X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, unused)") \
     X(VEC3, giant_scatter_color, 0, TL_FEATURE_GIANT_WAVE, "") \

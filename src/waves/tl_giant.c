@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Hermite smoothstep on [0, 1] and its derivative. */
@@ -418,9 +419,126 @@ double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, dou
     return clampd(c, 0.0, 1.0);
 }
 
+void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip)
+{
+    memset(lip, 0, sizeof *lip);
+    if (!g->active || !g->breaks || fabs(w) >= g->half_width)
+        return;
+    double age = tl_giant_break_age(g, w), T = g->throw_time, dp;
+    if (!(age > 0.0) || age >= T * (1.0 + TL_GIANT_LIP_FADE))
+        return;
+    double dl, db, lambda = tl_giant_lambda(g, w, &dl);
+    double height = lambda * g->amplitude;
+    double life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
+    lip->thickness = TL_GIANT_LIP_THICKNESS * height * life;
+    if (!(lip->thickness > 0.0))
+        return;
+    lip->present = true;
+    lip->radius = TL_GIANT_LIP_RADIUS * height;
+    lip->progress = tl_giant_break_progress(g, w, &dp);
+    double anchor = TL_GIANT_LIP_ANCHOR * (M_PI / 180.0);
+    double top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k, top_y = base + height;
+    lip->center[0] = top_s - lip->radius * sin(anchor);
+    lip->center[1] = top_y - lip->radius * cos(anchor);
+    lip->from = TL_GIANT_LIP_ROOT * (M_PI / 180.0);
+    lip->to = lip->from + lip->progress * TL_GIANT_LIP_SWEEP * (M_PI / 180.0);
+}
+
+double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
+{
+    if (!lip->present)
+        return 1e30;
+    double qs = s - lip->center[0], qy = y - lip->center[1];
+    double angle = atan2(qs, qy); /* from up, clockwise toward +s */
+    if (angle >= lip->from && angle <= lip->to)
+        return fabs(hypot(qs, qy) - lip->radius) - lip->thickness;
+    /* Past either end: the round cap there. */
+    double d = 1e30;
+    const double ends[2] = {lip->from, lip->to};
+    for (int i = 0; i < 2; i++) {
+        double es = lip->radius * sin(ends[i]), ey = lip->radius * cos(ends[i]);
+        d = fmin(d, hypot(qs - es, qy - ey));
+    }
+    return d - lip->thickness;
+}
+
+bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double across[2])
+{
+    box[0] = box[2] = across[0] = 1e30;
+    box[1] = box[3] = across[1] = -1e30;
+    if (!g->active || !g->breaks)
+        return false;
+    /* Scanned across at the envelope's sample spacing; each cross-section's
+     * circle (radius + thickness) bounds its arc, widened by the spacing
+     * times the largest slope the arc's centre could have between samples. */
+    const int n = TL_GIANT_PROFILE_SAMPLES;
+    const double spacing = 2.0 * g->half_width / n;
+    bool any = false;
+    for (int i = 0; i <= n; i++) {
+        double w = -g->half_width + spacing * i;
+        tl_giant_lip lip;
+        tl_giant_lip_at(g, w, base, &lip);
+        if (!lip.present)
+            continue;
+        any = true;
+        double reach = lip.radius + lip.thickness + spacing * (1.0 + g->max_dbow) +
+                       spacing * g->max_dlambda * g->amplitude;
+        box[0] = fmin(box[0], lip.center[0] - reach);
+        box[1] = fmax(box[1], lip.center[0] + reach);
+        box[2] = fmin(box[2], lip.center[1] - reach);
+        box[3] = fmax(box[3], lip.center[1] + reach);
+        across[0] = fmin(across[0], w - spacing);
+        across[1] = fmax(across[1], w + spacing);
+    }
+    return any;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, double base,
                          double *heights, int max)
 {
-    (void)g, (void)x, (void)z, (void)floor, (void)base, (void)heights, (void)max;
-    return 0;
+    if (!g->active || !g->breaks || max < 1)
+        return 0;
+    double rx = x - g->origin[0], rz = z - g->origin[1];
+    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
+    tl_giant_lip lip;
+    tl_giant_lip_at(g, w, base, &lip);
+    if (!lip.present)
+        return 0;
+    /* Where the vertical line crosses the four circles the tube's boundary
+     * lies on (its outer and inner faces, the two caps), kept where the
+     * distance there is 0: those are the boundary's points. */
+    double found[8];
+    int n = 0;
+    double circles[4][3] = {{lip.center[0], lip.center[1], lip.radius + lip.thickness},
+                            {lip.center[0], lip.center[1], lip.radius - lip.thickness}};
+    const double ends[2] = {lip.from, lip.to};
+    for (int i = 0; i < 2; i++) {
+        circles[2 + i][0] = lip.center[0] + lip.radius * sin(ends[i]);
+        circles[2 + i][1] = lip.center[1] + lip.radius * cos(ends[i]);
+        circles[2 + i][2] = lip.thickness;
+    }
+    const double tolerance = 1e-9 * (lip.radius + 1.0);
+    for (int c = 0; c < 4; c++) {
+        double ds = s - circles[c][0], rho = circles[c][2];
+        if (!(rho > 0.0) || fabs(ds) > rho)
+            continue;
+        double h = sqrt(rho * rho - ds * ds);
+        for (int sign = -1; sign <= 1; sign += 2) {
+            double y = circles[c][1] + sign * h;
+            if (y > floor && fabs(tl_giant_lip_distance(&lip, s, y)) <= tolerance)
+                found[n++] = y;
+        }
+    }
+    qsort(found, (size_t)n, sizeof found[0], compare_doubles);
+    int count = 0;
+    for (int i = 0; i < n && count < max; i++)
+        if (count == 0 || found[i] - heights[count - 1] > tolerance)
+            heights[count++] = found[i];
+    return count;
 }

@@ -56,6 +56,20 @@
  * body takes to fall the crest's height; the broken crest then settles
  * (loses giant.break_drop of its height) over twice that. */
 #define TL_GIANT_THROW_FALLS 1.5
+/* The lip: a tube along an arc of a circle in the crest's cross-section,
+ * of this radius and half thickness (fractions of the crest's height
+ * there). The arc's point at TL_GIANT_LIP_ANCHOR (degrees from straight
+ * up, clockwise toward the travel) sits on the crest's top; it starts at
+ * TL_GIANT_LIP_ROOT, buried in the crest, and its free end sweeps
+ * TL_GIANT_LIP_SWEEP degrees forward and down over the throw, landing on
+ * the face in front (at a fifth of the crest's height); then the tube
+ * thins away over TL_GIANT_LIP_FADE throw times. */
+#define TL_GIANT_LIP_RADIUS 0.45
+#define TL_GIANT_LIP_THICKNESS 0.05
+#define TL_GIANT_LIP_ANCHOR -30.0
+#define TL_GIANT_LIP_ROOT -45.0
+#define TL_GIANT_LIP_SWEEP 195.0
+#define TL_GIANT_LIP_FADE 0.6
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32
@@ -152,6 +166,30 @@ void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations,
 
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
+
+/* The lip's cross-section at w across: an arc in the (s, y) plane, s as
+ * the wave's (along the travel, from the crest on the centre line), y
+ * absolute. */
+typedef struct tl_giant_lip {
+    bool present;     /* the break has begun there and the lip has not thinned away */
+    double center[2]; /* (s, y) of the arc's centre */
+    double radius;    /* of the tube's centre line */
+    double thickness; /* the tube's half thickness */
+    double from, to;  /* the arc's angles, radians from up, clockwise toward +s */
+    double progress;  /* the throw, 0 .. 1 (tl_giant_break_progress) */
+} tl_giant_lip;
+
+/* The lip at w across; `base` is the ocean's mean level (-depth / 2). */
+void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip);
+
+/* The box that holds the lip: box = (s low, s high, y low, y high) in the
+ * wave's coordinates, across = (w low, w high). False when no lip is
+ * thrown anywhere (then the frame compiles none). */
+bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double across[2]);
+
+/* Signed distance from (s, y) to the lip's tube in its cross-section
+ * (negative inside); a large positive value where there is no lip. */
+double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y);
 
 /* The heights above `floor` (the height field's there) at which a
  * vertical line at world (x, z) crosses the lip's faces, lowest first, at

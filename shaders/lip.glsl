@@ -1,0 +1,156 @@
+// The giant wave's lip (TL_FEATURE_GIANT_LIP): where the crest breaks, a
+// tube along an arc of a circle in the crest's cross-section, thrown
+// forward from the crest's top and falling onto the face in front, marched
+// as an implicit surface inside its own box and combined with the height
+// field by the nearest hit (trace_water). src/waves/tl_giant.c
+// (tl_giant_lip_at, tl_giant_lip_distance) is the same model in double and
+// the TL_GIANT_LIP_* constants are its; keep the two in step.
+//
+// The cross-section at w across is in the (s, y) plane, s the wave's
+// coordinate along its travel, y absolute; angles are from straight up,
+// clockwise toward the travel.
+
+struct GiantLip {
+    bool present;
+    vec2 center;     // (s, y) of the arc's centre
+    float radius;    // of the tube's centre line
+    float thickness; // its half thickness
+    float from, to;  // the arc's angles
+    float progress;  // the throw, 0 .. 1
+};
+
+GiantLip giant_lip_at(float w)
+{
+    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0);
+    float age = giant_break_age(w), T = u_giant_break.z;
+    if (abs(w) >= u_giant_mask.z || !(age > 0.0) || age >= T * (1.0 + TL_GIANT_LIP_FADE))
+        return lip;
+    float dl, db;
+    float lambda = giant_lambda(w, dl), height = lambda * u_giant_shape.y;
+    float life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
+    lip.thickness = TL_GIANT_LIP_THICKNESS * height * life;
+    lip.present = lip.thickness > 0.0;
+    lip.radius = TL_GIANT_LIP_RADIUS * height;
+    lip.progress = giant_breaking(w);
+    const float anchor = radians(TL_GIANT_LIP_ANCHOR);
+    float top_s = giant_bow(w, db) + lambda * u_giant_shape.w / u_giant_shape.x;
+    float top_y = -0.5 * u_depth + height;
+    lip.center = vec2(top_s, top_y) - lip.radius * vec2(sin(anchor), cos(anchor));
+    lip.from = radians(TL_GIANT_LIP_ROOT);
+    lip.to = lip.from + lip.progress * radians(TL_GIANT_LIP_SWEEP);
+    return lip;
+}
+
+// Signed distance to the tube in the cross-section (negative inside), and
+// in *n2 the unit direction of its gradient there.
+float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
+{
+    n2 = vec2(0.0, 1.0);
+    if (!lip.present)
+        return 1e30;
+    vec2 q = sy - lip.center;
+    float angle = atan(q.x, q.y);
+    if (angle >= lip.from && angle <= lip.to) {
+        float r = length(q);
+        n2 = (r >= lip.radius ? 1.0 : -1.0) * q / max(r, 1.0e-6);
+        return abs(r - lip.radius) - lip.thickness;
+    }
+    vec2 e0 = lip.radius * vec2(sin(lip.from), cos(lip.from));
+    vec2 e1 = lip.radius * vec2(sin(lip.to), cos(lip.to));
+    vec2 d0 = q - e0, d1 = q - e1;
+    vec2 d = dot(d0, d0) < dot(d1, d1) ? d0 : d1;
+    n2 = d / max(length(d), 1.0e-6);
+    return length(d) - lip.thickness;
+}
+
+// The part of the ray inside the lip's box (u_giant_lip_box: s and y
+// ranges; u_giant_lip_w: its w range), as giant_ray_interval.
+vec2 giant_lip_interval(vec3 ray)
+{
+    vec2 d = u_giant_frame.xy;
+    vec3 o = vec3(u_giant_frame.z, u_cam_height, u_giant_frame.w);
+    vec3 r = vec3(dot(d, ray.xz), ray.y, dot(vec2(d.y, -d.x), ray.xz));
+    vec3 lo = vec3(u_giant_lip_box.x, u_giant_lip_box.z, u_giant_lip_w.x);
+    vec3 hi = vec3(u_giant_lip_box.y, u_giant_lip_box.w, u_giant_lip_w.y);
+    float t0 = 0.0, t1 = TL_FAR;
+    for (int i = 0; i < 3; i++) {
+        if (abs(r[i]) < 1.0e-12) {
+            if (o[i] < lo[i] || o[i] > hi[i])
+                return vec2(1.0, 0.0);
+            continue;
+        }
+        float a = (lo[i] - o[i]) / r[i], b = (hi[i] - o[i]) / r[i];
+        t0 = max(t0, min(a, b));
+        t1 = min(t1, max(a, b));
+    }
+    return vec2(t0, t1);
+}
+
+// Sphere tracing of the lip from t_min to t_max (the height field's hit,
+// or the far plane): its distance or -1. The cross-section's distance is
+// not the 3D one (the lip changes along w), but the lip changes over tens
+// of metres along the crest and the step is TL_GIANT_LIP_RELAX of it.
+#define TL_GIANT_LIP_STEPS 48
+#define TL_GIANT_LIP_RELAX 0.8
+float giant_lip_march(vec3 ray, float t_min, float t_max)
+{
+    vec2 box = giant_lip_interval(ray);
+    float t = max(box.x, t_min), t_end = min(box.y, t_max);
+    if (!(t < t_end))
+        return -1.0;
+    for (int i = 0; i < TL_GIANT_LIP_STEPS; i++) {
+        vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * t;
+        vec2 sw = giant_coords(p.xz), n2;
+        float d = giant_lip_distance(giant_lip_at(sw.y), vec2(sw.x, p.y), n2);
+        if (d < max(u_hit_epsilon, 1.0e-4 * t))
+            return t;
+        t += TL_GIANT_LIP_RELAX * min(d, 1.0e3);
+        if (t > t_end)
+            return -1.0;
+    }
+    return -1.0;
+}
+
+// The lip at camera-relative `hit`, seen along `ray`: glassy water that
+// mirrors the sky, lit through (it is thin: the sun's light crosses it
+// and glows turquoise when it is behind), whitening from its tip as it
+// throws and all over once it has landed.
+vec3 giant_lip_color(vec3 ray, vec3 hit)
+{
+    vec2 sw = giant_coords(hit.xz), n2;
+    GiantLip lip = giant_lip_at(sw.y);
+    giant_lip_distance(lip, vec2(sw.x, hit.y), n2);
+    vec2 d = u_giant_frame.xy;
+    vec3 n = normalize(n2.x * vec3(d.x, 0.0, d.y) + vec3(0.0, n2.y, 0.0));
+    // The small waves ride on the thrown water too, flattened.
+    float value, slope_var;
+    vec3 ripples = water_normal(hit.xz, u_normal_epsilon, 0.0, value, slope_var);
+    n = water_facing(ray, normalize(n + 0.6 * vec3(ripples.x, 0.0, ripples.z)));
+    float sunlit = giant_sunlit(hit.xz, hit.y);
+    // Light through the tube: its thickness along the sun's ray.
+    float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
+    float across = 2.0 * lip.thickness / max(abs(dot(u_sun_dir, n)), 0.25);
+    float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
+    float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
+    vec3 lit = u_giant_scatter_color * exp(-u_giant_sigma * across) * sky_sun_light() *
+               (u_giant_scatter.x * daylight);
+    vec3 body = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
+    // What it mirrors: the sky above, and below (the lip's underside faces
+    // the face and the trough) the lit water of the face, not the sky.
+    float fresnel = optics_schlick(ray, n);
+    vec3 r = normalize(reflect(ray, n));
+    vec3 below = body + lit * (0.25 / TL_PI);
+    vec3 reflection = mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit),
+                          smoothstep(-0.1, 0.05, r.y));
+    vec3 color = fresnel * reflection + (1.0 - fresnel) * (body + lit * phase);
+    // Foam: from the tip back as the lip throws, everywhere once it lands;
+    // a lace keeps it from being a painted band.
+    vec2 q = vec2(sw.x, hit.y) - lip.center;
+    float along = clamp((atan(q.x, q.y) - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
+    float white = max(smoothstep(0.7, 1.0, along) * (0.5 + 0.5 * lip.progress),
+                      smoothstep(0.85, 1.0, lip.progress) * 0.7);
+    vec2 at = vec2(sw.y, sw.x + hit.y);
+    float lace = foam_lace(at * 1.5);
+    float foam = smoothstep(1.0 - white, 1.15 - white, lace + 0.25 * white);
+    return foam_shade(color, n, foam, lace, max(sunlit, 0.6));
+}
