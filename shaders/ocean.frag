@@ -26,6 +26,10 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #include "water.glsl"
 #ifdef TL_FEATURE_GIANT_LIP
 #include "lip.glsl"
+#include "lip_shade.glsl"
+#endif
+#ifdef TL_FEATURE_GIANT_SPRAY
+#include "spray.glsl"
 #endif
 #ifdef TL_FEATURE_UNDERWATER
 #include "underwater.glsl"
@@ -138,6 +142,9 @@ vec3 trace(vec3 ray, out float dist)
 #endif
 #ifdef TL_FEATURE_BOAT
     color = boat_composite(color, ray, dist);
+#endif
+#ifdef TL_FEATURE_GIANT_SPRAY
+    color = giant_spray(ray, dist, color);
 #endif
 #ifdef TL_FEATURE_FOG
     color = optics_fog(color, u_cam_height, ray, dist);

@@ -19,6 +19,9 @@
 //   mode 9: the boat's wake at camera-relative (x, z), no level of detail
 //           and the ocean's value 0.5: foam cover, thickness, bubbles
 //           (wake_foam)
+//   mode 10: the giant wave's lip at the w of camera-relative (x, z):
+//           its centre (s, y), radius and half thickness (tl_giant_lip_at)
+//   mode 11: the same lip's angles from and to, throw and presence
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -26,6 +29,9 @@
 #include "foam.glsl"
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
+#endif
+#ifdef TL_FEATURE_GIANT_LIP
+#include "lip.glsl"
 #endif
 #include "surface.glsl"
 #ifdef TL_FEATURE_UNDERWATER
@@ -81,6 +87,13 @@ void main()
         result.x = giant_sunlit(p, surface_height(p, u_probe_octaves, 0.0));
     else if (u_probe_mode == 8)
         result.x = foam_detail(vec2(p.x, 0.37 * p.x), p.y);
+#endif
+#ifdef TL_FEATURE_GIANT_LIP
+    else if (u_probe_mode == 10 || u_probe_mode == 11) {
+        GiantLip lip = giant_lip_at(giant_coords(p).y);
+        result = u_probe_mode == 10 ? vec4(lip.center, lip.radius, lip.thickness)
+                                    : vec4(lip.from, lip.to, lip.progress, lip.present ? 1.0 : 0.0);
+    }
 #endif
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 9) {

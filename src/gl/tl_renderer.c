@@ -9,6 +9,7 @@
 
 #include "gl/tl_renderer_internal.h"
 #include "prepare/tl_uniform_list.h"
+#include "waves/tl_giant_spray.h"
 
 int tl_renderer_check(const char *what, tl_error *err)
 {
@@ -94,6 +95,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_GIANT_LIP_ROOT %.17g\n"
                      "#define TL_GIANT_LIP_SWEEP %.17g\n"
                      "#define TL_GIANT_LIP_FADE %.17g\n"
+                     "#define TL_SPRAY_SIGMA %.17g\n"
+                     "#define TL_SPRAY_FROM %.17g\n"
+                     "#define TL_SPRAY_FULL %.17g\n"
                      "#define TL_WAKE_POINTS %d\n"
                      "#define TL_WAKE_GROUP %d\n"
                      "#define TL_WAKE_GROUPS %d\n"
@@ -104,7 +108,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
                      variation[2], TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_ANCHOR,
-                     TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_WAKE_POINTS, TL_WAKE_GROUP,
+                     TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_SPRAY_SIGMA,
+                     TL_SPRAY_FROM, TL_SPRAY_FULL, TL_WAKE_POINTS, TL_WAKE_GROUP,
                      TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
                      TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
@@ -682,7 +687,8 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     const int w = u->width, h = u->height;
     int rect[4] = {0, 0, 0, 0};
     unsigned lean =
-        features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP);
+        features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP |
+                              TL_FEATURE_GIANT_SPRAY);
     if (features & TL_FEATURE_GIANT_WAVE)
         memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;

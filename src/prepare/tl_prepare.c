@@ -13,6 +13,7 @@
 #include "prepare/tl_uniform_list.h"
 #include "sky/tl_sky.h"
 #include "waves/tl_giant.h"
+#include "waves/tl_giant_spray.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_SUN_DISC",    "TL_FEATURE_GIANT_WAVE",
@@ -22,12 +23,14 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
     "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
-    "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP"};
+    "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
+    "TL_FEATURE_GIANT_SPRAY"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
     "sun disc",        "giant wave",       "boat",          "wake",
     "underwater",      "waterline",        "fog",           "physical sky",
     "level of detail", "analytic normals", "supersampling", "filtered shading",
-    "root refinement", "hit polish",       "breaking crest",   "lip"};
+    "root refinement", "hit polish",       "breaking crest",   "lip",
+    "spray"};
 
 const char *tl_feature_define(int index)
 {
@@ -81,6 +84,34 @@ static double breaking(double threshold, double min_jacobian)
         return 0.0;
     double b = (threshold - min_jacobian) / (threshold - TL_GIANT_MIN_JACOBIAN);
     return b < 0.0 ? 0.0 : b > 1.0 ? 1.0 : b;
+}
+
+/* The giant wave's spray (TL_FEATURE_GIANT_SPRAY), the bow's burst
+ * relative to the camera. */
+static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniforms *u)
+{
+    const tl_boat *b = &s->boat;
+    double heading[2] = {sin(b->heading), cos(b->heading)}, bow[3];
+    for (int i = 0; i < 3; i++)
+        bow[i] = b->position[i];
+    bow[0] += heading[0] * 0.5 * b->length;
+    bow[2] += heading[1] * 0.5 * b->length;
+    tl_giant_spray sp;
+    tl_giant_spray_prepare(&sp, g, s->giant.spray, s->giant.spray_wind, s->time, s->ocean.depth,
+                           b->enabled ? bow : NULL, b->length, heading);
+    if (!sp.active)
+        return;
+    u->features |= TL_FEATURE_GIANT_SPRAY;
+    u->giant_spray[0] = (float)sp.amount;
+    u->giant_spray[1] = (float)sp.reach;
+    u->giant_spray[2] = (float)sp.drift;
+    u->giant_spray[3] = (float)sp.bow_radius;
+    for (int i = 0; i < 4; i++)
+        u->giant_spray_box[i] = (float)sp.box[i];
+    u->giant_spray_bow[0] = (float)(sp.bow[0] - s->camera.position[0]);
+    u->giant_spray_bow[1] = (float)sp.bow[1];
+    u->giant_spray_bow[2] = (float)(sp.bow[2] - s->camera.position[2]);
+    u->giant_spray_bow[3] = (float)sp.bow_amount;
 }
 
 /* The giant wave relative to the camera: only the camera's offset from the
@@ -163,6 +194,7 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
      * double so the GPU sees small numbers wherever the wave is. */
     double along = g.dir[0] * g.origin[0] + g.dir[1] * g.origin[1];
     double across = g.across[0] * g.origin[0] + g.across[1] * g.origin[1];
+    prepare_spray(s, &g, u);
     u->giant_world[0] = (float)wrap65536(along);
     u->giant_world[1] = (float)wrap65536(across);
     tl_prepare_giant_rect(s, u);

@@ -40,9 +40,10 @@ typedef enum tl_feature {
     /* Parts of a feature */
     TL_FEATURE_GIANT_BREAK = 1u << 14, /* the giant wave's crest has begun to break */
     TL_FEATURE_GIANT_LIP = 1u << 15,   /* and its lip is thrown somewhere along it */
+    TL_FEATURE_GIANT_SPRAY = 1u << 16, /* giant.spray, where a crest is tall or a bow meets it */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 16
+#define TL_FEATURE_COUNT 17
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -156,6 +157,10 @@ typedef struct tl_frame_uniforms {
     float giant_crest[4], giant_vary_k[3], giant_vary_phase[3], giant_fade, giant_break[4];
     float giant_speed;
     float giant_lip_box[4], giant_lip_w[2]; /* TL_FEATURE_GIANT_LIP */
+    /* TL_FEATURE_GIANT_SPRAY: (amount, reach, drift, bow radius), the
+     * crest's box, the bow's burst (camera-relative x, absolute y, z,
+     * amount). */
+    float giant_spray[4], giant_spray_box[4], giant_spray_bow[4];
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */

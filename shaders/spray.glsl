@@ -1,0 +1,98 @@
+// The giant wave's spray (TL_FEATURE_GIANT_SPRAY): spindrift the wind
+// blows back off a tall crest, and a burst at the boat's bow where it
+// meets the face, as a light volume composited over whatever the ray saw
+// before it. src/waves/tl_giant_spray.c is the same density in double and
+// has the TL_SPRAY_* constants; keep the two in step.
+
+// Density (0 .. giant.spray) at camera-relative p (y absolute).
+float giant_spray_density(vec3 p)
+{
+    float density = 0.0;
+    vec2 sw = giant_coords(p.xz);
+    if (abs(sw.y) < u_giant_mask.z && sw.x >= u_giant_spray_box.x && sw.x <= u_giant_spray_box.y &&
+        p.y >= u_giant_spray_box.z && p.y <= u_giant_spray_box.w) {
+        float dl, db;
+        float lambda = giant_lambda(sw.y, dl), height = lambda * u_giant_shape.y;
+        float top_s = giant_bow(sw.y, db) + lambda * u_giant_shape.w / u_giant_shape.x;
+        float top_y = -0.5 * u_depth + height;
+        float breaking = 0.0;
+#ifdef TL_FEATURE_GIANT_BREAK
+        breaking = giant_breaking(sw.y);
+#endif
+        float source = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / u_giant_shape.y) *
+                       (0.4 + 0.6 * breaking);
+        float reach = u_giant_spray.y;
+        float back = top_s - sw.x, up = p.y - top_y;
+        float rise = 0.12 * height + 0.1 * reach;
+        float lift = 0.4 * rise * min(max(back, 0.0) / reach, 1.0);
+        float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
+                      exp(-max(back, 0.0) / reach) *
+                      exp(-(up - lift) * (up - lift) / (rise * rise + 1.0e-6));
+        float drifted = back + u_giant_spray.z;
+        float wisps = smoothstep(0.35, 0.8,
+                                 0.65 * foam_noise(vec2(sw.y / 2.5, drifted / 1.5)) +
+                                     0.35 * foam_noise(vec2(sw.y / 1.1, drifted / 0.6)));
+        density += u_giant_spray.x * source * plume * wisps;
+    }
+    if (u_giant_spray_bow.w > 0.0) {
+        vec3 d = p - u_giant_spray_bow.xyz;
+        float r2 = dot(d, d) / (u_giant_spray.w * u_giant_spray.w);
+        if (r2 < 9.0)
+            density += u_giant_spray_bow.w * exp(-r2) *
+                       smoothstep(0.3, 0.7, foam_noise(vec2(d.x / 0.8 + 17.0, d.y / 0.6 + d.z / 0.8)));
+    }
+    return density;
+}
+
+// The spray along `ray` from the camera to `dist`, over `color`: single
+// scattering of the sun (a forward lobe: backlit spray glows) and of the
+// sky, by water droplets (albedo near 1), in TL_SPRAY_STEPS steps over the
+// part of the ray in the spray's boxes, each step at a fixed offset in
+// its segment (no per-pixel jitter: a frame must render the same alone).
+#define TL_SPRAY_STEPS 12
+#define TL_SPRAY_PHASE_G 0.7
+#define TL_SPRAY_ALBEDO 0.9
+vec3 giant_spray(vec3 ray, float dist, vec3 color)
+{
+    // The crest's box in the wave's frame, and the bow's sphere.
+    vec2 d = u_giant_frame.xy;
+    vec3 o = vec3(u_giant_frame.z, u_cam_height, u_giant_frame.w);
+    vec3 r = vec3(dot(d, ray.xz), ray.y, dot(vec2(d.y, -d.x), ray.xz));
+    vec3 lo = vec3(u_giant_spray_box.x, u_giant_spray_box.z, -u_giant_mask.z);
+    vec3 hi = vec3(u_giant_spray_box.y, u_giant_spray_box.w, u_giant_mask.z);
+    float t0 = 0.0, t1 = min(dist, TL_FAR);
+    for (int i = 0; i < 3; i++) {
+        float inv = 1.0 / (abs(r[i]) < 1.0e-12 ? 1.0e-12 : r[i]);
+        float a = (lo[i] - o[i]) * inv, b = (hi[i] - o[i]) * inv;
+        t0 = max(t0, min(a, b));
+        t1 = min(t1, max(a, b));
+    }
+    if (u_giant_spray_bow.w > 0.0) {
+        // The sphere of three radii around the bow's burst.
+        vec3 c = u_giant_spray_bow.xyz - vec3(0.0, u_cam_height, 0.0);
+        float along = dot(c, ray), R = 3.0 * u_giant_spray.w;
+        float h = R * R - (dot(c, c) - along * along);
+        if (h > 0.0) {
+            float b0 = max(along - sqrt(h), 0.0), b1 = min(along + sqrt(h), dist);
+            t0 = t0 <= t1 ? min(t0, b0) : b0;
+            t1 = t0 <= t1 ? max(t1, b1) : b1;
+        }
+    }
+    if (!(t0 < t1))
+        return color;
+    float mu = dot(ray, u_sun_dir);
+    float g = TL_SPRAY_PHASE_G;
+    float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
+    vec3 light = TL_SPRAY_ALBEDO * (sky_sun_light() * phase + sky_ambient());
+    float dt = (t1 - t0) / float(TL_SPRAY_STEPS);
+    float trans = 1.0;
+    vec3 scattered = vec3(0.0);
+    for (int i = 0; i < TL_SPRAY_STEPS; i++) {
+        vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + 0.5) * dt);
+        float sigma = TL_SPRAY_SIGMA * giant_spray_density(p);
+        float step_trans = exp(-sigma * dt);
+        scattered += trans * (1.0 - step_trans) * light;
+        trans *= step_trans;
+    }
+    return color * trans + scattered;
+}

@@ -1,0 +1,131 @@
+#include "tl_giant_spray.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+static double smoothstep(double e0, double e1, double x)
+{
+    x = (x - e0) / (e1 - e0);
+    x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
+    return x * x * (3.0 - 2.0 * x);
+}
+
+/* shaders/foam.glsl's foam_hash: the same integers, so the same noise. */
+static double hash(int32_t x, int32_t y)
+{
+    uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    return (double)(h & 0xffffu) / 65535.0;
+}
+
+double tl_giant_spray_noise(double x, double y)
+{
+    double ix = floor(x), iy = floor(y), fx = x - ix, fy = y - iy;
+    fx = fx * fx * (3.0 - 2.0 * fx);
+    fy = fy * fy * (3.0 - 2.0 * fy);
+    int32_t cx = (int32_t)ix, cy = (int32_t)iy;
+    double a = hash(cx, cy), b = hash(cx + 1, cy), d = hash(cx, cy + 1), e = hash(cx + 1, cy + 1);
+    return (a + (b - a) * fx) + ((d + (e - d) * fx) - (a + (b - a) * fx)) * fy;
+}
+
+/* Where the crest's top is at w, and its height there: as the lip's
+ * anchor (tl_giant_lip_at). */
+static double crest_top(const tl_giant *g, double w, double base, double *top_s, double *height)
+{
+    double dl, db, lambda = tl_giant_lambda(g, w, &dl);
+    *height = lambda * g->amplitude;
+    *top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k;
+    return base + *height;
+}
+
+void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount, double wind,
+                            double t, double depth, const double *bow, double length,
+                            const double heading[2])
+{
+    memset(sp, 0, sizeof *sp);
+    if (!g->active || !(amount > 0.0))
+        return;
+    sp->amount = amount;
+    sp->base = -0.5 * depth;
+    double full = g->lambda_max * g->amplitude;
+    sp->reach = TL_SPRAY_FLIGHT * wind + 0.1 * full;
+    sp->drift = fmod(wind * t, 4096.0);
+    if (sp->drift < 0.0)
+        sp->drift += 4096.0;
+    /* The plume's box: behind the crest by its reach (three e-foldings),
+     * ahead by a tenth of the crest, from the crest's foot to well above
+     * its top. Where no stretch of the crest is tall enough, no spray. */
+    bool tall = false;
+    const int n = TL_GIANT_PROFILE_SAMPLES;
+    double s_lo = 1e30, s_hi = -1e30;
+    for (int i = 0; i <= n; i++) {
+        double w = -g->half_width + 2.0 * g->half_width * i / n, top_s, height;
+        crest_top(g, w, sp->base, &top_s, &height);
+        if (height < TL_SPRAY_FROM * g->amplitude)
+            continue;
+        tall = true;
+        s_lo = fmin(s_lo, top_s - 3.0 * sp->reach);
+        s_hi = fmax(s_hi, top_s + 0.1 * full);
+    }
+    if (tall) {
+        sp->box[0] = s_lo;
+        sp->box[1] = s_hi;
+        sp->box[2] = sp->base;
+        sp->box[3] = sp->base + full * 1.6 + sp->reach * 0.3;
+        sp->active = true;
+    }
+    /* The bow's burst: where the face rises ahead of the bow. */
+    if (bow && length > 0.0) {
+        tl_giant_sample smp;
+        tl_giant_sample_at(g, bow[0], bow[2], 8, &smp);
+        double rising = smp.grad[0] * heading[0] + smp.grad[1] * heading[1];
+        double strength = smoothstep(0.1, TL_SPRAY_BOW_SLOPE, rising);
+        if (strength > 0.0) {
+            sp->bow_radius = TL_SPRAY_BOW_RADIUS * length;
+            sp->bow[0] = bow[0] + heading[0] * 0.5 * sp->bow_radius;
+            sp->bow[1] = bow[1] + 0.6 * sp->bow_radius;
+            sp->bow[2] = bow[2] + heading[1] * 0.5 * sp->bow_radius;
+            sp->bow_amount = amount * strength;
+            sp->active = true;
+        }
+    }
+}
+
+double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                              double z)
+{
+    if (!sp->active)
+        return 0.0;
+    double rx = x - g->origin[0], rz = z - g->origin[1];
+    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
+    double density = 0.0;
+    if (fabs(w) < g->half_width && s >= sp->box[0] && s <= sp->box[1] && y >= sp->box[2] &&
+        y <= sp->box[3]) {
+        double top_s, height;
+        double top_y = crest_top(g, w, sp->base, &top_s, &height);
+        double dp, breaking = g->breaks ? tl_giant_break_progress(g, w, &dp) : 0.0;
+        double source = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / g->amplitude) *
+                        (0.4 + 0.6 * breaking);
+        double back = top_s - s, up = y - top_y;
+        double rise = 0.12 * height + 0.1 * sp->reach;
+        double lift = 0.4 * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
+        double plume = smoothstep(-0.05 * height, 0.05 * height, back) *
+                       exp(-fmax(back, 0.0) / sp->reach) *
+                       exp(-(up - lift) * (up - lift) / (rise * rise + 1e-6));
+        double wisps = smoothstep(0.35, 0.8,
+                                  0.65 * tl_giant_spray_noise(w / 2.5, (back + sp->drift) / 1.5) +
+                                      0.35 * tl_giant_spray_noise(w / 1.1, (back + sp->drift) / 0.6));
+        density += sp->amount * source * plume * wisps;
+    }
+    if (sp->bow_amount > 0.0) {
+        double dx = x - sp->bow[0], dy = y - sp->bow[1], dz = z - sp->bow[2];
+        double r2 = (dx * dx + dy * dy + dz * dz) / (sp->bow_radius * sp->bow_radius);
+        if (r2 < 9.0)
+            density += sp->bow_amount * exp(-r2) *
+                       smoothstep(0.3, 0.7, tl_giant_spray_noise(dx / 0.8 + 17.0, dy / 0.6 + dz / 0.8));
+    }
+    return density;
+}

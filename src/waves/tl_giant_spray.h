@@ -1,0 +1,53 @@
+/* tl_giant_spray: the giant wave's spray, in double: spindrift the wind
+ * blows back off a tall crest, and a burst at a boat's bow where it meets
+ * the face. shaders/spray.glsl draws it as a light volume with the same
+ * density; docs/rendering.md has the model. */
+#ifndef TL_GIANT_SPRAY_H
+#define TL_GIANT_SPRAY_H
+
+#include "waves/tl_giant.h"
+
+/* Extinction per metre of spray at density 1: thin enough that the
+ * crest shows through the plume's middle. */
+#define TL_SPRAY_SIGMA 0.12
+/* Seconds the wind carries a droplet back from the crest before it falls:
+ * the plume's reach is the wind times this (plus a tenth of the crest). */
+#define TL_SPRAY_FLIGHT 1.2
+/* The crest makes spindrift once its envelope is this high (a share of
+ * the wave's full height), fully at the second. */
+#define TL_SPRAY_FROM 0.3
+#define TL_SPRAY_FULL 0.8
+/* The bow's burst: a cloud of this radius (a share of the hull's length)
+ * ahead of and above the bow, at full strength where the face the bow
+ * meets rises TL_SPRAY_BOW_SLOPE (a slope along the heading) or more. */
+#define TL_SPRAY_BOW_RADIUS 0.35
+#define TL_SPRAY_BOW_SLOPE 0.5
+
+/* The spray of one frame. */
+typedef struct tl_giant_spray {
+    bool active;        /* giant.spray > 0 and a crest tall enough somewhere */
+    double amount;      /* giant.spray */
+    double reach;       /* metres the plume reaches back from the crest */
+    double drift;       /* metres the wind has moved the wisps (wrapped every 4096 m) */
+    double base;        /* the ocean's mean level, -depth / 2 */
+    double bow[3];      /* world position of the burst's centre */
+    double bow_radius;  /* metres */
+    double bow_amount;  /* its density, 0 without a burst */
+    double box[4];      /* (s low, s high, y low, y high) in the wave's coordinates */
+} tl_giant_spray;
+
+/* The spray of wave `g` at time t with giant.spray `amount`, the wind
+ * `wind` m/s (giant.spray_wind), ocean depth `depth`; the boat (NULL for
+ * none) at world `bow`, its hull `length` metres, heading unit (x, z). */
+void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount, double wind,
+                            double t, double depth, const double *bow, double length,
+                            const double heading[2]);
+
+/* Spray density (0 .. amount) at world (x, y, z). */
+double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                              double z);
+
+/* The value noise of shaders/foam.glsl's foam_noise, in [0, 1]. */
+double tl_giant_spray_noise(double x, double y);
+
+#endif
