@@ -60,12 +60,18 @@ static double ocean_height(const void *ctx, double x, double z)
 typedef struct giant_ctx {
     const tl_giant *giant;
     int iterations;
+    double base; /* the ocean's mean level, where the lip's heights are measured from */
 } giant_ctx;
 
+/* The giant wave's part of the height: its height field's, or the top of
+ * its lip where the lip overhangs the point (the hull rides on it rather
+ * than sinking through it to the face below). */
 static double giant_height(const void *ctx, double x, double z)
 {
     const giant_ctx *g = ctx;
-    return tl_giant_height(g->giant, x, z, g->iterations);
+    double h = tl_giant_height(g->giant, x, z, g->iterations), lips[4];
+    int n = tl_giant_lip_heights(g->giant, x, z, g->base + h, g->base, lips, 4);
+    return n > 0 ? fmax(h, lips[n - 1] - g->base) : h;
 }
 
 /* The boat's position and heading at time t (the heading channel, when it
@@ -120,7 +126,7 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
                 then.origin[0] += giant.across[0] * across;
                 then.origin[1] += giant.across[1] * across;
             }
-            giant_ctx gc = {&then, s->quality.giant_iterations};
+            giant_ctx gc = {&then, s->quality.giant_iterations, -0.5 * s->ocean.depth};
             hull_pose g = sample_hull(b, px, pz, heading, giant_height, &gc);
             p.pitch += g.pitch;
             p.roll += g.roll;
@@ -139,10 +145,10 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     /* The giant wave's height, followed directly. */
     double centre = tl_waves_height(&waves, b->position[0], b->position[2], t, oc.octaves);
     if (giant.active) {
-        giant_ctx gc = {&giant, s->quality.giant_iterations};
+        giant_ctx gc = {&giant, s->quality.giant_iterations, -0.5 * s->ocean.depth};
         hull_pose g = sample_hull(b, b->position[0], b->position[2], b->heading, giant_height, &gc);
         b->position[1] += g.height;
-        centre += tl_giant_height(&giant, b->position[0], b->position[2], gc.iterations);
+        centre += giant_height(&gc, b->position[0], b->position[2]);
     }
     /* Clamp: a hull bridging a sharp crest would sink its middle under the
      * water by the crest's curvature; the waterline stays at most 5% of the
