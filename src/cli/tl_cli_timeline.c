@@ -45,14 +45,17 @@ static const char eval_usage[] =
     "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps); one\n"
     "                 outside the timeline is evaluated, with a warning\n"
     "  --frames A-B   every frame from A to B inclusive (frame time = frame / fps)\n"
-    "  --probe X,Z    also the water at world x, z (metres): every surface height\n"
-    "                 above the point (the height field first, then an overhanging\n"
-    "                 lip's faces), the unit normal (central differences, 1 mm) and\n"
-    "                 the giant wave's foam in [0, 1]; repeatable, at most 1024\n"
+    "  --probe X,Z    also the water at world x, z (metres): every height where a\n"
+    "                 vertical line there meets the surface (the height field first,\n"
+    "                 then an overhanging lip's faces), the height field's unit\n"
+    "                 normal (central differences, 1 mm) and the giant wave's foam\n"
+    "                 in [0, 1]; repeatable, at most 1024 points\n"
     "  --json         one JSON object: {\"file\", \"fps\", \"samples\": [{\"time\",\n"
     "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\",\n"
     "                 \"giant\", \"underwater\", \"water\", \"probes\" (with --probe):\n"
-    "                 [{\"x\", \"z\", \"heights\", \"normal\", \"foam\"}]}]}\n"
+    "                 [{\"x\", \"z\", \"heights\", \"normal\", \"foam\"}]}]}; \"giant\" holds\n"
+    "                 \"speed\" (the model's), \"speed_over_water\" (measured) and\n"
+    "                 \"to_boat\": [along, across] (null without a boat)\n"
     "  -h, --help     show this help\n";
 
 /* --probe: at most this many points, and this many surfaces reported at
