@@ -290,14 +290,18 @@ static void crest_of(const tl_giant *g, double crest[2])
 
 /* The crest's speed over the water, measured: its displacement along the
  * travel direction between the scene's time and TL_EVAL_SPEED_DT later
- * (or earlier, when the wave is gone then), over that time. Whatever moves
- * the crest (its speed, a keyed phase, a centre that follows the boat)
- * counts; a crest sliding along its own line does not. */
+ * (or earlier, when the wave is gone then or a cut lies between), over
+ * that time. Whatever moves the crest (its speed, a keyed phase, a centre
+ * that follows the boat) counts; a crest sliding along its own line does
+ * not. */
 static bool measure_speed(const tl_timeline *tl, const tl_scene *s, const tl_giant *g,
                           const double crest[2], double *speed)
 {
     for (int sign = 1; sign >= -1; sign -= 2) {
         double dt = sign * TL_EVAL_SPEED_DT;
+        if (tl_timeline_has_cut_between(tl, fmin(s->time, s->time + dt),
+                                        fmax(s->time, s->time + dt)))
+            continue;
         tl_scene then;
         tl_timeline_eval(tl, s->time + dt, &then);
         tl_giant g2;
