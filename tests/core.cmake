@@ -4,6 +4,10 @@ tl_add_test(test_still_files SOURCES test_still_files.c LIBS tideline_gl LABELS 
 tl_add_test(test_render_progress SOURCES test_render_progress.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_cli SOURCES test_cli.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/shaders LABELS gl)
+# eval's giant-wave report (the crest's speed over the water, its meeting
+# with the boat) and --probe, through the binary (eval renders nothing).
+tl_add_test(test_eval SOURCES test_eval.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/timelines LABELS unit)
 # The presets' image quality through `still` (mostly `reference` frames).
 tl_add_test(test_presets_quality SOURCES test_presets_quality.c LIBS tideline_core
   ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/timelines LABELS gl slow)

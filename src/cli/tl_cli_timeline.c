@@ -1,6 +1,8 @@
 /* tideline check / tideline eval: validate a timeline and print what it
  * evaluates to, for authors and for tools (--json). */
+#include <errno.h>
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,22 +31,49 @@ static const char check_usage[] =
     "  -h, --help   show this help\n";
 
 static const char eval_usage[] =
-    "Usage: tideline eval FILE.tl (--at T | --frames A-B) [--json]\n"
+    "Usage: tideline eval FILE.tl (--at T | --frames A-B) [--probe X,Z]... [--json]\n"
     "\n"
     "Print every channel's evaluated value. Angles are printed in degrees,\n"
     "lengths in metres, as the language writes them. Then the giant wave's\n"
     "state (crest position, distance to its centre, speed, steepness and curl\n"
-    "after the height-field clamp), the water height under the camera, the\n"
-    "crest and the boat, and whether the camera sees from under the water.\n"
+    "after the height-field clamp), the crest's speed over the water (measured\n"
+    "from its position 1 ms later) and the boat's distance from it along and\n"
+    "across its travel, the water height under the camera, the crest and the\n"
+    "boat, and whether the camera sees from under the water.\n"
     "\n"
     "Options:\n"
     "  --at T         a time: 2.5, 2.5s, 1500ms or 60f (frames at the fps); one\n"
     "                 outside the timeline is evaluated, with a warning\n"
     "  --frames A-B   every frame from A to B inclusive (frame time = frame / fps)\n"
+    "  --probe X,Z    also the water at world x, z (metres): every height where a\n"
+    "                 vertical line there meets the surface (the height field first,\n"
+    "                 then an overhanging lip's faces), the height field's unit\n"
+    "                 normal (central differences, 1 mm) and the giant wave's foam\n"
+    "                 in [0, 1]; repeatable, at most 1024 points\n"
     "  --json         one JSON object: {\"file\", \"fps\", \"samples\": [{\"time\",\n"
     "                 \"frame\", \"channels\": {name: value or [x, y, z]}, \"boat\",\n"
-    "                 \"giant\", \"underwater\", \"water\"}]}\n"
+    "                 \"giant\", \"underwater\", \"water\", \"probes\" (with --probe):\n"
+    "                 [{\"x\", \"z\", \"heights\", \"normal\", \"foam\"}]}]}; \"giant\" holds\n"
+    "                 \"speed\" (the model's), \"speed_over_water\" (measured) and\n"
+    "                 \"to_boat\": [along, across] (null without a boat)\n"
     "  -h, --help     show this help\n";
+
+/* --probe: at most this many points, and this many surfaces reported at
+ * each (the height field and the lip's faces). */
+#define TL_EVAL_MAX_PROBES   1024
+#define TL_EVAL_MAX_SURFACES 8
+/* The crest's speed over the water is measured from its position this many
+ * seconds after the sample's time (before it, when the wave is gone then). */
+#define TL_EVAL_SPEED_DT 1e-3
+/* A probe's normal: central differences of the surface height, this many
+ * metres either side. */
+#define TL_EVAL_NORMAL_STEP 1e-3
+
+/* The points --probe asked for, world x and z. */
+typedef struct eval_probes {
+    int count;
+    double xz[TL_EVAL_MAX_PROBES][2];
+} eval_probes;
 
 /* The warnings of the last timeline loaded (for check --strict). */
 static int last_warnings;
@@ -232,20 +261,64 @@ static const char *unit_suffix(tl_unit unit)
 }
 
 /* What the surface does at this moment: the giant wave's state after its
- * clamps, and the water height (ocean + giant wave, the march's octaves)
- * under the camera and under the crest. */
+ * clamps, how its crest moves over the water and where the boat is from
+ * it, and the water height (ocean + giant wave, the march's octaves) under
+ * the camera and under the crest. */
 typedef struct surface_report {
     tl_giant giant;
-    double crest[2];     /* world x, z of the crest's top on the centre line */
-    double crest_height; /* water height there */
-    double to_center;    /* crest's signed distance past the centre, metres */
-    double under_camera; /* water height under the camera */
-    double under_boat;   /* water height under the boat's centre (when there is one) */
-    tl_water_side side;  /* where the camera sees from (underwater.mode) */
+    double crest[2];         /* world x, z of the crest's top on the centre line */
+    double crest_height;     /* water height there */
+    double to_center;        /* crest's signed distance past the centre, metres */
+    bool speed_known;        /* the wave is there TL_EVAL_SPEED_DT before or after */
+    double speed_over_water; /* the crest's speed along its travel, measured, m/s */
+    double to_boat[2];       /* boat - crest along and across the travel, metres */
+    double under_camera;     /* water height under the camera */
+    double under_boat;       /* water height under the boat's centre (when there is one) */
+    tl_water_side side;      /* where the camera sees from (underwater.mode) */
 } surface_report;
 
-static void surface_report_of(const tl_scene *s, surface_report *r)
+/* The crest's top on the centre line (w = 0), world x z: where the surface
+ * point that started at s0 = 0 sits, bow(0) + lambda(0)·D(0) along. */
+static void crest_of(const tl_giant *g, double crest[2])
 {
+    double y, dy, d, dd, dl, db;
+    tl_giant_profile(g, 0.0, &y, &dy, &d, &dd);
+    double top = tl_giant_bow(g, 0.0, &db) + tl_giant_lambda(g, 0.0, &dl) * d;
+    crest[0] = g->origin[0] + g->dir[0] * top;
+    crest[1] = g->origin[1] + g->dir[1] * top;
+}
+
+/* The crest's speed over the water, measured: its displacement along the
+ * travel direction between the scene's time and TL_EVAL_SPEED_DT later
+ * (or earlier, when the wave is gone then or a cut lies between), over
+ * that time. Whatever moves the crest (its speed, a keyed phase, a centre
+ * that follows the boat) counts; a crest sliding along its own line does
+ * not. */
+static bool measure_speed(const tl_timeline *tl, const tl_scene *s, const tl_giant *g,
+                          const double crest[2], double *speed)
+{
+    for (int sign = 1; sign >= -1; sign -= 2) {
+        double dt = sign * TL_EVAL_SPEED_DT;
+        if (tl_timeline_has_cut_between(tl, fmin(s->time, s->time + dt),
+                                        fmax(s->time, s->time + dt)))
+            continue;
+        tl_scene then;
+        tl_timeline_eval(tl, s->time + dt, &then);
+        tl_giant g2;
+        tl_giant_prepare(&g2, &then.giant, then.time);
+        if (!g2.active)
+            continue;
+        double c2[2];
+        crest_of(&g2, c2);
+        *speed = (g->dir[0] * (c2[0] - crest[0]) + g->dir[1] * (c2[1] - crest[1])) / dt;
+        return true;
+    }
+    return false;
+}
+
+static void surface_report_of(const tl_timeline *tl, const tl_scene *s, surface_report *r)
+{
+    memset(r, 0, sizeof *r);
     tl_waves waves;
     tl_waves_init(&waves, &s->ocean);
     tl_giant *g = &r->giant;
@@ -258,15 +331,91 @@ static void surface_report_of(const tl_scene *s, surface_report *r)
     r->side = tl_prepare_water_side(s, &waves, g, NULL);
     if (!g->active)
         return;
-    double y, dy, d, dd;
-    tl_giant_profile(g, 0.0, &y, &dy, &d, &dd);
-    double dmask, top = g->fade * tl_giant_width_mask(g, 0.0, &dmask) * d;
-    r->crest[0] = g->origin[0] + g->dir[0] * top;
-    r->crest[1] = g->origin[1] + g->dir[1] * top;
+    crest_of(g, r->crest);
     r->crest_height =
         tl_waves_surface_height(&waves, g, r->crest[0], r->crest[1], s->time, oct, it);
     r->to_center = g->dir[0] * (g->origin[0] - s->giant.center[0]) +
                    g->dir[1] * (g->origin[1] - s->giant.center[1]);
+    r->speed_known = measure_speed(tl, s, g, r->crest, &r->speed_over_water);
+    double bx = s->boat.position[0] - r->crest[0], bz = s->boat.position[2] - r->crest[1];
+    r->to_boat[0] = g->dir[0] * bx + g->dir[1] * bz;
+    r->to_boat[1] = g->across[0] * bx + g->across[1] * bz;
+}
+
+/* The water at one probe: every surface height a vertical line there
+ * meets (the height field first), the height field's unit normal and the
+ * giant wave's foam coverage. */
+typedef struct probe_report {
+    int count;
+    double heights[TL_EVAL_MAX_SURFACES];
+    double normal[3];
+    double foam;
+} probe_report;
+
+static void probe_of(const tl_scene *s, const tl_waves *waves, const tl_giant *g, double x,
+                     double z, probe_report *p)
+{
+    const int oct = s->quality.march_octaves, it = s->quality.giant_iterations;
+    const double t = s->time, e = TL_EVAL_NORMAL_STEP;
+    p->count = tl_waves_surfaces(waves, g, x, z, t, oct, it, p->heights, TL_EVAL_MAX_SURFACES);
+    double gx = (tl_waves_surface_height(waves, g, x + e, z, t, oct, it) -
+                 tl_waves_surface_height(waves, g, x - e, z, t, oct, it)) /
+                (2.0 * e);
+    double gz = (tl_waves_surface_height(waves, g, x, z + e, t, oct, it) -
+                 tl_waves_surface_height(waves, g, x, z - e, t, oct, it)) /
+                (2.0 * e);
+    double n = sqrt(gx * gx + 1.0 + gz * gz);
+    p->normal[0] = -gx / n;
+    p->normal[1] = 1.0 / n;
+    p->normal[2] = -gz / n;
+    tl_giant_sample smp;
+    tl_giant_sample_at(g, x, z, it, &smp);
+    p->foam = tl_giant_foam_coverage(g, &smp, s->water.foam, s->giant.foam_compression,
+                                     s->giant.foam_trail);
+}
+
+static void print_probes_text(const tl_scene *s, const eval_probes *probes)
+{
+    if (!probes->count)
+        return;
+    tl_waves waves;
+    tl_waves_init(&waves, &s->ocean);
+    tl_giant g;
+    tl_giant_prepare(&g, &s->giant, s->time);
+    for (int i = 0; i < probes->count; i++) {
+        probe_report p;
+        probe_of(s, &waves, &g, probes->xz[i][0], probes->xz[i][1], &p);
+        char label[64];
+        snprintf(label, sizeof label, "probe %.6g %.6g", probes->xz[i][0], probes->xz[i][1]);
+        printf("  %-26s water %.6g m", label, p.heights[0]);
+        for (int k = 1; k < p.count; k++)
+            printf("%s%.6g m%s", k == 1 ? " (and " : ", ", p.heights[k],
+                   k + 1 == p.count ? " above: the lip)" : "");
+        printf(", normal %.6g %.6g %.6g, foam %.6g\n", p.normal[0], p.normal[1], p.normal[2],
+               p.foam);
+    }
+}
+
+static void print_probes_json(const tl_scene *s, const eval_probes *probes)
+{
+    if (!probes->count)
+        return;
+    tl_waves waves;
+    tl_waves_init(&waves, &s->ocean);
+    tl_giant g;
+    tl_giant_prepare(&g, &s->giant, s->time);
+    printf(", \"probes\": [");
+    for (int i = 0; i < probes->count; i++) {
+        probe_report p;
+        probe_of(s, &waves, &g, probes->xz[i][0], probes->xz[i][1], &p);
+        printf("%s{\"x\": %.17g, \"z\": %.17g, \"heights\": [", i ? ", " : "", probes->xz[i][0],
+               probes->xz[i][1]);
+        for (int k = 0; k < p.count; k++)
+            printf("%s%.17g", k ? ", " : "", p.heights[k]);
+        printf("], \"normal\": [%.17g, %.17g, %.17g], \"foam\": %.17g}", p.normal[0], p.normal[1],
+               p.normal[2], p.foam);
+    }
+    printf("]");
 }
 
 /* "no", "yes", or "at the surface" (each pixel decides): the frame's side. */
@@ -275,10 +424,10 @@ static const char *side_word(tl_water_side side)
     return side == TL_WATER_BELOW ? "yes" : side == TL_WATER_ABOVE ? "no" : "at the surface";
 }
 
-static void print_report_text(const tl_scene *s)
+static void print_report_text(const tl_timeline *tl, const tl_scene *s)
 {
     surface_report r;
-    surface_report_of(s, &r);
+    surface_report_of(tl, s, &r);
     const tl_giant *g = &r.giant;
     if (g->active) {
         printf("  %-26s crest at %.6g %.6g m, %.6g m %s the centre", "giant wave", r.crest[0],
@@ -286,6 +435,13 @@ static void print_report_text(const tl_scene *s)
         if (g->speed > 0.0 && r.to_center < 0.0)
             printf(" (arrives in %.6g s)", -r.to_center / g->speed);
         printf(", %.6g m/s\n", g->speed);
+        if (r.speed_known)
+            printf("  %-26s %.6g m/s along its travel (measured over %g ms)\n",
+                   "crest over the water", r.speed_over_water, 1e3 * TL_EVAL_SPEED_DT);
+        if (s->boat.enabled)
+            printf("  %-26s %.6g m %s it, %.6g m to its %s\n", "boat from the crest",
+                   fabs(r.to_boat[0]), r.to_boat[0] < 0.0 ? "behind" : "ahead of",
+                   fabs(r.to_boat[1]), r.to_boat[1] < 0.0 ? "left" : "right");
         printf("  %-26s steepness %.6g, curve strength %.6g (after the height-field clamp), "
                "min jacobian %.4g, slope <= %.4g\n",
                "giant wave shape", g->steepness, g->curl, g->min_jacobian, g->max_slope);
@@ -302,19 +458,28 @@ static void print_report_text(const tl_scene *s)
                r.under_boat, s->boat.position[1] - r.under_boat);
 }
 
-static void print_report_json(const tl_scene *s)
+static void print_report_json(const tl_timeline *tl, const tl_scene *s)
 {
     surface_report r;
-    surface_report_of(s, &r);
+    surface_report_of(tl, s, &r);
     const tl_giant *g = &r.giant;
     printf(", \"giant\": ");
-    if (g->active)
+    if (g->active) {
         printf("{\"crest\": [%.17g, %.17g], \"past_center\": %.17g, \"speed\": %.17g, "
                "\"steepness\": %.17g, \"curve_strength\": %.17g, \"min_jacobian\": %.17g, "
-               "\"max_slope\": %.17g}",
+               "\"max_slope\": %.17g, \"speed_over_water\": ",
                r.crest[0], r.crest[1], r.to_center, g->speed, g->steepness, g->curl,
                g->min_jacobian, g->max_slope);
-    else
+        if (r.speed_known)
+            printf("%.17g", r.speed_over_water);
+        else
+            printf("null");
+        printf(", \"to_boat\": ");
+        if (s->boat.enabled)
+            printf("[%.17g, %.17g]}", r.to_boat[0], r.to_boat[1]);
+        else
+            printf("null}");
+    } else
         printf("null");
     printf(", \"underwater\": \"%s\"", side_word(r.side));
     printf(", \"water\": {\"under_camera\": %.17g, \"under_crest\": ", r.under_camera);
@@ -329,7 +494,8 @@ static void print_report_json(const tl_scene *s)
         printf("null}");
 }
 
-static void print_sample_text(const tl_timeline *tl, double t, long frame)
+static void print_sample_text(const tl_timeline *tl, double t, long frame,
+                              const eval_probes *probes)
 {
     tl_scene s;
     tl_timeline_eval(tl, t, &s);
@@ -357,10 +523,12 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame)
         printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", "boat pose",
                s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
     }
-    print_report_text(&s);
+    print_report_text(tl, &s);
+    print_probes_text(&s, probes);
 }
 
-static void print_sample_json(const tl_timeline *tl, double t, long frame, int first)
+static void print_sample_json(const tl_timeline *tl, double t, long frame, int first,
+                              const eval_probes *probes)
 {
     tl_scene s;
     tl_timeline_eval(tl, t, &s);
@@ -396,7 +564,8 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
                s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
     else
         printf("null");
-    print_report_json(&s);
+    print_report_json(tl, &s);
+    print_probes_json(&s, probes);
     printf("}");
 }
 
@@ -418,6 +587,24 @@ static int parse_frame_range(const char *text, long *a, long *b, tl_error *err)
     return TL_OK;
 }
 
+/* --probe X,Z: two finite numbers, world metres; returns 0 on success. */
+static int parse_probe(const char *text, double out[2], tl_error *err)
+{
+    const char *p = text;
+    for (int i = 0; i < 2; i++) {
+        char *end = NULL;
+        errno = 0;
+        double v = strtod(p, &end);
+        if (end == p || *end != (i == 0 ? ',' : '\0'))
+            return tl_error_set(err, TL_ERR_USAGE, "--probe: expected X,Z, got '%s'", text);
+        if (!isfinite(v) || errno == ERANGE)
+            return tl_error_set(err, TL_ERR_USAGE, "--probe: '%s' holds a non-finite number", text);
+        out[i] = v;
+        p = end + 1;
+    }
+    return TL_OK;
+}
+
 int tl_cli_eval(int argc, char **argv)
 {
     tl_args a;
@@ -427,6 +614,8 @@ int tl_cli_eval(int argc, char **argv)
     tl_error_clear(&err);
     const char *file = NULL, *at = NULL, *frames = NULL;
     int json = 0, rc = 0;
+    static eval_probes probes; /* 16 KiB: off the stack */
+    probes.count = 0;
     while (!rc && !tl_args_done(&a)) {
         const char *pos;
         if (tl_args_match(&a, "--help", "-h", false, &err)) {
@@ -440,6 +629,14 @@ int tl_cli_eval(int argc, char **argv)
         } else if (tl_args_match(&a, "--frames", NULL, true, &err)) {
             frames = a.value;
             rc = frames ? 0 : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--probe", NULL, true, &err)) {
+            if (!a.value)
+                rc = TL_ERR_USAGE;
+            else if (probes.count == TL_EVAL_MAX_PROBES)
+                rc = tl_error_set(&err, TL_ERR_USAGE, "--probe: at most %d points at once",
+                                  TL_EVAL_MAX_PROBES);
+            else
+                rc = parse_probe(a.value, probes.xz[probes.count++], &err);
         } else if (!file && tl_args_positional(&a, &pos)) {
             file = pos;
         } else {
@@ -480,9 +677,9 @@ int tl_cli_eval(int argc, char **argv)
     for (long f = at ? -1 : first; at ? f == -1 : f <= last; f++) {
         double time = at ? t : tl_timeline_frame_time(&tl, f);
         if (json)
-            print_sample_json(&tl, time, f, at ? 1 : f == first);
+            print_sample_json(&tl, time, f, at ? 1 : f == first, &probes);
         else
-            print_sample_text(&tl, time, f);
+            print_sample_text(&tl, time, f, &probes);
         if (at)
             break;
     }
