@@ -23,15 +23,15 @@ float giant_spray_density(vec3 p)
                        (0.4 + 0.6 * breaking);
         float reach = u_giant_spray.y;
         float back = top_s - sw.x, up = p.y - top_y;
-        float rise = 0.12 * height + 0.1 * reach;
-        float lift = 0.4 * rise * min(max(back, 0.0) / reach, 1.0);
+        float rise = 0.05 * height + 0.05 * reach;
+        float lift = 1.5 * rise * min(max(back, 0.0) / reach, 1.0);
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
                       exp(-(up - lift) * (up - lift) / (rise * rise + 1.0e-6));
         float drifted = back + u_giant_spray.z;
         float wisps = smoothstep(0.35, 0.8,
-                                 0.65 * foam_noise(vec2(sw.y / 2.5, drifted / 1.5)) +
-                                     0.35 * foam_noise(vec2(sw.y / 1.1, drifted / 0.6)));
+                                 0.65 * foam_noise(vec2(sw.y / 2.5, drifted / 1.5 + up / 0.7)) +
+                                     0.35 * foam_noise(vec2(sw.y / 1.1, drifted / 0.6 - up / 0.4)));
         density += u_giant_spray.x * source * plume * wisps;
     }
     if (u_giant_spray_bow.w > 0.0) {

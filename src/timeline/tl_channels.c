@@ -173,7 +173,8 @@ static const tl_channel channels[] = {
     REAL("giant.scatter_back", 1, TL_UNIT_NONE, 0.0, 0.99, giant.scatter_back,
          "backward lobe (Henyey-Greenstein g, mirrored)"),
     REAL("giant.scatter_color", 3, TL_UNIT_NONE, 0.0, 1e3, giant.scatter_color,
-         "colour of light through the crest: the water's transmittance a quarter of the way down"),
+         "colour of what the water scatters in the crest (its suspended matter), over the water's "
+         "own extinction"),
 
     {"boat.visible", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.visible),
      NULL, "the boat is drawn (off: the water plate, for compositing; it still floats)"},

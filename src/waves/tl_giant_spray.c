@@ -74,7 +74,7 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         sp->box[0] = s_lo;
         sp->box[1] = s_hi;
         sp->box[2] = sp->base;
-        sp->box[3] = sp->base + full * 1.6 + sp->reach * 0.3;
+        sp->box[3] = sp->base + full * 1.25 + sp->reach * 0.25; /* top + lift + 3 rises */
         sp->active = true;
     }
     /* The bow's burst: where the face rises ahead of the bow. */
@@ -110,14 +110,16 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double source = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / g->amplitude) *
                         (0.4 + 0.6 * breaking);
         double back = top_s - s, up = y - top_y;
-        double rise = 0.12 * height + 0.1 * sp->reach;
-        double lift = 0.4 * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
+        double rise = 0.05 * height + 0.05 * sp->reach;
+        double lift = 1.5 * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
         double plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                        exp(-fmax(back, 0.0) / sp->reach) *
                        exp(-(up - lift) * (up - lift) / (rise * rise + 1e-6));
-        double wisps = smoothstep(0.35, 0.8,
-                                  0.65 * tl_giant_spray_noise(w / 2.5, (back + sp->drift) / 1.5) +
-                                      0.35 * tl_giant_spray_noise(w / 1.1, (back + sp->drift) / 0.6));
+        double drifted = back + sp->drift;
+        double wisps =
+            smoothstep(0.35, 0.8,
+                       0.65 * tl_giant_spray_noise(w / 2.5, drifted / 1.5 + up / 0.7) +
+                           0.35 * tl_giant_spray_noise(w / 1.1, drifted / 0.6 - up / 0.4));
         density += sp->amount * source * plume * wisps;
     }
     if (sp->bow_amount > 0.0) {

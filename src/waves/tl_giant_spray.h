@@ -9,7 +9,7 @@
 
 /* Extinction per metre of spray at density 1: thin enough that the
  * crest shows through the plume's middle. */
-#define TL_SPRAY_SIGMA 0.12
+#define TL_SPRAY_SIGMA 0.05
 /* Seconds the wind carries a droplet back from the crest before it falls:
  * the plume's reach is the wind times this (plus a tenth of the crest). */
 #define TL_SPRAY_FLIGHT 1.2
