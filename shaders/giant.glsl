@@ -430,7 +430,10 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
 {
     float thickness, aerated;
     float foam = giant_foam(g, ocean_value, footprint, thickness, aerated);
-    vec3 glow = giant_scatter(g, hit, ray, n);
+    vec3 glow = vec3(0.0);
+#ifdef TL_FEATURE_GIANT_GLOW
+    glow = giant_scatter(g, hit, ray, n);
+#endif
     color += glow * (1.0 - foam);
     // The bubbles behind the crest, tinted by the water above them, under
     // the trail's web (which on the dark water alone read as cracks in mud).

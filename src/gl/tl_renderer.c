@@ -688,7 +688,7 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     int rect[4] = {0, 0, 0, 0};
     unsigned lean =
         features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP |
-                              TL_FEATURE_GIANT_SPRAY);
+                              TL_FEATURE_GIANT_SPRAY | TL_FEATURE_GIANT_GLOW);
     if (features & TL_FEATURE_GIANT_WAVE)
         memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;

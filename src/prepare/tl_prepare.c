@@ -24,13 +24,13 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
     "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
-    "TL_FEATURE_GIANT_SPRAY"};
+    "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {
     "sun disc",        "giant wave",       "boat",          "wake",
     "underwater",      "waterline",        "fog",           "physical sky",
     "level of detail", "analytic normals", "supersampling", "filtered shading",
     "root refinement", "hit polish",       "breaking crest",   "lip",
-    "spray"};
+    "spray",           "crest glow"};
 
 const char *tl_feature_define(int index)
 {
@@ -146,6 +146,10 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
     to_float3(g.vary_k, u->giant_vary_k);
     to_float3(g.vary_phase, u->giant_vary_phase);
     u->giant_fade = (float)g.fade;
+    double sun[3];
+    tl_scene_sun_direction(&s->sun, sun);
+    if (s->giant.scatter > 0.0 && sun[1] > -0.05) /* giant_scatter's daylight */
+        u->features |= TL_FEATURE_GIANT_GLOW;
     double sigma[3];
     tl_optics_water_extinction(&s->water, sigma);
     to_float3(sigma, u->giant_sigma);
