@@ -360,7 +360,7 @@ float giant_hg(float mu, float g)
 // bends it less than the crest curves. The surface is the wave's with the
 // ocean's height at the hit held: the small waves change the path by
 // centimetres, the crest by metres.
-#define TL_GIANT_GLOW_STEPS 7
+#define TL_GIANT_GLOW_STEPS 8
 #define TL_GIANT_GLOW_STEP 0.2
 // Returns (metres crossed, the wave's height where the light came in):
 // light that came in through the open sea rather than the crest is the
@@ -407,8 +407,13 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n)
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
     vec2 path = giant_thickness(hit, g);
-    // Only light that came in high up the crest, not through the open sea.
-    float through = smoothstep(0.0, 0.3, path.y / max(u_giant_shape.y, 1.0e-3));
+    // Only where the surface turns away from the sun: a slope that faces
+    // it is lit directly, and what it sends back is the ocean's own
+    // scattering (the back of the wave glowed as if lit through). The
+    // rest is the path's length: low on the face the light crossed the
+    // whole wave and little is left. (Weighting by where the light came
+    // in, high up the crest or not, cut the glow off at one height.)
+    float through = smoothstep(0.2, -0.1, dot(n, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
     // Times a noise of the crest's thinness (cells 7 m along the crest by
     // 16 m down the face, 0.6 to 1.4): the lip is not equally thin all

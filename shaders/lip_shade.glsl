@@ -33,14 +33,13 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     vec3 reflection = mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit),
                           smoothstep(-0.1, 0.05, r.y));
     vec3 color = fresnel * reflection + (1.0 - fresnel) * (body + lit * phase);
-    // Foam: from the tip back as the lip throws, everywhere once it lands;
-    // a lace keeps it from being a painted band.
+    // Foam: at the tip, more of it as the lip throws; a lace keeps it from
+    // being a painted band.
     vec2 q = vec2(sw.x, hit.y) - lip.center;
     float along = clamp((atan(q.x, q.y) - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
-    float white = max(smoothstep(0.7, 1.0, along) * (0.5 + 0.5 * lip.progress),
-                      smoothstep(0.85, 1.0, lip.progress) * 0.7);
+    float white = smoothstep(0.75, 1.0, along) * (0.35 + 0.55 * lip.progress);
     vec2 at = vec2(sw.y, sw.x + hit.y);
     float lace = foam_lace(at * 1.5);
-    float foam = smoothstep(1.0 - white, 1.15 - white, lace + 0.25 * white);
+    float foam = smoothstep(1.1 - white, 1.25 - white, lace + 0.2 * white);
     return foam_shade(color, n, foam, lace, max(sunlit, 0.6));
 }

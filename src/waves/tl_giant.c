@@ -274,8 +274,8 @@ void tl_giant_prepare(tl_giant *g, const tl_giant_wave *p, double t)
     g->origin[1] = p->center[1] + g->dir[1] * crest;
     g->amplitude = p->height;
     g->fade = p->fade;
-    g->half_length = 0.5 * L;
-    g->falloff_along = clampd(p->falloff, TL_GIANT_MIN_FALLOFF_WAVELENGTHS * L,
+    g->half_length = TL_GIANT_CREST_HALF_LENGTH * L;
+    g->falloff_along = clampd(p->falloff, TL_GIANT_MIN_FALLOFF_ALONG * L,
                               TL_GIANT_MAX_FALLOFF_WAVELENGTHS * L);
     g->half_width = 0.5 * p->width;
     g->falloff_across = fmin(fmax(p->falloff, TL_GIANT_MIN_FALLOFF_WAVELENGTHS * L), g->half_width);

@@ -29,6 +29,17 @@
 /* Smallest Jacobian of the horizontal map the clamps allow: the surface is
  * compressed at most ten times, so slopes stay finite. */
 #define TL_GIANT_MIN_JACOBIAN 0.1
+/* The single-crest mask is 1 within this many wavelengths of the crest
+ * (the crest and its faces), and fades over the falloff beyond: the
+ * troughs on either side are a third of the crest's depth or so and rise
+ * gently back to the sea. Holding the mask to half a wavelength left a
+ * trough as deep as the crest is high, whose far wall, seen from a camera
+ * beyond it, grazed the view and mirrored the sky as a pale band. */
+#define TL_GIANT_CREST_HALF_LENGTH 0.25
+/* Along the travel the mask fades over at least three quarters of a
+ * wavelength: the troughs rise back to the sea as gently as a swell, not
+ * up a ramp whose far side grazes the view. */
+#define TL_GIANT_MIN_FALLOFF_ALONG 0.75
 /* The crest mask fades over at least a quarter and at most four
  * wavelengths; the width mask over at least a quarter wavelength. */
 #define TL_GIANT_MIN_FALLOFF_WAVELENGTHS 0.25
@@ -90,7 +101,7 @@ typedef struct tl_giant {
     double fade;             /* giant.fade */
     double steepness;        /* Gerstner q·k·A after the height-field clamp */
     double curl;             /* curve strength after the clamp */
-    double half_length;      /* wavelength / 2: the crest mask is 1 inside |s0| <= this */
+    double half_length;      /* the crest mask is 1 inside |s0| <= this (TL_GIANT_CREST_HALF_LENGTH) */
     double falloff_along;    /* the crest mask reaches 0 at half_length + this */
     double half_width;       /* width / 2: the width mask is 0 beyond |w| >= this */
     double falloff_across;   /* the width mask is 1 inside |w| <= half_width - this */
