@@ -22,6 +22,8 @@
 //   mode 10: the giant wave's lip at the w of camera-relative (x, z):
 //           its centre (s, y), radius and half thickness (tl_giant_lip_at)
 //   mode 11: the same lip's angles from and to, throw and presence
+//   mode 12: the spray's density at camera-relative (x, z) and height y,
+//           the input's third float (tl_giant_spray_density)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -32,6 +34,9 @@
 #endif
 #ifdef TL_FEATURE_GIANT_LIP
 #include "lip.glsl"
+#endif
+#ifdef TL_FEATURE_GIANT_SPRAY
+#include "spray.glsl"
 #endif
 #include "surface.glsl"
 #ifdef TL_FEATURE_UNDERWATER
@@ -50,7 +55,8 @@ layout(location = 0) out vec4 out_height;
 
 void main()
 {
-    vec2 p = texelFetch(u_points, ivec2(gl_FragCoord.xy), 0).xy;
+    vec4 input4 = texelFetch(u_points, ivec2(gl_FragCoord.xy), 0);
+    vec2 p = input4.xy;
     vec4 result = vec4(0.0);
     if (u_probe_mode == 0)
         result.x = surface_height(p, u_probe_octaves, 0.0);
@@ -94,6 +100,10 @@ void main()
         result = u_probe_mode == 10 ? vec4(lip.center, lip.radius, lip.thickness)
                                     : vec4(lip.from, lip.to, lip.progress, lip.present ? 1.0 : 0.0);
     }
+#endif
+#ifdef TL_FEATURE_GIANT_SPRAY
+    else if (u_probe_mode == 12)
+        result.x = giant_spray_density(vec3(p.x, input4.z, p.y));
 #endif
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 9) {

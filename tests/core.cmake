@@ -39,6 +39,7 @@ tl_add_test(test_uniform_list SOURCES test_uniform_list.c LIBS tideline_core
   ARGS ${PROJECT_SOURCE_DIR}/shaders LABELS unit)
 tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl LABELS gl)
+tl_add_test(test_giant_lip SOURCES test_giant_lip.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes LABELS unit)
 tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
   ARGS ${PROJECT_SOURCE_DIR}/tests/meshes ${PROJECT_SOURCE_DIR}/timelines LABELS gl)

@@ -152,6 +152,10 @@ int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err);
  * four floats per input. The GPU side of the tests. */
 int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
                       int count, int octaves, float *out4, tl_error *err);
+/* The same with four floats per input (the modes that read more than two:
+ * the spray's density at camera-relative (x, z) and height y, as x z y). */
+int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *in4,
+                       int count, int octaves, float *out4, tl_error *err);
 
 /* Evaluates the shader's wave height at `count` camera-relative points
  * (x, z pairs) with `octaves` octaves: the GPU side of the accuracy tests. */

@@ -13,12 +13,28 @@
 int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
                       int count, int octaves, float *out4, tl_error *err)
 {
-    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 11)
+    float *points = calloc((size_t)(count > 0 ? count : 1) * 4, sizeof(float));
+    if (!points)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (int i = 0; i < count; i++) {
+        points[i * 4 + 0] = xy[i * 2 + 0];
+        points[i * 4 + 1] = xy[i * 2 + 1];
+    }
+    int rc = tl_renderer_probe4(r, u, mode, points, count, octaves, out4, err);
+    free(points);
+    return rc;
+}
+
+int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *in4,
+                       int count, int octaves, float *out4, tl_error *err)
+{
+    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 12)
         return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad mode, point or octave count");
     /* The features that change what the probe computes. */
     unsigned features =
         u->features &
-        (TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP | TL_FEATURE_UNDERWATER | TL_FEATURE_WATERLINE | TL_FEATURE_FOG |
+        (TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP |
+         TL_FEATURE_GIANT_SPRAY | TL_FEATURE_UNDERWATER | TL_FEATURE_WATERLINE | TL_FEATURE_FOG |
          TL_FEATURE_SKY_PHYSICAL | TL_FEATURE_SUN_DISC | TL_FEATURE_WAKE);
     GLuint program = 0;
     for (int i = 0; i < r->probe_count; i++)
@@ -44,10 +60,7 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
         free(out);
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     }
-    for (int i = 0; i < count; i++) {
-        texels[i * 4 + 0] = xy[i * 2 + 0];
-        texels[i * 4 + 1] = xy[i * 2 + 1];
-    }
+    memcpy(texels, in4, (size_t)count * 4 * sizeof(float));
     GLuint points;
     glGenTextures(1, &points);
     glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);

@@ -1,0 +1,312 @@
+/* The giant wave's lip and spray: the CPU mirror's geometry (the heights a
+ * vertical line meets are the tube's boundary, the lip is anchored on the
+ * crest's top, it exists only while it is thrown), the spray's density and
+ * box, the features that compile them, and the GPU's lip and spray against
+ * the CPU near the origin and 1e4 m out at t = 1e5 s. */
+#include <math.h>
+#include <string.h>
+
+#include "tl_gl_test.h"
+#include "waves/tl_giant_spray.h"
+
+/* A breaking wave whose peak broke `age` seconds before t, centred on
+ * (cx, cz) with the crest on the centre line there. */
+static void breaking_scene(tl_scene *s, double t, double age, double cx, double cz)
+{
+    tl_scene_defaults(s);
+    s->time = t;
+    s->giant.enabled = true;
+    s->giant.height = 16.0;
+    s->giant.wavelength = 100.0;
+    s->giant.width = 160.0;
+    s->giant.steepness = 0.75;
+    s->giant.curve_strength = 0.6;
+    s->giant.angle = 20.0 * M_PI / 180.0;
+    s->giant.center[0] = cx;
+    s->giant.center[1] = cz;
+    s->giant.arrival = t;
+    s->giant.peak = -20.0;
+    s->giant.breaking = true;
+    s->giant.break_time = t - age;
+    s->giant.peel_speed = 7.0;
+    s->giant.spray = 1.5;
+}
+
+static double base_of(const tl_scene *s)
+{
+    return -0.5 * s->ocean.depth;
+}
+
+/* Every height tl_giant_lip_heights returns lies on the tube's boundary,
+ * and the points between consecutive heights alternate inside and outside
+ * it, starting inside just above the floor when the lowest is an exit. */
+static void test_lip_heights(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 2.0, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    CHECK(g.breaks);
+    int lines = 0, crossings = 0;
+    for (int iw = 0; iw < 9; iw++) {
+        double w = s.giant.peak + 2.0 * (iw - 4);
+        tl_giant_lip lip;
+        tl_giant_lip_at(&g, w, base_of(&s), &lip);
+        CHECK(lip.present);
+        for (int is = 0; is < 40; is++) {
+            double sv = lip.center[0] - 1.2 * lip.radius + 2.4 * lip.radius * is / 39.0;
+            double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
+            double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+            double h[8];
+            int n = tl_giant_lip_heights(&g, x, z, -1e9, base_of(&s), h, 8);
+            lines += n > 0;
+            crossings += n;
+            CHECK(n % 2 == 0); /* a closed tube: in and out */
+            for (int i = 0; i < n; i++) {
+                CHECK_NEAR(tl_giant_lip_distance(&lip, sv, h[i]), 0.0, 1e-6);
+                if (i > 0)
+                    CHECK(h[i] > h[i - 1]);
+                if (i + 1 < n) {
+                    double mid = 0.5 * (h[i] + h[i + 1]);
+                    double d = tl_giant_lip_distance(&lip, sv, mid);
+                    CHECK(i % 2 == 0 ? d < 0.0 : d > 0.0);
+                }
+            }
+            if (n > 0)
+                CHECK(tl_giant_lip_distance(&lip, sv, h[n - 1] + 0.01) > 0.0);
+        }
+    }
+    printf("lip: %d of 360 vertical lines cross it, %d crossings\n", lines, crossings);
+    CHECK(lines > 100);
+}
+
+/* The lip's arc passes through the crest's top at its anchor angle, is
+ * thrown further the older the break, and exists only from the break's
+ * start until it has thinned away. */
+static void test_lip_life(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 1.0, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    double w = s.giant.peak, dl, db;
+    tl_giant_lip lip;
+    tl_giant_lip_at(&g, w, base_of(&s), &lip);
+    CHECK(lip.present);
+    double lambda = tl_giant_lambda(&g, w, &dl);
+    double top_s = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k;
+    double top_y = base_of(&s) + lambda * g.amplitude;
+    double anchor = TL_GIANT_LIP_ANCHOR * M_PI / 180.0;
+    CHECK_NEAR(lip.center[0] + lip.radius * sin(anchor), top_s, 1e-9);
+    CHECK_NEAR(lip.center[1] + lip.radius * cos(anchor), top_y, 1e-9);
+    /* Further from the peak the break is younger: a shorter arc. */
+    tl_giant_lip side;
+    tl_giant_lip_at(&g, w + 5.0, base_of(&s), &side);
+    CHECK(side.present && side.to < lip.to);
+    CHECK(side.to - side.from >= 0.0);
+    /* At the peak: none before the break, one while it is thrown, none
+     * once it has thinned away there (it goes on along the crest, so the
+     * frame still compiles it), and none anywhere once the break has run
+     * the crest's whole length. */
+    double T = g.throw_time;
+    const double ages[4] = {-0.5, 1.0, T * (1.0 + TL_GIANT_LIP_FADE) + 0.1, 60.0};
+    for (int k = 0; k < 4; k++) {
+        breaking_scene(&s, 10.0, ages[k], 0.0, 0.0);
+        tl_giant_prepare(&g, &s.giant, s.time);
+        tl_giant_lip_at(&g, s.giant.peak, base_of(&s), &lip);
+        CHECK(lip.present == (k == 1));
+        tl_waves waves;
+        tl_waves_init(&waves, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &waves, &u);
+        CHECK(!!(u.features & TL_FEATURE_GIANT_LIP) == (k == 1 || k == 2));
+        CHECK(!!(u.features & TL_FEATURE_GIANT_BREAK) == (k != 0));
+    }
+    breaking_scene(&s, 10.0, 1.0, 0.0, 0.0);
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_giant_lip_at(&g, s.giant.peak + 7.0 * 1.0 + 1.0, base_of(&s), &lip);
+    CHECK(!lip.present); /* the break has run 7 m along the crest in 1 s */
+    s.giant.breaking = false;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_giant_lip_at(&g, s.giant.peak, base_of(&s), &lip);
+    CHECK(!lip.present);
+    double box[4], across[2];
+    CHECK(!tl_giant_lip_bounds(&g, base_of(&s), box, across));
+}
+
+/* The lip's box holds every point the tube covers. */
+static void test_lip_bounds(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 2.5, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    double box[4], across[2];
+    CHECK(tl_giant_lip_bounds(&g, base_of(&s), box, across));
+    int inside = 0;
+    for (int iw = 0; iw <= 200; iw++) {
+        double w = -g.half_width + 2.0 * g.half_width * iw / 200.0;
+        tl_giant_lip lip;
+        tl_giant_lip_at(&g, w, base_of(&s), &lip);
+        if (!lip.present)
+            continue;
+        for (int i = 0; i < 64; i++)
+            for (int j = 0; j < 64; j++) {
+                double sv = box[0] - 5.0 + (box[1] - box[0] + 10.0) * i / 63.0;
+                double y = box[2] - 5.0 + (box[3] - box[2] + 10.0) * j / 63.0;
+                if (tl_giant_lip_distance(&lip, sv, y) < 0.0) {
+                    inside++;
+                    CHECK(sv >= box[0] && sv <= box[1] && y >= box[2] && y <= box[3]);
+                    CHECK(w >= across[0] && w <= across[1]);
+                }
+            }
+    }
+    CHECK(inside > 0);
+}
+
+/* The spray: none at giant.spray 0; spindrift above and behind the crest's
+ * top, none far ahead of it or far above it; every point with spray inside
+ * its box; a burst at a bow that meets a rising face. */
+static void test_spray_density(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 1.0, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    const double heading[2] = {g.dir[0], g.dir[1]};
+    tl_giant_spray sp;
+    tl_giant_spray_prepare(&sp, &g, 0.0, 8.0, s.time, s.ocean.depth, NULL, 0.0, heading);
+    CHECK(!sp.active);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL, 0.0, heading);
+    CHECK(sp.active && sp.bow_amount == 0.0);
+    double dl, db, most = 0.0, ahead = 0.0;
+    int outside = 0;
+    for (int iw = 0; iw < 20; iw++) {
+        double w = -60.0 + 6.0 * iw, lambda = tl_giant_lambda(&g, w, &dl);
+        double top_s = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k;
+        double top_y = base_of(&s) + lambda * g.amplitude;
+        for (int i = 0; i < 60; i++)
+            for (int j = 0; j < 30; j++) {
+                double sv = top_s - 40.0 + 60.0 * i / 59.0, y = top_y - 5.0 + 15.0 * j / 29.0;
+                double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
+                double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+                double d = tl_giant_spray_density(&sp, &g, x, y, z);
+                CHECK(d >= 0.0 && d <= sp.amount);
+                if (sv > top_s + 2.0)
+                    ahead = fmax(ahead, d);
+                else
+                    most = fmax(most, d);
+                if (d > 0.0 && (sv < sp.box[0] || sv > sp.box[1] || y < sp.box[2] || y > sp.box[3]))
+                    outside++;
+            }
+    }
+    printf("spray: densest behind the crest %.3f, ahead of it %.3g\n", most, ahead);
+    CHECK(most > 0.3);
+    CHECK(ahead < 1e-3 * most);
+    CHECK(outside == 0);
+    /* A bow on the rising face ahead of the crest, heading into it. */
+    double sv = g.curl / g.k + 10.0;
+    double bow[3] = {g.origin[0] + g.dir[0] * sv + g.across[0] * 10.0, 5.0,
+                     g.origin[1] + g.dir[1] * sv + g.across[1] * 10.0};
+    const double into[2] = {-g.dir[0], -g.dir[1]};
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, into);
+    CHECK(sp.bow_amount > 0.0);
+    const double away[2] = {g.dir[0], g.dir[1]};
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, away);
+    CHECK(sp.bow_amount == 0.0);
+}
+
+/* GPU against CPU: the lip's cross-section (probe modes 10, 11) and the
+ * spray's density (mode 12) at points across the crest, for a wave at the
+ * origin at t = 10 s and for one 1e4 m out at t = 1e5 s. */
+static void test_gpu_mirror(tl_renderer *r)
+{
+    const double where[2][3] = {{10.0, 0.0, 0.0}, {1e5, 1e4, -7e3}};
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        breaking_scene(&s, where[k][0], 2.0, where[k][1], where[k][2]);
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        /* The camera 60 m in front of the crest, looking at it. */
+        s.camera.position[0] = g.origin[0] + g.dir[0] * 60.0;
+        s.camera.position[1] = 6.0;
+        s.camera.position[2] = g.origin[1] + g.dir[1] * 60.0;
+        tl_waves waves;
+        tl_waves_init(&waves, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &waves, &u);
+        CHECK(u.features & TL_FEATURE_GIANT_LIP);
+        CHECK(u.features & TL_FEATURE_GIANT_SPRAY);
+        enum { N = 48 };
+        float in4[4 * N], lip4[4 * N], ang4[4 * N], spray4[4 * N];
+        tl_giant_lip cpu[N];
+        double density[N];
+        tl_giant_spray sp;
+        const double heading[2] = {g.dir[0], g.dir[1]};
+        tl_giant_spray_prepare(&sp, &g, s.giant.spray, s.giant.spray_wind, s.time, s.ocean.depth,
+                               NULL, 0.0, heading);
+        for (int i = 0; i < N; i++) {
+            double w = s.giant.peak - 12.0 + 24.0 * i / (N - 1), dl, db;
+            double lambda = tl_giant_lambda(&g, w, &dl);
+            double sv = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k - 4.0 * (i % 4);
+            double y = base_of(&s) + lambda * g.amplitude + 0.5 * (i % 3);
+            double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
+            double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+            tl_giant_lip_at(&g, w, base_of(&s), &cpu[i]);
+            density[i] = tl_giant_spray_density(&sp, &g, x, y, z);
+            in4[4 * i + 0] = (float)(x - s.camera.position[0]);
+            in4[4 * i + 1] = (float)(z - s.camera.position[2]);
+            in4[4 * i + 2] = (float)y;
+            in4[4 * i + 3] = 0.0f;
+        }
+        tl_error err;
+        tl_error_clear(&err);
+        int rc = tl_renderer_probe4(r, &u, 10, in4, N, u.octaves, lip4, &err) ||
+                 tl_renderer_probe4(r, &u, 11, in4, N, u.octaves, ang4, &err) ||
+                 tl_renderer_probe4(r, &u, 12, in4, N, u.octaves, spray4, &err);
+        if (rc) {
+            fprintf(stderr, "probe: %s\n", err.message);
+            CHECK(0);
+            return;
+        }
+        /* The lip's centre s is the wave's (relative to the crest on the
+         * centre line), as the CPU's. */
+        double worst = 0.0, worst_angle = 0.0, worst_density = 0.0;
+        int present = 0;
+        for (int i = 0; i < N; i++) {
+            CHECK((ang4[4 * i + 3] > 0.5) == cpu[i].present);
+            if (!cpu[i].present)
+                continue;
+            present++;
+            worst = fmax(worst, fabs(lip4[4 * i + 0] - cpu[i].center[0]));
+            worst = fmax(worst, fabs(lip4[4 * i + 1] - cpu[i].center[1]));
+            worst = fmax(worst, fabs(lip4[4 * i + 2] - cpu[i].radius));
+            worst = fmax(worst, fabs(lip4[4 * i + 3] - cpu[i].thickness));
+            worst_angle = fmax(worst_angle, fabs(ang4[4 * i + 1] - cpu[i].to));
+            worst_density = fmax(worst_density, fabs(spray4[4 * i] - density[i]));
+        }
+        printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g\n",
+               s.time, hypot(where[k][1], where[k][2]), present, N, worst, worst_angle,
+               worst_density);
+        CHECK(present > N / 2);
+        CHECK(worst <= 1e-3);
+        CHECK(worst_angle <= 1e-4);
+        CHECK(worst_density <= 2e-3 * s.giant.spray);
+    }
+}
+
+int main(void)
+{
+    test_lip_heights();
+    test_lip_life();
+    test_lip_bounds();
+    test_spray_density();
+    tl_gl_context *ctx = NULL;
+    tl_renderer *r = gl_test_open(&ctx);
+    if (!r)
+        return 1;
+    test_gpu_mirror(r);
+    tl_renderer_destroy(r);
+    tl_gl_context_destroy(ctx);
+    TEST_END();
+}
