@@ -407,13 +407,16 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n)
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
     vec2 path = giant_thickness(hit, g);
-    // Only where the surface turns away from the sun: a slope that faces
-    // it is lit directly, and what it sends back is the ocean's own
-    // scattering (the back of the wave glowed as if lit through). The
-    // rest is the path's length: low on the face the light crossed the
-    // whole wave and little is left. (Weighting by where the light came
-    // in, high up the crest or not, cut the glow off at one height.)
-    float through = smoothstep(0.2, -0.1, dot(n, u_sun_dir));
+    // Only on the wave (its upper part, softly: low on the face the path
+    // has dimmed it anyway) and where the wave's own slope turns away from
+    // the sun: a slope that faces it is lit directly, and what it sends
+    // back is the ocean's own scattering (the back of the wave glowed as if
+    // lit through). With the small waves' normal, every ripple's lee side
+    // on the sea in front glowed green. Weighting by where the light came
+    // in, high up the crest or not, cut the glow off at one height.
+    vec3 wave_normal = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
+    float through = smoothstep(0.0, 0.5, giant_top(g)) *
+                    smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
     // Times a noise of the crest's thinness (cells 7 m along the crest by
     // 16 m down the face, 0.6 to 1.4): the lip is not equally thin all
