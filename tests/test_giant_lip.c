@@ -191,7 +191,7 @@ static void test_spray_density(void)
                 double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
                 double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
                 double d = tl_giant_spray_density(&sp, &g, x, y, z);
-                CHECK(d >= 0.0 && d <= sp.amount);
+                CHECK(d >= 0.0 && d <= sp.amount); /* no bow here: the spindrift alone */
                 if (sv > top_s + 2.0)
                     ahead = fmax(ahead, d);
                 else
@@ -211,8 +211,12 @@ static void test_spray_density(void)
     const double into[2] = {-g.dir[0], -g.dir[1]};
     tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, into);
     CHECK(sp.bow_amount > 0.0);
-    const double away[2] = {g.dir[0], g.dir[1]};
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, away);
+    const double along[2] = {g.across[0], g.across[1]}; /* along the crest: no slope ahead */
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, along);
+    CHECK(sp.bow_amount < 0.5 * TL_SPRAY_BOW_GAIN * 1.5);
+    bow[0] = g.origin[0] + g.dir[0] * 400.0; /* far ahead of the wave: calm water */
+    bow[2] = g.origin[1] + g.dir[1] * 400.0;
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, into);
     CHECK(sp.bow_amount == 0.0);
 }
 

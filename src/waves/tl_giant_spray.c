@@ -77,18 +77,20 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         sp->box[3] = sp->base + full * 1.25 + sp->reach * 0.25; /* top + lift + 3 rises */
         sp->active = true;
     }
-    /* The bow's burst: where the face rises ahead of the bow. */
+    /* The bow's burst: where the hull lies on the wave's slope along its
+     * heading, either way: heading into a face the bow slams into it;
+     * lifted from behind, it digs into the water below. */
     if (bow && length > 0.0) {
         tl_giant_sample smp;
         tl_giant_sample_at(g, bow[0], bow[2], 8, &smp);
-        double rising = smp.grad[0] * heading[0] + smp.grad[1] * heading[1];
-        double strength = smoothstep(0.1, TL_SPRAY_BOW_SLOPE, rising);
+        double slope = fabs(smp.grad[0] * heading[0] + smp.grad[1] * heading[1]);
+        double strength = smoothstep(0.1, TL_SPRAY_BOW_SLOPE, slope);
         if (strength > 0.0) {
             sp->bow_radius = TL_SPRAY_BOW_RADIUS * length;
             sp->bow[0] = bow[0] + heading[0] * 0.5 * sp->bow_radius;
             sp->bow[1] = bow[1] + 0.6 * sp->bow_radius;
             sp->bow[2] = bow[2] + heading[1] * 0.5 * sp->bow_radius;
-            sp->bow_amount = amount * strength;
+            sp->bow_amount = TL_SPRAY_BOW_GAIN * amount * strength;
             sp->active = true;
         }
     }

@@ -18,9 +18,12 @@
 #define TL_SPRAY_FROM 0.3
 #define TL_SPRAY_FULL 0.8
 /* The bow's burst: a cloud of this radius (a share of the hull's length)
- * ahead of and above the bow, at full strength where the face the bow
- * meets rises TL_SPRAY_BOW_SLOPE (a slope along the heading) or more. */
+ * ahead of and above the bow, at full strength where the wave's slope
+ * along the heading (up or down) is TL_SPRAY_BOW_SLOPE or more. */
 #define TL_SPRAY_BOW_RADIUS 0.35
+/* The burst is this much denser than the spindrift: thrown water, not
+ * blown droplets. */
+#define TL_SPRAY_BOW_GAIN 4.0
 #define TL_SPRAY_BOW_SLOPE 0.5
 
 /* The spray of one frame. */
