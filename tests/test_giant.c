@@ -21,6 +21,17 @@ static tl_giant_wave wave(double height, double steep, double curl)
     return p;
 }
 
+/* The old model's level crest: no taper, no bow, no variation (and no
+ * break) leave lambda(w) = fade · width mask and bow(w) = 0 exactly. */
+static tl_giant_wave level(tl_giant_wave p)
+{
+    p.taper = 0.0;
+    p.bow = 0.0;
+    p.variation = 0.0;
+    p.breaking = false;
+    return p;
+}
+
 /* The horizontal map (s0, w) -> (s0 + λ(w)·D(s0), w) is one-to-one with a
  * positive Jacobian on a dense grid, for every combination the issue names
  * and then some, up to the channel's maximum height. */
@@ -44,10 +55,12 @@ static void test_jacobian_positive(void)
                         tl_giant_prepare(&g, &p, 0.0);
                         cases++;
                         double reach = g.half_length + g.falloff_along;
-                        /* 21 rows across the width mask, 4001 samples along. */
-                        for (int j = 0; j <= 20; j++) {
-                            double w = -g.half_width + g.half_width * j / 10.0, dm;
-                            double lambda = g.fade * tl_giant_width_mask(&g, w, &dm);
+                        /* 21 rows across the envelope, 4001 samples along,
+                         * and a row at the largest lambda the clamps allow
+                         * for (fade · (1 + variation)). */
+                        for (int j = 0; j <= 21; j++) {
+                            double w = -g.half_width + g.half_width * j / 10.0, dl;
+                            double lambda = j == 21 ? g.lambda_max : tl_giant_lambda(&g, w, &dl);
                             double prev = -INFINITY;
                             for (int i = 0; i <= 4000; i++) {
                                 double s0 = -reach + 2.0 * reach * i / 4000.0, y, dy, d, dd;
@@ -107,7 +120,7 @@ static void test_geometry(void)
 {
     const double angles[] = {0.0, 0.3, M_PI / 4, 1.3, M_PI, 4.7, -2.2};
     for (size_t i = 0; i < sizeof angles / sizeof angles[0]; i++) {
-        tl_giant_wave p = wave(10.0, 0.0, 0.0);
+        tl_giant_wave p = level(wave(10.0, 0.0, 0.0));
         p.angle = angles[i];
         p.center[0] = 130.0;
         p.center[1] = -40.0;
@@ -135,6 +148,15 @@ static void test_geometry(void)
         double hm = tl_giant_height(&g, ox - g.across[0] * mid, oz - g.across[1] * mid, 8);
         CHECK_NEAR(hp, hm, 1e-9);
         CHECK_NEAR(hp, 5.0, 1e-9);
+        /* The level crest is the special case: lambda = fade · mask, no lag. */
+        int exact = 1;
+        for (int j = -60; j <= 60; j++) {
+            double w = g.half_width * j / 60.0, dl, db, dm;
+            exact &= tl_giant_lambda(&g, w, &dl) == g.fade * tl_giant_width_mask(&g, w, &dm) &&
+                     tl_giant_bow(&g, w, &db) == 0.0 && db == 0.0;
+        }
+        CHECK(exact);
+        CHECK(g.lambda_max == g.fade);
     }
 }
 
@@ -176,14 +198,27 @@ static void test_travel(void)
     p.speed = 0.5;
     tl_giant_prepare(&g, &p, 90.0);
     CHECK_NEAR(g.origin[0], -5.0 * c + 0.5 * p.wavelength, 1e-9);
-    /* Far in time and space, still exact in double. */
-    p = wave(10.0, 0.0, 0.0);
+    /* Far in time and space, still exact in double: the level crest's
+     * height A at its centre, and with the default envelope A times the
+     * variation there (the peak on the centre line: no taper, no bow; the
+     * sines' phases from the seed). */
+    p = level(wave(10.0, 0.0, 0.0));
     p.arrival = 1e5;
     p.center[0] = 1e4;
     p.center[1] = -3e3;
     tl_giant_prepare(&g, &p, 1e5);
     CHECK_NEAR(g.origin[0], 1e4, 1e-9);
     CHECK_NEAR(tl_giant_height(&g, 1e4, -3e3, 8), g.fade * 10.0, 1e-6);
+    p = wave(10.0, 0.0, 0.0);
+    p.arrival = 1e5;
+    p.center[0] = 1e4;
+    p.center[1] = -3e3;
+    tl_giant_prepare(&g, &p, 1e5);
+    static const double weights[3] = TL_GIANT_VARIATION_WEIGHTS;
+    double n = 0.0;
+    for (int i = 0; i < 3; i++)
+        n += weights[i] * sin(g.vary_phase[i]);
+    CHECK_NEAR(tl_giant_height(&g, 1e4, -3e3, 8), g.fade * 10.0 * (1.0 + p.variation * n), 1e-6);
 }
 
 /* Inversion: the residual of s = s0 + λD(s0) after n Newton steps, and the
@@ -248,8 +283,12 @@ static void test_inversion_and_slope(void)
         "crest\n",
         worst_height, crest_bound, g.fade * g.amplitude);
     CHECK(worst_height <= 0.0);
-    /* Not a loose bound: the crest's bin is bounded within 5% of its height. */
-    CHECK(crest_bound <= 1.05 * g.fade * g.amplitude);
+    /* Not a loose bound: the crest's bin is bounded within 5% of the
+     * largest height the envelope allows, lambda_max = fade · (1 +
+     * variation) times the height (the variation's sines may all peak
+     * together somewhere). */
+    CHECK_NEAR(g.lambda_max, g.fade * (1.0 + p.variation), 1e-15);
+    CHECK(crest_bound <= 1.05 * g.lambda_max * g.amplitude);
     printf("slope: max %.3f, bound %.3f, worst slope / its bin's bound %.3f; analytic gradient vs "
            "finite differences: %.2g\n",
            worst_slope, g.max_slope, worst_ratio, worst_grad);
