@@ -47,6 +47,86 @@ static void test_probe(tl_renderer *r)
     CHECK(height > 20.0f);
 }
 
+/* The peaked, bowed crest in mid-break (the shader's TL_FEATURE_GIANT_BREAK
+ * code: the settling envelope) against the CPU mirror: heights (mode 0,
+ * the march's path) within 1e-3 m, and the wave's own gradient and height
+ * on the normals' path (mode 6, less the same probe without the wave)
+ * against tl_giant_sample_at's (to 1e-3 m, and 5e-3 of the slope where it
+ * exceeds 1); at t = 10 s near the origin, and at
+ * t = 1e5 s with the wave 1e4 m from it. */
+static void test_probe_breaking_crest(tl_renderer *r)
+{
+    const double near[3] = {3.0, 1.5, -4.0}, far[3] = {7.0e3, 2.0, -7.1e3};
+    enum { N = 48 };
+    for (int where = 0; where < 2; where++) {
+        tl_scene s;
+        wave_scene(&s, 20.0, where ? 1.0e5 : 10.0, where ? far : near);
+        s.giant.peak = 15.0;
+        s.giant.bow = 30.0;
+        s.giant.variation = 0.5;
+        s.giant.breaking = true;
+        s.giant.break_time = s.time - 4.0; /* the peak has landed and settles */
+        s.giant.break_drop = 0.5;
+        tl_waves w;
+        tl_waves_init(&w, &s.ocean);
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        tl_frame_uniforms u, calm_u;
+        tl_prepare_frame(&s, &w, &u);
+        CHECK(u.features & TL_FEATURE_GIANT_WAVE);
+        CHECK(u.features & TL_FEATURE_GIANT_BREAK);
+        tl_scene calm = s;
+        calm.giant.enabled = false;
+        tl_prepare_frame(&calm, &w, &calm_u);
+        double e_height = probe_error(r, &s, 12, 90.0, 64);
+        /* Mode 6 over the wave: camera-relative points 180 m square. */
+        float xz[N * N * 2], with[N * N * 4], without[N * N * 4];
+        for (int j = 0; j < N; j++)
+            for (int i = 0; i < N; i++) {
+                xz[(j * N + i) * 2 + 0] = (float)(-90.0 + 180.0 * i / (N - 1));
+                xz[(j * N + i) * 2 + 1] = (float)(-90.0 + 180.0 * j / (N - 1));
+            }
+        tl_error err;
+        tl_error_clear(&err);
+        const int no = s.quality.normal_octaves;
+        if (tl_renderer_probe(r, &u, 6, xz, N * N, no, with, &err) ||
+            tl_renderer_probe(r, &calm_u, 6, xz, N * N, no, without, &err)) {
+            printf("probe failed: %s\n", err.message);
+            CHECK(0);
+            return;
+        }
+        double e_wave = 0.0, e_grad = 0.0, steepest = 0.0, tallest = 0.0;
+        for (int k = 0; k < N * N; k++) {
+            double x = s.camera.position[0] + (double)xz[k * 2];
+            double z = s.camera.position[2] + (double)xz[k * 2 + 1];
+            tl_giant_sample smp;
+            tl_giant_sample_at(&g, x, z, s.quality.giant_iterations, &smp);
+            double gh = (double)with[k * 4 + 2] - without[k * 4 + 2];
+            double gx = (double)with[k * 4 + 0] - without[k * 4 + 0];
+            double gz = (double)with[k * 4 + 1] - without[k * 4 + 1];
+            e_wave = fmax(e_wave, fabs(gh - smp.height));
+            e_grad = fmax(e_grad, hypot(gx - smp.grad[0], gz - smp.grad[1]) /
+                                      fmax(1.0, hypot(smp.grad[0], smp.grad[1])));
+            steepest = fmax(steepest, hypot(smp.grad[0], smp.grad[1]));
+            tallest = fmax(tallest, smp.height);
+        }
+        printf("breaking crest, t = %g s, %.0f m from the origin: max |gpu-cpu| height %.3g m "
+               "(mode 0), the wave's height %.3g m and gradient %.3g relative (mode 6; steepest "
+               "%.2f, tallest %.1f m)\n",
+               s.time, hypot(s.camera.position[0], s.camera.position[2]), e_height, e_wave, e_grad,
+               steepest, tallest);
+        CHECK(tallest > 10.0 && steepest > 1.0); /* the probes saw the crest */
+        CHECK(e_height <= 1e-3);
+        CHECK(e_wave <= 1e-3);
+        /* The shader's Newton loop stops once the height is within
+         * TL_GIANT_CONVERGED (0.1 mm); where the profile is flat along (the
+         * crest's top, the mask's foot) that leaves s0 a few centimetres
+         * off, and the gradient a little more than 1e-3 (the normal less
+         * than 0.1 degree). */
+        CHECK(e_grad <= 5e-3);
+    }
+}
+
 /* The double-precision mirror of the scene's surface. */
 static void cpu_mirror(const tl_scene *s, tl_giant *giant, tl_waves *waves)
 {
@@ -690,6 +770,7 @@ int main(void)
     if (!r)
         return 1;
     test_probe(r);
+    test_probe_breaking_crest(r);
     test_fade_zero(r);
     test_wave_in_view(r);
     test_hits_on_surface(r);
