@@ -277,7 +277,7 @@ static void test_hits_on_surface(tl_renderer *r)
         tl_waves waves;
         if (render_mirrored(r, &s, &f, &giant, &waves))
             return;
-        int hits = 0, off = 0;
+        int hits = 0, off = 0, below = 0, off_wave = 0;
         double worst = 0.0;
         for (int y = 0; y < s.height; y++)
             for (int x = 0; x < s.width; x++) {
@@ -295,15 +295,33 @@ static void test_hits_on_surface(tl_renderer *r)
                 /* Above the surface by at most the hit epsilon plus float
                  * rounding of the distance; never below it. */
                 off += e > 0.02;
+                below += p[1] < surf - 0.02;
+                /* Stopped short within the wave's reach (not at the
+                 * ocean's horizon beyond it). */
+                double rx = p[0] - giant.origin[0], rz = p[2] - giant.origin[1];
+                off_wave += e > 0.02 &&
+                            fabs(giant.dir[0] * rx + giant.dir[1] * rz) < giant.reach_along &&
+                            fabs(giant.across[0] * rx + giant.across[1] * rz) < giant.half_width;
                 if (e <= 0.02)
                     worst = fmax(worst, e);
                 hits++;
             }
         printf("%d steps: %d of %d water hits within 1 km lie on the surface to 0.02 m (worst "
-               "of those %.3g m); %d stop short\n",
-               budgets[k], hits - off, hits, worst, off);
+               "of those %.3g m); %d stop short, %d of them on the wave's reach, %d below the "
+               "surface\n",
+               budgets[k], hits - off, hits, worst, off, off_wave, below);
         CHECK(hits > 8000);
-        CHECK(off <= hits / (k == 0 ? 100 : 1000));
+        CHECK(below == 0);
+        /* The wave's rays within the bound; grazing rays at the horizon
+         * whose path crosses a corner of the wave's box, far from the
+         * crest (w about 100 to 130 m, where the width mask has let it
+         * down), spend their steps there: the slope bound is kept per bin
+         * of s, over the whole width, and the bow widens each bin's reach
+         * by its 10 m. With 400 steps 17 of 8746 such rays stop short,
+         * 0.3 to 1.3 m above the ocean 650 to 880 m away, and 1 on the
+         * wave's reach (2 in all with a level crest). */
+        CHECK(off_wave <= hits / (k == 0 ? 100 : 1000));
+        CHECK(off <= hits / (k == 0 ? 100 : 400));
         tl_frame_free(&f);
     }
 }
@@ -445,13 +463,16 @@ static void split_matches_whole(tl_renderer *r, const tl_scene *sp, const char *
  * rectangle) matches the frame drawn all in the giant wave's program: far
  * off, and low in front of the wave with its crest's shadow on the water
  * (the rectangle leaves out the water below the box's top that a ray
- * meets before the box). */
+ * meets before the box). 140 m from the centre: at 120 m the peaked
+ * crest (up to lambda_max = 1.12 of its 20 m) casts its shadow past the
+ * camera at this low sun, and the rectangle is the whole frame, which
+ * would compare the frame with itself. */
 static void test_split_matches_whole(tl_renderer *r)
 {
     for (int view = 0; view < 2; view++) {
         tl_scene s;
         facing_scene(&s);
-        s.camera.position[2] = view == 0 ? -600.0 : -120.0;
+        s.camera.position[2] = view == 0 ? -600.0 : -140.0;
         s.camera.position[1] = view == 0 ? 4.0 : 2.0;
         s.camera.yaw = view == 0 ? 0.45 : 0.6;
         s.sun.azimuth = view == 0 ? M_PI : 0.5;
@@ -554,7 +575,12 @@ static void test_relaxed_march(tl_renderer *r)
 
 /* Pixels whose ray crosses the surface 0.25 m or more before the distance
  * the frame reports (the sky: within 400 m), walked on the CPU 5 cm at a
- * time. Only pixels next to a jump in distance (an edge of the wave) are
+ * time. Crossing is going under it by more than the march's hit epsilon
+ * (quality.hit_epsilon): a ray that grazes a crest's top stays within it
+ * for a metre or more, and the march may stop anywhere along that stretch
+ * (the peaked crest's top at 140 m, 72 m across, met by a ray that dips
+ * 0.4 mm under it at 139.6 m and stays within 9 mm above it to 140.6 m,
+ * hit at 140.2 m). Only pixels next to a jump in distance (an edge of the wave) are
  * walked: that is where a march that starts from its neighbours'
  * distances could step over a crest. Returns those that crossed the wave
  * first; *ocean counts those that crossed an ocean crest where the wave
@@ -589,7 +615,8 @@ static int stepped_over(const tl_scene *s, const tl_frame *f, int *walked, int *
                     continue; /* above everything */
                 if (p[1] < tl_waves_surface_height(&waves, &giant, p[0], p[2], s->time,
                                                    s->quality.march_octaves,
-                                                   s->quality.giant_iterations)) {
+                                                   s->quality.giant_iterations) -
+                               s->quality.hit_epsilon) {
                     if (fabs(tl_giant_height(&giant, p[0], p[2], s->quality.giant_iterations)) >
                         1e-3)
                         over++;
@@ -635,7 +662,12 @@ static void test_prepass_silhouette(tl_renderer *r)
         s.camera.position[1] = heights[k];
         s.camera.pitch = pitches[k] * M_PI / 180.0;
         s.quality.march_prepass = true;
-        check_edges(r, &s, "march prepass", 0.02);
+        /* 3%: with the default bow (10 m) 29 of 1122 edge pixels from 4 m
+         * up cross an ocean crest 1 to 27 cm deep, 1 to 4 m before their
+         * hit, all 77 to 86 m ahead of the crest inside the wave's box,
+         * where the wave is under a millimetre; 5 with a level crest, 2
+         * with the taper and variation but no bow. */
+        check_edges(r, &s, "march prepass", 0.03);
     }
 }
 
@@ -722,7 +754,7 @@ static void test_rising_rays(tl_renderer *r)
         return;
     tl_giant giant;
     cpu_mirror(&s, &giant, &waves);
-    int rising = 0, hits = 0, missed = 0, false_sky = 0;
+    int rising = 0, hits = 0, missed = 0, false_sky = 0, under = 0;
     for (int y = 0; y < s.height; y++)
         for (int x = 0; x < s.width; x++) {
             double ray[3];
@@ -746,11 +778,14 @@ static void test_rising_rays(tl_renderer *r)
             hits += !sky;
             false_sky += sky && deepest > 0.0;
             missed += sky && deepest > 1.0;
+            under += deepest > 1.0;
         }
-    printf("rising rays: %d, %d of them on the wave; %d the frame calls sky cross the surface, %d "
-           "by a metre or more\n",
-           rising, hits, false_sky, missed);
-    CHECK(rising > 1000 && hits > 200);
+    printf("rising rays: %d, %d of them on the wave, %d go a metre under it; %d the frame calls "
+           "sky cross the surface, %d by a metre or more\n",
+           rising, hits, under, false_sky, missed);
+    /* Enough of them meet the crest to tell (the peaked crest tapers below
+     * the camera toward its ends: fewer than a level one's 250). */
+    CHECK(rising > 1000 && under > 100 && hits >= under);
     CHECK(missed == 0);
     CHECK(false_sky <= rising / 100);
     tl_frame_free(&f);
