@@ -1,6 +1,7 @@
 /* The giant wave's CPU model (src/waves/tl_giant.c): geometry, the
  * height-field clamps, the inversion of the horizontal map, slope bounds
- * and travel. No GPU. */
+ * and travel; the crest's envelope (its peak, taper, bow, variation and
+ * break) and the break's feature bit. No GPU. */
 #include <math.h>
 #include <stdlib.h>
 

@@ -1,5 +1,6 @@
 /* The giant wave on the GPU (llvmpipe on CI): the shader's surface height
- * against the double CPU mirror, fade 0 against the wave switched off, and
+ * (and, for a breaking crest, its gradient) against the double CPU
+ * mirror, fade 0 against the wave switched off, and
  * a frame that looks at the wave (depth, crest against the horizon, hits
  * on the surface, finite pixels), and the screen rectangle the renderer
  * draws the wave's program in (it holds every ray that can show the wave;
