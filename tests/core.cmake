@@ -113,3 +113,7 @@ tl_add_test(test_run SOURCES test_run.c LIBS tl_run LABELS gl)
 add_test(NAME test_module_rules
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_module_rules.sh ${PROJECT_SOURCE_DIR})
 set_tests_properties(test_module_rules PROPERTIES LABELS unit)
+# The peaked, breaking crest through the binary: a frame alone is the same
+# frame within a sequence; giant.fade 0 is the wave switched off.
+tl_add_test(test_giant_crest SOURCES test_giant_crest.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> LABELS gl)

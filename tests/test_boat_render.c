@@ -255,6 +255,43 @@ static int cutscene_frame(tl_renderer *r, const tl_mesh *m, const char *timeline
     return 0;
 }
 
+/* As cutscene_frame, with the line `from` of the timeline replaced by
+ * `to` (which must be there). */
+static int cutscene_frame_edited(tl_renderer *r, const tl_mesh *m, const char *timelines,
+                                 const char *name, int frame, const char *from, const char *to,
+                                 tl_scene *s)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", timelines, name);
+    FILE *f = fopen(path, "rb");
+    CHECK(f != NULL);
+    if (!f)
+        return 1;
+    static char text[65536], edited[65536 + 256];
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    const char *at = strstr(text, from);
+    CHECK(at != NULL && strlen(to) < 256);
+    if (!at || strlen(to) >= 256)
+        return 1;
+    snprintf(edited, sizeof edited, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    tl_timeline tl;
+    tl_diags diags;
+    tl_error err;
+    tl_error_clear(&err);
+    int rc = tl_timeline_parse_text(name, edited, strlen(edited), &tl, &diags, &err);
+    CHECK(rc == TL_OK);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    if (rc != TL_OK)
+        return rc;
+    tl_timeline_eval(&tl, tl_timeline_frame_time(&tl, frame), s);
+    tl_timeline_free(&tl);
+    s->width = 240;
+    s->height = 135;
+    return 0;
+}
+
 /* The hero cutscene's frame 216: the boat climbs the giant wave's face,
  * its wake's path running up the face behind it. The wave sweeps the wake
  * away, so the frame is the one without the wake; the foam once showed as
@@ -333,19 +370,41 @@ static void test_mirror_rect(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&culled);
 }
 
-/* The hero cutscene's frame 120: the camera rides a swell's back, and the
- * boat lies beyond its crest. The hull's mirror image lands, on screen, on
- * the swell's near face, which cannot mirror the hull: it lies far above
- * the plane the image mirrors in. The hull's dark image was drawn there
- * (and the mast's, a wavering line; 951 of the near water's pixels at this
- * size); the water nearer than 0.6 of the boat's distance now shows almost
- * none of it (the frame with no image at all, the mirror's rectangle
- * empty, is the yardstick). */
+/* The hero cutscene's frame 120, the giant wave arriving at 8.9 s: the
+ * camera rides a swell's back, and the boat lies beyond its crest, low in
+ * the trough ahead of the giant wave. The hull's mirror image lands, on
+ * screen, on the swell's near face, which cannot mirror the hull: it lies
+ * far above the plane the image mirrors in. The hull's dark image was
+ * drawn there (and the mast's, a wavering line; 951 of the near water's
+ * pixels at this size); the water nearer than 0.6 of the boat's distance
+ * now shows almost none of it (the frame with no image at all, the
+ * mirror's rectangle empty, is the yardstick). The timeline's own arrival
+ * (10.5 s) once put the boat there too, while `follow giant.center boat`
+ * carried the wave along with the boat; now that it aims the wave (along
+ * the travel, at where the boat is at the arrival) the crest is 25 m
+ * further off at 5 s and the boat floats on the level sea, its water only
+ * 0.27 m below the camera's, where its image on the near water is a true
+ * one. Arriving 1.6 s earlier brings the trough back under the boat. */
 static void test_mirror_hidden(tl_renderer *r, const tl_mesh *m, const char *timelines)
 {
     tl_scene s;
-    if (cutscene_frame(r, m, timelines, "voyage.tl", 120, &s))
+    if (cutscene_frame_edited(r, m, timelines, "voyage.tl", 120, "set giant.arrival 10.5s",
+                              "set giant.arrival 8.9s", &s))
         return;
+    /* The premise: the boat's water well below the camera's. */
+    tl_waves waves;
+    tl_waves_init(&waves, &s.ocean);
+    tl_giant giant;
+    tl_giant_prepare(&giant, &s.giant, s.time);
+    const int mo = s.quality.march_octaves, gi = s.quality.giant_iterations;
+    double under_boat = tl_waves_surface_height(&waves, &giant, s.boat.position[0],
+                                                s.boat.position[2], s.time, mo, gi);
+    double under_camera = tl_waves_surface_height(&waves, &giant, s.camera.position[0],
+                                                  s.camera.position[2], s.time, mo, gi);
+    printf("voyage.tl frame 120, arriving at 8.9 s: the water %.2f m under the boat, %.2f m under "
+           "the camera\n",
+           under_boat, under_camera);
+    CHECK(under_boat < under_camera - 1.5);
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_BOAT);

@@ -469,6 +469,27 @@ static void test_wake_before_start(void)
     tl_timeline_free(&tl);
 }
 
+/* `follow giant.center boat` aims the wave: along its travel the centre
+ * is where the boat (plus the offset) is at giant.arrival, fixed; across
+ * it, the centre line is where the boat is now. `angle` the travel's
+ * compass direction, `arrival` the arrival time; `off` the link's
+ * offset (x, z). */
+static void check_aimed(const tl_timeline *tl, double angle, double arrival, const double off[2])
+{
+    tl_scene then;
+    tl_timeline_eval(tl, arrival, &then);
+    const double dir[2] = {sin(angle), cos(angle)}, across[2] = {cos(angle), -sin(angle)};
+    const double at[2] = {then.boat.position[0] + off[0], then.boat.position[2] + off[1]};
+    for (int i = 0; i <= 40; i++) {
+        tl_scene s;
+        tl_timeline_eval(tl, i * 0.25, &s);
+        const double now[2] = {s.boat.position[0] + off[0], s.boat.position[2] + off[1]};
+        const double *c = s.giant.center;
+        CHECK_NEAR(dir[0] * (c[0] - at[0]) + dir[1] * (c[1] - at[1]), 0.0, 1e-9);
+        CHECK_NEAR(across[0] * (c[0] - now[0]) + across[1] * (c[1] - now[1]), 0.0, 1e-9);
+    }
+}
+
 static void test_follow_boat(void)
 {
     char text[1024];
@@ -481,15 +502,19 @@ static void test_follow_boat(void)
         return;
     for (int i = 0; i <= 40; i++) {
         double t = i * 0.25;
-        tl_scene s;
+        tl_scene s, arrival;
         tl_timeline_eval(&tl, t, &s);
+        tl_timeline_eval(&tl, 0.0, &arrival); /* giant.arrival 0, travel +Z (angle 0) */
         const double *b = s.boat.position;
         CHECK(s.boat.enabled);
         CHECK_NEAR(s.camera.position[0], b[0], 1e-12);
         CHECK_NEAR(s.camera.position[1], b[1] + 3.0, 1e-12);
         CHECK_NEAR(s.camera.position[2], b[2] - 10.0, 1e-12);
+        /* Travelling +Z: across is x, the boat's now; along is z, the
+         * boat's at the arrival (0 s: the path's first point, z 20). */
         CHECK_NEAR(s.giant.center[0], b[0] + 5.0, 1e-12);
-        CHECK_NEAR(s.giant.center[1], b[2] - 3.0, 1e-12);
+        CHECK_NEAR(s.giant.center[1], 20.0 - 3.0, 1e-12);
+        CHECK_NEAR(s.giant.center[1], arrival.boat.position[2] - 3.0, 1e-12);
         /* Looking 1.5 m below its own height, 10 m ahead (+Z): yaw 0,
          * pitch atan(-1.5 / 10). */
         CHECK_NEAR(s.camera.yaw, 0.0, 1e-12);
@@ -504,13 +529,37 @@ static void test_follow_boat(void)
         tl_scene s;
         tl_timeline_eval(&tl, i, &s);
         CHECK(s.giant.center[0] == s.boat.position[0]);
-        CHECK(s.giant.center[1] == s.boat.position[2]);
+        CHECK(s.giant.center[1] == 20.0);
     }
-    /* The ends of the path: its first and last points (x, z). */
+    /* At the ends of the path: across (x) its first and last points'; along
+     * (z) the first point's, where the boat is at giant.arrival = 0. */
     CHECK_NEAR(at(&tl, 0.0, "giant.center", 0), 10.0, 1e-9);
     CHECK_NEAR(at(&tl, 0.0, "giant.center", 1), 20.0, 1e-9);
     CHECK_NEAR(at(&tl, 10.0, "giant.center", 0), 0.0, 1e-9);
-    CHECK_NEAR(at(&tl, 10.0, "giant.center", 1), 60.0, 1e-9);
+    CHECK_NEAR(at(&tl, 10.0, "giant.center", 1), 20.0, 1e-9);
+    tl_timeline_free(&tl);
+
+    /* Travelling at an angle and arriving mid-path (4 s), with an offset:
+     * the centre's part along the travel stays the boat's at the arrival;
+     * across, the boat's now. At the arrival both are the boat's, so the
+     * centre is the boat plus the offset. */
+    snprintf(text, sizeof text,
+             "tideline 1\n%sset giant.angle 30deg\nset giant.arrival 4s\n"
+             "follow giant.center boat + 5 -3\n",
+             boat_path);
+    if (!parse_ok(text, &tl))
+        return;
+    const double off[2] = {5.0, -3.0};
+    check_aimed(&tl, 30.0 * M_PI / 180.0, 4.0, off);
+    tl_scene s;
+    tl_timeline_eval(&tl, 4.0, &s);
+    CHECK_NEAR(s.giant.center[0], s.boat.position[0] + 5.0, 1e-9);
+    CHECK_NEAR(s.giant.center[1], s.boat.position[2] - 3.0, 1e-9);
+    /* Not the boat's position before or after it: the wave is aimed, not
+     * carried. */
+    tl_timeline_eval(&tl, 8.0, &s);
+    CHECK(hypot(s.giant.center[0] - s.boat.position[0] - 5.0,
+                s.giant.center[1] - s.boat.position[2] + 3.0) > 1.0);
     tl_timeline_free(&tl);
 }
 
