@@ -99,7 +99,9 @@ float giant_bow(float w, out float db)
 // Seconds since the lip began to throw at w (negative before).
 float giant_break_age(float w)
 {
-    return u_giant_break.x - abs(w - u_giant_crest.x) / u_giant_break.y;
+    float x = w - u_giant_crest.x;
+    return u_giant_break.x - (sqrt(x * x + TL_GIANT_PEEL_ROUND * TL_GIANT_PEEL_ROUND) -
+                              TL_GIANT_PEEL_ROUND) / u_giant_break.y;
 }
 #endif
 
@@ -136,7 +138,9 @@ float giant_lambda(float w, out float dl)
 #ifdef TL_FEATURE_GIANT_BREAK
     float T = u_giant_break.z, dx;
     settle = 1.0 - u_giant_break.w * giant_smooth((giant_break_age(w) - T) / (2.0 * T), dx);
-    dsettle = u_giant_break.w * dx / (2.0 * T * u_giant_break.y) * (w < u_giant_crest.x ? -1.0 : 1.0);
+    float x = w - u_giant_crest.x;
+    dsettle = u_giant_break.w * dx / (2.0 * T * u_giant_break.y) *
+              (x / sqrt(x * x + TL_GIANT_PEEL_ROUND * TL_GIANT_PEEL_ROUND));
 #endif
     float F = u_giant_fade;
     dl = F * (dm * taper * vary * settle + m * dtaper * vary * settle + m * taper * dvary * settle +

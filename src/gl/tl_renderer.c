@@ -89,6 +89,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_GIANT_CONVERGED %.1e\n"
                      "#define TL_GIANT_SHADOW_FADE %.3f\n"
                      "#define TL_GIANT_VARIATION_WEIGHTS %.17g, %.17g, %.17g\n"
+                     "#define TL_GIANT_PEEL_ROUND %.17g\n"
                      "#define TL_GIANT_LIP_RADIUS %.17g\n"
                      "#define TL_GIANT_LIP_THICKNESS %.17g\n"
                      "#define TL_GIANT_LIP_ANCHOR %.17g\n"
@@ -107,7 +108,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_MIRROR_SHIFT %g\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
-                     variation[2], TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_ANCHOR,
+                     variation[2], TL_GIANT_PEEL_ROUND, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_ANCHOR,
                      TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_SPRAY_SIGMA,
                      TL_SPRAY_FROM, TL_SPRAY_FULL, TL_WAKE_POINTS, TL_WAKE_GROUP,
                      TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,

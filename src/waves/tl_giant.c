@@ -51,9 +51,19 @@ double tl_giant_bow(const tl_giant *g, double w, double *db)
     return -g->bow * r * r;
 }
 
+/* |w - peak|, rounded over TL_GIANT_PEEL_ROUND metres at the peak, and
+ * its derivative: a plain |x| put a corner in the settling crest there. */
+static double from_peak_rounded(const tl_giant *g, double w, double *dd)
+{
+    double x = w - g->peak, r = TL_GIANT_PEEL_ROUND, h = sqrt(x * x + r * r);
+    *dd = x / h;
+    return h - r;
+}
+
 double tl_giant_break_age(const tl_giant *g, double w)
 {
-    return g->break_age - fabs(w - g->peak) / g->peel_speed;
+    double dd;
+    return g->break_age - from_peak_rounded(g, w, &dd) / g->peel_speed;
 }
 
 double tl_giant_break_progress(const tl_giant *g, double w, double *dprogress)
@@ -62,7 +72,9 @@ double tl_giant_break_progress(const tl_giant *g, double w, double *dprogress)
     if (!g->breaks)
         return 0.0;
     double ds, p = smooth01(tl_giant_break_age(g, w) / g->throw_time, &ds);
-    *dprogress = -ds / (g->throw_time * g->peel_speed) * (w < g->peak ? -1.0 : 1.0);
+    double dd;
+    from_peak_rounded(g, w, &dd);
+    *dprogress = -ds / (g->throw_time * g->peel_speed) * dd;
     return p;
 }
 
@@ -95,7 +107,9 @@ double tl_giant_lambda(const tl_giant *g, double w, double *dl)
         double age = tl_giant_break_age(g, w);
         double dx;
         settle = 1.0 - g->break_drop * smooth01((age - g->throw_time) / (2.0 * g->throw_time), &dx);
-        ds = g->break_drop * dx / (2.0 * g->throw_time * g->peel_speed) * (w < g->peak ? -1.0 : 1.0);
+        double dd;
+        from_peak_rounded(g, w, &dd);
+        ds = g->break_drop * dx / (2.0 * g->throw_time * g->peel_speed) * dd;
     }
     double F = g->fade;
     *dl = F * (dm * taper * vary * settle + m * dtaper * vary * settle + m * taper * dvary * settle +

@@ -67,6 +67,9 @@
  * body takes to fall the crest's height; the broken crest then settles
  * (loses giant.break_drop of its height) over twice that. */
 #define TL_GIANT_THROW_FALLS 1.5
+/* The break's distance from the peak is rounded over this many metres
+ * there (sqrt(x² + r²) - r), so the settling crest has no corner at it. */
+#define TL_GIANT_PEEL_ROUND 2.0
 /* The lip: a tube along an arc of a circle in the crest's cross-section,
  * of this radius and half thickness (fractions of the crest's height
  * there). The arc's point at TL_GIANT_LIP_ANCHOR (degrees from straight
