@@ -108,3 +108,7 @@ tl_add_test(test_run SOURCES test_run.c LIBS tl_run LABELS gl)
 add_test(NAME test_module_rules
   COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/test_module_rules.sh ${PROJECT_SOURCE_DIR})
 set_tests_properties(test_module_rules PROPERTIES LABELS unit)
+# wrong_surface: the share of pixels whose depth agrees with reference's
+# (scripts/wrong-surface.sh).
+add_executable(wrong_surface wrong_surface.c)
+target_link_libraries(wrong_surface PRIVATE tideline_gl)
