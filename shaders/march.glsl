@@ -431,6 +431,13 @@ float march_water(vec3 ray, float t_min)
     return march_end(ray, m);
 }
 #else
+// The least share of a step one step inside the giant wave's box costs:
+// at most 1/TL_BOX_STEP_COST box steps for each of quality.march_steps,
+// which keeps a fragment's loops under llvmpipe's limit (65535 iterations
+// in all; tl_renderer.c's samples_per_draw counts the march's steps).
+#ifndef TL_BOX_STEP_COST
+#define TL_BOX_STEP_COST 0.25
+#endif
 // With the giant wave: the band and the wave's box.
 float march_water(vec3 ray, float t_min)
 {
@@ -459,7 +466,18 @@ float march_water(vec3 ray, float t_min)
         }
     }
 #endif
-    for (int i = 0; i < steps; i++) {
+    // The steps are counted in the ocean's: inside the box the slope bound
+    // divides a step by `grow`, and such a step costs 1/grow of one
+    // (TL_BOX_STEP_COST at least), so that a ray crossing the box gets as
+    // far as over the open sea. Counted whole, a ray grazing the sea or the
+    // face inside the box ran out of steps a fraction of the way to its hit
+    // and was shaded there, in front of the surface: where no prepass
+    // brackets the hit (a camera at the waterline) draft stopped short on a
+    // third of a low shot's pixels beside the face (wrong_surface).
+    float left = float(steps), cost = 1.0;
+    while (left > 0.0) {
+        left -= cost;
+        cost = 1.0;
         bool in_box = m.t >= box.x && m.t <= box.y;
         vec3 pos = vec3(0.0, u_cam_height, 0.0) + ray * m.t;
         // Rays leaving the ocean band upward see the sky (camera in the
@@ -478,8 +496,11 @@ float march_water(vec3 ray, float t_min)
         float above = pos.y - surface_height(pos.xz, TL_MARCH_OCTAVES, m.t * u_lod_angle);
         float radius = above; // how far along the ray is surely free
         // A step no longer than `above` moves at most above·ray_along in s.
-        if (in_box)
-            radius /= 1.0 + ray_flat * giant_slope_near(giant_coords(pos.xz).x, above * ray_along);
+        if (in_box) {
+            float grow = 1.0 + ray_flat * giant_slope_near(giant_coords(pos.xz).x, above * ray_along);
+            radius /= grow;
+            cost = max(1.0 / grow, TL_BOX_STEP_COST);
+        }
         int act = march_step(m, above, radius);
         if (act == MARCH_FOUND)
             return m.t;
