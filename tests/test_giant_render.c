@@ -395,6 +395,7 @@ static void test_screen_rect(void)
         const char *what;
         double pos[3], yaw, pitch, roll, sun_azimuth;
         int expect; /* 0: empty, 1: part of the frame, 2: all of it */
+        int before_box; /* pos z is metres in front of the wave's box, not a position */
     } cases[] = {
         {"600 m away, the wave off to the left", {0.0, 4.0, -600.0}, 0.45, 0.0, 0.0, M_PI, 1},
         {"600 m away, rolled, looking down", {0.0, 4.0, -600.0}, 0.2, -0.15, 0.3, M_PI, 1},
@@ -402,7 +403,9 @@ static void test_screen_rect(void)
         {"2 m beside it, looking along it", {132.0, 4.0, -50.0}, 0.0, 0.0, 0.0, M_PI, 1},
         {"facing away", {0.0, 4.0, -600.0}, M_PI, 0.0, 0.0, M_PI, 0},
         {"inside the box", {5.0, 4.0, -10.0}, 0.0, 0.0, 0.0, M_PI, 2},
-        {"low, 30 m in front of the box", {0.0, 2.0, -120.0}, 0.6, 0.0, 0.0, M_PI, 1},
+        /* z: 30 m in front of the box, whose reach the loop takes from the
+         * wave (it grows with the mask's falloff and the bow). */
+        {"low, 30 m in front of the box", {0.0, 2.0, 30.0}, 0.6, 0.0, 0.0, M_PI, 1, 1},
         /* The crest's shadow reaches ~160 m toward the camera, past it. */
         {"the same, the sun behind the wave", {0.0, 2.0, -120.0}, 0.6, 0.0, 0.0, 0.0, 2},
     };
@@ -410,6 +413,11 @@ static void test_screen_rect(void)
         tl_scene s;
         facing_scene(&s);
         memcpy(s.camera.position, cases[c].pos, sizeof s.camera.position);
+        if (cases[c].before_box) {
+            tl_giant box;
+            tl_giant_prepare(&box, &s.giant, s.time);
+            s.camera.position[2] = -(box.reach_along + cases[c].pos[2]);
+        }
         s.camera.yaw = cases[c].yaw;
         s.camera.pitch = cases[c].pitch;
         s.camera.roll = cases[c].roll;
