@@ -397,17 +397,17 @@ static void test_screen_rect(void)
         int expect; /* 0: empty, 1: part of the frame, 2: all of it */
         int before_box; /* pos z is metres in front of the wave's box, not a position */
     } cases[] = {
-        {"600 m away, the wave off to the left", {0.0, 4.0, -600.0}, 0.45, 0.0, 0.0, M_PI, 1},
-        {"600 m away, rolled, looking down", {0.0, 4.0, -600.0}, 0.2, -0.15, 0.3, M_PI, 1},
-        {"300 m above, looking down at it", {60.0, 300.0, -250.0}, 0.3, -0.9, 0.0, M_PI, 1},
-        {"2 m beside it, looking along it", {132.0, 4.0, -50.0}, 0.0, 0.0, 0.0, M_PI, 1},
-        {"facing away", {0.0, 4.0, -600.0}, M_PI, 0.0, 0.0, M_PI, 0},
-        {"inside the box", {5.0, 4.0, -10.0}, 0.0, 0.0, 0.0, M_PI, 2},
+        {"600 m away, the wave off to the left", {0.0, 4.0, -600.0}, 0.45, 0.0, 0.0, M_PI, 1, 0},
+        {"600 m away, rolled, looking down", {0.0, 4.0, -600.0}, 0.2, -0.15, 0.3, M_PI, 1, 0},
+        {"300 m above, looking down at it", {60.0, 300.0, -250.0}, 0.3, -0.9, 0.0, M_PI, 1, 0},
+        {"2 m beside it, looking along it", {132.0, 4.0, -50.0}, 0.0, 0.0, 0.0, M_PI, 1, 0},
+        {"facing away", {0.0, 4.0, -600.0}, M_PI, 0.0, 0.0, M_PI, 0, 0},
+        {"inside the box", {5.0, 4.0, -10.0}, 0.0, 0.0, 0.0, M_PI, 2, 0},
         /* z: 30 m in front of the box, whose reach the loop takes from the
          * wave (it grows with the mask's falloff and the bow). */
         {"low, 30 m in front of the box", {0.0, 2.0, 30.0}, 0.6, 0.0, 0.0, M_PI, 1, 1},
         /* The crest's shadow reaches ~160 m toward the camera, past it. */
-        {"the same, the sun behind the wave", {0.0, 2.0, -120.0}, 0.6, 0.0, 0.0, 0.0, 2},
+        {"the same, the sun behind the wave", {0.0, 2.0, -120.0}, 0.6, 0.0, 0.0, 0.0, 2, 0},
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         tl_scene s;
