@@ -431,13 +431,8 @@ float march_water(vec3 ray, float t_min)
     return march_end(ray, m);
 }
 #else
-// The least share of a step one step inside the giant wave's box costs:
-// at most 1/TL_BOX_STEP_COST box steps for each of quality.march_steps,
-// which keeps a fragment's loops under llvmpipe's limit (65535 iterations
-// in all; tl_renderer.c's samples_per_draw counts the march's steps).
-#ifndef TL_BOX_STEP_COST
-#define TL_BOX_STEP_COST 0.25
-#endif
+// TL_BOX_STEP_COST (TL_QUALITY_GIANT_STEP_COST, src/scene/tl_quality.h):
+// the least share of a step one step inside the giant wave's box costs.
 // With the giant wave: the band and the wave's box.
 float march_water(vec3 ray, float t_min)
 {

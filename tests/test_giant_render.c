@@ -394,7 +394,7 @@ static void test_screen_rect(void)
     struct {
         const char *what;
         double pos[3], yaw, pitch, roll, sun_azimuth;
-        int expect; /* 0: empty, 1: part of the frame, 2: all of it */
+        int expect;     /* 0: empty, 1: part of the frame, 2: all of it */
         int before_box; /* pos z is metres in front of the wave's box, not a position */
     } cases[] = {
         {"600 m away, the wave off to the left", {0.0, 4.0, -600.0}, 0.45, 0.0, 0.0, M_PI, 1, 0},

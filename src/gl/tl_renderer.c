@@ -105,14 +105,15 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_WAKE_SPEED_NONE %.3f\n"
                      "#define TL_WAKE_SPEED_FULL %.3f\n"
                      "#define TL_MARCH_RELAX %g\n"
+                     "#define TL_BOX_STEP_COST %g\n"
                      "#define TL_MIRROR_SHIFT %g\n",
                      TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
-                     variation[2], TL_GIANT_PEEL_ROUND, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_ANCHOR,
-                     TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_SPRAY_SIGMA,
-                     TL_SPRAY_FROM, TL_SPRAY_FULL, TL_WAKE_POINTS, TL_WAKE_GROUP,
+                     variation[2], TL_GIANT_PEEL_ROUND, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS,
+                     TL_GIANT_LIP_ANCHOR, TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE,
+                     TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL, TL_WAKE_POINTS, TL_WAKE_GROUP,
                      TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
-                     TL_MIRROR_SHIFT);
+                     TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -510,11 +511,13 @@ static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
  * this costs a few extra draws. */
 static int samples_per_draw(const tl_frame_uniforms *u, unsigned features)
 {
-    long per_step = u->march_octaves + 1;
-    if (features & TL_FEATURE_GIANT_WAVE)
-        per_step += u->giant_iterations + 40; /* its inversion and slope bins */
-    long per_sample = (long)(u->march_steps + u->refine_steps) * per_step +
-                      3L * (u->normal_octaves + 1) + TL_WAKE_POINTS + 256;
+    long per_step = u->march_octaves + 1, steps = u->march_steps;
+    if (features & TL_FEATURE_GIANT_WAVE) {
+        per_step += u->giant_iterations + 40;                   /* its inversion and slope bins */
+        steps = (long)ceil(steps / TL_QUALITY_GIANT_STEP_COST); /* box steps cost less */
+    }
+    long per_sample =
+        (steps + u->refine_steps) * per_step + 3L * (u->normal_octaves + 1) + TL_WAKE_POINTS + 256;
     if (features & TL_FEATURE_UNDERWATER)
         per_sample *= 2; /* the march below the surface, and the lens */
     long n = 60000 / per_sample;
@@ -687,9 +690,9 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
      * (u->plan.giant_rect), the lean program, the same image there, around it. */
     const int w = u->width, h = u->height;
     int rect[4] = {0, 0, 0, 0};
-    unsigned lean =
-        features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP |
-                              TL_FEATURE_GIANT_SPRAY | TL_FEATURE_GIANT_GLOW);
+    unsigned lean = features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK |
+                                           TL_FEATURE_GIANT_LIP | TL_FEATURE_GIANT_SPRAY |
+                                           TL_FEATURE_GIANT_GLOW);
     if (features & TL_FEATURE_GIANT_WAVE)
         memcpy(rect, u->plan.giant_rect, sizeof rect);
     int rc = TL_OK;

@@ -84,7 +84,8 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
         }
     }
     unsigned march =
-        (features & (TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_LOD)) | TL_PASS_PREPASS;
+        (features & (TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_LOD)) |
+        TL_PASS_PREPASS;
     if (coarser)
         march |= TL_PASS_HINTED;
     int bands[4][4], has_rect;
@@ -110,9 +111,8 @@ static int draw_level(tl_renderer *r, const tl_frame_uniforms *u, unsigned featu
     for (int pass = scope == TL_PREPASS_GIANT; pass < 2; pass++) {
         if (pass == 1 && !has_rect)
             break;
-        unsigned f = pass == 0
-                         ? march & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK)
-                         : march;
+        unsigned f =
+            pass == 0 ? march & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK) : march;
         GLuint program = tl_renderer_use_ocean(r, u, f, err);
         if (!program)
             return err ? (int)err->status : TL_ERR_RUNTIME;

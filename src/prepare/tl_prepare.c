@@ -25,12 +25,24 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
     "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
     "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW"};
-static const char *const feature_labels[TL_FEATURE_COUNT] = {
-    "sun disc",        "giant wave",       "boat",          "wake",
-    "underwater",      "waterline",        "fog",           "physical sky",
-    "level of detail", "analytic normals", "supersampling", "filtered shading",
-    "root refinement", "hit polish",       "breaking crest",   "lip",
-    "spray",           "crest glow"};
+static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
+                                                             "giant wave",
+                                                             "boat",
+                                                             "wake",
+                                                             "underwater",
+                                                             "waterline",
+                                                             "fog",
+                                                             "physical sky",
+                                                             "level of detail",
+                                                             "analytic normals",
+                                                             "supersampling",
+                                                             "filtered shading",
+                                                             "root refinement",
+                                                             "hit polish",
+                                                             "breaking crest",
+                                                             "lip",
+                                                             "spray",
+                                                             "crest glow"};
 
 const char *tl_feature_define(int index)
 {

@@ -41,7 +41,8 @@ typedef enum tl_feature {
     TL_FEATURE_GIANT_BREAK = 1u << 14, /* the giant wave's crest has begun to break */
     TL_FEATURE_GIANT_LIP = 1u << 15,   /* and its lip is thrown somewhere along it */
     TL_FEATURE_GIANT_SPRAY = 1u << 16, /* giant.spray, where a crest is tall or a bow meets it */
-    TL_FEATURE_GIANT_GLOW = 1u << 17,  /* giant.scatter > 0 with the sun up: light through the crest */
+    TL_FEATURE_GIANT_GLOW =
+        1u << 17, /* giant.scatter > 0 with the sun up: light through the crest */
 } tl_feature;
 
 #define TL_FEATURE_COUNT 18

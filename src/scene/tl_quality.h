@@ -16,6 +16,12 @@
  * the march always steps by it inside the giant wave's bounding box (the
  * shaders' TL_MARCH_RELAX, from tl_renderer_defines). */
 #define TL_QUALITY_MARCH_RELAX 1.3
+/* The least share of one of quality.march_steps a step inside the giant
+ * wave's box costs (shaders/march.glsl): a step the slope bound divides by
+ * g costs 1/g, so a ray crossing the box gets as far as over the open sea,
+ * and at most 1/this box steps run for each counted one (samples_per_draw
+ * keeps a fragment under llvmpipe's loop limit with it). */
+#define TL_QUALITY_GIANT_STEP_COST 0.25
 
 typedef struct tl_quality {
     const char *name;

@@ -41,19 +41,19 @@ typedef struct tl_ocean {
 } tl_ocean;
 
 typedef struct tl_water {
-    double absorption[3];      /* per metre, R G B (pure water: 0.34, 0.057, 0.009) */
-    double scattering;         /* per metre, grey: particles that light the water body */
+    double absorption[3];        /* per metre, R G B (pure water: 0.34, 0.057, 0.009) */
+    double scattering;           /* per metre, grey: particles that light the water body */
     double color_at_distance[3]; /* the colour white light takes after color_distance */
     double color_distance;       /* metres; > 0 sets the extinction from the colour above */
     double ior;                  /* refractive index (1.333) */
-    double foam;               /* scale of every foam term, 0..1 (1) */
-    double fresnel_f0;         /* Schlick F0 (0.04) */
-    double scatter_color[3];   /* linear RGB (0.0293, 0.0698, 0.1717) */
-    double scatter_strength;   /* (0.1) */
-    double scatter_base;       /* scattering at the wave troughs (0.2) */
-    double normal_smooth_max;  /* max blend of far normals toward up (0.8) */
-    double normal_smooth_rate; /* per metre inside the sqrt (0.01) */
-    double normal_smooth_gain; /* (1.1) */
+    double foam;                 /* scale of every foam term, 0..1 (1) */
+    double fresnel_f0;           /* Schlick F0 (0.04) */
+    double scatter_color[3];     /* linear RGB (0.0293, 0.0698, 0.1717) */
+    double scatter_strength;     /* (0.1) */
+    double scatter_base;         /* scattering at the wave troughs (0.2) */
+    double normal_smooth_max;    /* max blend of far normals toward up (0.8) */
+    double normal_smooth_rate;   /* per metre inside the sqrt (0.01) */
+    double normal_smooth_gain;   /* (1.1) */
 } tl_water;
 
 typedef enum tl_sky_model {

@@ -112,8 +112,8 @@ double tl_giant_lambda(const tl_giant *g, double w, double *dl)
         ds = g->break_drop * dx / (2.0 * g->throw_time * g->peel_speed) * dd;
     }
     double F = g->fade;
-    *dl = F * (dm * taper * vary * settle + m * dtaper * vary * settle + m * taper * dvary * settle +
-               m * taper * vary * ds);
+    *dl = F * (dm * taper * vary * settle + m * dtaper * vary * settle +
+               m * taper * dvary * settle + m * taper * vary * ds);
     return F * m * taper * vary * settle;
 }
 
@@ -195,15 +195,14 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
         tl_giant_profile(g, s0, &y, &dy, &d, &dd);
         double j = fmax(1.0 + F * dd, 0.5 * TL_GIANT_MIN_JACOBIAN);
         double along = fabs(F * dy) / j;
-        double across = g->max_dlambda * fabs(y) +
-                        fabs(F * dy) / j * (g->max_dbow + g->max_dlambda * fabs(d));
+        double across =
+            g->max_dlambda * fabs(y) + fabs(F * dy) / j * (g->max_dbow + g->max_dlambda * fabs(d));
         double slope = hypot(along, across);
         /* Its height, lambda·Y for lambda in [0, F], is at most F·Y or 0;
          * what lies between samples, at most a sample's spacing up the
          * slope (along s, where the samples are spaced). */
         double height = fmax(F * y, 0.0) + (fabs(F * dy) / j) * spacing;
-        double lo = s0 + fmin(0.0, F * d) - g->bow - spacing,
-               hi = s0 + fmax(0.0, F * d) + spacing;
+        double lo = s0 + fmin(0.0, F * d) - g->bow - spacing, hi = s0 + fmax(0.0, F * d) + spacing;
         int b0 = (int)floor((lo + g->reach_along) / bin),
             b1 = (int)floor((hi + g->reach_along) / bin);
         for (int b = b0 < 0 ? 0 : b0; b <= b1 && b < TL_GIANT_SLOPE_BINS; b++) {
@@ -234,8 +233,8 @@ static void prepare_envelope(tl_giant *g, const tl_giant_wave *p, double t)
 {
     static const double periods[3] = TL_GIANT_VARIATION_PERIODS;
     double L = 2.0 * M_PI / g->k;
-    g->peak = clampd(p->peak, -TL_GIANT_PEAK_LIMIT * g->half_width,
-                     TL_GIANT_PEAK_LIMIT * g->half_width);
+    g->peak =
+        clampd(p->peak, -TL_GIANT_PEAK_LIMIT * g->half_width, TL_GIANT_PEAK_LIMIT * g->half_width);
     g->taper = p->taper;
     g->bow = p->bow;
     g->variation = p->variation;
@@ -289,8 +288,8 @@ void tl_giant_prepare(tl_giant *g, const tl_giant_wave *p, double t)
     g->amplitude = p->height;
     g->fade = p->fade;
     g->half_length = TL_GIANT_CREST_HALF_LENGTH * L;
-    g->falloff_along = clampd(p->falloff, TL_GIANT_MIN_FALLOFF_ALONG * L,
-                              TL_GIANT_MAX_FALLOFF_WAVELENGTHS * L);
+    g->falloff_along =
+        clampd(p->falloff, TL_GIANT_MIN_FALLOFF_ALONG * L, TL_GIANT_MAX_FALLOFF_WAVELENGTHS * L);
     g->half_width = 0.5 * p->width;
     g->falloff_across = fmin(fmax(p->falloff, TL_GIANT_MIN_FALLOFF_WAVELENGTHS * L), g->half_width);
     prepare_envelope(g, p, t);
@@ -380,7 +379,8 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
     if (dist <= 0.0)
         return 1.0; /* the sun's side of the crest */
     double wc = w + dist * across;
-    double crest_height = fabs(wc) < g->half_width ? tl_giant_lambda(g, wc, &dl) * g->amplitude : 0.0;
+    double crest_height =
+        fabs(wc) < g->half_width ? tl_giant_lambda(g, wc, &dl) * g->amplitude : 0.0;
     double ray_height = y + dist * sun[1] / flat;
     /* The penumbra: the sun's half degree over the distance, and the thin
      * lip near the top of a tall crest, through which light still comes. */

@@ -61,8 +61,14 @@
  * wavelengths of the wave) and weights (summing to 1), their phases drawn
  * from giant.seed. Long against the small waves, short against the crest:
  * the height changes gently, and no stretch of the crest repeats another. */
-#define TL_GIANT_VARIATION_PERIODS {0.9, 0.53, 0.31}
-#define TL_GIANT_VARIATION_WEIGHTS {0.5, 0.3, 0.2}
+#define TL_GIANT_VARIATION_PERIODS                                                                 \
+    {                                                                                              \
+        0.9, 0.53, 0.31                                                                            \
+    }
+#define TL_GIANT_VARIATION_WEIGHTS                                                                 \
+    {                                                                                              \
+        0.5, 0.3, 0.2                                                                              \
+    }
 /* A breaking crest's lip throws and lands over this many times the time a
  * body takes to fall the crest's height; the broken crest then settles
  * (loses giant.break_drop of its height) over twice that. */
@@ -78,12 +84,12 @@
  * TL_GIANT_LIP_SWEEP degrees forward and down over the throw, landing on
  * the face in front (at a fifth of the crest's height); then the tube
  * thins away over TL_GIANT_LIP_FADE throw times. */
-#define TL_GIANT_LIP_RADIUS 0.45
+#define TL_GIANT_LIP_RADIUS    0.45
 #define TL_GIANT_LIP_THICKNESS 0.05
-#define TL_GIANT_LIP_ANCHOR -30.0
-#define TL_GIANT_LIP_ROOT -45.0
-#define TL_GIANT_LIP_SWEEP 195.0
-#define TL_GIANT_LIP_FADE 0.6
+#define TL_GIANT_LIP_ANCHOR    -30.0
+#define TL_GIANT_LIP_ROOT      -45.0
+#define TL_GIANT_LIP_SWEEP     195.0
+#define TL_GIANT_LIP_FADE      0.6
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32
@@ -94,19 +100,19 @@
 
 /* The wave at one moment, ready to evaluate. All lengths in metres. */
 typedef struct tl_giant {
-    bool active;             /* enabled, fade > 0 and height > 0 */
-    double dir[2];           /* unit travel direction (x, z) */
-    double across[2];        /* unit perpendicular (x, z): dir turned 90 deg clockwise */
-    double origin[2];        /* world x, z of the crest on the centre line */
-    double k;                /* wavenumber 2π / wavelength */
-    double speed;            /* crest speed, m/s (deep-water speed times giant.speed) */
-    double amplitude;        /* giant.height */
-    double fade;             /* giant.fade */
-    double steepness;        /* Gerstner q·k·A after the height-field clamp */
-    double curl;             /* curve strength after the clamp */
-    double half_length;      /* the crest mask is 1 inside |s0| <= this (TL_GIANT_CREST_HALF_LENGTH) */
-    double falloff_along;    /* the crest mask reaches 0 at half_length + this */
-    double half_width;       /* width / 2: the width mask is 0 beyond |w| >= this */
+    bool active;          /* enabled, fade > 0 and height > 0 */
+    double dir[2];        /* unit travel direction (x, z) */
+    double across[2];     /* unit perpendicular (x, z): dir turned 90 deg clockwise */
+    double origin[2];     /* world x, z of the crest on the centre line */
+    double k;             /* wavenumber 2π / wavelength */
+    double speed;         /* crest speed, m/s (deep-water speed times giant.speed) */
+    double amplitude;     /* giant.height */
+    double fade;          /* giant.fade */
+    double steepness;     /* Gerstner q·k·A after the height-field clamp */
+    double curl;          /* curve strength after the clamp */
+    double half_length;   /* the crest mask is 1 inside |s0| <= this (TL_GIANT_CREST_HALF_LENGTH) */
+    double falloff_along; /* the crest mask reaches 0 at half_length + this */
+    double half_width;    /* width / 2: the width mask is 0 beyond |w| >= this */
     double falloff_across;   /* the width mask is 1 inside |w| <= half_width - this */
     double peak;             /* w of the peak (giant.peak, held within TL_GIANT_PEAK_LIMIT) */
     double taper;            /* giant.taper: the ends' height below the peak's, a fraction */

@@ -128,8 +128,9 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double dx = x - sp->bow[0], dy = y - sp->bow[1], dz = z - sp->bow[2];
         double r2 = (dx * dx + dy * dy + dz * dz) / (sp->bow_radius * sp->bow_radius);
         if (r2 < 9.0)
-            density += sp->bow_amount * exp(-r2) *
-                       smoothstep(0.3, 0.7, tl_giant_spray_noise(dx / 0.8 + 17.0, dy / 0.6 + dz / 0.8));
+            density +=
+                sp->bow_amount * exp(-r2) *
+                smoothstep(0.3, 0.7, tl_giant_spray_noise(dx / 0.8 + 17.0, dy / 0.6 + dz / 0.8));
     }
     return density;
 }

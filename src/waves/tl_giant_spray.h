@@ -23,20 +23,20 @@
 #define TL_SPRAY_BOW_RADIUS 0.35
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
-#define TL_SPRAY_BOW_GAIN 4.0
+#define TL_SPRAY_BOW_GAIN  4.0
 #define TL_SPRAY_BOW_SLOPE 0.5
 
 /* The spray of one frame. */
 typedef struct tl_giant_spray {
-    bool active;        /* giant.spray > 0 and a crest tall enough somewhere */
-    double amount;      /* giant.spray */
-    double reach;       /* metres the plume reaches back from the crest */
-    double drift;       /* metres the wind has moved the wisps (wrapped every 4096 m) */
-    double base;        /* the ocean's mean level, -depth / 2 */
-    double bow[3];      /* world position of the burst's centre */
-    double bow_radius;  /* metres */
-    double bow_amount;  /* its density, 0 without a burst */
-    double box[4];      /* (s low, s high, y low, y high) in the wave's coordinates */
+    bool active;       /* giant.spray > 0 and a crest tall enough somewhere */
+    double amount;     /* giant.spray */
+    double reach;      /* metres the plume reaches back from the crest */
+    double drift;      /* metres the wind has moved the wisps (wrapped every 4096 m) */
+    double base;       /* the ocean's mean level, -depth / 2 */
+    double bow[3];     /* world position of the burst's centre */
+    double bow_radius; /* metres */
+    double bow_amount; /* its density, 0 without a burst */
+    double box[4];     /* (s low, s high, y low, y high) in the wave's coordinates */
 } tl_giant_spray;
 
 /* The spray of wave `g` at time t with giant.spray `amount`, the wind
