@@ -17,18 +17,20 @@ struct GiantLip {
     float thickness; // its half thickness
     float from, to;  // the arc's angles
     float progress;  // the throw, 0 .. 1
+    float spent;     // 0 .. 1 once it has landed: it whitens and thins away
 };
 
 GiantLip giant_lip_at(float w)
 {
-    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0);
+    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float age = giant_break_age(w), T = u_giant_break.z;
     if (abs(w) >= u_giant_mask.z || !(age > 0.0) || age >= T * (1.0 + TL_GIANT_LIP_FADE))
         return lip;
     float dl, db;
     float lambda = giant_lambda(w, dl), height = lambda * u_giant_shape.y;
     float life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
-    lip.thickness = TL_GIANT_LIP_THICKNESS * height * life;
+    lip.spent = 1.0 - life;
+    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life);
     lip.present = lip.thickness > 0.0;
     lip.radius = TL_GIANT_LIP_RADIUS * height;
     lip.progress = giant_breaking(w);

@@ -35,11 +35,18 @@ float giant_spray_density(vec3 p)
         density += u_giant_spray.x * source * plume * wisps;
     }
     if (u_giant_spray_bow.w > 0.0) {
+        // A sheet thrown up and out to both sides of the bow: thin along
+        // the heading, wide across it, rising; torn by the noise.
         vec3 d = p - u_giant_spray_bow.xyz;
-        float r2 = dot(d, d) / (u_giant_spray.w * u_giant_spray.w);
+        vec2 h = u_giant_spray_heading;
+        float R = u_giant_spray.w;
+        float along = dot(d.xz, h) / (0.4 * R);
+        float side = (d.x * h.y - d.z * h.x) / (1.3 * R);
+        float up = d.y / (0.9 * R);
+        float r2 = along * along + side * side + up * up;
         if (r2 < 9.0)
             density += u_giant_spray_bow.w * exp(-r2) *
-                       smoothstep(0.3, 0.7, foam_noise(vec2(d.x / 0.8 + 17.0, d.y / 0.6 + d.z / 0.8)));
+                       smoothstep(0.4, 0.75, foam_noise(vec2(side * 2.6 + 17.0, up * 3.1 - along)));
     }
     return density;
 }
@@ -70,7 +77,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     if (u_giant_spray_bow.w > 0.0) {
         // The sphere of three radii around the bow's burst.
         vec3 c = u_giant_spray_bow.xyz - vec3(0.0, u_cam_height, 0.0);
-        float along = dot(c, ray), R = 3.0 * u_giant_spray.w;
+        float along = dot(c, ray), R = 3.0 * 1.3 * u_giant_spray.w; // the sheet's widest
         float h = R * R - (dot(c, c) - along * along);
         if (h > 0.0) {
             float b0 = max(along - sqrt(h), 0.0), b1 = min(along + sqrt(h), dist);

@@ -124,6 +124,8 @@ static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniform
     u->giant_spray_bow[1] = (float)sp.bow[1];
     u->giant_spray_bow[2] = (float)(sp.bow[2] - s->camera.position[2]);
     u->giant_spray_bow[3] = (float)sp.bow_amount;
+    u->giant_spray_heading[0] = (float)sp.heading[0];
+    u->giant_spray_heading[1] = (float)sp.heading[1];
 }
 
 /* The giant wave relative to the camera: only the camera's offset from the

@@ -162,7 +162,7 @@ typedef struct tl_frame_uniforms {
     /* TL_FEATURE_GIANT_SPRAY: (amount, reach, drift, bow radius), the
      * crest's box, the bow's burst (camera-relative x, absolute y, z,
      * amount). */
-    float giant_spray[4], giant_spray_box[4], giant_spray_bow[4];
+    float giant_spray[4], giant_spray_box[4], giant_spray_bow[4], giant_spray_heading[2];
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */

@@ -444,7 +444,8 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     double dl, db, lambda = tl_giant_lambda(g, w, &dl);
     double height = lambda * g->amplitude;
     double life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
-    lip->thickness = TL_GIANT_LIP_THICKNESS * height * life;
+    lip->spent = 1.0 - life;
+    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life);
     if (!(lip->thickness > 0.0))
         return;
     lip->present = true;

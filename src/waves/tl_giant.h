@@ -83,13 +83,15 @@
  * TL_GIANT_LIP_ROOT, buried in the crest, and its free end sweeps
  * TL_GIANT_LIP_SWEEP degrees forward and down over the throw, landing on
  * the face in front (at a fifth of the crest's height); then the tube
- * thins away over TL_GIANT_LIP_FADE throw times. */
+ * turns to whitewater, and the tube thins away over TL_GIANT_LIP_FADE
+ * throw times (as the square root of what is left: it stays thick, then
+ * goes). */
 #define TL_GIANT_LIP_RADIUS    0.45
 #define TL_GIANT_LIP_THICKNESS 0.05
 #define TL_GIANT_LIP_ANCHOR    -30.0
 #define TL_GIANT_LIP_ROOT      -45.0
 #define TL_GIANT_LIP_SWEEP     195.0
-#define TL_GIANT_LIP_FADE      0.6
+#define TL_GIANT_LIP_FADE      1.0
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32
@@ -197,6 +199,7 @@ typedef struct tl_giant_lip {
     double thickness; /* the tube's half thickness */
     double from, to;  /* the arc's angles, radians from up, clockwise toward +s */
     double progress;  /* the throw, 0 .. 1 (tl_giant_break_progress) */
+    double spent;     /* 0 .. 1 once it has landed: it whitens and thins away */
 } tl_giant_lip;
 
 /* The lip at w across; `base` is the ocean's mean level (-depth / 2). */

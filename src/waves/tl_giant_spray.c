@@ -91,6 +91,8 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
             sp->bow[1] = bow[1] + 0.6 * sp->bow_radius;
             sp->bow[2] = bow[2] + heading[1] * 0.5 * sp->bow_radius;
             sp->bow_amount = TL_SPRAY_BOW_GAIN * amount * strength;
+            sp->heading[0] = heading[0];
+            sp->heading[1] = heading[1];
             sp->active = true;
         }
     }
@@ -125,12 +127,17 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         density += sp->amount * source * plume * wisps;
     }
     if (sp->bow_amount > 0.0) {
+        /* A sheet thrown up and out to both sides of the bow: thin along
+         * the heading, wide across it, rising; torn by the noise. */
         double dx = x - sp->bow[0], dy = y - sp->bow[1], dz = z - sp->bow[2];
-        double r2 = (dx * dx + dy * dy + dz * dz) / (sp->bow_radius * sp->bow_radius);
+        double along = (dx * sp->heading[0] + dz * sp->heading[1]) / (0.4 * sp->bow_radius);
+        double side = (dx * sp->heading[1] - dz * sp->heading[0]) / (1.3 * sp->bow_radius);
+        double up = dy / (0.9 * sp->bow_radius);
+        double r2 = along * along + side * side + up * up;
         if (r2 < 9.0)
             density +=
                 sp->bow_amount * exp(-r2) *
-                smoothstep(0.3, 0.7, tl_giant_spray_noise(dx / 0.8 + 17.0, dy / 0.6 + dz / 0.8));
+                smoothstep(0.4, 0.75, tl_giant_spray_noise(side * 2.6 + 17.0, up * 3.1 - along));
     }
     return density;
 }

@@ -36,6 +36,7 @@ typedef struct tl_giant_spray {
     double bow[3];     /* world position of the burst's centre */
     double bow_radius; /* metres */
     double bow_amount; /* its density, 0 without a burst */
+    double heading[2]; /* the boat's heading, unit (x, z) */
     double box[4];     /* (s low, s high, y low, y high) in the wave's coordinates */
 } tl_giant_spray;
 
