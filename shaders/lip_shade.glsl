@@ -38,7 +38,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     vec2 q = vec2(sw.x, hit.y) - lip.center;
     float along = clamp((atan(q.x, q.y) - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
     // Once landed, the whole lip turns to whitewater as it goes.
-    float white = max(smoothstep(0.75, 1.0, along) * (0.35 + 0.55 * lip.progress),
+    float white = max(smoothstep(0.85, 1.0, along) * (0.15 + 0.65 * lip.progress),
                       smoothstep(0.0, 0.6, lip.spent));
     vec2 at = vec2(sw.y, sw.x + hit.y);
     float lace = foam_lace(at * 1.5);

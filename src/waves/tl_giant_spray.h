@@ -23,7 +23,7 @@
 #define TL_SPRAY_BOW_RADIUS 0.35
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
-#define TL_SPRAY_BOW_GAIN  4.0
+#define TL_SPRAY_BOW_GAIN  2.5
 #define TL_SPRAY_BOW_SLOPE 0.5
 
 /* The spray of one frame. */
