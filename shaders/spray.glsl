@@ -33,6 +33,18 @@ float giant_spray_density(vec3 p)
                                  0.65 * foam_noise(vec2(sw.y / 2.5, drifted / 1.5 + up / 0.7)) +
                                      0.35 * foam_noise(vec2(sw.y / 1.1, drifted / 0.6 - up / 0.4)));
         density += u_giant_spray.x * source * plume * wisps;
+#ifdef TL_FEATURE_GIANT_LIP
+        // Where the lip lands, whitewater erupts.
+        GiantLip lip = giant_lip_at(sw.y);
+        if (lip.present && lip.progress > 0.5) {
+            float ts = lip.center.x + lip.radius * sin(lip.to) - sw.x;
+            float ty = lip.center.y + lip.radius * cos(lip.to) - p.y;
+            float r = TL_SPRAY_LANDING_RADIUS * lip.radius;
+            density += TL_SPRAY_BOW_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
+                       (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+                       smoothstep(0.35, 0.7, foam_noise(vec2(sw.y / 1.5 + 5.0, ty / 0.8 - ts / 1.1)));
+        }
+#endif
     }
     if (u_giant_spray_bow.w > 0.0) {
         // A sheet thrown up and out to both sides of the bow: thin along

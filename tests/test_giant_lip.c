@@ -254,9 +254,13 @@ static void test_gpu_mirror(tl_renderer *r)
             double lambda = tl_giant_lambda(&g, w, &dl);
             double sv = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k - 4.0 * (i % 4);
             double y = base_of(&s) + lambda * g.amplitude + 0.5 * (i % 3);
+            tl_giant_lip_at(&g, w, base_of(&s), &cpu[i]);
+            if (i % 4 == 3 && cpu[i].present) { /* beside the lip's tip: where it lands */
+                sv = cpu[i].center[0] + cpu[i].radius * sin(cpu[i].to) + 0.3;
+                y = cpu[i].center[1] + cpu[i].radius * cos(cpu[i].to) + 0.2;
+            }
             double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
             double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
-            tl_giant_lip_at(&g, w, base_of(&s), &cpu[i]);
             density[i] = tl_giant_spray_density(&sp, &g, x, y, z);
             in4[4 * i + 0] = (float)(x - s.camera.position[0]);
             in4[4 * i + 1] = (float)(z - s.camera.position[2]);
@@ -275,7 +279,7 @@ static void test_gpu_mirror(tl_renderer *r)
         }
         /* The lip's centre s is the wave's (relative to the crest on the
          * centre line), as the CPU's. */
-        double worst = 0.0, worst_angle = 0.0, worst_density = 0.0;
+        double worst = 0.0, worst_angle = 0.0, worst_density = 0.0, landing = 0.0;
         int present = 0;
         for (int i = 0; i < N; i++) {
             CHECK((ang4[4 * i + 3] > 0.5) == cpu[i].present);
@@ -288,6 +292,8 @@ static void test_gpu_mirror(tl_renderer *r)
             worst = fmax(worst, fabs(lip4[4 * i + 3] - cpu[i].thickness));
             worst_angle = fmax(worst_angle, fabs(ang4[4 * i + 1] - cpu[i].to));
             worst_density = fmax(worst_density, fabs(spray4[4 * i] - density[i]));
+            if (i % 4 == 3)
+                landing = fmax(landing, density[i]);
         }
         printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g\n",
                s.time, hypot(where[k][1], where[k][2]), present, N, worst, worst_angle,
@@ -296,6 +302,7 @@ static void test_gpu_mirror(tl_renderer *r)
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
         CHECK(worst_density <= 2e-3 * s.giant.spray);
+        CHECK(landing > 0.1); /* the landing's cloud is among the points compared */
     }
 }
 

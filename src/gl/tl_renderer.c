@@ -99,6 +99,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      "#define TL_SPRAY_SIGMA %.17g\n"
                      "#define TL_SPRAY_FROM %.17g\n"
                      "#define TL_SPRAY_FULL %.17g\n"
+                     "#define TL_SPRAY_LANDING_RADIUS %.17g\n"
+                     "#define TL_SPRAY_BOW_GAIN %.17g\n"
                      "#define TL_WAKE_POINTS %d\n"
                      "#define TL_WAKE_GROUP %d\n"
                      "#define TL_WAKE_GROUPS %d\n"
@@ -111,8 +113,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
                      TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
                      variation[2], TL_GIANT_PEEL_ROUND, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS,
                      TL_GIANT_LIP_ANCHOR, TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE,
-                     TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL, TL_WAKE_POINTS, TL_WAKE_GROUP,
-                     TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
+                     TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL, TL_SPRAY_LANDING_RADIUS,
+                     TL_SPRAY_BOW_GAIN, TL_WAKE_POINTS, TL_WAKE_GROUP, TL_WAKE_GROUPS,
+                     TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
                      TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))

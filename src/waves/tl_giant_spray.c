@@ -77,6 +77,16 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         sp->box[3] = sp->base + full * 1.25 + sp->reach * 0.25; /* top + lift + 3 rises */
         sp->active = true;
     }
+    /* The lip's landing: its box, widened by the cloud's reach. */
+    double lip[4], across[2];
+    if (tl_giant_lip_bounds(g, sp->base, lip, across)) {
+        double grow = 3.0 * TL_SPRAY_LANDING_RADIUS * TL_GIANT_LIP_RADIUS * full;
+        sp->box[0] = fmin(sp->active ? sp->box[0] : 1e30, lip[0] - grow);
+        sp->box[1] = fmax(sp->active ? sp->box[1] : -1e30, lip[1] + grow);
+        sp->box[2] = fmin(sp->active ? sp->box[2] : 1e30, lip[2] - grow);
+        sp->box[3] = fmax(sp->active ? sp->box[3] : -1e30, lip[3] + grow);
+        sp->active = true;
+    }
     /* The bow's burst: where the hull lies on the wave's slope along its
      * heading, either way: heading into a face the bow slams into it;
      * lifted from behind, it digs into the water below. */
@@ -125,6 +135,18 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                        0.65 * tl_giant_spray_noise(w / 2.5, drifted / 1.5 + up / 0.7) +
                            0.35 * tl_giant_spray_noise(w / 1.1, drifted / 0.6 - up / 0.4));
         density += sp->amount * source * plume * wisps;
+        /* The lip's landing. */
+        tl_giant_lip lip;
+        tl_giant_lip_at(g, w, sp->base, &lip);
+        if (lip.present && lip.progress > 0.5) {
+            double ts = lip.center[0] + lip.radius * sin(lip.to) - s;
+            double ty = lip.center[1] + lip.radius * cos(lip.to) - y;
+            double r = TL_SPRAY_LANDING_RADIUS * lip.radius;
+            density +=
+                TL_SPRAY_BOW_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
+                (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+                smoothstep(0.35, 0.7, tl_giant_spray_noise(w / 1.5 + 5.0, ty / 0.8 - ts / 1.1));
+        }
     }
     if (sp->bow_amount > 0.0) {
         /* A sheet thrown up and out to both sides of the bow: thin along

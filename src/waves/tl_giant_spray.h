@@ -21,6 +21,10 @@
  * ahead of and above the bow, at full strength where the wave's slope
  * along the heading (up or down) is TL_SPRAY_BOW_SLOPE or more. */
 #define TL_SPRAY_BOW_RADIUS 0.35
+/* Where the lip lands, whitewater erupts: a cloud around its tip of this
+ * radius (a share of the lip's), from half the throw until it has landed
+ * and gone, as dense as the bow's burst. */
+#define TL_SPRAY_LANDING_RADIUS 0.4
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  2.5
