@@ -306,12 +306,48 @@ static void test_gpu_mirror(tl_renderer *r)
     }
 }
 
+/* The wave's program draws the lip and the spray, so its rectangle holds
+ * them: for a low camera in front of the crest, looking at its top against
+ * the sky, the rectangle with them holds the one without and reaches higher
+ * up the frame (the lip and the spindrift rise above the height field). */
+static void test_rect_holds_lip(void)
+{
+    int rects[2][4];
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        breaking_scene(&s, 10.0, 2.0, 0.0, 0.0);
+        s.giant.breaking = k == 0;
+        s.giant.spray = k == 0 ? 1.5 : 0.0;
+        s.width = 320;
+        s.height = 180;
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        s.camera.position[0] = g.origin[0] + g.dir[0] * 260.0 + g.across[0] * s.giant.peak;
+        s.camera.position[1] = 3.0;
+        s.camera.position[2] = g.origin[1] + g.dir[1] * 260.0 + g.across[1] * s.giant.peak;
+        s.camera.yaw = atan2(-g.dir[0], -g.dir[1]);
+        s.camera.pitch = 0.02;
+        tl_waves waves;
+        tl_waves_init(&waves, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &waves, &u);
+        CHECK(!!(u.features & TL_FEATURE_GIANT_LIP) == (k == 0));
+        memcpy(rects[k], u.plan.giant_rect, sizeof rects[k]);
+    }
+    printf("rectangle with the lip and spray: y %d-%d; without: y %d-%d\n", rects[0][1],
+           rects[0][3], rects[1][1], rects[1][3]);
+    CHECK(rects[0][0] <= rects[1][0] && rects[0][1] <= rects[1][1]);
+    CHECK(rects[0][2] >= rects[1][2] && rects[0][3] >= rects[1][3]);
+    CHECK(rects[0][3] > rects[1][3] || rects[0][3] == 180);
+}
+
 int main(void)
 {
     test_lip_heights();
     test_lip_life();
     test_lip_bounds();
     test_spray_density();
+    test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)

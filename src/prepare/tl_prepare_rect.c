@@ -62,6 +62,30 @@ static void cover_box(const tl_frame_uniforms *u, double cam_y, double min_y, do
     hi[2] = u->giant_mask[2];
     if (cam_y >= min_y && u->plan.march_prepass)
         lo[1] = -(double)u->depth;
+    /* The lip and the spray rise above the height field's top and reach
+     * beyond its s (their own boxes, in the same frame): the wave's program
+     * draws them, so its rectangle holds them too. */
+    const float *more[2] = {u->features & TL_FEATURE_GIANT_LIP ? u->giant_lip_box : NULL,
+                            u->features & TL_FEATURE_GIANT_SPRAY ? u->giant_spray_box : NULL};
+    for (int i = 0; i < 2; i++)
+        if (more[i]) {
+            lo[0] = fmin(lo[0], more[i][0]);
+            hi[0] = fmax(hi[0], more[i][1]);
+            hi[1] = fmax(hi[1], more[i][3]);
+        }
+    if ((u->features & TL_FEATURE_GIANT_SPRAY) && u->giant_spray_bow[3] > 0.0) {
+        /* The bow's burst: its sphere (spray.glsl's reach) in the wave's frame. */
+        const double dx = u->giant_frame[0], dz = u->giant_frame[1];
+        const double bx = u->giant_spray_bow[0], bz = u->giant_spray_bow[2];
+        const double s = u->giant_frame[2] + dx * bx + dz * bz;
+        const double w = u->giant_frame[3] + dz * bx - dx * bz;
+        const double r = 3.0 * 1.3 * (double)u->giant_spray[3];
+        lo[0] = fmin(lo[0], s - r);
+        hi[0] = fmax(hi[0], s + r);
+        hi[1] = fmax(hi[1], u->giant_spray_bow[1] + r);
+        lo[2] = fmin(lo[2], w - r);
+        hi[2] = fmax(hi[2], w + r);
+    }
     double along, across, shadow = shadow_reach(u, top, &along, &across);
     if (shadow <= 0.0)
         return;
