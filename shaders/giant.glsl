@@ -229,27 +229,15 @@ float giant_slope_near(float s, float radius)
     return k;
 }
 
-// The part of the ray inside the wave's bounding box: s within the reach,
-// |w| within the half width, y between the deepest trough and the highest
-// crest. A rising ray never comes lower than the camera, so its box holds
-// only the s where the wave reaches that high (u_giant_rise, from the
-// wave's height bound per bin): the sky above a wave lower than the camera
-// marches nothing. Returns (t_in, t_out); t_in > t_out when the ray misses.
-vec2 giant_ray_interval(vec3 ray)
+// The part of camera ray `ray` from 0 to t_far inside the box lo .. hi in
+// the wave's frame (s, y, w): (t_in, t_out), t_in > t_out when it misses.
+// The wave's, the lip's and the spray's boxes all use it.
+vec2 giant_box_interval(vec3 ray, vec3 lo, vec3 hi, float t_far)
 {
     vec2 d = u_giant_frame.xy;
     vec3 o = vec3(u_giant_frame.z, u_cam_height, u_giant_frame.w);
     vec3 r = vec3(dot(d, ray.xz), ray.y, dot(vec2(d.y, -d.x), ray.xz));
-    float top = u_giant_bounds.w * u_giant_shape.y;
-    vec3 lo = vec3(-u_giant_bounds.x, -u_depth - top, -u_giant_mask.z);
-    vec3 hi = vec3(u_giant_bounds.x, top, u_giant_mask.z);
-    if (ray.y >= 0.0) {
-        if (u_giant_rise.x >= u_giant_rise.y)
-            return vec2(1.0, 0.0);
-        lo.x = max(lo.x, u_giant_rise.x);
-        hi.x = min(hi.x, u_giant_rise.y);
-    }
-    float t0 = 0.0, t1 = TL_FAR;
+    float t0 = 0.0, t1 = t_far;
     for (int i = 0; i < 3; i++) {
         if (abs(r[i]) < 1.0e-12) {
             if (o[i] < lo[i] || o[i] > hi[i])
@@ -261,6 +249,26 @@ vec2 giant_ray_interval(vec3 ray)
         t1 = min(t1, max(a, b));
     }
     return vec2(t0, t1);
+}
+
+// The part of the ray inside the wave's bounding box: s within the reach,
+// |w| within the half width, y between the deepest trough and the highest
+// crest. A rising ray never comes lower than the camera, so its box holds
+// only the s where the wave reaches that high (u_giant_rise, from the
+// wave's height bound per bin): the sky above a wave lower than the camera
+// marches nothing. Returns (t_in, t_out); t_in > t_out when the ray misses.
+vec2 giant_ray_interval(vec3 ray)
+{
+    float top = u_giant_bounds.w * u_giant_shape.y;
+    vec3 lo = vec3(-u_giant_bounds.x, -u_depth - top, -u_giant_mask.z);
+    vec3 hi = vec3(u_giant_bounds.x, top, u_giant_mask.z);
+    if (ray.y >= 0.0) {
+        if (u_giant_rise.x >= u_giant_rise.y)
+            return vec2(1.0, 0.0);
+        lo.x = max(lo.x, u_giant_rise.x);
+        hi.x = min(hi.x, u_giant_rise.y);
+    }
+    return giant_box_interval(ray, lo, hi, TL_FAR);
 }
 
 // Height up the crest where the point is (its envelope's), 0 at the sea's

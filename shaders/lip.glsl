@@ -69,23 +69,9 @@ float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
 // ranges; u_giant_lip_w: its w range), as giant_ray_interval.
 vec2 giant_lip_interval(vec3 ray)
 {
-    vec2 d = u_giant_frame.xy;
-    vec3 o = vec3(u_giant_frame.z, u_cam_height, u_giant_frame.w);
-    vec3 r = vec3(dot(d, ray.xz), ray.y, dot(vec2(d.y, -d.x), ray.xz));
     vec3 lo = vec3(u_giant_lip_box.x, u_giant_lip_box.z, u_giant_lip_w.x);
     vec3 hi = vec3(u_giant_lip_box.y, u_giant_lip_box.w, u_giant_lip_w.y);
-    float t0 = 0.0, t1 = TL_FAR;
-    for (int i = 0; i < 3; i++) {
-        if (abs(r[i]) < 1.0e-12) {
-            if (o[i] < lo[i] || o[i] > hi[i])
-                return vec2(1.0, 0.0);
-            continue;
-        }
-        float a = (lo[i] - o[i]) / r[i], b = (hi[i] - o[i]) / r[i];
-        t0 = max(t0, min(a, b));
-        t1 = min(t1, max(a, b));
-    }
-    return vec2(t0, t1);
+    return giant_box_interval(ray, lo, hi, TL_FAR);
 }
 
 // Sphere tracing of the lip from t_min to t_max (the height field's hit,

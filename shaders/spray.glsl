@@ -74,18 +74,10 @@ float giant_spray_density(vec3 p)
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
     // The crest's box in the wave's frame, and the bow's sphere.
-    vec2 d = u_giant_frame.xy;
-    vec3 o = vec3(u_giant_frame.z, u_cam_height, u_giant_frame.w);
-    vec3 r = vec3(dot(d, ray.xz), ray.y, dot(vec2(d.y, -d.x), ray.xz));
     vec3 lo = vec3(u_giant_spray_box.x, u_giant_spray_box.z, -u_giant_mask.z);
     vec3 hi = vec3(u_giant_spray_box.y, u_giant_spray_box.w, u_giant_mask.z);
-    float t0 = 0.0, t1 = min(dist, TL_FAR);
-    for (int i = 0; i < 3; i++) {
-        float inv = 1.0 / (abs(r[i]) < 1.0e-12 ? 1.0e-12 : r[i]);
-        float a = (lo[i] - o[i]) * inv, b = (hi[i] - o[i]) * inv;
-        t0 = max(t0, min(a, b));
-        t1 = min(t1, max(a, b));
-    }
+    vec2 box = giant_box_interval(ray, lo, hi, min(dist, TL_FAR));
+    float t0 = box.x, t1 = box.y;
     if (u_giant_spray_bow.w > 0.0) {
         // The sphere of three radii around the bow's burst.
         vec3 c = u_giant_spray_bow.xyz - vec3(0.0, u_cam_height, 0.0);
