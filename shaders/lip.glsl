@@ -30,7 +30,8 @@ GiantLip giant_lip_at(float w)
     float lambda = giant_lambda(w, dl), height = lambda * u_giant_shape.y;
     float life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
     lip.spent = 1.0 - life;
-    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life);
+    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) *
+                    smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
     lip.present = lip.thickness > 0.0;
     lip.radius = TL_GIANT_LIP_RADIUS * height;
     lip.progress = giant_breaking(w);

@@ -24,14 +24,16 @@ float giant_spray_density(vec3 p)
         float reach = u_giant_spray.y;
         float back = top_s - sw.x, up = p.y - top_y;
         float rise = 0.05 * height + 0.05 * reach;
-        float lift = 1.5 * rise * min(max(back, 0.0) / reach, 1.0);
+        float lift = TL_SPRAY_LIFT * rise * min(max(back, 0.0) / reach, 1.0);
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
+                      (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * reach))) *
                       exp(-(up - lift) * (up - lift) / (rise * rise + 1.0e-6));
+        // Streaks drawn out along the wind, narrow across the crest.
         float drifted = back + u_giant_spray.z;
-        float wisps = smoothstep(0.35, 0.8,
-                                 0.65 * foam_noise(vec2(sw.y / 2.5, drifted / 1.5 + up / 0.7)) +
-                                     0.35 * foam_noise(vec2(sw.y / 1.1, drifted / 0.6 - up / 0.4)));
+        float wisps = smoothstep(0.3, 0.75,
+                                 0.65 * foam_noise(vec2(sw.y / 0.9, drifted / 6.0 + up / 2.0)) +
+                                     0.35 * foam_noise(vec2(sw.y / 0.4, drifted / 2.5 - up / 0.8)));
         density += u_giant_spray.x * source * plume * wisps;
 #ifdef TL_FEATURE_GIANT_LIP
         // Where the lip lands, whitewater erupts.
@@ -42,7 +44,9 @@ float giant_spray_density(vec3 p)
             float r = TL_SPRAY_LANDING_RADIUS * lip.radius;
             density += TL_SPRAY_BOW_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
                        (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
-                       smoothstep(0.35, 0.7, foam_noise(vec2(sw.y / 1.5 + 5.0, ty / 0.8 - ts / 1.1)));
+                       smoothstep(0.3, 0.8,
+                                  0.6 * foam_noise(vec2(sw.y / 2.0 + 5.0, ty / 1.6 - ts / 2.2)) +
+                                      0.4 * foam_noise(vec2(sw.y / 0.7 - 3.0, ts / 0.8 + ty / 0.6)));
         }
 #endif
     }
@@ -67,8 +71,11 @@ float giant_spray_density(vec3 p)
 // scattering of the sun (a forward lobe: backlit spray glows) and of the
 // sky, by water droplets (albedo near 1), in TL_SPRAY_STEPS steps over the
 // part of the ray in the spray's boxes, each step at a fixed offset in
-// its segment (no per-pixel jitter: a frame must render the same alone).
-#define TL_SPRAY_STEPS 12
+// its segment by a hash of the pixel (so a frame renders the same alone
+// or in a sequence): a ray's few steps then land at other depths of the
+// thin plume in neighbouring pixels, and the eye sees fine grain, not the
+// blotches that the same offsets everywhere alias into.
+#define TL_SPRAY_STEPS 16
 #define TL_SPRAY_PHASE_G 0.7
 #define TL_SPRAY_ALBEDO 0.9
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
@@ -98,8 +105,14 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float dt = (t1 - t0) / float(TL_SPRAY_STEPS);
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint h = pixel.x * 0x8da6b343u ^ pixel.y * 0xd8163841u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    float offset = float(h & 0xffffu) / 65536.0;
     for (int i = 0; i < TL_SPRAY_STEPS; i++) {
-        vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + 0.5) * dt);
+        vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
         float sigma = TL_SPRAY_SIGMA * giant_spray_density(p);
         float step_trans = exp(-sigma * dt);
         scattered += trans * (1.0 - step_trans) * light;

@@ -218,6 +218,59 @@ static void test_spray_density(void)
     bow[2] = g.origin[1] + g.dir[1] * 400.0;
     tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, into);
     CHECK(sp.bow_amount == 0.0);
+    /* Without a break the box is the plume's alone: tight around the thin
+     * plume (its floor far above the wave's foot, where the shader's few
+     * steps would be wasted), and the plume has faded to nothing at its
+     * far end. */
+    s.giant.breaking = false;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL, 0.0, heading);
+    CHECK(sp.active);
+    printf("spray box without a break: y %.2f .. %.2f m over a foot at %.2f m\n", sp.box[2],
+           sp.box[3], base_of(&s));
+    CHECK(sp.box[2] > base_of(&s) + 0.2 * g.amplitude);
+    double lambda = tl_giant_lambda(&g, 0.0, &dl);
+    double top_s = tl_giant_bow(&g, 0.0, &db) + lambda * g.curl / g.k;
+    double far_s = top_s - TL_SPRAY_REACHES * sp.reach, far_y = base_of(&s) + lambda * g.amplitude;
+    double worst = 0.0;
+    for (int j = 0; j < 40; j++)
+        worst = fmax(worst,
+                     tl_giant_spray_density(&sp, &g, g.origin[0] + g.dir[0] * far_s,
+                                            far_y - 5.0 + 0.5 * j, g.origin[1] + g.dir[1] * far_s));
+    CHECK(worst == 0.0);
+}
+
+/* Only a tall stretch of the crest throws a lip: none where the envelope
+ * is below TL_GIANT_LIP_LOW, though the break has passed there, and the
+ * whole tube where it is above TL_GIANT_LIP_HIGH. */
+static void test_lip_low_crest(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 1.5, 0.0, 0.0);
+    s.giant.peel_speed = 40.0; /* the break has run the whole crest */
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    int low = 0, high = 0;
+    for (int iw = 0; iw <= 80; iw++) {
+        double w = -g.half_width + 2.0 * g.half_width * iw / 80.0, dl, dp;
+        double lambda = tl_giant_lambda(&g, w, &dl);
+        tl_giant_lip lip;
+        tl_giant_lip_at(&g, w, base_of(&s), &lip);
+        if (!(tl_giant_break_progress(&g, w, &dp) > 0.0))
+            continue;
+        if (lambda < TL_GIANT_LIP_LOW) {
+            CHECK(!lip.present);
+            low++;
+        } else if (lambda > TL_GIANT_LIP_HIGH && lip.spent == 0.0) {
+            CHECK(lip.present);
+            CHECK(fabs(lip.thickness - TL_GIANT_LIP_THICKNESS * lambda * g.amplitude) <
+                  1e-9 * g.amplitude);
+            high++;
+        }
+    }
+    printf("lip on a low crest: %d points low without one, %d tall with the whole tube\n", low,
+           high);
+    CHECK(low > 0 && high > 0);
 }
 
 /* GPU against CPU: the lip's cross-section (probe modes 10, 11) and the
@@ -347,6 +400,7 @@ int main(void)
     test_lip_life();
     test_lip_bounds();
     test_spray_density();
+    test_lip_low_crest();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);

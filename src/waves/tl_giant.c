@@ -445,7 +445,8 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     double height = lambda * g->amplitude;
     double life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
     lip->spent = 1.0 - life;
-    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life);
+    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) *
+                     smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
     if (!(lip->thickness > 0.0))
         return;
     lip->present = true;

@@ -91,7 +91,13 @@
 #define TL_GIANT_LIP_ANCHOR    -30.0
 #define TL_GIANT_LIP_ROOT      -45.0
 #define TL_GIANT_LIP_SWEEP     195.0
-#define TL_GIANT_LIP_FADE      1.0
+#define TL_GIANT_LIP_FADE      0.4
+/* Only a tall stretch of the crest throws a lip: the tube's thickness
+ * grows from nothing where the envelope is TL_GIANT_LIP_LOW to whole at
+ * TL_GIANT_LIP_HIGH, so the break dies out toward the crest's low ends
+ * instead of throwing slivers there. */
+#define TL_GIANT_LIP_LOW  0.55
+#define TL_GIANT_LIP_HIGH 0.8
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32

@@ -31,6 +31,13 @@ double tl_giant_spray_noise(double x, double y)
     return (a + (b - a) * fx) + ((d + (e - d) * fx) - (a + (b - a) * fx)) * fy;
 }
 
+/* The plume's thickness (metres, its Gaussian's scale) over a crest
+ * `height` tall whose spray reaches `reach` back. */
+static double plume_rise(double height, double reach)
+{
+    return 0.05 * height + 0.05 * reach;
+}
+
 /* Where the crest's top is at w, and its height there: as the lip's
  * anchor (tl_giant_lip_at). */
 static double crest_top(const tl_giant *g, double w, double base, double *top_s, double *height)
@@ -51,30 +58,35 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
     sp->amount = amount;
     sp->base = -0.5 * depth;
     double full = g->lambda_max * g->amplitude;
-    sp->reach = TL_SPRAY_FLIGHT * wind + 0.1 * full;
+    sp->reach = TL_SPRAY_FLIGHT * wind + 0.05 * full;
     sp->drift = fmod(wind * t, 4096.0);
     if (sp->drift < 0.0)
         sp->drift += 4096.0;
-    /* The plume's box: behind the crest by its reach (three e-foldings),
-     * ahead by a tenth of the crest, from the crest's foot to well above
-     * its top. Where no stretch of the crest is tall enough, no spray. */
+    /* The plume's box: behind the crest by TL_SPRAY_REACHES of its reach,
+     * ahead by a tenth of the crest, and from three rises below the
+     * lowest tall top to three above the highest lifted one: a tight box
+     * keeps the shader's few steps inside the thin plume. Where no stretch
+     * of the crest is tall enough, no spray. */
     bool tall = false;
     const int n = TL_GIANT_PROFILE_SAMPLES;
-    double s_lo = 1e30, s_hi = -1e30;
+    double s_lo = 1e30, s_hi = -1e30, y_lo = 1e30, y_hi = -1e30;
     for (int i = 0; i <= n; i++) {
         double w = -g->half_width + 2.0 * g->half_width * i / n, top_s, height;
-        crest_top(g, w, sp->base, &top_s, &height);
+        double top_y = crest_top(g, w, sp->base, &top_s, &height);
         if (height < TL_SPRAY_FROM * g->amplitude)
             continue;
         tall = true;
-        s_lo = fmin(s_lo, top_s - 3.0 * sp->reach);
+        double rise = plume_rise(height, sp->reach);
+        s_lo = fmin(s_lo, top_s - TL_SPRAY_REACHES * sp->reach);
         s_hi = fmax(s_hi, top_s + 0.1 * full);
+        y_lo = fmin(y_lo, top_y - 3.0 * rise);
+        y_hi = fmax(y_hi, top_y + TL_SPRAY_LIFT * rise + 3.0 * rise);
     }
     if (tall) {
         sp->box[0] = s_lo;
         sp->box[1] = s_hi;
-        sp->box[2] = sp->base;
-        sp->box[3] = sp->base + full * 1.25 + sp->reach * 0.25; /* top + lift + 3 rises */
+        sp->box[2] = y_lo;
+        sp->box[3] = y_hi;
         sp->active = true;
     }
     /* The lip's landing: its box, widened by the cloud's reach. */
@@ -124,16 +136,18 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double source = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / g->amplitude) *
                         (0.4 + 0.6 * breaking);
         double back = top_s - s, up = y - top_y;
-        double rise = 0.05 * height + 0.05 * sp->reach;
-        double lift = 1.5 * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
+        double rise = plume_rise(height, sp->reach);
+        double lift = TL_SPRAY_LIFT * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
         double plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                        exp(-fmax(back, 0.0) / sp->reach) *
+                       (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
                        exp(-(up - lift) * (up - lift) / (rise * rise + 1e-6));
+        /* Streaks drawn out along the wind, narrow across the crest. */
         double drifted = back + sp->drift;
         double wisps =
-            smoothstep(0.35, 0.8,
-                       0.65 * tl_giant_spray_noise(w / 2.5, drifted / 1.5 + up / 0.7) +
-                           0.35 * tl_giant_spray_noise(w / 1.1, drifted / 0.6 - up / 0.4));
+            smoothstep(0.3, 0.75,
+                       0.65 * tl_giant_spray_noise(w / 0.9, drifted / 6.0 + up / 2.0) +
+                           0.35 * tl_giant_spray_noise(w / 0.4, drifted / 2.5 - up / 0.8));
         density += sp->amount * source * plume * wisps;
         /* The lip's landing. */
         tl_giant_lip lip;
@@ -145,7 +159,9 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
             density +=
                 TL_SPRAY_BOW_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
                 (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
-                smoothstep(0.35, 0.7, tl_giant_spray_noise(w / 1.5 + 5.0, ty / 0.8 - ts / 1.1));
+                smoothstep(0.3, 0.8,
+                           0.6 * tl_giant_spray_noise(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
+                               0.4 * tl_giant_spray_noise(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
         }
     }
     if (sp->bow_amount > 0.0) {

@@ -11,8 +11,13 @@
  * crest shows through the plume's middle. */
 #define TL_SPRAY_SIGMA 0.05
 /* Seconds the wind carries a droplet back from the crest before it falls:
- * the plume's reach is the wind times this (plus a tenth of the crest). */
-#define TL_SPRAY_FLIGHT 1.2
+ * the plume's reach is the wind times this (plus a twentieth of the crest). */
+#define TL_SPRAY_FLIGHT 0.6
+/* The plume ends this many reaches behind the crest (faded to nothing
+ * over its last two fifths), and rises this many of its thicknesses
+ * over its first reach. */
+#define TL_SPRAY_REACHES 2.5
+#define TL_SPRAY_LIFT    1.5
 /* The crest makes spindrift once its envelope is this high (a share of
  * the wave's full height), fully at the second. */
 #define TL_SPRAY_FROM 0.3
