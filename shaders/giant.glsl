@@ -17,6 +17,7 @@ struct GiantSample {
     float lambda;       // fade × width mask
     float jacobian;     // 1 + lambda·D'(s0): below 1 the surface is compressed
     float displacement; // lambda·D(s0), metres along the travel direction
+    vec2 ride;          // d displacement / d (x, z)
 };
 
 float giant_smooth(float x, out float dx)
@@ -45,9 +46,12 @@ vec4 giant_profile(float s0)
 
 // Solves s = s0 + lambda·D(s0); the map is increasing, so a bracket holds
 // the root and a Newton step that leaves it bisects instead. Stops once
-// the residual moves the height by less than TL_GIANT_CONVERGED metres (the
-// residual along times the slope dh/ds = lambda·Y'/J); the lanes of a
-// block of pixels leave the loop together once all have converged.
+// the residual moves the height, and the point the small waves ride from,
+// by less than TL_GIANT_CONVERGED metres (the residual along times the
+// slope dh/ds = lambda·Y'/J, and times ride·lambda·D'/J); the lanes of a
+// block of pixels leave the loop together once all have converged. On the
+// height alone, s0 stayed centimetres off where the profile is flat along
+// (the crest's top), and the finest ridden octaves' phases with it.
 float giant_invert(float s, float lambda)
 {
     if (lambda <= 0.0 || abs(s) >= u_giant_bounds.x)
@@ -59,7 +63,8 @@ float giant_invert(float s, float lambda)
         vec4 p = giant_profile(s0);
         float f = s0 + lambda * p.z - s;
         float jacobian = 1.0 + lambda * p.w;
-        if (abs(f * lambda * p.y) < TL_GIANT_CONVERGED * jacobian)
+        if (abs(f) * lambda * max(abs(p.y), u_giant_ride * abs(p.w)) <
+            TL_GIANT_CONVERGED * jacobian)
             break;
         if (f < 0.0)
             lo = s0;
@@ -150,7 +155,7 @@ float giant_lambda(float w, out float dl)
 
 GiantSample giant_sample(vec2 p)
 {
-    GiantSample g = GiantSample(0.0, vec2(0.0), 0.0, 0.0, 0.0, 1.0, 0.0);
+    GiantSample g = GiantSample(0.0, vec2(0.0), 0.0, 0.0, 0.0, 1.0, 0.0, vec2(0.0));
     vec2 sw = giant_coords(p);
     g.s0 = sw.x;
     g.w = sw.y;
@@ -174,7 +179,42 @@ GiantSample giant_sample(vec2 p)
     float dh_dw = dlambda * pr.x - dh_ds * (dlambda * pr.z + dbow);
     vec2 d = u_giant_frame.xy;
     g.grad = dh_ds * d + dh_dw * vec2(d.y, -d.x);
+    // The displacement lambda·D(s0) by the same rule.
+    float dd_ds = lambda * pr.w / j;
+    float dd_dw = dlambda * pr.z - dd_ds * (dlambda * pr.z + dbow);
+    g.ride = dd_ds * d + dd_dw * vec2(d.y, -d.x);
     return g;
+}
+
+// The small waves ride the wave's water (giant.ride): the wave pushes its
+// water along the travel by g.displacement and u_giant_ride of the small
+// waves with it, so they are compressed up the face (where J < 1) and
+// drawn out on the back instead of lying still under a moving wave. The
+// ocean at p is the ocean at this point (tl_giant_ride_point).
+vec2 giant_ride(vec2 p, GiantSample g)
+{
+    return p - u_giant_frame.xy * (u_giant_ride * g.displacement);
+}
+
+// A gradient of the small waves taken at giant_ride(p), in p's
+// coordinates: dq/dp = I - ride·dir ⊗ grad(displacement), transposed.
+vec2 giant_ride_grad(vec2 grad, GiantSample g)
+{
+    return grad - (u_giant_ride * dot(u_giant_frame.xy, grad)) * g.ride;
+}
+
+// The small waves' normal n, taken at giant_ride(p), in p's coordinates.
+vec3 giant_ride_normal(vec3 n, GiantSample g)
+{
+    vec2 grad = giant_ride_grad(-n.xz / n.y, g);
+    return normalize(vec3(-grad.x, 1.0, -grad.y));
+}
+
+// How much finer the small waves are there than on open water, along the
+// travel (the level of detail's footprint grows by it): 1 - ride·(J-1)/J.
+float giant_ride_squeeze(GiantSample g)
+{
+    return max(1.0 - u_giant_ride * (g.jacobian - 1.0) / g.jacobian, 1.0e-3);
 }
 
 float giant_height(vec2 p)

@@ -18,11 +18,12 @@ struct GiantLip {
     float from, to;  // the arc's angles
     float progress;  // the throw, 0 .. 1
     float spent;     // 0 .. 1 once it has landed: it whitens and thins away
+    float rate;      // how fast the cross-section moves along w, m/m (marching)
 };
 
 GiantLip giant_lip_at(float w)
 {
-    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     float age = giant_break_age(w), T = u_giant_break.z;
     if (abs(w) >= u_giant_mask.z || !(age > 0.0) || age >= T * (1.0 + TL_GIANT_LIP_FADE))
         return lip;
@@ -30,10 +31,10 @@ GiantLip giant_lip_at(float w)
     float lambda = giant_lambda(w, dl), height = lambda * u_giant_shape.y;
     float life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
     lip.spent = 1.0 - life;
-    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) *
-                    smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
+    float tall = smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
+    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall;
     lip.present = lip.thickness > 0.0;
-    lip.radius = TL_GIANT_LIP_RADIUS * height;
+    lip.radius = TL_GIANT_LIP_RADIUS * height * tall;
     lip.progress = giant_breaking(w);
     const float anchor = radians(TL_GIANT_LIP_ANCHOR);
     float top_s = giant_bow(w, db) + lambda * u_giant_shape.w / u_giant_shape.x;
@@ -41,11 +42,33 @@ GiantLip giant_lip_at(float w)
     lip.center = vec2(top_s, top_y) - lip.radius * vec2(sin(anchor), cos(anchor));
     lip.from = radians(TL_GIANT_LIP_ROOT);
     lip.to = lip.from + lip.progress * radians(TL_GIANT_LIP_SWEEP);
+    // The march's local bound on how far a point of the tube moves per
+    // metre along w: its free end sweeps with the throw (which runs from 0
+    // to 1 over T·peel metres of crest, at most 1.5 times as fast as on
+    // average: a smoothstep), and the whole arc moves with the crest's top
+    // (bow and envelope) and grows with the envelope (radius, and the
+    // tall-crest gate, whose smoothstep is 1.5 / (high - low) steep).
+    float tip = lip.progress > 0.0 && lip.progress < 1.0
+                    ? lip.radius * radians(TL_GIANT_LIP_SWEEP) * 1.5 / (T * u_giant_break.y)
+                    : 0.0;
+    float grow = TL_GIANT_LIP_RADIUS * u_giant_shape.y *
+                 (tall + lambda * 1.5 / (TL_GIANT_LIP_HIGH - TL_GIANT_LIP_LOW));
+    lip.rate = tip + abs(db) + abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +
+                                          2.0 * grow);
     return lip;
 }
 
+// The tube's half thickness at `angle` along its arc: it thins from the
+// root to TL_GIANT_LIP_TIP of that at the end of the whole sweep.
+float giant_lip_half(GiantLip lip, float angle)
+{
+    float along = clamp((angle - lip.from) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
+    return lip.thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along);
+}
+
 // Signed distance to the tube in the cross-section (negative inside), and
-// in *n2 the unit direction of its gradient there.
+// in *n2 the unit direction of its gradient there (the thinning along the
+// arc tilts it by a few degrees at most: left out).
 float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
 {
     n2 = vec2(0.0, 1.0);
@@ -56,14 +79,15 @@ float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
     if (angle >= lip.from && angle <= lip.to) {
         float r = length(q);
         n2 = (r >= lip.radius ? 1.0 : -1.0) * q / max(r, 1.0e-6);
-        return abs(r - lip.radius) - lip.thickness;
+        return abs(r - lip.radius) - giant_lip_half(lip, angle);
     }
     vec2 e0 = lip.radius * vec2(sin(lip.from), cos(lip.from));
     vec2 e1 = lip.radius * vec2(sin(lip.to), cos(lip.to));
     vec2 d0 = q - e0, d1 = q - e1;
-    vec2 d = dot(d0, d0) < dot(d1, d1) ? d0 : d1;
+    float c0 = length(d0) - giant_lip_half(lip, lip.from), c1 = length(d1) - giant_lip_half(lip, lip.to);
+    vec2 d = c0 < c1 ? d0 : d1;
     n2 = d / max(length(d), 1.0e-6);
-    return length(d) - lip.thickness;
+    return min(c0, c1);
 }
 
 // The part of the ray inside the lip's box (u_giant_lip_box: s and y
@@ -77,23 +101,38 @@ vec2 giant_lip_interval(vec3 ray)
 
 // Sphere tracing of the lip from t_min to t_max (the height field's hit,
 // or the far plane): its distance or -1. The cross-section's distance is
-// not the 3D one (the lip changes along w), but the lip changes over tens
-// of metres along the crest and the step is TL_GIANT_LIP_RELAX of it.
-#define TL_GIANT_LIP_STEPS 48
+// not the 3D one: the lip changes along w, fastest at the peel's front,
+// where its free end sweeps metres per metre of crest. A step of h along
+// the ray changes the cross-section's distance by at most
+// h·(|ray in the (s, y) plane| + rate·|ray along w|), so the step is the
+// distance over that (locally: the rate is the lip's here), times
+// TL_GIANT_LIP_RELAX. Trusting the cross-section's distance alone stepped
+// over most of a peeling lip seen along the crest, leaving a floating
+// green blade where a few rays happened to land on it.
+#define TL_GIANT_LIP_STEPS 64
 #define TL_GIANT_LIP_RELAX 0.8
+#define TL_GIANT_LIP_GAP 2.0
 float giant_lip_march(vec3 ray, float t_min, float t_max)
 {
     vec2 box = giant_lip_interval(ray);
     float t = max(box.x, t_min), t_end = min(box.y, t_max);
     if (!(t < t_end))
         return -1.0;
+    vec2 d = u_giant_frame.xy;
+    float ray_w = abs(dot(ray.xz, vec2(d.y, -d.x))), ray_sy = sqrt(max(1.0 - ray_w * ray_w, 0.0));
     for (int i = 0; i < TL_GIANT_LIP_STEPS; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * t;
         vec2 sw = giant_coords(p.xz), n2;
-        float d = giant_lip_distance(giant_lip_at(sw.y), vec2(sw.x, p.y), n2);
-        if (d < max(u_hit_epsilon, 1.0e-4 * t))
+        GiantLip lip = giant_lip_at(sw.y);
+        float dist = giant_lip_distance(lip, vec2(sw.x, p.y), n2);
+        if (dist < max(u_hit_epsilon, 1.0e-4 * t))
             return t;
-        t += TL_GIANT_LIP_RELAX * min(d, 1.0e3);
+        // Where the crest has no lip the ray moves on by TL_GIANT_LIP_GAP
+        // metres of w: the lip begins (the peel's front), ends (its life)
+        // and stops (the tall-crest gate) as a vanishing tube, so nothing
+        // visible lies within that of its edges.
+        t += lip.present ? TL_GIANT_LIP_RELAX * min(dist, 1.0e3) / (ray_sy + lip.rate * ray_w)
+                         : min(TL_GIANT_LIP_GAP / max(ray_w, 1.0e-6), 1.0e3);
         if (t > t_end)
             return -1.0;
     }

@@ -17,9 +17,11 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     vec3 ripples = water_normal(hit.xz, u_normal_epsilon, 0.0, value, slope_var);
     n = water_facing(ray, normalize(n + 0.6 * vec3(ripples.x, 0.0, ripples.z)));
     float sunlit = giant_sunlit(hit.xz, hit.y);
-    // Light through the tube: its thickness along the sun's ray.
+    // Light through the tube: its thickness there along the sun's ray.
+    vec2 q = vec2(sw.x, hit.y) - lip.center;
+    float angle = atan(q.x, q.y);
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
-    float across = 2.0 * lip.thickness / max(abs(dot(u_sun_dir, n)), 0.25);
+    float across = 2.0 * giant_lip_half(lip, angle) / max(abs(dot(u_sun_dir, n)), 0.25);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     vec3 lit = u_giant_scatter_color * exp(-u_giant_sigma * across) * sky_sun_light() *
@@ -35,8 +37,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     vec3 color = fresnel * reflection + (1.0 - fresnel) * (body + lit * phase);
     // Foam: at the tip, more of it as the lip throws; a lace keeps it from
     // being a painted band.
-    vec2 q = vec2(sw.x, hit.y) - lip.center;
-    float along = clamp((atan(q.x, q.y) - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
+    float along = clamp((angle - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
     // Once landed, the whole lip turns to whitewater as it goes.
     float white = max(smoothstep(0.85, 1.0, along) * (0.15 + 0.65 * lip.progress),
                       smoothstep(0.0, 0.6, lip.spent));

@@ -81,11 +81,14 @@ void main()
     else if (u_probe_mode == 6) {
         vec2 grad;
         float slope_var;
-        float value = waves_value_grad(p, u_probe_octaves, 0.0, grad, slope_var);
-        result.xyz = vec3(grad * u_depth, (value - 1.0) * u_depth);
 #ifdef TL_FEATURE_GIANT_WAVE
         GiantSample g = giant_sample(p);
-        result.xyz += vec3(g.grad, g.height);
+        float value = waves_value_grad(giant_ride(p, g), u_probe_octaves, 0.0, grad, slope_var);
+        result.xyz = vec3(giant_ride_grad(grad * u_depth, g) + g.grad,
+                          (value - 1.0) * u_depth + g.height);
+#else
+        float value = waves_value_grad(p, u_probe_octaves, 0.0, grad, slope_var);
+        result.xyz = vec3(grad * u_depth, (value - 1.0) * u_depth);
 #endif
     }
 #ifdef TL_FEATURE_GIANT_WAVE

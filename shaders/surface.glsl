@@ -5,11 +5,12 @@
 // detail (0: every octave); the giant wave is always whole.
 float surface_height(vec2 p, int octaves, float footprint)
 {
-    float h = waves_height(p, octaves, footprint);
 #ifdef TL_FEATURE_GIANT_WAVE
-    h += giant_height(p);
+    GiantSample g = giant_sample(p);
+    return waves_height(giant_ride(p, g), octaves, footprint * giant_ride_squeeze(g)) + g.height;
+#else
+    return waves_height(p, octaves, footprint);
 #endif
-    return h;
 }
 
 #ifdef TL_FEATURE_POLISH
@@ -38,12 +39,17 @@ float surface_polish(vec3 ray, float t)
     vec2 grad;
     float slope_var;
     const int octaves = min(TL_NORMAL_OCTAVES, TL_MARCH_OCTAVES + TL_POLISH_EXTRA);
-    float h = (waves_value_grad(p.xz, octaves, t * u_lod_angle, grad, slope_var) - 1.0) * u_depth;
-    grad *= u_depth;
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(p.xz);
+    float h = (waves_value_grad(giant_ride(p.xz, giant), octaves,
+                                t * u_lod_angle * giant_ride_squeeze(giant), grad, slope_var) -
+               1.0) *
+              u_depth;
+    grad = giant_ride_grad(grad * u_depth, giant) + giant.grad;
     h += giant.height;
-    grad += giant.grad;
+#else
+    float h = (waves_value_grad(p.xz, octaves, t * u_lod_angle, grad, slope_var) - 1.0) * u_depth;
+    grad *= u_depth;
 #endif
     // d(p.y - h)/dt along the ray: negative where a ray from above meets
     // the surface, positive from below.

@@ -69,11 +69,16 @@ vec3 trace_underwater(vec3 ray, out float dist)
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     float value;
     float slope_var; // the underside is shaded with the mean normal
-    vec3 n = water_normal(hit.xz, u_normal_epsilon, t * u_lod_angle, value, slope_var);
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(hit.xz);
+    vec3 n = giant_ride_normal(water_normal(giant_ride(hit.xz, giant), u_normal_epsilon,
+                                            t * u_lod_angle * giant_ride_squeeze(giant), value,
+                                            slope_var),
+                               giant);
     vec2 slope = -n.xz / n.y + giant.grad;
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
+#else
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, t * u_lod_angle, value, slope_var);
 #endif
     // Light from above crosses into the water (radiance grows by n²: the
     // sky's hemisphere is squeezed into the window); what does not cross

@@ -88,7 +88,15 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out f
 vec3 water_color(vec3 ray, vec3 hit, float dist)
 {
     float value, slope_var;
+#ifdef TL_FEATURE_GIANT_WAVE
+    GiantSample giant = giant_sample(hit.xz);
+    vec3 n = giant_ride_normal(water_normal(giant_ride(hit.xz, giant), u_normal_epsilon,
+                                            dist * u_lod_angle * giant_ride_squeeze(giant), value,
+                                            slope_var),
+                               giant);
+#else
     vec3 n = water_normal(hit.xz, u_normal_epsilon, dist * u_lod_angle, value, slope_var);
+#endif
     // Far away the normal's detail is below a pixel; blending toward "up"
     // removes the shimmer the reference also suppresses this way.
     float smoothing = u_normal_smooth_max *
@@ -106,7 +114,6 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     sunlit = giant_sunlit(hit.xz, hit.y);
     // The giant wave is large against a pixel: its slope is added unsmoothed
     // (slopes of summed height fields add).
-    GiantSample giant = giant_sample(hit.xz);
     vec2 slope = -n.xz / n.y + giant.grad;
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
     ocean_y -= giant.height;

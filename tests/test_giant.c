@@ -317,10 +317,24 @@ static void test_surface(void)
     tl_waves_init(&w, &s.ocean);
     tl_giant g;
     tl_giant_prepare(&g, &s.giant, 0.0);
-    double ocean = tl_waves_height(&w, 3.0, 4.0, 0.0, 12);
+    /* The small waves ride the wave's water: the ocean is taken where the
+     * wave pushed them from; with giant.ride 0 it stays where it is. */
+    tl_giant_sample smp;
+    tl_giant_sample_at(&g, 3.0, 4.0, 8, &smp);
+    CHECK(fabs(smp.displacement) > 1.0);
+    double q[2];
+    tl_giant_ride_point(&g, &smp, 3.0, 4.0, q);
+    CHECK_NEAR(q[0], 3.0 - g.ride * smp.displacement * g.dir[0], 1e-12);
+    CHECK_NEAR(q[1], 4.0 - g.ride * smp.displacement * g.dir[1], 1e-12);
+    double ocean = tl_waves_height(&w, q[0], q[1], 0.0, 12);
     double both = tl_waves_surface_height(&w, &g, 3.0, 4.0, 0.0, 12, 8);
     CHECK_NEAR(both - ocean, tl_giant_height(&g, 3.0, 4.0, 8), 1e-12);
     CHECK(both > ocean + 5.0);
+    s.giant.ride = 0.0;
+    tl_giant_prepare(&g, &s.giant, 0.0);
+    ocean = tl_waves_height(&w, 3.0, 4.0, 0.0, 12);
+    both = tl_waves_surface_height(&w, &g, 3.0, 4.0, 0.0, 12, 8);
+    CHECK_NEAR(both - ocean, tl_giant_height(&g, 3.0, 4.0, 8), 1e-12);
 }
 
 /* The ocean's constant for filtered shading: an exp(sin) octave's mean
@@ -544,6 +558,129 @@ static void test_bounds_hold(void)
     }
 }
 
+/* The small waves ride the wave's water (giant.ride): up the face, where
+ * the water is compressed (J < 1), they are squeezed along the travel by
+ * 1 - ride·(J - 1)/J, so their slope along it grows by about that; on
+ * open water and with ride 0 they are as they were. The displacement's
+ * gradient (the chain rule's) matches central differences and stays
+ * within the march's bound (squeeze_bin). */
+static void test_ride(void)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.giant = wave(16.0, 0.75, 0.6);
+    s.giant.taper = 0.0;
+    s.giant.variation = 0.0;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    double ratio[2], expected = 0.0;
+    for (int k = 0; k < 2; k++) {
+        s.giant.ride = k == 0 ? 1.0 : 0.0;
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, 0.0);
+        /* The face: where J is least on the centre line. */
+        double face = 0.0, least = 1e9;
+        for (int i = 0; i <= 2000; i++) {
+            double sv = -g.reach_along + 2.0 * g.reach_along * i / 2000.0, x, z;
+            world_at(&g, sv, 0.0, &x, &z);
+            tl_giant_sample smp;
+            tl_giant_sample_at(&g, x, z, 40, &smp);
+            if (smp.jacobian < least) {
+                least = smp.jacobian;
+                face = sv;
+            }
+        }
+        /* The RMS slope along the travel of the ocean's part of the
+         * surface, on the face and 400 m ahead, over 2000 points across. */
+        const double e = 1e-3;
+        double sum[2] = {0.0, 0.0}, squeeze = 0.0;
+        for (int where = 0; where < 2; where++)
+            for (int j = 0; j < 2000; j++) {
+                double wv = -0.25 * g.half_width + 0.5 * g.half_width * j / 1999.0;
+                double sv = where ? face + 400.0 : face, x0, z0, x1, z1, x, z;
+                world_at(&g, sv - e, wv, &x0, &z0);
+                world_at(&g, sv + e, wv, &x1, &z1);
+                double h0 = tl_waves_surface_height(&w, &g, x0, z0, 0.0, 12, 40) -
+                            tl_giant_height(&g, x0, z0, 40);
+                double h1 = tl_waves_surface_height(&w, &g, x1, z1, 0.0, 12, 40) -
+                            tl_giant_height(&g, x1, z1, 40);
+                sum[where] += (h1 - h0) * (h1 - h0) / (4.0 * e * e);
+                world_at(&g, sv, wv, &x, &z);
+                tl_giant_sample smp;
+                tl_giant_sample_at(&g, x, z, 40, &smp);
+                if (!where)
+                    squeeze += 1.0 - g.ride * (smp.jacobian - 1.0) / smp.jacobian;
+            }
+        ratio[k] = sqrt(sum[0] / sum[1]);
+        if (k == 0)
+            expected = squeeze / 2000.0;
+        printf("ride %g: least J %.3f on the face; the small waves' slope along the travel there "
+               "%.2f of open water's (the squeeze averages %.2f)\n",
+               g.ride, least, ratio[k], k == 0 ? expected : 1.0);
+    }
+    CHECK(expected > 2.0);
+    CHECK(ratio[0] > 0.75 * expected && ratio[0] < 1.25 * expected);
+    CHECK(ratio[1] > 0.8 && ratio[1] < 1.25);
+
+    /* The displacement's gradient, and the chain rule, against central
+     * differences; and the bound. */
+    s.giant = wave(12.0, 0.6, 0.3);
+    s.giant.peak = -18.0;
+    s.giant.bow = 20.0;
+    s.giant.variation = 0.3;
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, 0.0);
+    const double e = 1e-4, bin = 2.0 * g.reach_along / TL_GIANT_SLOPE_BINS;
+    double worst = 0.0, worst_chain = 0.0, worst_bound = 0.0;
+    for (int j = 0; j <= 40; j++)
+        for (int i = 0; i <= 200; i++) {
+            double sv = -g.reach_along + 2.0 * g.reach_along * (i + 0.37) / 200.0;
+            double wv = -g.half_width + 2.0 * g.half_width * (j + 0.41) / 41.0, x, z;
+            world_at(&g, sv, wv, &x, &z);
+            tl_giant_sample smp, a, b, c, d;
+            tl_giant_sample_at(&g, x, z, 40, &smp);
+            tl_giant_sample_at(&g, x + e, z, 40, &a);
+            tl_giant_sample_at(&g, x - e, z, 40, &b);
+            tl_giant_sample_at(&g, x, z + e, 40, &c);
+            tl_giant_sample_at(&g, x, z - e, 40, &d);
+            double gx = (a.displacement - b.displacement) / (2 * e);
+            double gz = (c.displacement - d.displacement) / (2 * e);
+            double size = hypot(smp.ride[0], smp.ride[1]);
+            worst = fmax(worst, hypot(gx - smp.ride[0], gz - smp.ride[1]) / fmax(1.0, size));
+            int bi = (int)floor((sv + g.reach_along) / bin);
+            if (bi >= 0 && bi < TL_GIANT_SLOPE_BINS)
+                worst_bound = fmax(worst_bound, size / fmax(g.squeeze_bin[bi], 1e-12));
+            /* The ocean at the ride point, differentiated through it. */
+            double q[2], qa[2], qb[2], qc[2], qd[2];
+            tl_giant_ride_point(&g, &smp, x, z, q);
+            tl_giant_ride_point(&g, &a, x + e, z, qa);
+            tl_giant_ride_point(&g, &b, x - e, z, qb);
+            tl_giant_ride_point(&g, &c, x, z + e, qc);
+            tl_giant_ride_point(&g, &d, x, z - e, qd);
+            double grad[2] = {(tl_waves_height(&w, q[0] + e, q[1], 0.0, 8) -
+                               tl_waves_height(&w, q[0] - e, q[1], 0.0, 8)) /
+                                  (2 * e),
+                              (tl_waves_height(&w, q[0], q[1] + e, 0.0, 8) -
+                               tl_waves_height(&w, q[0], q[1] - e, 0.0, 8)) /
+                                  (2 * e)};
+            tl_giant_ride_grad(&g, &smp, grad);
+            double fx = (tl_waves_height(&w, qa[0], qa[1], 0.0, 8) -
+                         tl_waves_height(&w, qb[0], qb[1], 0.0, 8)) /
+                        (2 * e);
+            double fz = (tl_waves_height(&w, qc[0], qc[1], 0.0, 8) -
+                         tl_waves_height(&w, qd[0], qd[1], 0.0, 8)) /
+                        (2 * e);
+            worst_chain =
+                fmax(worst_chain, hypot(fx - grad[0], fz - grad[1]) / fmax(1.0, hypot(fx, fz)));
+        }
+    printf("ride: displacement gradient within %.2g of central differences, the chain rule "
+           "within %.2g, |grad| at most %.3f of its bin's bound\n",
+           worst, worst_chain, worst_bound);
+    CHECK(worst < 1e-5);
+    CHECK(worst_chain < 1e-5);
+    CHECK(worst_bound <= 1.0);
+}
+
 /* The analytic gradient of tl_giant_sample_at (the envelope's, the bow's
  * and the break's terms through the implicit derivative of the map) is
  * the central differences of tl_giant_height to 1e-6 relative, away from
@@ -655,6 +792,7 @@ int main(void)
     test_travel();
     test_inversion_and_slope();
     test_surface();
+    test_ride();
     test_peak_highest();
     test_bow_lags();
     test_no_steep_shoulder();

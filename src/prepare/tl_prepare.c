@@ -130,7 +130,21 @@ static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniform
 
 /* The giant wave relative to the camera: only the camera's offset from the
  * crest (small when the wave is in view) reaches the GPU. */
-static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_uniforms *u)
+/* The ocean's RMS slope over its first `octaves` octaves (per axis, as
+ * waves_faded_slope_variance counts it). */
+static double ride_slope(const tl_waves *w, int octaves)
+{
+    double variance = 0.0, weights = 0.0;
+    for (int i = 0; i < octaves && i < w->count; i++) {
+        double wk = w->octave[i].weight * w->octave[i].frequency;
+        variance += TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
+        weights += w->octave[i].weight;
+    }
+    return weights > 0.0 ? w->depth * sqrt(variance) / weights : 0.0;
+}
+
+static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *wave,
+                          tl_frame_uniforms *u)
 {
     const tl_giant g = *wave;
     if (!g.active)
@@ -192,8 +206,17 @@ static void prepare_giant(const tl_scene *s, const tl_giant *wave, tl_frame_unif
     u->giant_scatter[2] = (float)s->giant.scatter_back;
     to_float3(s->giant.scatter_color, u->giant_scatter_color);
     u->giant_iterations = s->quality.giant_iterations;
+    u->giant_ride = (float)g.ride;
+    /* The small waves riding the wave's water steepen where it is
+     * compressed, by ride·|grad displacement| times their own slope: the
+     * march's bound takes that share of the ocean's RMS slope. The march
+     * steps by the height above the sea's own waves, as over the open sea,
+     * where their slope is not in the bound either; their bound
+     * (tl_waves_slope_bound) made the steps inside the box several times
+     * shorter and stepped over no more crests. */
+    double ocean_slope = ride_slope(w, s->quality.march_octaves);
     for (int i = 0; i < TL_GIANT_SLOPE_BINS; i++)
-        u->giant_slope[i] = (float)g.slope_bin[i];
+        u->giant_slope[i] = (float)(g.slope_bin[i] + g.ride * g.squeeze_bin[i] * ocean_slope);
     /* A rising ray stays at or above the camera; the ocean's crests are at
      * 0, so it can meet the surface only in bins where the wave alone
      * reaches the camera's height (a centimetre of margin for the float
@@ -420,8 +443,13 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
      * by at most its slope times r (the ocean's slope is taken as 2). */
     double ty = tan(0.5 * s->camera.vfov), tx = ty * s->width / s->height;
     double r = TL_LENS_DISTANCE * sqrt(1.0 + tx * tx + ty * ty);
-    double slope = 2.0 + (giant->active ? giant->max_slope : 0.0);
-    double margin = r * (1.0 + slope);
+    /* The ocean's part changes by at most the larger of 2r and its band
+     * (it stays within ocean.depth): riding the giant wave's compressed
+     * water steepens it, but cannot move it further than that. */
+    double ocean = 2.0 * r;
+    if (giant->active)
+        ocean = fmin(ocean * (1.0 + giant->ride * giant->max_squeeze), fmax(ocean, w->depth));
+    double margin = r * (1.0 + (giant->active ? giant->max_slope : 0.0)) + ocean;
     if (c[1] - h > margin)
         return TL_WATER_ABOVE;
     if (h - c[1] > margin)
@@ -694,7 +722,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->pixel_filter = (float)s->quality.pixel_filter;
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
-    prepare_giant(s, &giant, u);
+    prepare_giant(s, w, &giant, u);
     prepare_boat(s, &giant, u);
     prepare_wake(s, u);
     prepare_water_body(s, w, &giant, u);

@@ -171,6 +171,7 @@ typedef struct tl_frame_uniforms {
      * The whole reach when the camera is at or under the still water. */
     float giant_rise[2];
     int giant_iterations;
+    float giant_ride; /* giant.ride */
 
     /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
      * camera-relative metres (the camera at the origin, y too). */

@@ -96,6 +96,7 @@
     X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, unused)") \
     X(VEC3, giant_scatter_color, 0, TL_FEATURE_GIANT_WAVE, "") \
     X(INT, giant_iterations, 0, TL_FEATURE_GIANT_WAVE, "") \
+    X(FLOAT, giant_ride, 0, TL_FEATURE_GIANT_WAVE, "giant.ride: the share of the push the small waves ride") \
     X(FLOAT, giant_slope, TL_GIANT_SLOPE_BINS, TL_FEATURE_GIANT_WAVE, "slope bound per bin of s") \
     X(VEC2, giant_world, 0, TL_FEATURE_GIANT_WAVE, "the crest's world (s, w), wrapped every 65536 m") \
     X(VEC2, giant_rise, 0, TL_FEATURE_GIANT_WAVE, "s where the wave reaches the camera's height (empty: none)") \

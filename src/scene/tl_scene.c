@@ -99,6 +99,7 @@ void tl_scene_defaults(tl_scene *s)
     s->giant.break_drop = 0.3;
     s->giant.spray = 1.0;
     s->giant.spray_wind = 8.0;
+    s->giant.ride = 1.0;
     s->giant.foam_compression = 0.35;
     s->giant.foam_trail = 40.0;
     s->giant.scatter = 1.0;

@@ -119,6 +119,7 @@ typedef struct tl_giant_wave {
     double break_drop;       /* fraction of its height a broken crest loses */
     double spray;            /* amount of spray off the crest and at the bow */
     double spray_wind;       /* m/s of wind blowing the spindrift back off the crest */
+    double ride;             /* share of the wave's push the small waves ride, [0, 1] */
     double foam_compression; /* Jacobian below which the surface foams, (0, 1] */
     double foam_trail;       /* metres over which foam fades behind the crest */
     double scatter;          /* strength of the light through the crest */

@@ -161,6 +161,8 @@ static const tl_channel channels[] = {
          "spray blown off a tall crest and thrown up at the bow; 0 = none"),
     REAL("giant.spray_wind", 1, TL_UNIT_NONE, 0.0, 100.0, giant.spray_wind,
          "m/s of wind blowing the spindrift back off the crest"),
+    REAL("giant.ride", 1, TL_UNIT_NONE, 0.0, 1.0, giant.ride,
+         "share of the wave's push the small waves ride: 1 compressed up the face, 0 still"),
     REAL("giant.foam_compression", 1, TL_UNIT_NONE, 0.1, 1.0, giant.foam_compression,
          "surface compression (Jacobian) below which foam appears"),
     REAL("giant.foam_trail", 1, TL_UNIT_LENGTH, 0.0, 1e5, giant.foam_trail,

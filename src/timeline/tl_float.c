@@ -49,11 +49,21 @@ typedef struct ocean_ctx {
     const tl_waves *waves;
     double t;
     int octaves;
+    const tl_giant *giant; /* the small waves ride its water (NULL: none) */
+    int iterations;
 } ocean_ctx;
 
 static double ocean_height(const void *ctx, double x, double z)
 {
     const ocean_ctx *o = ctx;
+    if (o->giant && o->giant->active) {
+        tl_giant_sample smp;
+        tl_giant_sample_at(o->giant, x, z, o->iterations, &smp);
+        double q[2];
+        tl_giant_ride_point(o->giant, &smp, x, z, q);
+        x = q[0];
+        z = q[1];
+    }
     return tl_waves_height(o->waves, x, z, o->t, o->octaves);
 }
 
@@ -93,9 +103,9 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     tl_boat *b = &s->boat;
     tl_waves waves;
     tl_waves_init(&waves, &s->ocean);
-    ocean_ctx oc = {&waves, t, s->quality.march_octaves};
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, t);
+    ocean_ctx oc = {&waves, t, s->quality.march_octaves, NULL, s->quality.giant_iterations};
     const int follows = tl->giant_follow.target == TL_TARGET_BOAT;
 
     /* The spring, at the boat's past poses. The giant wave of a past
@@ -114,9 +124,8 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
         double past = t - x / w, px, pz, heading;
         boat_at(tl, past, s, heading_from_path, &px, &pz, &heading);
         oc.t = past;
-        hull_pose p = sample_hull(b, px, pz, heading, ocean_height, &oc);
+        tl_giant then = giant;
         if (giant.active) {
-            tl_giant then = giant;
             double back = giant.speed * (t - past);
             then.origin[0] -= giant.dir[0] * back;
             then.origin[1] -= giant.dir[1] * back;
@@ -126,6 +135,10 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
                 then.origin[0] += giant.across[0] * across;
                 then.origin[1] += giant.across[1] * across;
             }
+        }
+        oc.giant = &then;
+        hull_pose p = sample_hull(b, px, pz, heading, ocean_height, &oc);
+        if (giant.active) {
             giant_ctx gc = {&then, s->quality.giant_iterations, -0.5 * s->ocean.depth};
             hull_pose g = sample_hull(b, px, pz, heading, giant_height, &gc);
             p.pitch += g.pitch;
@@ -143,7 +156,9 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     b->roll = sum.roll / weights;
 
     /* The giant wave's height, followed directly. */
-    double centre = tl_waves_height(&waves, b->position[0], b->position[2], t, oc.octaves);
+    oc.t = t;
+    oc.giant = &giant;
+    double centre = ocean_height(&oc, b->position[0], b->position[2]);
     if (giant.active) {
         giant_ctx gc = {&giant, s->quality.giant_iterations, -0.5 * s->ocean.depth};
         hull_pose g = sample_hull(b, b->position[0], b->position[2], b->heading, giant_height, &gc);

@@ -189,7 +189,7 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
      * bounded with the envelope's bounds. */
     const double bin = 2.0 * g->reach_along / TL_GIANT_SLOPE_BINS, spacing = 2.0 * reach / n;
     for (int b = 0; b < TL_GIANT_SLOPE_BINS; b++)
-        g->slope_bin[b] = g->height_bin[b] = 0.0;
+        g->slope_bin[b] = g->height_bin[b] = g->squeeze_bin[b] = 0.0;
     for (int i = 0; i <= n; i++) {
         double s0 = -reach + 2.0 * reach * i / n;
         tl_giant_profile(g, s0, &y, &dy, &d, &dd);
@@ -198,6 +198,9 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
         double across =
             g->max_dlambda * fabs(y) + fabs(F * dy) / j * (g->max_dbow + g->max_dlambda * fabs(d));
         double slope = hypot(along, across);
+        /* |grad displacement|: λ·D'/J along, and across λ'·D - (λ·D'/J)·(λ'·D + bow'). */
+        double squeeze = fabs(F * dd) / j * (1.0 + g->max_dbow + g->max_dlambda * fabs(d)) +
+                         g->max_dlambda * fabs(d);
         /* Its height, lambda·Y for lambda in [0, F], is at most F·Y or 0;
          * what lies between samples, at most a sample's spacing up the
          * slope (along s, where the samples are spaced). */
@@ -208,13 +211,16 @@ static void clamp_and_bound(tl_giant *g, double steep, double curl)
         for (int b = b0 < 0 ? 0 : b0; b <= b1 && b < TL_GIANT_SLOPE_BINS; b++) {
             g->slope_bin[b] = fmax(g->slope_bin[b], slope);
             g->height_bin[b] = fmax(g->height_bin[b], height);
+            g->squeeze_bin[b] = fmax(g->squeeze_bin[b], squeeze);
         }
     }
     /* 5% margin for what falls between the profile samples. */
-    g->max_slope = 0.0;
+    g->max_slope = g->max_squeeze = 0.0;
     for (int b = 0; b < TL_GIANT_SLOPE_BINS; b++) {
         g->slope_bin[b] *= 1.05;
+        g->squeeze_bin[b] *= 1.05;
         g->max_slope = fmax(g->max_slope, g->slope_bin[b]);
+        g->max_squeeze = fmax(g->max_squeeze, g->squeeze_bin[b]);
     }
 }
 
@@ -287,6 +293,7 @@ void tl_giant_prepare(tl_giant *g, const tl_giant_wave *p, double t)
     g->origin[1] = p->center[1] + g->dir[1] * crest;
     g->amplitude = p->height;
     g->fade = p->fade;
+    g->ride = p->ride;
     g->half_length = TL_GIANT_CREST_HALF_LENGTH * L;
     g->falloff_along =
         clampd(p->falloff, TL_GIANT_MIN_FALLOFF_ALONG * L, TL_GIANT_MAX_FALLOFF_WAVELENGTHS * L);
@@ -354,6 +361,30 @@ void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations, t
     double dh_dw = dlambda * y - dh_ds * (dlambda * d + dbow);
     out->grad[0] = dh_ds * g->dir[0] + dh_dw * g->across[0];
     out->grad[1] = dh_ds * g->dir[1] + dh_dw * g->across[1];
+    /* The displacement λ·D(s0) by the same rule. */
+    double dd_ds = lambda * dd / j;
+    double dd_dw = dlambda * d - dd_ds * (dlambda * d + dbow);
+    out->ride[0] = dd_ds * g->dir[0] + dd_dw * g->across[0];
+    out->ride[1] = dd_ds * g->dir[1] + dd_dw * g->across[1];
+}
+
+void tl_giant_ride_point(const tl_giant *g, const tl_giant_sample *smp, double x, double z,
+                         double q[2])
+{
+    double push = g->active ? g->ride * smp->displacement : 0.0;
+    q[0] = x - push * g->dir[0];
+    q[1] = z - push * g->dir[1];
+}
+
+void tl_giant_ride_grad(const tl_giant *g, const tl_giant_sample *smp, double grad[2])
+{
+    if (!g->active)
+        return;
+    /* q = p - ride·disp(p)·dir: dq/dp = I - ride·dir ⊗ ∇disp, and the
+     * gradient in p is (dq/dp)ᵀ times the one in q. */
+    double along = g->ride * (g->dir[0] * grad[0] + g->dir[1] * grad[1]);
+    grad[0] -= along * smp->ride[0];
+    grad[1] -= along * smp->ride[1];
 }
 
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations)
@@ -445,12 +476,12 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     double height = lambda * g->amplitude;
     double life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
     lip->spent = 1.0 - life;
-    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) *
-                     smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
+    double tall = smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
+    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall;
     if (!(lip->thickness > 0.0))
         return;
     lip->present = true;
-    lip->radius = TL_GIANT_LIP_RADIUS * height;
+    lip->radius = TL_GIANT_LIP_RADIUS * height * tall;
     lip->progress = tl_giant_break_progress(g, w, &dp);
     double anchor = TL_GIANT_LIP_ANCHOR * (M_PI / 180.0);
     double top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k, top_y = base + height;
@@ -460,6 +491,13 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     lip->to = lip->from + lip->progress * TL_GIANT_LIP_SWEEP * (M_PI / 180.0);
 }
 
+double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle)
+{
+    double along = (angle - lip->from) / (TL_GIANT_LIP_SWEEP * (M_PI / 180.0));
+    along = along < 0.0 ? 0.0 : along > 1.0 ? 1.0 : along;
+    return lip->thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along);
+}
+
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
 {
     if (!lip->present)
@@ -467,15 +505,15 @@ double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
     double qs = s - lip->center[0], qy = y - lip->center[1];
     double angle = atan2(qs, qy); /* from up, clockwise toward +s */
     if (angle >= lip->from && angle <= lip->to)
-        return fabs(hypot(qs, qy) - lip->radius) - lip->thickness;
-    /* Past either end: the round cap there. */
+        return fabs(hypot(qs, qy) - lip->radius) - tl_giant_lip_half_thickness(lip, angle);
+    /* Past either end: the round cap there, as thick as the tube's end. */
     double d = 1e30;
     const double ends[2] = {lip->from, lip->to};
     for (int i = 0; i < 2; i++) {
         double es = lip->radius * sin(ends[i]), ey = lip->radius * cos(ends[i]);
-        d = fmin(d, hypot(qs - es, qy - ey));
+        d = fmin(d, hypot(qs - es, qy - ey) - tl_giant_lip_half_thickness(lip, ends[i]));
     }
-    return d - lip->thickness;
+    return d;
 }
 
 bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double across[2])
@@ -526,30 +564,37 @@ int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, do
     tl_giant_lip_at(g, w, base, &lip);
     if (!lip.present)
         return 0;
-    /* Where the vertical line crosses the four circles the tube's boundary
-     * lies on (its outer and inner faces, the two caps), kept where the
-     * distance there is 0: those are the boundary's points. */
+    /* The tube's boundary is no longer on circles (it thins along the
+     * arc): the vertical line's crossings are the sign changes of the
+     * distance over its span, TL_GIANT_LIP_SCAN intervals of it, each
+     * bisected to rounding. The thinnest part (the free end) is many
+     * intervals thick. */
     double found[8];
     int n = 0;
-    double circles[4][3] = {{lip.center[0], lip.center[1], lip.radius + lip.thickness},
-                            {lip.center[0], lip.center[1], lip.radius - lip.thickness}};
-    const double ends[2] = {lip.from, lip.to};
-    for (int i = 0; i < 2; i++) {
-        circles[2 + i][0] = lip.center[0] + lip.radius * sin(ends[i]);
-        circles[2 + i][1] = lip.center[1] + lip.radius * cos(ends[i]);
-        circles[2 + i][2] = lip.thickness;
-    }
+    const double reach = lip.radius + lip.thickness;
+    const double lo = lip.center[1] - reach, hi = lip.center[1] + reach;
     const double tolerance = 1e-9 * (lip.radius + 1.0);
-    for (int c = 0; c < 4; c++) {
-        double ds = s - circles[c][0], rho = circles[c][2];
-        if (!(rho > 0.0) || fabs(ds) > rho)
+    double y0 = fmax(lo, floor), d0 = tl_giant_lip_distance(&lip, s, y0);
+    for (int k = 1; k <= TL_GIANT_LIP_SCAN && n < 8; k++) {
+        double y1 = lo + (hi - lo) * k / TL_GIANT_LIP_SCAN;
+        if (y1 <= y0)
             continue;
-        double h = sqrt(rho * rho - ds * ds);
-        for (int sign = -1; sign <= 1; sign += 2) {
-            double y = circles[c][1] + sign * h;
-            if (y > floor && fabs(tl_giant_lip_distance(&lip, s, y)) <= tolerance)
-                found[n++] = y;
+        double d1 = tl_giant_lip_distance(&lip, s, y1);
+        if ((d0 < 0.0) != (d1 < 0.0)) {
+            double a = y0, b = y1, da = d0;
+            for (int it = 0; it < 60 && b - a > tolerance; it++) {
+                double m = 0.5 * (a + b), dm = tl_giant_lip_distance(&lip, s, m);
+                if ((dm < 0.0) == (da < 0.0)) {
+                    a = m;
+                    da = dm;
+                } else {
+                    b = m;
+                }
+            }
+            found[n++] = 0.5 * (a + b);
         }
+        y0 = y1;
+        d0 = d1;
     }
     qsort(found, (size_t)n, sizeof found[0], compare_doubles);
     int count = 0;

@@ -87,15 +87,23 @@
  * throw times (as the square root of what is left: it stays thick, then
  * goes). */
 #define TL_GIANT_LIP_RADIUS    0.45
-#define TL_GIANT_LIP_THICKNESS 0.05
+#define TL_GIANT_LIP_THICKNESS 0.08
 #define TL_GIANT_LIP_ANCHOR    -30.0
 #define TL_GIANT_LIP_ROOT      -45.0
 #define TL_GIANT_LIP_SWEEP     195.0
 #define TL_GIANT_LIP_FADE      0.4
-/* Only a tall stretch of the crest throws a lip: the tube's thickness
- * grows from nothing where the envelope is TL_GIANT_LIP_LOW to whole at
- * TL_GIANT_LIP_HIGH, so the break dies out toward the crest's low ends
- * instead of throwing slivers there. */
+/* The tube thins from its root to its free end: its half thickness
+ * falls linearly along the arc, to TL_GIANT_LIP_TIP of the root's at the
+ * end of the whole sweep, so the lip reads as a sheet thrown off the crest
+ * that thins to an edge, not as a hose of even bore. */
+#define TL_GIANT_LIP_TIP 0.25
+/* tl_giant_lip_heights scans a vertical line across the tube in this
+ * many intervals for its crossings. */
+#define TL_GIANT_LIP_SCAN 512
+/* Only a tall stretch of the crest throws a lip: the tube's radius and
+ * thickness grow from nothing where the envelope is TL_GIANT_LIP_LOW to
+ * whole at TL_GIANT_LIP_HIGH, so the break dies out toward the crest's low
+ * ends in ever smaller curls instead of throwing long thin blades there. */
 #define TL_GIANT_LIP_LOW  0.55
 #define TL_GIANT_LIP_HIGH 0.8
 /* The slope bound is kept per bin of s across the reach, so the march
@@ -140,12 +148,18 @@ typedef struct tl_giant {
     double reach_along;      /* |s| beyond this: no wave (mask support + displacement) */
     double min_jacobian;     /* smallest Jacobian of the map at this fade */
     double max_slope;        /* bound on |grad height| of the wave (marching) */
+    double ride;             /* giant.ride: the share of the push the small waves ride */
     /* slope_bin[i] bounds |grad height| for s in [-reach_along + i·bin,
      * -reach_along + (i + 1)·bin), bin = 2·reach_along / TL_GIANT_SLOPE_BINS. */
     double slope_bin[TL_GIANT_SLOPE_BINS];
     /* height_bin[i] bounds the wave's height (metres added to the ocean)
      * over the same bins: a ray that stays higher cannot meet it there. */
     double height_bin[TL_GIANT_SLOPE_BINS];
+    /* squeeze_bin[i] bounds |grad displacement| over the same bins: the
+     * small waves riding the wave's water (giant.ride) steepen by at most
+     * ride times this times their own slope there (marching). */
+    double squeeze_bin[TL_GIANT_SLOPE_BINS];
+    double max_squeeze;
 } tl_giant;
 
 /* The wave of `p` at time t (seconds). Inactive waves evaluate to zero. */
@@ -186,11 +200,24 @@ typedef struct tl_giant_sample {
     double lambda;       /* the envelope lambda(w) */
     double jacobian;     /* 1 + lambda·D'(s0) */
     double displacement; /* lambda·D(s0): how far the point moved along */
+    double ride[2];      /* d displacement / d (x, z) */
     double bow;          /* bow(w): the crest's lag behind its peak there */
 } tl_giant_sample;
 
 void tl_giant_sample_at(const tl_giant *g, double x, double z, int iterations,
                         tl_giant_sample *out);
+
+/* Where the small waves at world (x, z) came from, into q: the wave
+ * pushes its water along the travel by `displacement` (of `smp`, the
+ * wave's sample there), and giant.ride of the small waves ride with it,
+ * compressed up the face where the water is (J < 1) and drawn out on the
+ * back. The ocean is evaluated at q (shaders/giant.glsl's giant_ride). */
+void tl_giant_ride_point(const tl_giant *g, const tl_giant_sample *smp, double x, double z,
+                         double q[2]);
+
+/* A gradient `grad` of the small waves at q, in (x, z): the chain rule
+ * through q(x, z). */
+void tl_giant_ride_grad(const tl_giant *g, const tl_giant_sample *smp, double grad[2]);
 
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
@@ -202,7 +229,7 @@ typedef struct tl_giant_lip {
     bool present;     /* the break has begun there and the lip has not thinned away */
     double center[2]; /* (s, y) of the arc's centre */
     double radius;    /* of the tube's centre line */
-    double thickness; /* the tube's half thickness */
+    double thickness; /* the tube's half thickness at its root */
     double from, to;  /* the arc's angles, radians from up, clockwise toward +s */
     double progress;  /* the throw, 0 .. 1 (tl_giant_break_progress) */
     double spent;     /* 0 .. 1 once it has landed: it whitens and thins away */
@@ -210,6 +237,9 @@ typedef struct tl_giant_lip {
 
 /* The lip at w across; `base` is the ocean's mean level (-depth / 2). */
 void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip);
+
+/* The tube's half thickness at `angle` along its arc (TL_GIANT_LIP_TIP). */
+double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle);
 
 /* The box that holds the lip: box = (s low, s high, y low, y high) in the
  * wave's coordinates, across = (w low, w high). False when no lip is

@@ -47,6 +47,20 @@ double tl_waves_value(const tl_waves *w, double x, double z, double t, int octav
     return weights > 0.0 ? sum / weights : 1.0;
 }
 
+double tl_waves_slope_bound(const tl_waves *w, int octaves)
+{
+    if (octaves > w->count)
+        octaves = w->count;
+    double sum = 0.0, weights = 0.0, drag_slope = 0.0;
+    for (int i = 0; i < octaves; i++) {
+        const tl_wave_octave *o = &w->octave[i];
+        sum += o->weight * o->frequency * TL_WAVE_SLOPE_PEAK * (1.0 + drag_slope);
+        drag_slope += fabs(w->drag) * o->weight * o->frequency;
+        weights += o->weight;
+    }
+    return weights > 0.0 ? w->depth * sum / weights : 0.0;
+}
+
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves)
 {
     return (tl_waves_value(w, x, z, t, octaves) - 1.0) * w->depth;
@@ -55,8 +69,13 @@ double tl_waves_height(const tl_waves *w, double x, double z, double t, int octa
 double tl_waves_surface_height(const tl_waves *w, const tl_giant *g, double x, double z, double t,
                                int octaves, int giant_iterations)
 {
-    double h = tl_waves_height(w, x, z, t, octaves);
-    return g && g->active ? h + tl_giant_height(g, x, z, giant_iterations) : h;
+    if (!g || !g->active)
+        return tl_waves_height(w, x, z, t, octaves);
+    tl_giant_sample smp;
+    tl_giant_sample_at(g, x, z, giant_iterations, &smp);
+    double q[2];
+    tl_giant_ride_point(g, &smp, x, z, q);
+    return tl_waves_height(w, q[0], q[1], t, octaves) + smp.height;
 }
 
 int tl_waves_surfaces(const tl_waves *w, const tl_giant *g, double x, double z, double t,
