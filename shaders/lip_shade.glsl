@@ -38,9 +38,11 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // Foam: at the tip, more of it as the lip throws; a lace keeps it from
     // being a painted band.
     float along = clamp((angle - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
-    // Once landed, the whole lip turns to whitewater as it goes.
+    // Once landed, the lip breaks up into whitewater as it goes: in
+    // patches of the lace, more of them as it is spent, never a solid coat
+    // (a wholly white tube read as a hose hanging over the broken crest).
     float white = max(smoothstep(0.85, 1.0, along) * (0.15 + 0.65 * lip.progress),
-                      smoothstep(0.0, 0.6, lip.spent));
+                      0.7 * smoothstep(0.0, 0.8, lip.spent));
     vec2 at = vec2(sw.y, sw.x + hit.y);
     float lace = foam_lace(at * 1.5);
     float foam = smoothstep(1.1 - white, 1.25 - white, lace + 0.2 * white);

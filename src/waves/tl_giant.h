@@ -96,7 +96,7 @@
  * falls linearly along the arc, to TL_GIANT_LIP_TIP of the root's at the
  * end of the whole sweep, so the lip reads as a sheet thrown off the crest
  * that thins to an edge, not as a hose of even bore. */
-#define TL_GIANT_LIP_TIP 0.25
+#define TL_GIANT_LIP_TIP 0.15
 /* tl_giant_lip_heights scans a vertical line across the tube in this
  * many intervals for its crossings. */
 #define TL_GIANT_LIP_SCAN 512
