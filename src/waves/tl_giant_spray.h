@@ -9,10 +9,10 @@
 
 /* Extinction per metre of spray at density 1: thin enough that the
  * crest shows through the plume's middle. */
-#define TL_SPRAY_SIGMA 0.05
+#define TL_SPRAY_SIGMA 0.025
 /* Seconds the wind carries a droplet back from the crest before it falls:
  * the plume's reach is the wind times this (plus a twentieth of the crest). */
-#define TL_SPRAY_FLIGHT 0.6
+#define TL_SPRAY_FLIGHT 0.4
 /* The plume ends this many reaches behind the crest (faded to nothing
  * over its last two fifths), and rises this many of its thicknesses
  * over its first reach. */
