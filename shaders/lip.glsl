@@ -32,10 +32,11 @@ GiantLip giant_lip_at(float w)
     float life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
     lip.spent = 1.0 - life;
     float tall = smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
-    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall;
+    lip.progress = giant_breaking(w);
+    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall *
+                    smoothstep(0.0, TL_GIANT_LIP_GROW, lip.progress);
     lip.present = lip.thickness > 0.0;
     lip.radius = TL_GIANT_LIP_RADIUS * height * tall;
-    lip.progress = giant_breaking(w);
     const float anchor = radians(TL_GIANT_LIP_ANCHOR);
     float top_s = giant_bow(w, db) + lambda * u_giant_shape.w / u_giant_shape.x;
     float top_y = -0.5 * u_depth + height;
@@ -48,8 +49,14 @@ GiantLip giant_lip_at(float w)
     // average: a smoothstep), and the whole arc moves with the crest's top
     // (bow and envelope) and grows with the envelope (radius, and the
     // tall-crest gate, whose smoothstep is 1.5 / (high - low) steep).
+    // The tube's growth over the throw's start moves its surface too.
+    float throw_rate = 1.5 / (T * u_giant_break.y); // d progress / dw at most
     float tip = lip.progress > 0.0 && lip.progress < 1.0
-                    ? lip.radius * radians(TL_GIANT_LIP_SWEEP) * 1.5 / (T * u_giant_break.y)
+                    ? (lip.radius * radians(TL_GIANT_LIP_SWEEP) +
+                       (lip.progress < TL_GIANT_LIP_GROW
+                            ? 1.5 * TL_GIANT_LIP_THICKNESS * height / TL_GIANT_LIP_GROW
+                            : 0.0)) *
+                          throw_rate
                     : 0.0;
     float grow = TL_GIANT_LIP_RADIUS * u_giant_shape.y *
                  (tall + lambda * 1.5 / (TL_GIANT_LIP_HIGH - TL_GIANT_LIP_LOW));

@@ -42,7 +42,7 @@ float giant_spray_density(vec3 p)
             float ts = lip.center.x + lip.radius * sin(lip.to) - sw.x;
             float ty = lip.center.y + lip.radius * cos(lip.to) - p.y;
             float r = TL_SPRAY_LANDING_RADIUS * lip.radius;
-            density += TL_SPRAY_BOW_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
+            density += TL_SPRAY_LANDING_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
                        (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
                        smoothstep(0.3, 0.8,
                                   0.6 * foam_noise(vec2(sw.y / 2.0 + 5.0, ty / 1.6 - ts / 2.2)) +
@@ -78,6 +78,7 @@ float giant_spray_density(vec3 p)
 #define TL_SPRAY_STEPS 16
 #define TL_SPRAY_PHASE_G 0.7
 #define TL_SPRAY_ALBEDO 0.9
+#define TL_SPRAY_DIFFUSE 0.6
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
     // The crest's box in the wave's frame, and the bow's sphere.
@@ -101,7 +102,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float mu = dot(ray, u_sun_dir);
     float g = TL_SPRAY_PHASE_G;
     float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
-    vec3 light = TL_SPRAY_ALBEDO * (sky_sun_light() * phase + sky_ambient());
+    vec3 sun = sky_sun_light(), ambient = sky_ambient();
     float dt = (t1 - t0) / float(TL_SPRAY_STEPS);
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
@@ -113,8 +114,14 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float offset = float(h & 0xffffu) / 65536.0;
     for (int i = 0; i < TL_SPRAY_STEPS; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
-        float sigma = TL_SPRAY_SIGMA * giant_spray_density(p);
+        float density = giant_spray_density(p);
+        float sigma = TL_SPRAY_SIGMA * density;
         float step_trans = exp(-sigma * dt);
+        // A dense cloud (the landing's whitewater, the bow's burst) scatters
+        // the sun many times inside and looks white from every side: its
+        // share of TL_SPRAY_DIFFUSE/pi on top of the single-scattering lobe.
+        float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
+        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }

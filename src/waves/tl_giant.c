@@ -477,12 +477,14 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     double life = 1.0 - smoothstep(T, T * (1.0 + TL_GIANT_LIP_FADE), age);
     lip->spent = 1.0 - life;
     double tall = smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
-    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall;
+    double progress = tl_giant_break_progress(g, w, &dp);
+    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall *
+                     smoothstep(0.0, TL_GIANT_LIP_GROW, progress);
     if (!(lip->thickness > 0.0))
         return;
     lip->present = true;
     lip->radius = TL_GIANT_LIP_RADIUS * height * tall;
-    lip->progress = tl_giant_break_progress(g, w, &dp);
+    lip->progress = progress;
     double anchor = TL_GIANT_LIP_ANCHOR * (M_PI / 180.0);
     double top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k, top_y = base + height;
     lip->center[0] = top_s - lip->radius * sin(anchor);

@@ -97,6 +97,10 @@
  * end of the whole sweep, so the lip reads as a sheet thrown off the crest
  * that thins to an edge, not as a hose of even bore. */
 #define TL_GIANT_LIP_TIP 0.15
+/* The tube grows from nothing over the throw's first TL_GIANT_LIP_GROW
+ * (of its progress): at the peel's front the lip rises out of the crest
+ * instead of starting as a wall of full thickness. */
+#define TL_GIANT_LIP_GROW 0.15
 /* tl_giant_lip_heights scans a vertical line across the tube in this
  * many intervals for its crossings. */
 #define TL_GIANT_LIP_SCAN 512

@@ -157,7 +157,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
             double ty = lip.center[1] + lip.radius * cos(lip.to) - y;
             double r = TL_SPRAY_LANDING_RADIUS * lip.radius;
             density +=
-                TL_SPRAY_BOW_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
+                TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
                 (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
                 smoothstep(0.3, 0.8,
                            0.6 * tl_giant_spray_noise(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +

@@ -28,8 +28,11 @@
 #define TL_SPRAY_BOW_RADIUS 0.35
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
  * radius (a share of the lip's), from half the throw until it has landed
- * and gone, as dense as the bow's burst. */
-#define TL_SPRAY_LANDING_RADIUS 0.4
+ * and gone. */
+#define TL_SPRAY_LANDING_RADIUS 0.55
+/* The landing's whitewater is this much denser than the spindrift: an
+ * opaque, churning cloud, not a veil. */
+#define TL_SPRAY_LANDING_GAIN 6.0
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  2.5
