@@ -347,7 +347,11 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
 {
     float breaking = giant_breaking(g.w);
     float top = giant_top(g);
-    float compressed = 1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian);
+    // A scripted crest stays green until it breaks: compressed, it foams
+    // u_giant_compression_foam of what it does once broken (1 without a
+    // script: then the compression is the break).
+    float compressed = (1.0 - smoothstep(0.1, u_giant_foam.x, g.jacobian)) *
+                       max(breaking, u_giant_compression_foam);
     float cap = smoothstep(0.9, 1.0, top) * breaking;
     float streaks = giant_streaks(g.s0, g.w);
     float front = smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x);

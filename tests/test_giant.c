@@ -782,6 +782,55 @@ static void test_break_feature(void)
     }
 }
 
+/* A scripted crest stays green until it breaks: before giant.break_time
+ * the most compressed point of a steep crest foams at most
+ * TL_GIANT_UNBROKEN_FOAM of what the same crest without a script does
+ * there, and the shader gets the same weight (u_giant_compression_foam);
+ * once the lip has landed there it foams as much as the unscripted one. */
+static void test_unbroken_foam(void)
+{
+    double coverage[3];
+    for (int k = 0; k < 3; k++) {
+        tl_scene s;
+        tl_scene_defaults(&s);
+        s.giant.enabled = true;
+        s.giant.height = 16.0;
+        s.giant.steepness = 0.75;
+        s.giant.curve_strength = 0.6;
+        s.giant.breaking = k > 0;
+        s.giant.break_time = k == 2 ? -30.0 : 5.0; /* k = 2: long broken everywhere */
+        s.giant.break_drop = 0.0;
+        s.time = 0.0;
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        /* The least Jacobian along the centre line. */
+        tl_giant_sample best = {0};
+        best.jacobian = 1e9;
+        for (int i = 0; i <= 2000; i++) {
+            double sv = -g.reach_along + 2.0 * g.reach_along * i / 2000.0, x, z;
+            world_at(&g, sv, 0.0, &x, &z);
+            tl_giant_sample smp;
+            tl_giant_sample_at(&g, x, z, 40, &smp);
+            if (smp.jacobian < best.jacobian)
+                best = smp;
+        }
+        coverage[k] =
+            tl_giant_foam_coverage(&g, &best, 1.0, s.giant.foam_compression, s.giant.foam_trail);
+        tl_waves w;
+        tl_waves_init(&w, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &w, &u);
+        CHECK_NEAR(u.giant_compression_foam, k ? TL_GIANT_UNBROKEN_FOAM : 1.0, 1e-7);
+        CHECK(k != 1 || u.giant_foam[3] == 0.0f);
+    }
+    printf("foam at the most compressed point: no script %.3f, scripted before the break "
+           "%.3f, after %.3f\n",
+           coverage[0], coverage[1], coverage[2]);
+    CHECK(coverage[0] > 0.5);
+    CHECK(coverage[1] <= TL_GIANT_UNBROKEN_FOAM * coverage[0] + 1e-12);
+    CHECK(coverage[2] >= coverage[0] - 1e-9);
+}
+
 int main(void)
 {
     test_wave_slope_constant();
@@ -799,5 +848,6 @@ int main(void)
     test_bounds_hold();
     test_gradient_matches();
     test_break_feature();
+    test_unbroken_foam();
     TEST_END();
 }

@@ -200,7 +200,11 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     u->giant_foam[0] = (float)s->giant.foam_compression;
     u->giant_foam[1] = (float)s->giant.foam_trail;
     u->giant_foam[2] = (float)s->water.foam;
-    u->giant_foam[3] = (float)breaking(s->giant.foam_compression, g.min_jacobian);
+    /* A scripted crest has not broken before its break (breaking then
+     * comes from the break's age, TL_FEATURE_GIANT_BREAK). */
+    u->giant_foam[3] =
+        g.scripted ? 0.0f : (float)breaking(s->giant.foam_compression, g.min_jacobian);
+    u->giant_compression_foam = g.scripted ? (float)TL_GIANT_UNBROKEN_FOAM : 1.0f;
     u->giant_scatter[0] = (float)s->giant.scatter;
     u->giant_scatter[1] = (float)s->giant.scatter_forward;
     u->giant_scatter[2] = (float)s->giant.scatter_back;

@@ -171,7 +171,8 @@ typedef struct tl_frame_uniforms {
      * The whole reach when the camera is at or under the still water. */
     float giant_rise[2];
     int giant_iterations;
-    float giant_ride; /* giant.ride */
+    float giant_ride;             /* giant.ride */
+    float giant_compression_foam; /* 1, or TL_GIANT_UNBROKEN_FOAM with a scripted break */
 
     /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
      * camera-relative metres (the camera at the origin, y too). */

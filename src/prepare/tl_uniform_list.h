@@ -97,6 +97,7 @@
     X(VEC3, giant_scatter_color, 0, TL_FEATURE_GIANT_WAVE, "") \
     X(INT, giant_iterations, 0, TL_FEATURE_GIANT_WAVE, "") \
     X(FLOAT, giant_ride, 0, TL_FEATURE_GIANT_WAVE, "giant.ride: the share of the push the small waves ride") \
+    X(FLOAT, giant_compression_foam, 0, TL_FEATURE_GIANT_WAVE, "compression foam where the crest has not broken: 1, or TL_GIANT_UNBROKEN_FOAM with a scripted break") \
     X(FLOAT, giant_slope, TL_GIANT_SLOPE_BINS, TL_FEATURE_GIANT_WAVE, "slope bound per bin of s") \
     X(VEC2, giant_world, 0, TL_FEATURE_GIANT_WAVE, "the crest's world (s, w), wrapped every 65536 m") \
     X(VEC2, giant_rise, 0, TL_FEATURE_GIANT_WAVE, "s where the wave reaches the camera's height (empty: none)") \

@@ -253,6 +253,7 @@ static void prepare_envelope(tl_giant *g, const tl_giant_wave *p, double t)
     g->peel_speed = p->peel_speed > 0.0 ? p->peel_speed : 1.0;
     g->throw_time = TL_GIANT_THROW_FALLS * sqrt(2.0 * p->height / TL_GIANT_GRAVITY);
     g->break_drop = p->break_drop;
+    g->scripted = p->breaking;
     g->breaks = p->breaking && g->break_age > 0.0 && g->throw_time > 0.0;
     g->lambda_max = g->fade * (1.0 + g->variation);
 
@@ -440,14 +441,15 @@ double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, dou
     double dp, breaking;
     if (g->breaks)
         breaking = tl_giant_break_progress(g, smp->w, &dp);
-    else if (foam_compression <= TL_GIANT_MIN_JACOBIAN)
+    else if (g->scripted || foam_compression <= TL_GIANT_MIN_JACOBIAN)
         breaking = 0.0;
     else
         breaking = clampd((foam_compression - g->min_jacobian) /
                               (foam_compression - TL_GIANT_MIN_JACOBIAN),
                           0.0, 1.0);
     double top = clampd(smp->height / fmax(g->amplitude * smp->lambda, 1e-3), 0.0, 1.0);
-    double compressed = 1.0 - smoothstep(0.1, foam_compression, smp->jacobian);
+    double compressed = (1.0 - smoothstep(0.1, foam_compression, smp->jacobian)) *
+                        (g->scripted ? fmax(breaking, TL_GIANT_UNBROKEN_FOAM) : 1.0);
     double cap = smoothstep(0.9, 1.0, top) * breaking;
     double front = smoothstep(-0.35, 0.0, smp->s0 / g->half_length);
     double behind = fmax(-smp->s0, 0.0);

@@ -110,6 +110,11 @@
  * ends in ever smaller curls instead of throwing long thin blades there. */
 #define TL_GIANT_LIP_LOW  0.55
 #define TL_GIANT_LIP_HIGH 0.8
+/* A crest that breaks by the script (giant.breaking) stays green until its
+ * lip throws: where it is compressed but has not broken yet it foams only
+ * this share of what it does once broken. A wave without a script breaks
+ * by its compression alone and foams fully there. */
+#define TL_GIANT_UNBROKEN_FOAM 0.2
 /* The slope bound is kept per bin of s across the reach, so the march
  * takes small steps only near the steep faces. */
 #define TL_GIANT_SLOPE_BINS 32
@@ -140,6 +145,7 @@ typedef struct tl_giant {
     double variation;        /* giant.variation: a fraction of the height */
     double vary_k[3];        /* wavenumbers of the variation's sines, rad/m */
     double vary_phase[3];    /* their phases, from giant.seed */
+    bool scripted;           /* giant.breaking: the crest breaks when the script says */
     bool breaks;             /* giant.breaking and the break has begun somewhere */
     double break_age;        /* seconds since the break began at the peak (t - giant.break_time) */
     double peel_speed;       /* m/s the break runs along the crest from the peak */
