@@ -35,7 +35,7 @@
 #define TL_SPRAY_LANDING_GAIN 6.0
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
-#define TL_SPRAY_BOW_GAIN  2.5
+#define TL_SPRAY_BOW_GAIN  5.0
 #define TL_SPRAY_BOW_SLOPE 0.5
 
 /* The spray of one frame. */
