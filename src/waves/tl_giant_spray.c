@@ -106,7 +106,7 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         tl_giant_sample smp;
         tl_giant_sample_at(g, bow[0], bow[2], 8, &smp);
         double slope = fabs(smp.grad[0] * heading[0] + smp.grad[1] * heading[1]);
-        double strength = smoothstep(0.1, TL_SPRAY_BOW_SLOPE, slope);
+        double strength = smoothstep(TL_SPRAY_BOW_SLOPE_FROM, TL_SPRAY_BOW_SLOPE, slope);
         if (strength > 0.0) {
             sp->bow_radius = TL_SPRAY_BOW_RADIUS * length;
             sp->bow[0] = bow[0] + heading[0] * 0.5 * sp->bow_radius;

@@ -23,8 +23,9 @@
 #define TL_SPRAY_FROM 0.3
 #define TL_SPRAY_FULL 0.8
 /* The bow's burst: a cloud of this radius (a share of the hull's length)
- * ahead of and above the bow, at full strength where the wave's slope
- * along the heading (up or down) is TL_SPRAY_BOW_SLOPE or more. */
+ * ahead of and above the bow, from where the wave's slope along the
+ * heading (up or down) is TL_SPRAY_BOW_SLOPE_FROM, at full strength where
+ * it is TL_SPRAY_BOW_SLOPE or more. */
 #define TL_SPRAY_BOW_RADIUS 0.35
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
  * radius (a share of the lip's), from half the throw until it has landed
@@ -36,7 +37,11 @@
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  5.0
-#define TL_SPRAY_BOW_SLOPE 0.5
+#define TL_SPRAY_BOW_SLOPE 0.8
+/* No burst below this slope: the wave's long gentle front, far ahead of
+ * its face, lifts a hull without throwing water (from 0.1 a golden halo
+ * sat around a boat 90 m ahead of the crest). */
+#define TL_SPRAY_BOW_SLOPE_FROM 0.3
 
 /* The spray of one frame. */
 typedef struct tl_giant_spray {
