@@ -113,12 +113,18 @@ vec2 giant_lip_interval(vec3 ray)
 // the ray changes the cross-section's distance by at most
 // h·(|ray in the (s, y) plane| + rate·|ray along w|), so the step is the
 // distance over that (locally: the rate is the lip's here), times
-// TL_GIANT_LIP_RELAX. Trusting the cross-section's distance alone stepped
+// TL_GIANT_LIP_RELAX, and at least TL_GIANT_LIP_MIN_STEP of the tube's
+// root thickness (a ray grazing the long tube crept along it and ran out
+// of steps; a step that lands inside is bisected back to the surface, and
+// the thinnest part, the free end, is thicker than that step).
+// Trusting the cross-section's distance alone stepped
 // over most of a peeling lip seen along the crest, leaving a floating
 // green blade where a few rays happened to land on it.
-#define TL_GIANT_LIP_STEPS 64
+#define TL_GIANT_LIP_STEPS 96
 #define TL_GIANT_LIP_RELAX 0.8
 #define TL_GIANT_LIP_GAP 2.0
+#define TL_GIANT_LIP_BISECT 8
+#define TL_GIANT_LIP_MIN_STEP 0.25
 float giant_lip_march(vec3 ray, float t_min, float t_max)
 {
     vec2 box = giant_lip_interval(ray);
@@ -127,18 +133,38 @@ float giant_lip_march(vec3 ray, float t_min, float t_max)
         return -1.0;
     vec2 d = u_giant_frame.xy;
     float ray_w = abs(dot(ray.xz, vec2(d.y, -d.x))), ray_sy = sqrt(max(1.0 - ray_w * ray_w, 0.0));
+    float t_out = t; // the last point known outside the tube
     for (int i = 0; i < TL_GIANT_LIP_STEPS; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * t;
         vec2 sw = giant_coords(p.xz), n2;
         GiantLip lip = giant_lip_at(sw.y);
         float dist = giant_lip_distance(lip, vec2(sw.x, p.y), n2);
-        if (dist < max(u_hit_epsilon, 1.0e-4 * t))
-            return t;
+        float eps = max(u_hit_epsilon, 1.0e-4 * t);
+        if (dist < eps) {
+            // A long step (a gap's, or one the local rate underestimated)
+            // may land inside the tube: its surface lies between the last
+            // point outside and here, and is bisected for. Unrefined, a ray
+            // entering the lip from its end along w was shaded metres
+            // inside it.
+            float a = t_out, b = t;
+            for (int k = 0; k < TL_GIANT_LIP_BISECT && b - a > eps; k++) {
+                float m = 0.5 * (a + b);
+                vec3 q = vec3(0.0, u_cam_height, 0.0) + ray * m;
+                vec2 qw = giant_coords(q.xz), qn;
+                if (giant_lip_distance(giant_lip_at(qw.y), vec2(qw.x, q.y), qn) < eps)
+                    b = m;
+                else
+                    a = m;
+            }
+            return b;
+        }
+        t_out = t;
         // Where the crest has no lip the ray moves on by TL_GIANT_LIP_GAP
         // metres of w: the lip begins (the peel's front), ends (its life)
         // and stops (the tall-crest gate) as a vanishing tube, so nothing
         // visible lies within that of its edges.
-        t += lip.present ? TL_GIANT_LIP_RELAX * min(dist, 1.0e3) / (ray_sy + lip.rate * ray_w)
+        t += lip.present ? max(TL_GIANT_LIP_RELAX * min(dist, 1.0e3) / (ray_sy + lip.rate * ray_w),
+                               TL_GIANT_LIP_MIN_STEP * lip.thickness)
                          : min(TL_GIANT_LIP_GAP / max(ray_w, 1.0e-6), 1.0e3);
         if (t > t_end)
             return -1.0;

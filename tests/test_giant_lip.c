@@ -396,6 +396,78 @@ static void test_rect_holds_lip(void)
     CHECK(rects[0][3] > rects[1][3] || rects[0][3] == 180);
 }
 
+/* The lip's march draws all of it: a frame looking along the crest at a
+ * lip peeling toward the camera (where its free end sweeps metres per
+ * metre of crest), every pixel's ray marched on the CPU through the lip's
+ * box in 5 cm steps: where the CPU meets the lip well before the frame's
+ * distance the GPU stepped over it. Trusting the cross-section's distance
+ * alone left a floating blade of a lip (a few rays landed on it). */
+static void test_lip_march(tl_renderer *r)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 3.0, 0.0, 0.0);
+    s.giant.spray = 0.0;
+    s.width = 160;
+    s.height = 90;
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    const double base = base_of(&s);
+    /* Ahead of the crest and 25 m beyond the peel's front on the +w side,
+     * high, looking back along the crest and down at it. */
+    const double cs = 18.0, cw = s.giant.peak + s.giant.peel_speed * 3.0 + 25.0;
+    for (int i = 0; i < 2; i++)
+        s.camera.position[i == 0 ? 0 : 2] = g.origin[i] + g.dir[i] * cs + g.across[i] * cw;
+    s.camera.position[1] = 24.0;
+    const double look[2] = {-g.across[0] - 0.35 * g.dir[0], -g.across[1] - 0.35 * g.dir[1]};
+    s.camera.yaw = atan2(look[0], look[1]);
+    s.camera.pitch = -20.0 * M_PI / 180.0;
+    s.camera.vfov = 52.0 * M_PI / 180.0;
+    double box[4], across[2];
+    CHECK(tl_giant_lip_bounds(&g, base, box, across));
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    int lip_pixels = 0, missed = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            double d = f.depth[(size_t)y * s.width + x], ray[3];
+            pixel_ray(&s, x, y, ray);
+            const double *c = s.camera.position;
+            /* The ray's part in the lip's box, in (s, y, w). */
+            double lo = 0.0, hi = fmin(d, 1e3) * 1.02;
+            double o[3] = {g.dir[0] * (c[0] - g.origin[0]) + g.dir[1] * (c[2] - g.origin[1]), c[1],
+                           g.across[0] * (c[0] - g.origin[0]) + g.across[1] * (c[2] - g.origin[1])};
+            double v[3] = {g.dir[0] * ray[0] + g.dir[1] * ray[2], ray[1],
+                           g.across[0] * ray[0] + g.across[1] * ray[2]};
+            double bmin[3] = {box[0], box[2], across[0]}, bmax[3] = {box[1], box[3], across[1]};
+            for (int k = 0; k < 3 && lo <= hi; k++) {
+                if (fabs(v[k]) < 1e-12) {
+                    if (o[k] < bmin[k] || o[k] > bmax[k])
+                        hi = -1.0;
+                    continue;
+                }
+                double t0 = (bmin[k] - o[k]) / v[k], t1 = (bmax[k] - o[k]) / v[k];
+                lo = fmax(lo, fmin(t0, t1));
+                hi = fmin(hi, fmax(t0, t1));
+            }
+            for (double t = lo; t <= hi; t += 0.05) {
+                tl_giant_lip lip;
+                tl_giant_lip_at(&g, o[2] + v[2] * t, base, &lip);
+                if (tl_giant_lip_distance(&lip, o[0] + v[0] * t, o[1] + v[1] * t) < 0.0) {
+                    lip_pixels++;
+                    missed += t < 0.98 * d - 0.1;
+                    break;
+                }
+            }
+        }
+    tl_frame_free(&f);
+    printf("lip's march: the CPU meets the lip on %d of %d pixels; the frame's distance lies "
+           "beyond it on %d\n",
+           lip_pixels, s.width * s.height, missed);
+    CHECK(lip_pixels > 300);
+    CHECK(missed <= lip_pixels / 100);
+}
+
 int main(void)
 {
     test_lip_heights();
@@ -409,6 +481,7 @@ int main(void)
     if (!r)
         return 1;
     test_gpu_mirror(r);
+    test_lip_march(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();
