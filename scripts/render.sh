@@ -2,8 +2,8 @@
 # The main job: set up, build, and render headless into out/:
 #   - the hero cutscene timelines/giant_wave.tl (15 s, 360 frames) at
 #     854x480: every frame as PNG (out/giant_wave/) and an H.264 movie
-#     (out/giant_wave.mp4), about two minutes on 2 cores
-#     without a GPU;
+#     (out/giant_wave.mp4), a few minutes on 2 cores without a GPU
+#     (the README has the measured time);
 #   - a still of the default ocean as PNG and linear EXR (out/ocean.*).
 # Extra flags go to the cutscene render and win over the defaults here, e.g.
 # scripts/render.sh --size 1280x720 (the timeline's full size) or
