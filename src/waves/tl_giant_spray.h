@@ -39,8 +39,7 @@
 #define TL_SPRAY_BOW_GAIN  5.0
 #define TL_SPRAY_BOW_SLOPE 0.8
 /* No burst below this slope: the wave's long gentle front, far ahead of
- * its face, lifts a hull without throwing water (from 0.1 a golden halo
- * sat around a boat 90 m ahead of the crest). */
+ * its face, lifts a hull without throwing water. */
 #define TL_SPRAY_BOW_SLOPE_FROM 0.3
 
 /* The spray of one frame. */
