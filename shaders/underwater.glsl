@@ -71,10 +71,7 @@ vec3 trace_underwater(vec3 ray, out float dist)
     float slope_var; // the underside is shaded with the mean normal
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(hit.xz);
-    vec3 n = giant_ride_normal(water_normal(giant_ride(hit.xz, giant), u_normal_epsilon,
-                                            t * u_lod_angle * giant_ride_squeeze(giant), value,
-                                            slope_var),
-                               giant);
+    vec3 n = water_ridden_normal(hit.xz, giant, t * u_lod_angle, value, slope_var);
     vec2 slope = -n.xz / n.y + giant.grad;
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
 #else

@@ -35,6 +35,19 @@ vec3 water_normal(vec2 p, float e, float footprint, out float value, out float s
 #endif
 }
 
+#ifdef TL_FEATURE_GIANT_WAVE
+// The small waves' normal at p under the giant wave (its sample g there):
+// taken where they ride from, finer by the squeeze, carried back to p
+// (giant_ride).
+vec3 water_ridden_normal(vec2 p, GiantSample g, float footprint, out float value,
+                         out float slope_var)
+{
+    return giant_ride_normal(water_normal(giant_ride(p, g), u_normal_epsilon,
+                                          footprint * giant_ride_squeeze(g), value, slope_var),
+                             g);
+}
+#endif
+
 // A shading normal the ray meets from behind, turned until it faces the
 // ray (quality.facing_normals; off for `seed`, whose shader reflects it as
 // it is). The normal has finer octaves than the surface the march met, so
@@ -90,10 +103,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     float value, slope_var;
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(hit.xz);
-    vec3 n = giant_ride_normal(water_normal(giant_ride(hit.xz, giant), u_normal_epsilon,
-                                            dist * u_lod_angle * giant_ride_squeeze(giant), value,
-                                            slope_var),
-                               giant);
+    vec3 n = water_ridden_normal(hit.xz, giant, dist * u_lod_angle, value, slope_var);
 #else
     vec3 n = water_normal(hit.xz, u_normal_epsilon, dist * u_lod_angle, value, slope_var);
 #endif

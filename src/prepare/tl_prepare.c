@@ -214,10 +214,8 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     /* The small waves riding the wave's water steepen where it is
      * compressed, by ride·|grad displacement| times their own slope: the
      * march's bound takes that share of the ocean's RMS slope. The march
-     * steps by the height above the sea's own waves, as over the open sea,
-     * where their slope is not in the bound either; their bound
-     * (tl_waves_slope_bound) made the steps inside the box several times
-     * shorter and stepped over no more crests. */
+     * steps by the height above the small waves, as over the open sea,
+     * where their slope is not in the bound either. */
     double ocean_slope = ride_slope(w, s->quality.march_octaves);
     for (int i = 0; i < TL_GIANT_SLOPE_BINS; i++)
         u->giant_slope[i] = (float)(g.slope_bin[i] + g.ride * g.squeeze_bin[i] * ocean_slope);

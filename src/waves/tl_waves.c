@@ -47,20 +47,6 @@ double tl_waves_value(const tl_waves *w, double x, double z, double t, int octav
     return weights > 0.0 ? sum / weights : 1.0;
 }
 
-double tl_waves_slope_bound(const tl_waves *w, int octaves)
-{
-    if (octaves > w->count)
-        octaves = w->count;
-    double sum = 0.0, weights = 0.0, drag_slope = 0.0;
-    for (int i = 0; i < octaves; i++) {
-        const tl_wave_octave *o = &w->octave[i];
-        sum += o->weight * o->frequency * TL_WAVE_SLOPE_PEAK * (1.0 + drag_slope);
-        drag_slope += fabs(w->drag) * o->weight * o->frequency;
-        weights += o->weight;
-    }
-    return weights > 0.0 ? w->depth * sum / weights : 0.0;
-}
-
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves)
 {
     return (tl_waves_value(w, x, z, t, octaves) - 1.0) * w->depth;

@@ -37,18 +37,6 @@ void tl_waves_init(tl_waves *w, const tl_ocean *ocean);
  * first `octaves` octaves: sum(weight * exp(sin(phase) - 1)) / sum(weight). */
 double tl_waves_value(const tl_waves *w, double x, double z, double t, int octaves);
 
-/* A bound on the slope |grad height| of the first `octaves` octaves:
- * each term weight·exp(sin - 1) changes at most TL_WAVE_SLOPE_PEAK times
- * weight times frequency per metre; derivative drag shifts a later
- * octave's position by drag·weight·exp(sin - 1)·cos of each earlier one,
- * whose rate is at most drag·weight·frequency, so its gradient is scaled
- * by at most one plus their sum. */
-double tl_waves_slope_bound(const tl_waves *w, int octaves);
-
-/* The largest |d/dx exp(sin x - 1)| = exp(sin x - 1)·|cos x|, at
- * sin x = (√5 - 1) / 2. */
-#define TL_WAVE_SLOPE_PEAK 0.5361
-
 /* World height of the surface: (value - 1) * depth, in [-depth, 0]. */
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves);
 
