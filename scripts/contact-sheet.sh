@@ -16,7 +16,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # timeline:time pairs, in the sheet's order (left to right, top to bottom).
 shots=(giant_wave.tl:2 giant_wave.tl:4.2 giant_wave.tl:7.2 giant_wave.tl:8.6
-       giant_wave.tl:10.3 giant_wave.tl:12 voyage.tl:5 voyage.tl:9.4)
+       giant_wave.tl:10.3 giant_wave.tl:11 voyage.tl:5 voyage.tl:9.4)
 inputs=()
 for i in "${!shots[@]}"; do
   timeline=${shots[$i]%%:*} time=${shots[$i]##*:}

@@ -17,9 +17,19 @@ struct GiantLip {
     float thickness; // its half thickness
     float from, to;  // the arc's angles
     float progress;  // the throw, 0 .. 1
-    float spent;     // 0 .. 1 once it has landed: it whitens and thins away
+    float spent;     // 0 .. 1 once it has landed: it collapses, whitens and thins away
     float rate;      // how fast the cross-section moves along w, m/m (marching)
 };
+
+// The tube's half thickness at `angle` along its arc: it thins from the
+// root to TL_GIANT_LIP_TIP of that at the end of the whole sweep, and
+// evens out as it collapses into whitewater.
+float giant_lip_half(GiantLip lip, float angle)
+{
+    float along =
+        clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
+    return lip.thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along * (1.0 - lip.spent));
+}
 
 GiantLip giant_lip_at(float w)
 {
@@ -33,44 +43,50 @@ GiantLip giant_lip_at(float w)
     lip.spent = 1.0 - life;
     float tall = smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
     lip.progress = giant_breaking(w);
-    lip.thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall *
+    lip.thickness = TL_GIANT_LIP_THICKNESS * height * tall *
+                    (1.0 + TL_GIANT_LIP_SWELL * lip.spent) * sqrt(life) *
                     smoothstep(0.0, TL_GIANT_LIP_GROW, lip.progress);
     lip.present = lip.thickness > 0.0;
-    lip.radius = TL_GIANT_LIP_RADIUS * height * tall;
+    lip.radius = TL_GIANT_LIP_RADIUS * height;
     const float anchor = radians(TL_GIANT_LIP_ANCHOR);
     float top_s = giant_bow(w, db) + lambda * u_giant_shape.w / u_giant_shape.x;
     float top_y = -0.5 * u_depth + height;
-    lip.center = vec2(top_s, top_y) - lip.radius * vec2(sin(anchor), cos(anchor));
-    lip.from = radians(TL_GIANT_LIP_ROOT);
-    lip.to = lip.from + lip.progress * radians(TL_GIANT_LIP_SWEEP);
+    // The tube's outer surface passes through the crest's top at the
+    // anchor: the lip is the crest's top thrown on, not a tube laid on it.
+    lip.center = vec2(top_s, top_y) -
+                 (lip.radius + giant_lip_half(lip, anchor)) * vec2(sin(anchor), cos(anchor));
+    float sweep = lip.progress * tall * radians(TL_GIANT_LIP_SWEEP);
+    lip.to = radians(TL_GIANT_LIP_ROOT) + sweep;
+    lip.from = radians(TL_GIANT_LIP_ROOT) +
+               TL_GIANT_LIP_COLLAPSE * smoothstep(0.0, 1.0, lip.spent) * sweep;
     // The march's local bound on how far a point of the tube moves per
-    // metre along w: its free end sweeps with the throw (which runs from 0
+    // metre along w. Its free end sweeps with the throw (which runs from 0
     // to 1 over T·peel metres of crest, at most 1.5 times as fast as on
-    // average: a smoothstep), and the whole arc moves with the crest's top
-    // (bow and envelope) and grows with the envelope (radius, and the
-    // tall-crest gate, whose smoothstep is 1.5 / (high - low) steep).
-    // The tube's growth over the throw's start moves its surface too.
+    // average: a smoothstep) and with the tall-crest gate (a smoothstep of
+    // the envelope, 1.5 / (high - low) steep); its root end falls in as it
+    // collapses (over FADE·T·peel metres, as fast again); the tube grows
+    // over the throw's start and swells as it collapses, and its centre
+    // moves with its thickness (its outer surface holds the crest's top);
+    // and the whole arc
+    // moves with the crest's top (bow and envelope) and grows with the
+    // envelope (radius).
     float throw_rate = 1.5 / (T * u_giant_break.y); // d progress / dw at most
-    float tip = lip.progress > 0.0 && lip.progress < 1.0
-                    ? (lip.radius * radians(TL_GIANT_LIP_SWEEP) +
-                       (lip.progress < TL_GIANT_LIP_GROW
-                            ? 1.5 * TL_GIANT_LIP_THICKNESS * height / TL_GIANT_LIP_GROW
-                            : 0.0)) *
-                          throw_rate
-                    : 0.0;
-    float grow = TL_GIANT_LIP_RADIUS * u_giant_shape.y *
-                 (tall + lambda * 1.5 / (TL_GIANT_LIP_HIGH - TL_GIANT_LIP_LOW));
-    lip.rate = tip + abs(db) + abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +
-                                          2.0 * grow);
+    float spent_rate = lip.spent > 0.0 && lip.spent < 1.0
+                           ? 1.5 / (TL_GIANT_LIP_FADE * T * u_giant_break.y)
+                           : 0.0; // d spent / dw at most
+    float gate_rate = 1.5 / (TL_GIANT_LIP_HIGH - TL_GIANT_LIP_LOW) * abs(dl);
+    float sweep_rate = radians(TL_GIANT_LIP_SWEEP) *
+                       ((lip.progress < 1.0 ? throw_rate * tall : 0.0) + lip.progress * gate_rate);
+    float root_thickness = TL_GIANT_LIP_THICKNESS * height;
+    float tip =
+        lip.radius * (sweep_rate + TL_GIANT_LIP_COLLAPSE * 1.5 * spent_rate * sweep) +
+        2.0 * root_thickness *
+            ((lip.progress < TL_GIANT_LIP_GROW ? 1.5 * throw_rate / TL_GIANT_LIP_GROW : 0.0) +
+             gate_rate + 2.0 * TL_GIANT_LIP_SWELL * spent_rate);
+    lip.rate = tip + abs(db) +
+               abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +
+                          2.0 * TL_GIANT_LIP_RADIUS * u_giant_shape.y);
     return lip;
-}
-
-// The tube's half thickness at `angle` along its arc: it thins from the
-// root to TL_GIANT_LIP_TIP of that at the end of the whole sweep.
-float giant_lip_half(GiantLip lip, float angle)
-{
-    float along = clamp((angle - lip.from) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
-    return lip.thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along);
 }
 
 // Signed distance to the tube in the cross-section (negative inside), and
@@ -91,7 +107,8 @@ float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
     vec2 e0 = lip.radius * vec2(sin(lip.from), cos(lip.from));
     vec2 e1 = lip.radius * vec2(sin(lip.to), cos(lip.to));
     vec2 d0 = q - e0, d1 = q - e1;
-    float c0 = length(d0) - giant_lip_half(lip, lip.from), c1 = length(d1) - giant_lip_half(lip, lip.to);
+    float c0 = length(d0) - giant_lip_half(lip, lip.from),
+          c1 = length(d1) - giant_lip_half(lip, lip.to);
     vec2 d = c0 < c1 ? d0 : d1;
     n2 = d / max(length(d), 1.0e-6);
     return min(c0, c1);
@@ -120,10 +137,10 @@ vec2 giant_lip_interval(vec3 ray)
 // Trusting the cross-section's distance alone stepped
 // over most of a peeling lip seen along the crest, leaving a floating
 // green blade where a few rays happened to land on it.
-#define TL_GIANT_LIP_STEPS 96
-#define TL_GIANT_LIP_RELAX 0.8
-#define TL_GIANT_LIP_GAP 2.0
-#define TL_GIANT_LIP_BISECT 8
+#define TL_GIANT_LIP_STEPS    96
+#define TL_GIANT_LIP_RELAX    0.8
+#define TL_GIANT_LIP_GAP      2.0
+#define TL_GIANT_LIP_BISECT   8
 #define TL_GIANT_LIP_MIN_STEP 0.25
 float giant_lip_march(vec3 ray, float t_min, float t_max)
 {

@@ -1,10 +1,19 @@
 // The giant wave's lip's shading (TL_FEATURE_GIANT_LIP; its geometry is
 // lip.glsl's): after water.glsl, whose normal and reflection it uses.
 
-// The lip at camera-relative `hit`, seen along `ray`: glassy water that
-// mirrors the sky, lit through (it is thin: the sun's light crosses it
-// and glows turquoise when it is behind), whitening from its tip as it
-// throws and all over once it has landed.
+// How far the combing along the flow tilts the lip's normal across the
+// crest (a share of the unit normal), and how much it thickens the sheet
+// under its ridges (a share of its thickness).
+#define TL_GIANT_LIP_COMB 0.6
+// The foam the sheet carries up from the face everywhere, in streaks along
+// the flow (the lace's whiteness there).
+#define TL_GIANT_LIP_STREAKS 0.2
+
+// The lip at camera-relative `hit`, seen along `ray`: water thrown off
+// the crest that mirrors the sky, lit through (it is thin: the sun's light
+// crosses it and glows turquoise when it is behind), combed into streaks
+// along its flow, aerated and white toward its free edge as it throws, and
+// a ball of whitewater once it has landed and collapses.
 vec3 giant_lip_color(vec3 ray, vec3 hit)
 {
     vec2 sw = giant_coords(hit.xz), n2;
@@ -12,19 +21,39 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     giant_lip_distance(lip, vec2(sw.x, hit.y), n2);
     vec2 d = u_giant_frame.xy;
     vec3 n = normalize(n2.x * vec3(d.x, 0.0, d.y) + vec3(0.0, n2.y, 0.0));
+    vec3 across = vec3(d.y, 0.0, -d.x);
+    vec2 q = vec2(sw.x, hit.y) - lip.center;
+    float angle = atan(q.x, q.y);
+    // Metres along the arc from its root, and the share of the whole sweep.
+    float flow = (angle - radians(TL_GIANT_LIP_ROOT)) * lip.radius;
+    float thrown =
+        clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
+    // The water is pulled up the face and over in sheets that do not stay
+    // level: the surface is combed along the flow (ridges a metre or so
+    // apart across the crest, metres long), which tilts the normal across
+    // the crest and breaks the one clean highlight a smooth tube has.
+    // Finer, shorter ripples run across the flow, tilting it along the arc.
+    vec2 comb = vec2(sw.y * 0.8, flow * 0.12);
+    float ridges = (foam_noise(comb) + 0.5 * foam_noise(comb * 2.6 + vec2(7.1, 2.9)) +
+                    0.25 * foam_noise(comb * 6.3 + vec2(3.7, 8.3)) - 0.875) /
+                   0.875;
+    float ripple = foam_noise(vec2(sw.y * 0.4, flow * 1.6)) - 0.5;
+    vec3 along_arc = normalize(cross(across, n));
+    n = normalize(n + TL_GIANT_LIP_COMB * (ridges * across + ripple * along_arc));
     // The small waves ride on the thrown water too, flattened.
     float value, slope_var;
     vec3 ripples = water_normal(hit.xz, u_normal_epsilon, 0.0, value, slope_var);
     n = water_facing(ray, normalize(n + 0.6 * vec3(ripples.x, 0.0, ripples.z)));
     float sunlit = giant_sunlit(hit.xz, hit.y);
     // Light through the tube: its thickness there along the sun's ray.
-    vec2 q = vec2(sw.x, hit.y) - lip.center;
-    float angle = atan(q.x, q.y);
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
-    float across = 2.0 * giant_lip_half(lip, angle) / max(abs(dot(u_sun_dir, n)), 0.25);
+    // The combed sheet is thicker under its ridges and thinner between
+    // them, so the glow through it is streaked along the flow too.
+    float across_sun = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_COMB * ridges) /
+                       max(abs(dot(u_sun_dir, n)), 0.25);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
-    vec3 lit = u_giant_scatter_color * exp(-u_giant_sigma * across) * sky_sun_light() *
+    vec3 lit = u_giant_scatter_color * exp(-u_giant_sigma * across_sun) * sky_sun_light() *
                (u_giant_scatter.x * daylight);
     vec3 body = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
     // What it mirrors: the sky above, and below (the lip's underside faces
@@ -32,19 +61,28 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float fresnel = optics_schlick(ray, n);
     vec3 r = normalize(reflect(ray, n));
     vec3 below = body + lit * (0.25 / TL_PI);
-    vec3 reflection = mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit),
-                          smoothstep(-0.1, 0.05, r.y));
+    vec3 reflection =
+        mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit), smoothstep(-0.1, 0.05, r.y));
     vec3 color = fresnel * reflection + (1.0 - fresnel) * (body + lit * phase);
-    // Foam: at the tip, more of it as the lip throws; a lace keeps it from
-    // being a painted band.
-    float along = clamp((angle - lip.from) / max(lip.to - lip.from, 1.0e-3), 0.0, 1.0);
-    // Once landed, the lip breaks up into whitewater as it goes: in
-    // patches of the lace, more of them as it is spent, never a solid coat
-    // (a wholly white tube read as a hose hanging over the broken crest).
-    float white = max(smoothstep(0.85, 1.0, along) * (0.15 + 0.65 * lip.progress),
-                      0.7 * smoothstep(0.0, 0.8, lip.spent));
-    vec2 at = vec2(sw.y, sw.x + hit.y);
-    float lace = foam_lace(at * 1.5);
-    float foam = smoothstep(1.1 - white, 1.25 - white, lace + 0.2 * white);
+    // Aerated: the thrown sheet takes air as it goes and is white along its
+    // free edge, feathered into streaks along the flow; once landed the
+    // rest of it collapses into whitewater, in lace, not a solid coat (a
+    // whitening by age alone put a white band across the tube).
+    float edge = smoothstep(0.65, 1.0, thrown) * (0.25 + 0.75 * lip.progress);
+    // As it collapses the whitewater climbs from where it landed up what
+    // is left of the curtain.
+    float landed = 0.95 * smoothstep(0.0, 0.4, lip.spent + thrown - 0.75);
+    // Where its top falls in (the arc's root end once it collapses) the
+    // water is broken and white: a clean green cut read as a sawn pipe.
+    float falling = smoothstep(0.0, 0.15, lip.spent) *
+                    (1.0 - smoothstep(0.0, radians(45.0), angle - lip.from));
+    float white = max(max(edge, TL_GIANT_LIP_STREAKS), max(landed, falling));
+    // The lace in the landed whitewater; the streaks, finer, combed along
+    // the flow.
+    float lace = foam_lace(vec2(sw.y * 1.5, flow * 0.35));
+    float streak = foam_lace(vec2(sw.y * 6.0, flow * 0.8));
+    lace = mix(streak, lace, smoothstep(0.0, 0.5, max(max(landed, falling), edge)));
+    float foam = smoothstep(1.05 - white, 1.2 - white, lace + 0.25 * white);
+    color += foam_aerated(ray, n, white, u_scatter_color, max(sunlit, 0.6));
     return foam_shade(color, n, foam, lace, max(sunlit, 0.6));
 }

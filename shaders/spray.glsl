@@ -40,13 +40,16 @@ float giant_spray_density(vec3 p)
         GiantLip lip = giant_lip_at(sw.y);
         if (lip.present && lip.progress > 0.5) {
             float ts = lip.center.x + lip.radius * sin(lip.to) - sw.x;
-            float ty = lip.center.y + lip.radius * cos(lip.to) - p.y;
-            float r = TL_SPRAY_LANDING_RADIUS * lip.radius;
-            density += TL_SPRAY_LANDING_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
-                       (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
-                       smoothstep(0.3, 0.8,
-                                  0.6 * foam_noise(vec2(sw.y / 2.0 + 5.0, ty / 1.6 - ts / 2.2)) +
-                                      0.4 * foam_noise(vec2(sw.y / 0.7 - 3.0, ts / 0.8 + ty / 0.6)));
+            float ty =
+                lip.center.y + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - p.y;
+            float r =
+                TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
+            density +=
+                TL_SPRAY_LANDING_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
+                (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+                smoothstep(0.3, 0.8,
+                           0.6 * foam_noise(vec2(sw.y / 2.0 + 5.0, ty / 1.6 - ts / 2.2)) +
+                               0.4 * foam_noise(vec2(sw.y / 0.7 - 3.0, ts / 0.8 + ty / 0.6)));
         }
 #endif
     }
@@ -75,9 +78,9 @@ float giant_spray_density(vec3 p)
 // or in a sequence): a ray's few steps then land at other depths of the
 // thin plume in neighbouring pixels, and the eye sees fine grain, not the
 // blotches that the same offsets everywhere alias into.
-#define TL_SPRAY_STEPS 16
+#define TL_SPRAY_STEPS   16
 #define TL_SPRAY_PHASE_G 0.7
-#define TL_SPRAY_ALBEDO 0.9
+#define TL_SPRAY_ALBEDO  0.9
 #define TL_SPRAY_DIFFUSE 0.6
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {

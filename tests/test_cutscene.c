@@ -30,7 +30,7 @@ static void test_floating(void)
     CHECK(tl_timeline_parse_file(path, &tl, &diags, &err) == TL_OK);
     long frames = tl_timeline_frame_count(&tl);
     double prev_pitch = 0.0, prev_roll = 0.0, step = 0.0, sink = 0.0, highest = -1e9;
-    double camera_clearance = 1e9;
+    double camera_clearance = 1e9, tilt = 0.0;
     int finite = 1;
     for (long f = 0; f < frames; f++) {
         double t = tl_timeline_frame_time(&tl, f);
@@ -51,19 +51,21 @@ static void test_floating(void)
         camera_clearance = fmin(camera_clearance, s.camera.position[1] - under);
         if (f > 0)
             step = fmax(step, fmax(fabs(b->pitch - prev_pitch), fabs(b->roll - prev_roll)));
+        tilt = fmax(tilt, fmax(fabs(b->pitch), fabs(b->roll)));
         prev_pitch = b->pitch;
         prev_roll = b->roll;
     }
     printf("giant_wave.tl, %ld frames: boat up to %.2f m, waterline at most %.3f m under the "
-           "water at its centre, largest pitch/roll step %.2f deg, camera at least %.2f m above "
-           "the water\n",
-           frames, highest, sink, step / TL_DEG, camera_clearance);
+           "water at its centre, largest pitch/roll step %.2f deg and tilt %.1f deg, camera at "
+           "least %.2f m above the water\n",
+           frames, highest, sink, step / TL_DEG, tilt / TL_DEG, camera_clearance);
     CHECK(finite);
     /* The deck (8% of the built-in hull's length above its waterline) stays
      * above the water: the waterline sinks at most 5% of the length. */
     CHECK(sink <= TL_FLOAT_MAX_SINK * 9.0 + 1e-9);
     CHECK(step < 8.0 * TL_DEG);
-    CHECK(highest > 10.0); /* the wave lifts it */
+    CHECK(tilt < TL_FLOAT_MAX_TILT); /* it does not stand on its stern at the crest */
+    CHECK(highest > 10.0);           /* the wave lifts it */
     CHECK(camera_clearance > 1.0);
     tl_timeline_free(&tl);
 }

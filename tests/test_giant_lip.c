@@ -80,9 +80,9 @@ static void test_lip_heights(void)
     CHECK(lines > 100);
 }
 
-/* The lip's arc passes through the crest's top at its anchor angle, is
- * thrown further the older the break, and exists only from the break's
- * start until it has thinned away. */
+/* The lip's outer surface passes through the crest's top at its anchor
+ * angle; the lip is thrown further the older the break, and exists only
+ * from the break's start until it has thinned away. */
 static void test_lip_life(void)
 {
     tl_scene s;
@@ -97,8 +97,11 @@ static void test_lip_life(void)
     double top_s = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k;
     double top_y = base_of(&s) + lambda * g.amplitude;
     double anchor = TL_GIANT_LIP_ANCHOR * M_PI / 180.0;
-    CHECK_NEAR(lip.center[0] + lip.radius * sin(anchor), top_s, 1e-9);
-    CHECK_NEAR(lip.center[1] + lip.radius * cos(anchor), top_y, 1e-9);
+    /* The tube's outer surface, not its centre line, holds the crest's top. */
+    double outer = lip.radius + tl_giant_lip_half_thickness(&lip, anchor);
+    CHECK_NEAR(lip.center[0] + outer * sin(anchor), top_s, 1e-9);
+    CHECK_NEAR(lip.center[1] + outer * cos(anchor), top_y, 1e-9);
+    CHECK_NEAR(tl_giant_lip_distance(&lip, top_s, top_y), 0.0, 1e-9);
     /* Further from the peak the break is younger: a shorter arc. */
     tl_giant_lip side;
     tl_giant_lip_at(&g, w + 5.0, base_of(&s), &side);

@@ -98,6 +98,16 @@ static void boat_at(const tl_timeline *tl, double t, const tl_scene *s, int head
         *heading = atan2(tangent[0], tangent[2]);
 }
 
+/* TL_FLOAT_MAX_TILT's soft limit: the angle itself up to the knee, then a
+ * tanh toward the limit with the same slope there. */
+static double limit_tilt(double a)
+{
+    double over = fabs(a) - TL_FLOAT_TILT_KNEE, room = TL_FLOAT_MAX_TILT - TL_FLOAT_TILT_KNEE;
+    if (over <= 0.0)
+        return a;
+    return copysign(TL_FLOAT_TILT_KNEE + room * tanh(over / room), a);
+}
+
 void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s)
 {
     tl_boat *b = &s->boat;
@@ -152,8 +162,8 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
     /* Normalised: a still target comes out exactly (the tail beyond 12
      * response times holds 8e-5 of the weight). */
     b->position[1] = sum.height / weights;
-    b->pitch = sum.pitch / weights;
-    b->roll = sum.roll / weights;
+    b->pitch = limit_tilt(sum.pitch / weights);
+    b->roll = limit_tilt(sum.roll / weights);
 
     /* The giant wave's height, followed directly. */
     oc.t = t;

@@ -66,8 +66,15 @@ typedef struct tl_timeline {
 /* Floating (tl_float.c): sets s->boat's height, pitch and roll at time t
  * from the scene's boat position, heading, length and beam. The waterline
  * never sits more than TL_FLOAT_MAX_SINK × length below the water at the
- * boat's centre. */
+ * boat's centre, and it tilts less than TL_FLOAT_MAX_TILT. */
 #define TL_FLOAT_MAX_SINK 0.05
+/* Pitch and roll are limited softly to TL_FLOAT_MAX_TILT radians: as they
+ * are up to TL_FLOAT_TILT_KNEE, then bent smoothly (a tanh, with slope 1 at
+ * the knee) toward the limit. The five points' fit across a crest sharper
+ * than the hull, or onto the giant wave's lip, stood the boat on its stern,
+ * where a hull's weight and inertia carry it over. */
+#define TL_FLOAT_MAX_TILT  (35.0 * 3.14159265358979323846 / 180.0)
+#define TL_FLOAT_TILT_KNEE (20.0 * 3.14159265358979323846 / 180.0)
 void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s);
 
 /* Records the loaded boat model's bounds: its hull length and beam (which

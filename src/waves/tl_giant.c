@@ -480,26 +480,33 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     lip->spent = 1.0 - life;
     double tall = smoothstep(TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, lambda);
     double progress = tl_giant_break_progress(g, w, &dp);
-    lip->thickness = TL_GIANT_LIP_THICKNESS * height * sqrt(life) * tall *
+    lip->thickness = TL_GIANT_LIP_THICKNESS * height * tall *
+                     (1.0 + TL_GIANT_LIP_SWELL * lip->spent) * sqrt(life) *
                      smoothstep(0.0, TL_GIANT_LIP_GROW, progress);
     if (!(lip->thickness > 0.0))
         return;
     lip->present = true;
-    lip->radius = TL_GIANT_LIP_RADIUS * height * tall;
+    lip->radius = TL_GIANT_LIP_RADIUS * height;
     lip->progress = progress;
     double anchor = TL_GIANT_LIP_ANCHOR * (M_PI / 180.0);
     double top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k, top_y = base + height;
-    lip->center[0] = top_s - lip->radius * sin(anchor);
-    lip->center[1] = top_y - lip->radius * cos(anchor);
-    lip->from = TL_GIANT_LIP_ROOT * (M_PI / 180.0);
-    lip->to = lip->from + lip->progress * TL_GIANT_LIP_SWEEP * (M_PI / 180.0);
+    /* The tube's outer surface passes through the crest's top at the
+     * anchor: the lip is the crest's top thrown on, not a tube laid on it. */
+    double outer = lip->radius + tl_giant_lip_half_thickness(lip, anchor);
+    lip->center[0] = top_s - outer * sin(anchor);
+    lip->center[1] = top_y - outer * cos(anchor);
+    double sweep = progress * tall * TL_GIANT_LIP_SWEEP * (M_PI / 180.0);
+    lip->to = TL_GIANT_LIP_ROOT * (M_PI / 180.0) + sweep;
+    lip->from = TL_GIANT_LIP_ROOT * (M_PI / 180.0) +
+                TL_GIANT_LIP_COLLAPSE * smoothstep(0.0, 1.0, lip->spent) * sweep;
 }
 
 double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle)
 {
-    double along = (angle - lip->from) / (TL_GIANT_LIP_SWEEP * (M_PI / 180.0));
+    double along =
+        (angle - TL_GIANT_LIP_ROOT * (M_PI / 180.0)) / (TL_GIANT_LIP_SWEEP * (M_PI / 180.0));
     along = along < 0.0 ? 0.0 : along > 1.0 ? 1.0 : along;
-    return lip->thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along);
+    return lip->thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along * (1.0 - lip->spent));
 }
 
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)

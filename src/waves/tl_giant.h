@@ -82,16 +82,22 @@
  * up, clockwise toward the travel) sits on the crest's top; it starts at
  * TL_GIANT_LIP_ROOT, buried in the crest, and its free end sweeps
  * TL_GIANT_LIP_SWEEP degrees forward and down over the throw, landing on
- * the face in front (at a fifth of the crest's height); then the tube
- * turns to whitewater, and the tube thins away over TL_GIANT_LIP_FADE
- * throw times (as the square root of what is left: it stays thick, then
- * goes). */
+ * the face in front (at a fifth of the crest's height). Then it collapses
+ * over TL_GIANT_LIP_FADE throw times: the arc falls in from its root, so
+ * that TL_GIANT_LIP_COLLAPSE of it has gone by the end and what is left
+ * hangs down to where it landed; the water there swells into whitewater
+ * (up to 1 + TL_GIANT_LIP_SWELL times the root's thickness, and as thick
+ * at the tip as at the root) and thins away (as the square root of what
+ * is left: it stays thick, then goes). A tube that kept its arc and only
+ * thinned read as a hoop at the spent end of the break. */
 #define TL_GIANT_LIP_RADIUS    0.45
 #define TL_GIANT_LIP_THICKNESS 0.08
-#define TL_GIANT_LIP_ANCHOR    -30.0
+#define TL_GIANT_LIP_ANCHOR    0.0
 #define TL_GIANT_LIP_ROOT      -45.0
 #define TL_GIANT_LIP_SWEEP     195.0
-#define TL_GIANT_LIP_FADE      0.4
+#define TL_GIANT_LIP_FADE      0.8
+#define TL_GIANT_LIP_COLLAPSE  0.85
+#define TL_GIANT_LIP_SWELL     1.0
 /* The tube thins from its root to its free end: its half thickness
  * falls linearly along the arc, to TL_GIANT_LIP_TIP of the root's at the
  * end of the whole sweep, so the lip reads as a sheet thrown off the crest
@@ -104,10 +110,12 @@
 /* tl_giant_lip_heights scans a vertical line across the tube in this
  * many intervals for its crossings. */
 #define TL_GIANT_LIP_SCAN 512
-/* Only a tall stretch of the crest throws a lip: the tube's radius and
- * thickness grow from nothing where the envelope is TL_GIANT_LIP_LOW to
- * whole at TL_GIANT_LIP_HIGH, so the break dies out toward the crest's low
- * ends in ever smaller curls instead of throwing long thin blades there. */
+/* Only a tall stretch of the crest throws a lip: the tube's thickness and
+ * its throw's sweep grow from nothing where the envelope is
+ * TL_GIANT_LIP_LOW to whole at TL_GIANT_LIP_HIGH, so the break dies out
+ * toward the crest's low ends in ever smaller curls on the crest's top,
+ * not in long thin blades (the thickness alone) nor in shrinking hoops
+ * (the radius with it). */
 #define TL_GIANT_LIP_LOW  0.55
 #define TL_GIANT_LIP_HIGH 0.8
 /* A crest that breaks by the script (giant.breaking) stays green until its
@@ -242,7 +250,7 @@ typedef struct tl_giant_lip {
     double thickness; /* the tube's half thickness at its root */
     double from, to;  /* the arc's angles, radians from up, clockwise toward +s */
     double progress;  /* the throw, 0 .. 1 (tl_giant_break_progress) */
-    double spent;     /* 0 .. 1 once it has landed: it whitens and thins away */
+    double spent;     /* 0 .. 1 once it has landed: it collapses, whitens and thins away */
 } tl_giant_lip;
 
 /* The lip at w across; `base` is the ocean's mean level (-depth / 2). */

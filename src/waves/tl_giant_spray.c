@@ -92,7 +92,9 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
     /* The lip's landing: its box, widened by the cloud's reach. */
     double lip[4], across[2];
     if (tl_giant_lip_bounds(g, sp->base, lip, across)) {
-        double grow = 3.0 * TL_SPRAY_LANDING_RADIUS * TL_GIANT_LIP_RADIUS * full;
+        double grow =
+            (3.0 * TL_SPRAY_LANDING_RADIUS * (1.0 + TL_SPRAY_SPLASH_GROW) + TL_SPRAY_SPLASH_RISE) *
+            TL_GIANT_LIP_RADIUS * full;
         sp->box[0] = fmin(sp->active ? sp->box[0] : 1e30, lip[0] - grow);
         sp->box[1] = fmax(sp->active ? sp->box[1] : -1e30, lip[1] + grow);
         sp->box[2] = fmin(sp->active ? sp->box[2] : 1e30, lip[2] - grow);
@@ -154,11 +156,13 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         tl_giant_lip_at(g, w, sp->base, &lip);
         if (lip.present && lip.progress > 0.5) {
             double ts = lip.center[0] + lip.radius * sin(lip.to) - s;
-            double ty = lip.center[1] + lip.radius * cos(lip.to) - y;
-            double r = TL_SPRAY_LANDING_RADIUS * lip.radius;
+            double ty =
+                lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - y;
+            double r =
+                TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
             density +=
                 TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
-                (1.0 - lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+                (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
                 smoothstep(0.3, 0.8,
                            0.6 * tl_giant_spray_noise(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
                                0.4 * tl_giant_spray_noise(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));

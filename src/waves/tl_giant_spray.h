@@ -29,8 +29,14 @@
 #define TL_SPRAY_BOW_RADIUS 0.35
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
  * radius (a share of the lip's), from half the throw until it has landed
- * and gone. */
+ * and gone. As the lip collapses the splash rises off the face by up to
+ * TL_SPRAY_SPLASH_RISE of the lip's radius and grows to 1 +
+ * TL_SPRAY_SPLASH_GROW times as wide, fading as the square of what is
+ * spent: the eruption goes up as the curtain comes down (a cloud that
+ * only faded at the tip was hidden by the crest from behind). */
 #define TL_SPRAY_LANDING_RADIUS 0.55
+#define TL_SPRAY_SPLASH_RISE    0.6
+#define TL_SPRAY_SPLASH_GROW    1.0
 /* The landing's whitewater is this much denser than the spindrift: an
  * opaque, churning cloud, not a veil. */
 #define TL_SPRAY_LANDING_GAIN 6.0
