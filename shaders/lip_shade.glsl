@@ -3,8 +3,10 @@
 
 // How far the combing along the flow tilts the lip's normal across the
 // crest (a share of the unit normal), and how much it thickens the sheet
-// under its ridges (a share of its thickness).
-#define TL_GIANT_LIP_COMB 0.6
+// under its ridges (a share of its thickness). Stronger, the ridges read
+// as corrugated plastic.
+#define TL_GIANT_LIP_COMB    0.3
+#define TL_GIANT_LIP_THICKEN 0.25
 // The foam the sheet carries up from the face everywhere, in streaks along
 // the flow (the lace's whiteness there).
 #define TL_GIANT_LIP_STREAKS 0.2
@@ -33,7 +35,9 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // apart across the crest, metres long), which tilts the normal across
     // the crest and breaks the one clean highlight a smooth tube has.
     // Finer, shorter ripples run across the flow, tilting it along the arc.
-    vec2 comb = vec2(sw.y * 0.8, flow * 0.12);
+    // The ridges wander across the crest as they run (parallel, they were
+    // stripes).
+    vec2 comb = vec2(sw.y * 0.8 + 2.0 * foam_noise(vec2(sw.y * 0.12, flow * 0.15)), flow * 0.12);
     float ridges = (foam_noise(comb) + 0.5 * foam_noise(comb * 2.6 + vec2(7.1, 2.9)) +
                     0.25 * foam_noise(comb * 6.3 + vec2(3.7, 8.3)) - 0.875) /
                    0.875;
@@ -49,7 +53,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     // The combed sheet is thicker under its ridges and thinner between
     // them, so the glow through it is streaked along the flow too.
-    float across_sun = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_COMB * ridges) /
+    float across_sun = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_THICKEN * ridges) /
                        max(abs(dot(u_sun_dir, n)), 0.25);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
@@ -71,11 +75,11 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float edge = smoothstep(0.65, 1.0, thrown) * (0.25 + 0.75 * lip.progress);
     // As it collapses the whitewater climbs from where it landed up what
     // is left of the curtain.
-    float landed = 0.95 * smoothstep(0.0, 0.4, lip.spent + thrown - 0.75);
+    float landed = 0.85 * smoothstep(0.0, 0.4, lip.spent + thrown - 0.75);
     // Where its top falls in (the arc's root end once it collapses) the
     // water is broken and white: a clean green cut read as a sawn pipe.
-    float falling = smoothstep(0.0, 0.15, lip.spent) *
-                    (1.0 - smoothstep(0.0, radians(45.0), angle - lip.from));
+    float falling = 0.75 * smoothstep(0.0, 0.3, lip.spent) *
+                    (1.0 - smoothstep(0.0, radians(90.0), angle - lip.from));
     float white = max(max(edge, TL_GIANT_LIP_STREAKS), max(landed, falling));
     // The lace in the landed whitewater; the streaks, finer, combed along
     // the flow.

@@ -124,7 +124,11 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         // the sun many times inside and looks white from every side: its
         // share of TL_SPRAY_DIFFUSE/pi on top of the single-scattering lobe.
         float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
-        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) + ambient);
+        // Below the crest, on the side away from the sun, the wave shades
+        // the spray as it shades the water: lit by the full sun there, the
+        // spray under a backlit lip glowed brown against the dark face.
+        float sunlit = density > 0.0 ? giant_sunlit(p.xz, p.y) : 1.0;
+        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) * sunlit + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }
