@@ -21,13 +21,19 @@ struct GiantLip {
     float rate;      // how fast the cross-section moves along w, m/m (marching)
 };
 
+// How far `angle` lies along the whole sweep, from the root (0) to where
+// a full throw ends (1).
+float giant_lip_along(float angle)
+{
+    return clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
+}
+
 // The tube's half thickness at `angle` along its arc: it thins from the
 // root to TL_GIANT_LIP_TIP of that at the end of the whole sweep, and
 // evens out as it collapses into whitewater.
 float giant_lip_half(GiantLip lip, float angle)
 {
-    float along =
-        clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
+    float along = giant_lip_along(angle);
     return lip.thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along * (1.0 - lip.spent));
 }
 

@@ -28,8 +28,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float angle = atan(q.x, q.y);
     // Metres along the arc from its root, and the share of the whole sweep.
     float flow = (angle - radians(TL_GIANT_LIP_ROOT)) * lip.radius;
-    float thrown =
-        clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
+    float thrown = giant_lip_along(angle);
     // The water is pulled up the face and over in sheets that do not stay
     // level: the surface is combed along the flow (ridges a metre or so
     // apart across the crest, metres long), which tilts the normal across
