@@ -27,7 +27,8 @@ float giant_smooth(float x, out float dx)
     return x * x * (3.0 - 2.0 * x);
 }
 
-// (Y, Y', D, D') at full strength: Y = A·m·cos θ, D = (-S·m·sin θ + C·m·u⁴)/k
+// (Y, Y', D, D') at full strength: Y = A·m·cos θ·(1 − q·l²) with
+// l = (1 − cos θ)/2 and q the trough's lift, D = (-S·m·sin θ + C·m·u⁴)/k
 // with θ = k·s0, u = (1 + cos θ)/2 and m the single-crest mask.
 vec4 giant_profile(float s0)
 {
@@ -37,8 +38,11 @@ vec4 giant_profile(float s0)
     float dm = -ds / u_giant_mask.y * (s0 < 0.0 ? -1.0 : 1.0);
     float c = cos(k * s0), sn = sin(k * s0);
     float u = 0.5 * (1.0 + c), u3 = u * u * u, du = -0.5 * k * sn;
-    float y = A * m * c;
-    float dy = A * (dm * c - k * m * sn);
+    const float q = TL_GIANT_TROUGH_LIFT;
+    float low = 0.5 * (1.0 - c);
+    float shape = c * (1.0 - q * low * low), dshape = 1.0 - q * low * low + q * c * low;
+    float y = A * m * shape;
+    float dy = A * (dm * shape - k * m * sn * dshape);
     float d = (-S * m * sn + C * m * u3 * u) / k;
     float dd = (-S * (dm * sn + k * m * c) + C * (dm * u3 * u + m * 4.0 * u3 * du)) / k;
     return vec4(y, dy, d, dd);

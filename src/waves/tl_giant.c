@@ -118,10 +118,14 @@ double tl_giant_lambda(const tl_giant *g, double w, double *dl)
 }
 
 /* Profile with explicit steepness S and curl C (the clamps scan it with
- * unit values). Y = A·m·cos θ; D = -(S/k)·m·sin θ (Gerstner pinch toward
- * the crest) + (C/k)·m·u⁴ with u = (1 + cos θ)/2 (a push forward that is
- * strongest at the crest: the curl). Both displacements scale with the
- * wavelength, not the height, so the clamps depend on shape alone. */
+ * unit values). Y = A·m·cos θ·(1 − q·l²) with l = (1 − cos θ)/2 and q the
+ * trough's lift (TL_GIANT_TROUGH_LIFT): the crest keeps its height A and
+ * nearly its slope (l² is flat there), the trough keeps 1 − q of its depth
+ * and a broad bottom.
+ * D = -(S/k)·m·sin θ (Gerstner pinch toward the crest) + (C/k)·m·u⁴ with
+ * u = (1 + cos θ)/2 (a push forward that is strongest at the crest: the
+ * curl). Both displacements scale with the wavelength, not the height, so
+ * the clamps depend on shape alone. */
 static void profile(const tl_giant *g, double s0, double steep, double curl, double *y, double *dy,
                     double *d, double *dd)
 {
@@ -129,8 +133,11 @@ static void profile(const tl_giant *g, double s0, double steep, double curl, dou
     double th = g->k * s0, c = cos(th), sn = sin(th);
     double A = g->amplitude, k = g->k;
     double u = 0.5 * (1.0 + c), u3 = u * u * u, du = -0.5 * k * sn;
-    *y = A * m * c;
-    *dy = A * (dm * c - k * m * sn);
+    const double q = TL_GIANT_TROUGH_LIFT;
+    double low = 0.5 * (1.0 - c); /* 0 at the crest, 1 at the trough */
+    double shape = c * (1.0 - q * low * low), dshape = 1.0 - q * low * low + q * c * low; /* d/dc */
+    *y = A * m * shape;
+    *dy = A * (dm * shape - k * m * sn * dshape);
     *d = (-steep * m * sn + curl * m * u3 * u) / k;
     *dd = (-steep * (dm * sn + k * m * c) + curl * (dm * u3 * u + m * 4.0 * u3 * du)) / k;
 }

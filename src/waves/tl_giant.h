@@ -30,12 +30,18 @@
  * compressed at most ten times, so slopes stay finite. */
 #define TL_GIANT_MIN_JACOBIAN 0.1
 /* The single-crest mask is 1 within this many wavelengths of the crest
- * (the crest and its faces), and fades over the falloff beyond: the
- * troughs on either side are a third of the crest's depth or so and rise
- * gently back to the sea. Holding the mask to half a wavelength left a
- * trough as deep as the crest is high, whose far wall, seen from a camera
- * beyond it, grazed the view and mirrored the sky as a pale band. */
+ * (the crest and its faces), and fades over the falloff beyond, so the
+ * troughs on either side rise gently back to the sea. Holding the mask to
+ * half a wavelength left a trough as deep as the crest is high, whose far
+ * wall, seen from a camera beyond it, grazed the view and mirrored the sky
+ * as a pale band. */
 #define TL_GIANT_CREST_HALF_LENGTH 0.25
+/* The share of a trough's depth the profile lifts (Stokes' asymmetry): a
+ * steep wave's crest stands well above the sea and its trough is broad and
+ * shallow. The cosine profile alone made troughs as deep as the crest was
+ * high; beside a short-crested peak they ended in a round, dark pit. At
+ * 1/2 the trough's bottom is flat; above it the trough would have two. */
+#define TL_GIANT_TROUGH_LIFT 0.5
 /* Along the travel the mask fades over at least three quarters of a
  * wavelength: the troughs rise back to the sea as gently as a swell, not
  * up a ramp whose far side grazes the view. */
