@@ -447,6 +447,36 @@ vec2 giant_thickness(vec3 hit, GiantSample g)
     return vec2(t - a_in / max(toward.y, 0.1), wave_in);
 }
 
+// Metres of the wave's water that the sun's light crosses on its way to a
+// point above the height field (camera-relative `from`; the lip's sheet):
+// the ray toward the sun is stepped, each step 1.6 times the last, and the
+// stretches under the surface summed (linearly between steps). A curtain
+// falling in front of the face is lit through the crest behind it, not
+// only through its own sheet, so it is green and dim low on the face and
+// pale only where it stands clear against the sky.
+#define TL_GIANT_THROUGH_STEPS 10
+float giant_water_toward_sun(vec3 from)
+{
+    vec3 toward = u_sun_dir;
+    float t = 0.0, step = 0.5, crossed = 0.0;
+    float above = from.y - giant_height(from.xz);
+    for (int i = 0; i < TL_GIANT_THROUGH_STEPS; i++) {
+        float t_next = t + step;
+        vec3 p = from + toward * t_next;
+        float next = p.y - giant_height(p.xz);
+        if (above < 0.0 && next < 0.0)
+            crossed += step;
+        else if (above < 0.0 || next < 0.0)
+            crossed += step * max(-above, -next) / abs(next - above);
+        t = t_next;
+        above = next;
+        step *= 1.6;
+    }
+    // Still under water: the rest of the way as the depth left over the
+    // rate the ray climbs (the surface held level beyond).
+    return crossed + max(-above, 0.0) / max(toward.y, 0.1);
+}
+
 
 // Light through the crest (seed 003's subsurface term, with its depth
 // from the wave's shape): sunlight that crossed the water to a point just

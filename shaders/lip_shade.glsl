@@ -56,6 +56,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
                        max(abs(dot(u_sun_dir, n)), 0.25);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
+    across_sun += giant_water_toward_sun(hit);
     vec3 lit = u_giant_scatter_color * exp(-u_giant_sigma * across_sun) * sky_sun_light() *
                (u_giant_scatter.x * daylight);
     vec3 body = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
