@@ -23,7 +23,8 @@
 //           its centre (s, y), radius and half thickness (tl_giant_lip_at)
 //   mode 11: the same lip's angles from and to, throw and presence
 //   mode 12: the spray's density at camera-relative (x, z) and height y,
-//           the input's third float (tl_giant_spray_density)
+//           the input's third float, over the span of height its fourth
+//           (tl_giant_spray_density)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -106,7 +107,7 @@ void main()
 #endif
 #ifdef TL_FEATURE_GIANT_SPRAY
     else if (u_probe_mode == 12)
-        result.x = giant_spray_density(vec3(p.x, input4.z, p.y));
+        result.x = giant_spray_density(vec3(p.x, input4.z, p.y), input4.w);
 #endif
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 9) {

@@ -4,8 +4,31 @@
 // before it. src/waves/tl_giant_spray.c is the same density in double and
 // has the TL_SPRAY_* constants; keep the two in step.
 
-// Density (0 .. giant.spray) at camera-relative p (y absolute).
-float giant_spray_density(vec3 p)
+// erf, to 1.5e-7 (Abramowitz and Stegun 7.1.26).
+float giant_erf(float x)
+{
+    float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+    float poly = t * (0.254829592 + t * (-0.284496736 +
+                                         t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+    return sign(x) * (1.0 - poly * exp(-x * x));
+}
+
+// The mean of exp(-x²/r²) over [x - span/2, x + span/2]
+// (tl_giant_spray_layer).
+float giant_spray_layer(float x, float r, float span)
+{
+    float h = 0.5 * span, g = exp(-x * x / (r * r));
+    if (h < 0.1 * r) {
+        float u2 = x * x / (r * r), e2 = h * h / (r * r);
+        return g * (1.0 + e2 * (2.0 * u2 - 1.0) / 3.0 +
+                    e2 * e2 * (4.0 * u2 * u2 - 12.0 * u2 + 3.0) / 30.0);
+    }
+    return 0.25 * sqrt(TL_PI) * r / h * (giant_erf((x + h) / r) - giant_erf((x - h) / r));
+}
+
+// Density (0 .. giant.spray) at camera-relative p (y absolute); `span`:
+// the height a march's sample stands for (tl_giant_spray_density).
+float giant_spray_density(vec3 p, float span)
 {
     float density = 0.0;
     vec2 sw = giant_coords(p.xz);
@@ -28,7 +51,7 @@ float giant_spray_density(vec3 p)
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
                       (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * reach))) *
-                      exp(-(up - lift) * (up - lift) / (rise * rise + 1.0e-6));
+                      giant_spray_layer(up - lift, rise + 1.0e-6, span);
         // Streaks drawn out along the wind, narrow across the crest.
         float drifted = back + u_giant_spray.z;
         float wisps = smoothstep(0.3, 0.75,
@@ -72,16 +95,27 @@ float giant_spray_density(vec3 p)
 
 // The spray along `ray` from the camera to `dist`, over `color`: single
 // scattering of the sun (a forward lobe: backlit spray glows) and of the
-// sky, by water droplets (albedo near 1), in TL_SPRAY_STEPS steps over the
-// part of the ray in the spray's boxes, each step at a fixed offset in
+// sky, by water droplets (albedo near 1), in steps over the part of the
+// ray in the spray's boxes (quality.spray_step), each step at a fixed offset in
 // its segment by a hash of the pixel (so a frame renders the same alone
-// or in a sequence): a ray's few steps then land at other depths of the
-// thin plume in neighbouring pixels, and the eye sees fine grain, not the
-// blotches that the same offsets everywhere alias into.
-#define TL_SPRAY_STEPS   16
-#define TL_SPRAY_PHASE_G 0.7
-#define TL_SPRAY_ALBEDO  0.9
-#define TL_SPRAY_DIFFUSE 0.6
+// or in a sequence): the blobs (the landing, the bow) are sampled at other
+// depths in neighbouring pixels, and the eye sees no blotches where the
+// same offsets everywhere would alias. The plume's layer is thinner than a
+// step of a ray that looks down through it: each sample takes its mean
+// over the step's height (giant_spray_layer), or the steps that hit it
+// and those that missed it were pixels apart (a grain like asphalt over
+// the back of the wave).
+// Steps: one per quality.spray_step metres of the ray in the boxes
+// (u_spray_step), at least TL_SPRAY_STEPS_MIN and at most
+// TL_SPRAY_STEPS_MAX. Sixteen over the whole box, whatever its length, put
+// 4 m between the samples of a ray that crossed the landing's tall box,
+// against wisps under a metre: each pixel's few samples found other wisps,
+// a grain like asphalt over the back of the wave.
+#define TL_SPRAY_STEPS_MIN 16
+#define TL_SPRAY_STEPS_MAX 64
+#define TL_SPRAY_PHASE_G   0.7
+#define TL_SPRAY_ALBEDO    0.9
+#define TL_SPRAY_DIFFUSE   0.6
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
     // The crest's box in the wave's frame, and the bow's sphere.
@@ -106,7 +140,8 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float g = TL_SPRAY_PHASE_G;
     float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
     vec3 sun = sky_sun_light(), ambient = sky_ambient();
-    float dt = (t1 - t0) / float(TL_SPRAY_STEPS);
+    int steps = clamp(int(ceil((t1 - t0) / u_spray_step)), TL_SPRAY_STEPS_MIN, TL_SPRAY_STEPS_MAX);
+    float dt = (t1 - t0) / float(steps);
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
     uvec2 pixel = uvec2(gl_FragCoord.xy);
@@ -115,9 +150,9 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     h *= 0x2c1b3c6du;
     h ^= h >> 12;
     float offset = float(h & 0xffffu) / 65536.0;
-    for (int i = 0; i < TL_SPRAY_STEPS; i++) {
+    for (int i = 0; i < steps; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
-        float density = giant_spray_density(p);
+        float density = giant_spray_density(p, abs(ray.y) * dt);
         float sigma = TL_SPRAY_SIGMA * density;
         float step_trans = exp(-sigma * dt);
         // A dense cloud (the landing's whitewater, the bow's burst) scatters

@@ -193,7 +193,7 @@ static void test_spray_density(void)
                 double sv = top_s - 40.0 + 60.0 * i / 59.0, y = top_y - 5.0 + 15.0 * j / 29.0;
                 double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
                 double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
-                double d = tl_giant_spray_density(&sp, &g, x, y, z);
+                double d = tl_giant_spray_density(&sp, &g, x, y, z, 0.0);
                 CHECK(d >= 0.0 && d <= sp.amount); /* no bow here: the spindrift alone */
                 if (sv > top_s + 2.0)
                     ahead = fmax(ahead, d);
@@ -237,10 +237,36 @@ static void test_spray_density(void)
     double far_s = top_s - TL_SPRAY_REACHES * sp.reach, far_y = base_of(&s) + lambda * g.amplitude;
     double worst = 0.0;
     for (int j = 0; j < 40; j++)
-        worst = fmax(worst,
-                     tl_giant_spray_density(&sp, &g, g.origin[0] + g.dir[0] * far_s,
-                                            far_y - 5.0 + 0.5 * j, g.origin[1] + g.dir[1] * far_s));
+        worst = fmax(worst, tl_giant_spray_density(&sp, &g, g.origin[0] + g.dir[0] * far_s,
+                                                   far_y - 5.0 + 0.5 * j,
+                                                   g.origin[1] + g.dir[1] * far_s, 0.0));
     CHECK(worst == 0.0);
+}
+
+/* The plume's layer over a step's height: the mean of exp(-x²/r²) over
+ * the span, against a fine midpoint sum, on both sides of the series'
+ * threshold (a tenth of the rise) and across it without a jump; at span 0
+ * the point value. */
+static void test_spray_layer(void)
+{
+    const double r = 1.3;
+    double worst = 0.0;
+    for (int i = 0; i <= 40; i++) {
+        double x = -4.0 + 0.2 * i;
+        CHECK_NEAR(tl_giant_spray_layer(x, r, 0.0), exp(-x * x / (r * r)), 1e-15);
+        const double spans[] = {0.05, 0.2599, 0.2601, 1.0, 3.0, 12.0};
+        for (size_t k = 0; k < sizeof spans / sizeof spans[0]; k++) {
+            const int n = 20000;
+            double h = 0.5 * spans[k], sum = 0.0;
+            for (int j = 0; j < n; j++) {
+                double y = x - h + 2.0 * h * (j + 0.5) / n;
+                sum += exp(-y * y / (r * r));
+            }
+            worst = fmax(worst, fabs(tl_giant_spray_layer(x, r, spans[k]) - sum / n));
+        }
+    }
+    printf("spray layer: mean over a span against a midpoint sum: %.2g\n", worst);
+    CHECK(worst < 1e-6);
 }
 
 /* Only a tall stretch of the crest throws a lip: none where the envelope
@@ -319,11 +345,14 @@ static void test_gpu_mirror(tl_renderer *r)
             }
             double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
             double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
-            density[i] = tl_giant_spray_density(&sp, &g, x, y, z);
+            /* Points, and samples standing for up to 2.4 m of height (a
+             * march's step through the plume's layer). */
+            double span = 0.6 * (i % 5);
+            density[i] = tl_giant_spray_density(&sp, &g, x, y, z, span);
             in4[4 * i + 0] = (float)(x - s.camera.position[0]);
             in4[4 * i + 1] = (float)(z - s.camera.position[2]);
             in4[4 * i + 2] = (float)y;
-            in4[4 * i + 3] = 0.0f;
+            in4[4 * i + 3] = (float)span;
         }
         tl_error err;
         tl_error_clear(&err);
@@ -477,6 +506,7 @@ int main(void)
     test_lip_life();
     test_lip_bounds();
     test_spray_density();
+    test_spray_layer();
     test_lip_low_crest();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;

@@ -210,6 +210,7 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     u->giant_scatter[2] = (float)s->giant.scatter_back;
     to_float3(s->giant.scatter_color, u->giant_scatter_color);
     u->giant_iterations = s->quality.giant_iterations;
+    u->spray_step = (float)s->quality.spray_step;
     u->giant_ride = (float)g.ride;
     /* The small waves riding the wave's water steepen where it is
      * compressed, by ride·|grad displacement| times their own slope: the

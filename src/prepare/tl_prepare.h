@@ -163,6 +163,7 @@ typedef struct tl_frame_uniforms {
      * crest's box, the bow's burst (camera-relative x, absolute y, z,
      * amount). */
     float giant_spray[4], giant_spray_box[4], giant_spray_bow[4], giant_spray_heading[2];
+    float spray_step; /* quality.spray_step: metres a step of the spray's march */
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */

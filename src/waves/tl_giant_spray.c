@@ -122,8 +122,22 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
     }
 }
 
+double tl_giant_spray_layer(double x, double r, double span)
+{
+    double h = 0.5 * span, g = exp(-x * x / (r * r));
+    /* Below a tenth of the rise the difference of two erfs cancels (in the
+     * shader's float): there the mean's Taylor series to h⁴, with u = x/r
+     * and e = h/r, g·(1 + e²(2u² − 1)/3 + e⁴(4u⁴ − 12u² + 3)/30). */
+    if (h < 0.1 * r) {
+        double u2 = x * x / (r * r), e2 = h * h / (r * r);
+        return g * (1.0 + e2 * (2.0 * u2 - 1.0) / 3.0 +
+                    e2 * e2 * (4.0 * u2 * u2 - 12.0 * u2 + 3.0) / 30.0);
+    }
+    return 0.25 * sqrt(M_PI) * r / h * (erf((x + h) / r) - erf((x - h) / r));
+}
+
 double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
-                              double z)
+                              double z, double span)
 {
     if (!sp->active)
         return 0.0;
@@ -143,7 +157,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                        exp(-fmax(back, 0.0) / sp->reach) *
                        (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
-                       exp(-(up - lift) * (up - lift) / (rise * rise + 1e-6));
+                       tl_giant_spray_layer(up - lift, rise + 1e-6, span);
         /* Streaks drawn out along the wind, narrow across the crest. */
         double drifted = back + sp->drift;
         double wisps =

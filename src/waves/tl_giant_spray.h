@@ -69,9 +69,17 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
                             double t, double depth, const double *bow, double length,
                             const double heading[2]);
 
-/* Spray density (0 .. amount) at world (x, y, z). */
+/* Spray density (0 .. amount) at world (x, y, z). `span`: the height (m)
+ * a sample of a march stands for (0 for the point): the plume's thin
+ * layer is averaged over [y - span/2, y + span/2] in closed form
+ * (tl_giant_spray_layer), so a step that straddles it counts what it
+ * holds wherever the step's sample lands. */
 double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
-                              double z);
+                              double z, double span);
+
+/* The mean of exp(-x²/r²) over [x - h, x + h], h = span/2: the plume's
+ * profile in height, x the height over its middle and r its rise. */
+double tl_giant_spray_layer(double x, double r, double span);
 
 /* The value noise of shaders/foam.glsl's foam_noise, in [0, 1]. */
 double tl_giant_spray_noise(double x, double y);
