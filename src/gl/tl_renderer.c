@@ -81,57 +81,58 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
 int tl_renderer_defines(unsigned features, char *out, size_t size)
 {
     static const double variation[3] = TL_GIANT_VARIATION_WEIGHTS;
-    int n = snprintf(out, size,
-                     "#define TL_MAX_OCTAVES %d\n"
-                     "#define TL_SKY_DEPTH %.1f\n"
-                     "#define TL_FAR 1.0e7\n"
-                     "#define TL_GIANT_SLOPE_BINS %d\n"
-                     "#define TL_GIANT_CONVERGED %.1e\n"
-                     "#define TL_GIANT_SHADOW_FADE %.3f\n"
-                     "#define TL_GIANT_VARIATION_WEIGHTS %.17g, %.17g, %.17g\n"
-                     "#define TL_GIANT_PEEL_ROUND %.17g\n"
-                     "#define TL_GIANT_TROUGH_LIFT %.17g\n"
-                     "#define TL_GIANT_LIP_RADIUS %.17g\n"
-                     "#define TL_GIANT_LIP_THICKNESS %.17g\n"
-                     "#define TL_GIANT_LIP_TIP %.17g\n"
-                     "#define TL_GIANT_LIP_GROW %.17g\n"
-                     "#define TL_GIANT_LIP_ANCHOR %.17g\n"
-                     "#define TL_GIANT_LIP_ROOT %.17g\n"
-                     "#define TL_GIANT_LIP_SWEEP %.17g\n"
-                     "#define TL_GIANT_LIP_FADE %.17g\n"
-                     "#define TL_GIANT_LIP_COLLAPSE %.17g\n"
-                     "#define TL_GIANT_LIP_SWELL %.17g\n"
-                     "#define TL_GIANT_LIP_LOW %.17g\n"
-                     "#define TL_GIANT_LIP_HIGH %.17g\n"
-                     "#define TL_SPRAY_SIGMA %.17g\n"
-                     "#define TL_SPRAY_FROM %.17g\n"
-                     "#define TL_SPRAY_FULL %.17g\n"
-                     "#define TL_SPRAY_LANDING_RADIUS %.17g\n"
-                     "#define TL_SPRAY_SPLASH_RISE %.17g\n"
-                     "#define TL_SPRAY_SPLASH_GROW %.17g\n"
-                     "#define TL_SPRAY_BOW_GAIN %.17g\n"
-                     "#define TL_SPRAY_LANDING_GAIN %.17g\n"
-                     "#define TL_SPRAY_REACHES %.17g\n"
-                     "#define TL_SPRAY_LIFT %.17g\n"
-                     "#define TL_WAKE_POINTS %d\n"
-                     "#define TL_WAKE_GROUP %d\n"
-                     "#define TL_WAKE_GROUPS %d\n"
-                     "#define TL_WAKE_SPEED_NONE %.3f\n"
-                     "#define TL_WAKE_SPEED_FULL %.3f\n"
-                     "#define TL_MARCH_RELAX %g\n"
-                     "#define TL_BOX_STEP_COST %g\n"
-                     "#define TL_MIRROR_SHIFT %g\n",
-                     TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS,
-                     TL_GIANT_CONVERGED, TL_GIANT_SHADOW_FADE, variation[0], variation[1],
-                     variation[2], TL_GIANT_PEEL_ROUND, TL_GIANT_TROUGH_LIFT, TL_GIANT_LIP_RADIUS,
-                     TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP, TL_GIANT_LIP_GROW,
-                     TL_GIANT_LIP_ANCHOR, TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE,
-                     TL_GIANT_LIP_COLLAPSE, TL_GIANT_LIP_SWELL, TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH,
-                     TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL, TL_SPRAY_LANDING_RADIUS,
-                     TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_GROW, TL_SPRAY_BOW_GAIN,
-                     TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS,
-                     TL_WAKE_GROUP, TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL,
-                     TL_QUALITY_MARCH_RELAX, TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT);
+    int n = snprintf(
+        out, size,
+        "#define TL_MAX_OCTAVES %d\n"
+        "#define TL_SKY_DEPTH %.1f\n"
+        "#define TL_FAR 1.0e7\n"
+        "#define TL_GIANT_SLOPE_BINS %d\n"
+        "#define TL_GIANT_CONVERGED %.1e\n"
+        "#define TL_GIANT_SHADOW_FADE %.3f\n"
+        "#define TL_GIANT_VARIATION_WEIGHTS %.17g, %.17g, %.17g\n"
+        "#define TL_GIANT_PEEL_ROUND %.17g\n"
+        "#define TL_GIANT_TROUGH_LIFT %.17g\n"
+        "#define TL_GIANT_LIP_RADIUS %.17g\n"
+        "#define TL_GIANT_LIP_THICKNESS %.17g\n"
+        "#define TL_GIANT_LIP_TIP %.17g\n"
+        "#define TL_GIANT_LIP_GROW %.17g\n"
+        "#define TL_GIANT_LIP_ANCHOR %.17g\n"
+        "#define TL_GIANT_LIP_ROOT %.17g\n"
+        "#define TL_GIANT_LIP_SWEEP %.17g\n"
+        "#define TL_GIANT_LIP_FADE %.17g\n"
+        "#define TL_GIANT_LIP_COLLAPSE %.17g\n"
+        "#define TL_GIANT_LIP_SWELL %.17g\n"
+        "#define TL_GIANT_LIP_LOW %.17g\n"
+        "#define TL_GIANT_LIP_HIGH %.17g\n"
+        "#define TL_SPRAY_SIGMA %.17g\n"
+        "#define TL_SPRAY_FROM %.17g\n"
+        "#define TL_SPRAY_FULL %.17g\n"
+        "#define TL_SPRAY_LANDING_RADIUS %.17g\n"
+        "#define TL_SPRAY_SPLASH_RISE %.17g\n"
+        "#define TL_SPRAY_SPLASH_AHEAD %.17g\n"
+        "#define TL_SPRAY_SPLASH_GROW %.17g\n"
+        "#define TL_SPRAY_BOW_GAIN %.17g\n"
+        "#define TL_SPRAY_LANDING_GAIN %.17g\n"
+        "#define TL_SPRAY_REACHES %.17g\n"
+        "#define TL_SPRAY_LIFT %.17g\n"
+        "#define TL_WAKE_POINTS %d\n"
+        "#define TL_WAKE_GROUP %d\n"
+        "#define TL_WAKE_GROUPS %d\n"
+        "#define TL_WAKE_SPEED_NONE %.3f\n"
+        "#define TL_WAKE_SPEED_FULL %.3f\n"
+        "#define TL_MARCH_RELAX %g\n"
+        "#define TL_BOX_STEP_COST %g\n"
+        "#define TL_MIRROR_SHIFT %g\n",
+        TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
+        TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
+        TL_GIANT_TROUGH_LIFT, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP,
+        TL_GIANT_LIP_GROW, TL_GIANT_LIP_ANCHOR, TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP,
+        TL_GIANT_LIP_FADE, TL_GIANT_LIP_COLLAPSE, TL_GIANT_LIP_SWELL, TL_GIANT_LIP_LOW,
+        TL_GIANT_LIP_HIGH, TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL, TL_SPRAY_LANDING_RADIUS,
+        TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_AHEAD, TL_SPRAY_SPLASH_GROW, TL_SPRAY_BOW_GAIN,
+        TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS, TL_WAKE_GROUP,
+        TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
+        TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

@@ -92,9 +92,9 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
     /* The lip's landing: its box, widened by the cloud's reach. */
     double lip[4], across[2];
     if (tl_giant_lip_bounds(g, sp->base, lip, across)) {
-        double grow =
-            (3.0 * TL_SPRAY_LANDING_RADIUS * (1.0 + TL_SPRAY_SPLASH_GROW) + TL_SPRAY_SPLASH_RISE) *
-            TL_GIANT_LIP_RADIUS * full;
+        double grow = (3.0 * TL_SPRAY_LANDING_RADIUS * (1.0 + TL_SPRAY_SPLASH_GROW) +
+                       TL_SPRAY_SPLASH_RISE + TL_SPRAY_SPLASH_AHEAD) *
+                      TL_GIANT_LIP_RADIUS * full;
         sp->box[0] = fmin(sp->active ? sp->box[0] : 1e30, lip[0] - grow);
         sp->box[1] = fmax(sp->active ? sp->box[1] : -1e30, lip[1] + grow);
         sp->box[2] = fmin(sp->active ? sp->box[2] : 1e30, lip[2] - grow);
@@ -169,7 +169,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         tl_giant_lip lip;
         tl_giant_lip_at(g, w, sp->base, &lip);
         if (lip.present && lip.progress > 0.5) {
-            double ts = lip.center[0] + lip.radius * sin(lip.to) - s;
+            double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
+            double ts = lip.center[0] + lip.radius * (sin(lip.to) + ahead) - s;
             double ty =
                 lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - y;
             double r =

@@ -33,10 +33,15 @@
  * TL_SPRAY_SPLASH_RISE of the lip's radius and grows to 1 +
  * TL_SPRAY_SPLASH_GROW times as wide, fading as the square of what is
  * spent: the eruption goes up as the curtain comes down (a cloud that
- * only faded at the tip was hidden by the crest from behind). */
+ * only faded at the tip was hidden by the crest from behind). It is thrown
+ * forward of the tip by TL_SPRAY_SPLASH_AHEAD of the lip's radius, from
+ * 0.3 of that as it lands to all of it once spent: centred on the tip,
+ * half of it lay under the face and the rest behind the curtain, and from
+ * in front of the wave nothing of it showed. */
 #define TL_SPRAY_LANDING_RADIUS 0.55
 #define TL_SPRAY_SPLASH_RISE    0.6
 #define TL_SPRAY_SPLASH_GROW    1.0
+#define TL_SPRAY_SPLASH_AHEAD   0.6
 /* The landing's whitewater is this much denser than the spindrift: an
  * opaque, churning cloud, not a veil. */
 #define TL_SPRAY_LANDING_GAIN 6.0
