@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gl/tl_renderer_internal.h"
 #include "tl_gl_test.h"
 
 static void test_probe(tl_renderer *r)
@@ -229,6 +230,22 @@ static void test_shader_log_names(void)
             CHECK_STR_EQ(got, logs[i][1]);
         free(got);
     }
+}
+
+/* The shared #defines of a program with every feature on leave room for
+ * a program's own lines (about a tenth of the buffer), and a buffer they
+ * do not fit is refused, not cut short (a frame with every feature under
+ * water once found the limit only in the slow extremes test). */
+static void test_defines_fit(void)
+{
+    char defines[TL_DEFINES_SIZE];
+    unsigned all = (1u << TL_FEATURE_COUNT) - 1u;
+    CHECK(tl_renderer_defines(all, defines, sizeof defines) == 0);
+    size_t n = strlen(defines);
+    printf("shared #defines with every feature: %zu of %d bytes\n", n, TL_DEFINES_SIZE);
+    CHECK(n + TL_DEFINES_SIZE / 10 < sizeof defines);
+    CHECK(strstr(defines, "#define TL_GIANT_TROUGH_LIFT ") != NULL);
+    CHECK(tl_renderer_defines(all, defines, n) != 0);
 }
 
 /* The pixel filter (quality.pixel_filter): the display image is the 3x3
@@ -788,6 +805,7 @@ int main(void)
 {
     test_device_platform_extensions();
     test_shader_log_names();
+    test_defines_fit();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)

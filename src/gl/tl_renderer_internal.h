@@ -151,11 +151,11 @@ int tl_renderer_check(const char *what, tl_error *err);
 GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
                                  const char *defines, tl_error *err);
 /* The #defines every program shares, plus one per feature bit. */
-/* Room for the shared #defines, one line per feature and a program's own
- * lines: all thirteen features come to 648 bytes, the ocean program's
- * lines to about 110 more (a 640-byte buffer once cut the last line off,
- * and the shader failed to compile). */
-#define TL_DEFINES_SIZE 2048
+/* Room for the shared #defines (every constant the shaders share with the
+ * CPU, one line each), one line per feature and a program's own lines,
+ * with room to spare: a full buffer is refused with an error (a frame with
+ * every feature under water found the last limit), never cut short. */
+#define TL_DEFINES_SIZE 4096
 /* The shared #defines and one per feature bit into out; 0, or -1 when they
  * do not fit (the caller then fails rather than compile a cut-off line). */
 int tl_renderer_defines(unsigned features, char *out, size_t size);
