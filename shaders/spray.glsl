@@ -112,11 +112,12 @@ float giant_spray_density(vec3 p, float span)
 // 4 m between the samples of a ray that crossed the landing's tall box,
 // against wisps under a metre: each pixel's few samples found other wisps,
 // a grain like asphalt over the back of the wave.
-#define TL_SPRAY_STEPS_MIN 16
-#define TL_SPRAY_STEPS_MAX 64
-#define TL_SPRAY_PHASE_G   0.7
-#define TL_SPRAY_ALBEDO    0.9
-#define TL_SPRAY_DIFFUSE   0.6
+#define TL_SPRAY_STEPS_MIN   16
+#define TL_SPRAY_STEPS_MAX   64
+#define TL_SPRAY_PHASE_G     0.7
+#define TL_SPRAY_ALBEDO      0.9
+#define TL_SPRAY_DIFFUSE     0.6
+#define TL_SPRAY_SHADE_WATER 10.0
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
     // The crest's box in the wave's frame, and the bow's sphere.
@@ -159,12 +160,20 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         // A dense cloud (the landing's whitewater, the bow's burst) scatters
         // the sun many times inside and looks white from every side: its
         // share of TL_SPRAY_DIFFUSE/pi on top of the single-scattering lobe.
-        float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
+        float dense = smoothstep(1.0, 4.0, density);
+        float many = TL_SPRAY_DIFFUSE / TL_PI * dense;
         // Below the crest, on the side away from the sun, the wave shades
         // the spray as it shades the water: lit by the full sun there, the
         // spray under a backlit lip glowed brown against the dark face.
+        // A dense cloud there still sees the sun through the wave's water
+        // (the curtain and the crest's top), tinted as that water tints it:
+        // the landing's whitewater under a backlit lip, lit by the sky
+        // alone, was a faint grey puff. The water crossed is taken as
+        // TL_SPRAY_SHADE_WATER metres: marched toward the sun once a ray it
+        // looked alike and cost a third more over the lip's frames.
         float sunlit = density > 0.0 ? giant_sunlit(p.xz, p.y) : 1.0;
-        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) * sunlit + ambient);
+        vec3 through = max(vec3(sunlit), dense * exp(-u_giant_sigma * TL_SPRAY_SHADE_WATER));
+        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) * through + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }
