@@ -1,16 +1,27 @@
-// The boat's hull, lit by the same sun and sky as the water: diffuse from
-// the sky's hemisphere and the sun, and a modest specular highlight.
-// Writes linear radiance and the distance along the view ray, like the
-// ocean, for the ocean pass to composite (shaders/boat.glsl).
+// The boat's surfaces, lit by the same sun and sky as the water: each
+// vertex's material (shaders/material.glsl) under the sun, the sky and the
+// sea as an environment, its baked occlusion, wet and glossy where the sea
+// has been; below the waterline, the light of the water around it (with
+// TL_FEATURE_UNDERWATER). Writes linear radiance and the distance along
+// the view ray, like the ocean, for the ocean pass to composite
+// (shaders/boat.glsl).
 #include "uniforms.glsl"
 #include "sky.glsl"
+#include "optics.glsl"
+#include "material.glsl"
+#ifdef TL_FEATURE_BOAT_SHADOW
+#include "boat_shadow.glsl"
+#endif
 
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_color;
+in vec4 v_surface;
+in vec2 v_wet;
 
-uniform vec3 u_eye; // the camera (the origin), or its mirror image for the reflection
+uniform vec3 u_eye;     // the camera (the origin), or its mirror image for the reflection
 uniform float u_sunlit; // the share of the sun the hull sees past the giant wave's crest
+uniform float u_lights; // boat.lights: the lamps' share of their emission
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
@@ -18,18 +29,65 @@ layout(location = 1) out float out_depth;
 void main()
 {
     vec3 view = normalize(v_world - u_eye); // from the eye
+    vec3 v = -view;
     vec3 n = normalize(v_normal);
     // Two-sided: models may be open or wound either way.
     if (dot(n, view) > 0.0)
         n = -n;
-    vec3 sun = sky_sun_light() * u_sunlit;
-    float lambert = max(dot(n, u_sun_dir), 0.0);
-    // The sky lights what faces up more than what faces down.
-    vec3 ambient = sky_ambient() * (0.6 + 0.4 * n.y);
-    vec3 diffuse = v_color * (ambient + sun * (lambert / TL_PI));
-    vec3 h = normalize(u_sun_dir - view);
-    vec3 spec = sun * (pow(max(dot(n, h), 0.0), 48.0) * 0.04 * lambert);
-    vec3 color = diffuse + spec;
+    vec3 base = v_color;
+    float roughness = v_surface.x, metallic = v_surface.y, occlusion = v_surface.z;
+    float streak = 0.6 * material_streak(v_wet.y * 6.0) + 0.4 * material_streak(v_wet.y * 23.0);
+    float wet = material_wetness(v_wet.x, streak);
+    float porous = smoothstep(0.3, 0.8, roughness);
+    base *= 1.0 - 0.5 * wet * porous;
+    roughness = mix(roughness, min(roughness, 0.1), wet);
+    vec3 f0 = material_f0(base, metallic);
+    float nv = max(dot(n, v), 1.0e-4);
+    vec3 r = reflect(view, n);
+    vec3 diffuse_color = base * (1.0 - metallic);
+    vec3 color;
+#ifdef TL_FEATURE_UNDERWATER
+    float depth = u_boat_water - v_world.y;
+    if (depth > 0.0) {
+        // Under the water: the sun refracted and dimmed along its path
+        // down, the sky's light from above and the water's own from below
+        // (its albedo's share of what comes down); the surface above is the
+        // environment looking up, the depths looking down.
+        vec3 down = exp(-u_water_sigma * depth);
+        vec3 albedo = min(vec3(u_water_scattering) / u_water_sigma, vec3(1.0));
+        vec3 sun = sky_sun_light() * (u_sunlit * u_sun_water_trans) *
+                   exp(-u_water_sigma * depth / max(-u_sun_water.y, 0.1));
+        vec3 from_above = (sky_ambient() + sky_sun_light() * max(u_sun_dir.y, 0.0) / TL_PI) * down;
+        vec3 from_below = 0.5 * albedo * from_above;
+        vec3 ambient = mix(from_below, from_above, 0.5 + 0.5 * n.y);
+        vec3 env = r.y > 0.0 ? from_above : from_below;
+        color = material_brdf(n, v, -u_sun_water, base, roughness, metallic) * sun +
+                (diffuse_color * ambient + env * material_env_brdf(f0, roughness, nv)) * occlusion;
+    } else
+#endif
+    {
+        // The water's light: what it scatters up (as the ocean shades it)
+        // and what it mirrors; the sky above. The hemisphere around n sees
+        // a blend of the two, by how far it faces up.
+        vec3 sunlight = sky_sun_light() * u_sunlit;
+#ifdef TL_FEATURE_BOAT_SHADOW
+        // Looked up a texel and a half off the surface along its normal,
+        // so that a face lit at a grazing angle does not shadow itself.
+        sunlight *= boat_shadow(v_world + n * (1.5 * u_boat_shadow_texel));
+#endif
+        vec3 upwelling = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
+#ifdef TL_FEATURE_SKY_PHYSICAL
+        upwelling *= (sunlight * max(u_sun_dir.y, 0.0) + TL_PI * sky_ambient()) / 0.94;
+#endif
+        vec3 sea = 0.06 * sky_ambient() + upwelling;
+        vec3 ambient = mix(sea, sky_ambient(), 0.5 + 0.5 * n.y);
+        // A rough surface's reflection is the hemisphere's blur.
+        vec3 env = mix(material_environment(r, upwelling), mix(sea, sky_ambient(), 0.5 + 0.5 * r.y),
+                       roughness);
+        color = material_brdf(n, v, u_sun_dir, base, roughness, metallic) * sunlight +
+                (diffuse_color * ambient + env * material_env_brdf(f0, roughness, nv)) * occlusion;
+    }
+    color += v_color * (v_surface.w * u_lights);
     if (any(isnan(color)) || any(isinf(color)))
         color = vec3(0.0);
     out_color = vec4(max(color, vec3(0.0)), 1.0);

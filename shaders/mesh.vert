@@ -6,6 +6,7 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
+layout(location = 3) in vec4 a_surface; // roughness, metallic, occlusion, emission
 
 uniform mat4 u_view_proj;
 uniform mat4 u_boat_model;
@@ -15,6 +16,8 @@ uniform float u_clip_height; // camera-relative y of the water plane (reflection
 out vec3 v_world; // camera-relative metres, before any mirror
 out vec3 v_normal;
 out vec3 v_color;
+out vec4 v_surface;
+out vec2 v_wet; // metres above the design waterline, and along the hull (the streaks)
 
 void main()
 {
@@ -23,6 +26,9 @@ void main()
     // Uniform scale: the model matrix's rotation turns normals too.
     v_normal = mat3(u_boat_model) * a_normal;
     v_color = a_color;
+    v_surface = a_surface;
+    float scale = length(u_boat_model[0].xyz);
+    v_wet = vec2(a_position.y, a_position.z + 0.7 * a_position.x) * scale;
     gl_ClipDistance[0] = world.y - u_clip_height;
     gl_Position = u_view_proj * (u_mirror * world);
 }

@@ -23,6 +23,9 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #ifdef TL_FEATURE_BOAT
 #include "boat.glsl"
 #endif
+#ifdef TL_FEATURE_BOAT_SHADOW
+#include "boat_shadow.glsl"
+#endif
 #include "water.glsl"
 #ifdef TL_FEATURE_GIANT_LIP
 #include "lip.glsl"

@@ -25,11 +25,20 @@
 //   mode 12: the spray's density at camera-relative (x, z) and height y,
 //           the input's third float, over the span of height its fourth
 //           (tl_giant_spray_density)
+//   mode 13: a material's BRDF x cos for the normal +y, the view at angle x
+//           from it, the light at angle y, z the azimuth between them; w
+//           the roughness, negative for a metal; base colour 0.8 0.4 0.1
+//           (tl_mesh_brdf)
+//   mode 14: the environment's specular share at cos x, roughness y, for
+//           f0 = 0.04 0.5 0.9                            (tl_mesh_env_brdf)
+//   mode 15: how wet a hull is x metres above its waterline with the
+//           streak y                                     (tl_mesh_wetness)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
 #include "optics.glsl"
 #include "foam.glsl"
+#include "material.glsl"
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif
@@ -73,6 +82,15 @@ void main()
         result.x = underwater_lens_gap(ray);
     }
 #endif
+    else if (u_probe_mode == 13) {
+        vec3 v = vec3(sin(input4.x), cos(input4.x), 0.0);
+        vec3 l = vec3(sin(input4.y) * cos(input4.z), cos(input4.y), sin(input4.y) * sin(input4.z));
+        result.xyz = material_brdf(vec3(0.0, 1.0, 0.0), v, l, vec3(0.8, 0.4, 0.1), abs(input4.w),
+                                   input4.w < 0.0 ? 1.0 : 0.0);
+    } else if (u_probe_mode == 14)
+        result.xyz = material_env_brdf(vec3(0.04, 0.5, 0.9), p.y, p.x);
+    else if (u_probe_mode == 15)
+        result.x = material_wetness(p.x, p.y);
     else if (u_probe_mode == 5) {
         vec3 dir = vec3(cos(p.x) * sin(p.y), sin(p.x), cos(p.x) * cos(p.y));
         float a = atan(u_sun_dir.x, u_sun_dir.z); // turn azimuth 0 to the sun's

@@ -128,6 +128,17 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
     ocean_y -= giant.height;
 #endif
+    // The share of the sun in the light the water scatters back up: that
+    // light entered over metres around and under the point, so a shadow
+    // as small as a boat's takes only part of it.
+    float scatter_sunlit = sunlit;
+#ifdef TL_FEATURE_BOAT_SHADOW
+    // The boat's shadow on the water: its glitter and foam lose the sun
+    // there, its scattered light half of it (TL_BOAT_SHADOW_SCATTER).
+    float boat_lit = boat_shadow(vec3(hit.x, hit.y - u_cam_height, hit.z));
+    sunlit *= boat_lit;
+    scatter_sunlit *= mix(1.0, boat_lit, TL_BOAT_SHADOW_SCATTER);
+#endif
     n = water_facing(ray, n);
 
     float fresnel;
@@ -153,7 +164,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // 10 deg (its luminance there is 0.94) so the water keeps the seed's
     // look there, dark in the blue hour.
     scattering *=
-        (sky_sun_light() * sunlit * max(u_sun_dir.y, 0.0) + TL_PI * sky_ambient()) / 0.94;
+        (sky_sun_light() * scatter_sunlit * max(u_sun_dir.y, 0.0) + TL_PI * sky_ambient()) / 0.94;
 #endif
     vec3 color = fresnel * reflection + scattering;
     // The water a pixel covers (0 without level of detail), more as the

@@ -147,7 +147,7 @@ static void test_bad_models(void)
     CHECK(run("still", tl, "-o", png, "--size", "32x18", "-v", NULL) == 0);
     CHECK_STR_CONTAINS(tl_run_output,
                        "features: ocean, sun disc, boat, wake, physical sky, level "
-                       "of detail, analytic normals, filtered shading, hit polish\n");
+                       "of detail, analytic normals, filtered shading, hit polish, boat shadow\n");
     /* The water plate: the boat still floats but nothing of it is drawn. */
     f = fopen(tl, "a");
     if (f) {

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "gl/tl_renderer_internal.h"
+#include "mesh/tl_mesh.h"
 #include "prepare/tl_uniform_list.h"
 #include "waves/tl_giant_spray.h"
 
@@ -122,7 +123,12 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_WAKE_SPEED_FULL %.3f\n"
         "#define TL_MARCH_RELAX %g\n"
         "#define TL_BOX_STEP_COST %g\n"
-        "#define TL_MIRROR_SHIFT %g\n",
+        "#define TL_MIRROR_SHIFT %g\n"
+        "#define TL_BOAT_SHADOW_SIZE %d\n"
+        "#define TL_BOAT_SHADOW_SCATTER %.17g\n"
+        "#define TL_MESH_MIN_ALPHA %.17g\n"
+        "#define TL_MESH_WET_LOW %.17g\n"
+        "#define TL_MESH_WET_HIGH %.17g\n",
         TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
         TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
         TL_GIANT_TROUGH_LIFT, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP,
@@ -132,7 +138,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_AHEAD, TL_SPRAY_SPLASH_GROW, TL_SPRAY_BOW_GAIN,
         TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS, TL_WAKE_GROUP,
         TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
-        TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT);
+        TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
+        TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -192,17 +199,14 @@ void tl_renderer_target_free(target *t)
 
 /* (Re)creates `t` at the size with the given internal formats, with a
  * 32-bit float depth buffer when `depth` is set. */
-static int target_ensure_depth(target *t, int width, int height, int attachments,
-                               const GLenum *formats, int depth, tl_error *err);
-
 int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
                               const GLenum *formats, tl_error *err)
 {
-    return target_ensure_depth(t, width, height, attachments, formats, 0, err);
+    return tl_renderer_target_ensure_depth(t, width, height, attachments, formats, 0, err);
 }
 
-static int target_ensure_depth(target *t, int width, int height, int attachments,
-                               const GLenum *formats, int depth, tl_error *err)
+int tl_renderer_target_ensure_depth(target *t, int width, int height, int attachments,
+                                    const GLenum *formats, int depth, tl_error *err)
 {
     if (t->fbo && t->width == width && t->height == height)
         return TL_OK;
@@ -291,10 +295,7 @@ void tl_renderer_destroy(tl_renderer *r)
     tl_renderer_target_free(&r->upscaled);
     if (r->upscale_program)
         glDeleteProgram(r->upscale_program);
-    tl_renderer_set_mesh(r, NULL, NULL);
-    for (int i = 0; i < 4; i++)
-        if (r->mesh_program[i])
-            glDeleteProgram(r->mesh_program[i]);
+    tl_renderer_free_boat(r);
     tl_renderer_free_sky(r);
     for (int i = 0; i < TL_READBACK_SLOTS; i++)
         if (r->readback[i].buffer)
@@ -391,11 +392,7 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     for (int i = 0; i < r->probe_count; i++)
         glDeleteProgram(r->probes[i].program);
     r->probe_count = 0;
-    for (int i = 0; i < 4; i++)
-        if (r->mesh_program[i]) {
-            glDeleteProgram(r->mesh_program[i]);
-            r->mesh_program[i] = 0;
-        }
+    tl_renderer_drop_boat_programs(r);
     return tl_renderer_check("reloading shaders", err);
 }
 
@@ -411,114 +408,6 @@ int tl_renderer_use_shaders(tl_renderer *r, const tl_shader_lib *lib, tl_error *
     else
         r->sky_view_valid = 0; /* drawn by the other folder's sky_view.frag */
     return rc;
-}
-
-int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
-{
-    gpu_mesh *g = &r->mesh;
-    if (g->vao) {
-        glDeleteVertexArrays(1, &g->vao);
-        glDeleteBuffers(1, &g->vbo);
-        glDeleteBuffers(1, &g->ibo);
-    }
-    memset(g, 0, sizeof *g);
-    if (!mesh || mesh->index_count == 0)
-        return TL_OK;
-    if (mesh->index_count > 0x7fffffff)
-        return tl_error_set(err, TL_ERR_RUNTIME, "the boat mesh has too many triangles");
-    size_t n = mesh->vertex_count;
-    float *interleaved = malloc(n * 9 * sizeof(float));
-    if (!interleaved)
-        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
-    for (size_t i = 0; i < n; i++) {
-        memcpy(interleaved + 9 * i, mesh->positions + 3 * i, 3 * sizeof(float));
-        memcpy(interleaved + 9 * i + 3, mesh->normals + 3 * i, 3 * sizeof(float));
-        memcpy(interleaved + 9 * i + 6, mesh->colors + 3 * i, 3 * sizeof(float));
-    }
-    glGenVertexArrays(1, &g->vao);
-    glBindVertexArray(g->vao);
-    glGenBuffers(1, &g->vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, g->vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * 9 * sizeof(float)), interleaved, GL_STATIC_DRAW);
-    free(interleaved);
-    glGenBuffers(1, &g->ibo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g->ibo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(mesh->index_count * sizeof(uint32_t)),
-                 mesh->indices, GL_STATIC_DRAW);
-    for (GLuint a = 0; a < 3; a++) {
-        glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
-                              (const void *)(uintptr_t)(a * 3 * sizeof(float)));
-    }
-    glBindVertexArray(r->vao);
-    g->indices = (GLsizei)mesh->index_count;
-    return tl_renderer_check("uploading the boat mesh", err);
-}
-
-/* Draws the mesh into `t` (cleared first): directly, or mirrored in the
- * water plane and clipped to what stands above it. */
-static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
-                      int mirrored)
-{
-    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
-    glViewport(0, 0, u->width, u->height);
-    const float zero[4] = {0, 0, 0, 0};
-    const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
-    glClearBufferfv(GL_COLOR, 0, zero);
-    if (t->attachments > 1)
-        glClearBufferfv(GL_COLOR, 1, sky);
-    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    /* Reflection about y = h: y -> 2h - y (column-major). */
-    float h = u->boat_water;
-    const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
-    glUniformMatrix4fv(tl_renderer_loc(program, "u_mirror"), 1, GL_FALSE,
-                       mirrored ? mirror : identity);
-    glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
-    /* The direct pass clips nothing, whatever the clip-distance state. */
-    glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
-    if (mirrored)
-        glEnable(GL_CLIP_DISTANCE0);
-    glBindVertexArray(r->mesh.vao);
-    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
-    glBindVertexArray(r->vao);
-    glDisable(GL_CLIP_DISTANCE0);
-}
-
-/* The boat's passes: the lit hull and its distance into r->boat, and its
- * mirror image into r->mirror, for the ocean pass to composite. */
-static int draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
-{
-    const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
-    int rc = target_ensure_depth(&r->boat, u->width, u->height, 2, formats, 1, err);
-    if (!rc)
-        rc = target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
-    if (rc)
-        return rc;
-    /* Only the sun and the sky change how the hull is lit. */
-    unsigned features = u->features & (TL_FEATURE_SUN_DISC | TL_FEATURE_SKY_PHYSICAL);
-    GLuint *program = &r->mesh_program[(features & TL_FEATURE_SUN_DISC ? 1 : 0) +
-                                       (features & TL_FEATURE_SKY_PHYSICAL ? 2 : 0)];
-    if (!*program) {
-        char defines[TL_DEFINES_SIZE];
-        tl_renderer_defines(features, defines, sizeof defines);
-        *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
-        if (!*program)
-            return err ? (int)err->status : TL_ERR_RUNTIME;
-    }
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE); /* models may be open or wound either way */
-    glDisable(GL_BLEND);
-    glUseProgram(*program);
-    tl_renderer_upload_uniforms(*program, u);
-    glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
-    glUniformMatrix4fv(tl_renderer_loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
-    glUniform1f(tl_renderer_loc(*program, "u_sunlit"), u->boat_sunlit);
-    draw_mesh(r, *program, &r->boat, u, 0);
-    draw_mesh(r, *program, &r->mirror, u, 1);
-    glDisable(GL_DEPTH_TEST);
-    return tl_renderer_check("drawing the boat", err);
 }
 
 /* Samples per draw. Mesa's llvmpipe ends every loop of a fragment once
@@ -553,17 +442,8 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
         return 0;
     glUseProgram(program);
     tl_renderer_upload_uniforms(program, u);
-    if (features & TL_FEATURE_BOAT) {
-        const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
-        for (int i = 0; i < 3; i++) {
-            glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_COLOR + (GLenum)i);
-            glBindTexture(GL_TEXTURE_2D, textures[i]);
-        }
-        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
-        glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
-        glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
-        glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
-    }
+    if (features & TL_FEATURE_BOAT)
+        tl_renderer_bind_boat(r, program, features);
     if (features & TL_PASS_HINTED) { /* the prepass's finest level (tl_renderer_prepass) */
         glUniform1i(tl_renderer_loc(program, "u_march_hint"), TL_UNIT_MARCH_HINT);
         glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), 1.0f);
@@ -696,10 +576,10 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     /* No mesh, no boat pass (a library user may not have given one). */
     unsigned features = u->features;
     if (!r->mesh.vao)
-        features &= ~(unsigned)TL_FEATURE_BOAT;
+        features &= ~(unsigned)(TL_FEATURE_BOAT | TL_FEATURE_BOAT_SHADOW);
     if (features & TL_FEATURE_BOAT) {
         tl_timers_start(&r->timers, TL_TIMED_BOAT);
-        int rc = draw_boat(r, u, err);
+        int rc = tl_renderer_draw_boat(r, u, err);
         tl_timers_stop(&r->timers);
         if (rc)
             return rc;

@@ -13,6 +13,8 @@
 #include "sky/tl_sky.h"
 
 #define MAX_PROGRAMS 24
+/* Mesh programs: one per set of the four features that light the hull. */
+#define TL_MESH_PROGRAMS 16
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
 #define TL_PREPASS_LEVELS 2
 /* The most the waves shift the hull's mirror image, as a share of the
@@ -30,7 +32,8 @@ enum {
     TL_UNIT_BOAT_DISTANCE = 2,     /* its distance along the ray, */
     TL_UNIT_BOAT_REFLECTION = 3,   /* its mirror image, */
     TL_UNIT_SKY_VIEW = 4,          /* the physical sky's sky-view table, */
-    TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances */
+    TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances, */
+    TL_UNIT_BOAT_SHADOW = 6,       /* the boat's shadow map (the mesh pass's too) */
     TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
     TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
     TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
@@ -118,8 +121,10 @@ struct tl_renderer {
     GLuint upscale_program;
     target filtered; /* the display image after the pixel filter (quality.pixel_filter) */
     GLuint filter_program;
-    int display_filtered;   /* the last display pass left its image in `filtered` */
-    GLuint mesh_program[4]; /* per sun disc and sky model */
+    int display_filtered;                  /* the last display pass left its image in `filtered` */
+    GLuint mesh_program[TL_MESH_PROGRAMS]; /* per feature set that lights it (tl_renderer_boat.c) */
+    GLuint shadow_program;                 /* the sun's depth view of the boat */
+    GLuint shadow_fbo, shadow_tex;         /* its shadow map, TL_BOAT_SHADOW_SIZE square */
     /* The physical sky (tl_renderer_sky.c): the sky-view table, drawn
      * here for the sun and altitude below, and the atmosphere's two tables
      * it is drawn from, uploaded for sky_atmosphere. */
@@ -139,6 +144,19 @@ struct tl_renderer {
     tl_renderer_progress_fn progress; /* tl_renderer_set_progress, NULL when off */
     void *progress_ctx;
 };
+
+/* The boat (tl_renderer_boat.c): its passes for the frame (the shadow map,
+ * the lit hull, its mirror image); the textures they leave bound for an
+ * ocean program; its programs dropped (built again on next use); all of
+ * it freed. */
+int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err);
+void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned features);
+void tl_renderer_drop_boat_programs(tl_renderer *r);
+void tl_renderer_free_boat(tl_renderer *r);
+/* (Re)creates `t` as tl_renderer_target_ensure, with a depth buffer if
+ * `depth`. */
+int tl_renderer_target_ensure_depth(target *t, int width, int height, int attachments,
+                                    const GLenum *formats, int depth, tl_error *err);
 
 /* Deletes *program if there is one and zeroes it: built again on next use. */
 void tl_renderer_drop_program(GLuint *program);

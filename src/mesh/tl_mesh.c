@@ -28,7 +28,7 @@ static int grow(void **array, size_t *capacity, size_t needed, size_t item)
 }
 
 uint32_t tl_mesh_add_vertex(tl_mesh_builder *b, const float p[3], const float n[3],
-                            const float rgb[3])
+                            const tl_mesh_material *material)
 {
     tl_mesh *m = &b->mesh;
     size_t need = m->vertex_count + 1, cap = b->vertex_capacity;
@@ -47,10 +47,20 @@ uint32_t tl_mesh_add_vertex(tl_mesh_builder *b, const float p[3], const float n[
         b->failed = 1;
         return 0;
     }
+    cap = b->vertex_capacity;
+    if (!grow((void **)&m->surface, &cap, need, 4 * sizeof(float))) {
+        b->failed = 1;
+        return 0;
+    }
     b->vertex_capacity = cap;
     memcpy(m->positions + 3 * m->vertex_count, p, 3 * sizeof(float));
     memcpy(m->normals + 3 * m->vertex_count, n, 3 * sizeof(float));
-    memcpy(m->colors + 3 * m->vertex_count, rgb, 3 * sizeof(float));
+    memcpy(m->colors + 3 * m->vertex_count, material->color, 3 * sizeof(float));
+    float *s = m->surface + 4 * m->vertex_count;
+    s[0] = material->roughness;
+    s[1] = material->metallic;
+    s[2] = 1.0f; /* unoccluded until baked */
+    s[3] = material->emission;
     return (uint32_t)m->vertex_count++;
 }
 
@@ -97,25 +107,41 @@ void tl_mesh_free(tl_mesh *m)
     free(m->positions);
     free(m->normals);
     free(m->colors);
+    free(m->surface);
     free(m->indices);
     memset(m, 0, sizeof *m);
 }
 
-/* The material's base colour: glTF's base colour factor, else the diffuse
- * colour (OBJ's Kd), else light grey. */
-static void material_color(const struct aiScene *scene, unsigned index, float rgb[3])
+static float clamp01(float v)
 {
-    rgb[0] = rgb[1] = rgb[2] = 0.7f;
+    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* NaN -> 0 */
+}
+
+/* The mesh's material: glTF's base colour, metallic and roughness factors;
+ * for OBJ, the diffuse colour (Kd) and a roughness from the shininess
+ * (Ns, a Phong exponent: s = 2 / r^4 - 2). Without a material: light grey
+ * paint. */
+static void material_of(const struct aiScene *scene, unsigned index, tl_mesh_material *out)
+{
+    *out = (tl_mesh_material){{0.7f, 0.7f, 0.7f}, 0.5f, 0.0f, 0.0f};
     if (index >= scene->mNumMaterials)
         return;
     const struct aiMaterial *mat = scene->mMaterials[index];
     struct aiColor4D c;
     if (aiGetMaterialColor(mat, AI_MATKEY_BASE_COLOR, &c) == aiReturn_SUCCESS ||
         aiGetMaterialColor(mat, AI_MATKEY_COLOR_DIFFUSE, &c) == aiReturn_SUCCESS) {
-        rgb[0] = c.r < 0.0f ? 0.0f : c.r;
-        rgb[1] = c.g < 0.0f ? 0.0f : c.g;
-        rgb[2] = c.b < 0.0f ? 0.0f : c.b;
+        out->color[0] = c.r < 0.0f ? 0.0f : c.r;
+        out->color[1] = c.g < 0.0f ? 0.0f : c.g;
+        out->color[2] = c.b < 0.0f ? 0.0f : c.b;
     }
+    ai_real v;
+    if (aiGetMaterialFloatArray(mat, AI_MATKEY_ROUGHNESS_FACTOR, &v, NULL) == aiReturn_SUCCESS)
+        out->roughness = clamp01((float)v);
+    else if (aiGetMaterialFloatArray(mat, AI_MATKEY_SHININESS, &v, NULL) == aiReturn_SUCCESS &&
+             v > 0.0f)
+        out->roughness = clamp01((float)pow(2.0 / (v + 2.0), 0.25));
+    if (aiGetMaterialFloatArray(mat, AI_MATKEY_METALLIC_FACTOR, &v, NULL) == aiReturn_SUCCESS)
+        out->metallic = clamp01((float)v);
 }
 
 static int known_format(const char *path)
@@ -194,18 +220,30 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
         first[strcspn(first, "\r\n")] = '\0';
         return tl_error_set(err, TL_ERR_USAGE, "boat model %s: cannot be read: %s", path, first);
     }
+    size_t vertices = 0, triangles = 0;
+    for (unsigned i = 0; i < scene->mNumMeshes; i++) {
+        vertices += scene->mMeshes[i]->mNumVertices;
+        triangles += scene->mMeshes[i]->mNumFaces;
+    }
+    if (vertices > TL_MESH_MAX_VERTICES || triangles > TL_MESH_MAX_TRIANGLES) {
+        aiReleaseImport(scene);
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "boat model %s: %zu vertices and %zu triangles, over the limit of "
+                            "%d and %d",
+                            path, vertices, triangles, TL_MESH_MAX_VERTICES, TL_MESH_MAX_TRIANGLES);
+    }
     tl_mesh_builder b = {0};
     for (unsigned i = 0; i < scene->mNumMeshes; i++) {
         const struct aiMesh *m = scene->mMeshes[i];
         if (!(m->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !m->mNormals)
             continue;
-        float rgb[3];
-        material_color(scene, m->mMaterialIndex, rgb);
+        tl_mesh_material material;
+        material_of(scene, m->mMaterialIndex, &material);
         uint32_t base = (uint32_t)b.mesh.vertex_count;
         for (unsigned v = 0; v < m->mNumVertices; v++) {
             const float p[3] = {m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z};
             const float n[3] = {m->mNormals[v].x, m->mNormals[v].y, m->mNormals[v].z};
-            tl_mesh_add_vertex(&b, p, n, rgb);
+            tl_mesh_add_vertex(&b, p, n, &material);
         }
         for (unsigned f = 0; f < m->mNumFaces; f++) {
             const struct aiFace *face = &m->mFaces[f];
@@ -238,5 +276,13 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
                 n[c] /= len;
         }
     }
-    return TL_OK;
+    /* Occlusion out to a tenth of the model's longest side: the reach of a
+     * wheelhouse's shade on its deck. */
+    double extent = 0.0;
+    for (int c = 0; c < 3; c++)
+        extent = fmax(extent, (double)out->bounds_max[c] - out->bounds_min[c]);
+    rc = tl_mesh_bake_occlusion(out, TL_MESH_OCCLUSION_REACH * extent, err);
+    if (rc)
+        tl_mesh_free(out);
+    return rc;
 }

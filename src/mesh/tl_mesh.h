@@ -13,15 +13,33 @@
 
 #include "core/tl_error.h"
 
+/* A surface's material, glTF's metallic-roughness model: what the mesh
+ * pass shades with (shaders/material.glsl, its CPU mirror tl_mesh_brdf). */
+typedef struct tl_mesh_material {
+    float color[3];  /* base colour, linear RGB */
+    float roughness; /* perceptual roughness: 0 a mirror, 1 chalk */
+    float metallic;  /* 0 a dielectric (paint, wood, glass), 1 a metal */
+    float emission;  /* a lamp's radiance as a multiple of its colour, lit by boat.lights; 0 */
+} tl_mesh_material;
+
 typedef struct tl_mesh {
     size_t vertex_count;
     size_t index_count; /* three per triangle */
     float *positions;   /* x y z per vertex */
     float *normals;     /* unit x y z per vertex */
     float *colors;      /* linear r g b per vertex: the material's base colour */
+    /* Per vertex: roughness, metallic, ambient occlusion (the share of the
+     * sky the vertex sees past the mesh itself, tl_mesh_bake_occlusion;
+     * 1 until baked) and emission. */
+    float *surface;
     uint32_t *indices;
     float bounds_min[3], bounds_max[3];
 } tl_mesh;
+
+/* The most a model may have (tl_mesh_load refuses more, with its counts):
+ * the occlusion bake and the mesh pass stay within seconds. */
+#define TL_MESH_MAX_VERTICES  2000000
+#define TL_MESH_MAX_TRIANGLES 2000000
 
 /* Loads every triangle of a glTF 2.0 (.glb, .gltf) or Wavefront OBJ file,
  * its node transforms applied, with smooth normals where the file has
@@ -30,11 +48,44 @@ typedef struct tl_mesh {
  * one-line message naming the file (TL_ERR_USAGE). */
 int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err);
 
-/* The built-in fishing boat (hull, deck, wheelhouse, mast; about a
- * thousand triangles), one metre long: scale it by the hull length. */
+/* The built-in fishing boat, one unit long: scale it by the hull length.
+ * A lofted hull (sheer, flare, a hard chine, a keel and skeg), a rub rail,
+ * bulwarks and a deck, a wheelhouse with windows, a mast with its lights
+ * and rails; painted topsides, a boot stripe, antifouling, stainless,
+ * glass; creased normals and baked occlusion. */
 int tl_mesh_default_boat(tl_mesh *out, tl_error *err);
 
+/* Bakes ambient occlusion into m->surface: from each vertex, rays over the
+ * hemisphere of its normal, out to `reach` model units, find how much of
+ * the sky the mesh itself hides. Deterministic. */
+int tl_mesh_bake_occlusion(tl_mesh *m, double reach, tl_error *err);
+/* The reach of the occlusion as a share of the model's longest side. */
+#define TL_MESH_OCCLUSION_REACH 0.1
+
 void tl_mesh_free(tl_mesh *m);
+
+/* The meshes' shading in double: the CPU mirror of shaders/material.glsl
+ * (test_mesh_shading probes the GPU against it). */
+/* GGX's least alpha (roughness squared): a perfect mirror would show the
+ * sun as a point a sample wide. A documented clamp. */
+#define TL_MESH_MIN_ALPHA 0.002
+/* The hull is wet up to TL_MESH_WET_LOW metres above its design waterline
+ * and dry from TL_MESH_WET_HIGH, where spray and the waves reach. */
+#define TL_MESH_WET_LOW  0.1
+#define TL_MESH_WET_HIGH 0.6
+/* BRDF x cos(l) of a surface with normal n (facing v) for light from l
+ * toward v, unit vectors: Lambert under a GGX lobe. */
+void tl_mesh_brdf(const double n[3], const double v[3], const double l[3], const double base[3],
+                  double roughness, double metallic, double out[3]);
+/* The share of an even environment reflected specularly at cos nv. */
+void tl_mesh_env_brdf(const double f0[3], double roughness, double nv, double out[3]);
+/* How wet a point `height` metres above the design waterline is, 0 to 1;
+ * `streak` in [0, 1] moves the wet line up and down where runs of water
+ * dried. */
+double tl_mesh_wetness(double height, double streak);
+/* A wet surface: base colour darker where it is porous (rough), and
+ * glossier, wet in [0, 1]. */
+void tl_mesh_wet_surface(double wet, double base[3], double *roughness);
 
 /* A mesh under construction: vertices and triangles appended, arrays grown
  * as needed. tl_mesh_builder_finish computes the bounds. */
@@ -45,7 +96,7 @@ typedef struct tl_mesh_builder {
 } tl_mesh_builder;
 
 uint32_t tl_mesh_add_vertex(tl_mesh_builder *b, const float p[3], const float n[3],
-                            const float rgb[3]);
+                            const tl_mesh_material *material);
 void tl_mesh_add_triangle(tl_mesh_builder *b, uint32_t i0, uint32_t i1, uint32_t i2);
 int tl_mesh_builder_finish(tl_mesh_builder *b, tl_mesh *out, tl_error *err);
 

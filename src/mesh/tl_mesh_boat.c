@@ -1,231 +1,535 @@
-/* The built-in boat: a small fishing boat lofted from cross-sections, one
- * unit long (bow at z = +0.5, stern at -0.5, waterline at y = 0), so that
- * no asset file or licence is needed. Scaled by boat.size when drawn. */
+/* The built-in boat: a small fishing boat built at run time from its
+ * lines, so that no asset file or licence is needed. One unit long (the
+ * bow's stem at z = +0.5, the transom at -0.5, the design waterline at
+ * y = 0), scaled by boat.size when drawn; its bounds are
+ * TL_BOAT_BUILTIN_MIN and _MAX (test_mesh checks them).
+ *
+ * The hull is lofted along u (0 at the transom, 1 at the stem): a V bottom
+ * from the keel's root to a hard chine that rises toward the bow, flared
+ * topsides up to the sheer, a keel and skeg below. Paint is chosen by
+ * height after the hull is cut at the waterline and the boot stripe's top,
+ * so the colours meet in straight lines whatever the triangles. */
 #include <math.h>
 #include <string.h>
 
 #include "tl_mesh.h"
+#include "tl_mesh_soup.h"
 
-#define STATIONS 28 /* cross-sections from stern to bow */
-#define ROWS     11 /* points per half-section, keel to gunwale */
+#define STATIONS 48 /* sections from the transom to the stem */
 
-static const float HULL_TOP[3] = {0.78f, 0.78f, 0.74f};    /* topsides: off-white */
-static const float HULL_BOTTOM[3] = {0.30f, 0.04f, 0.03f}; /* antifouling red */
-static const float DECK[3] = {0.32f, 0.20f, 0.11f};        /* oiled wood */
-static const float CABIN[3] = {0.80f, 0.80f, 0.78f};
-static const float ROOF[3] = {0.18f, 0.26f, 0.40f}; /* blue */
-static const float GLASS[3] = {0.02f, 0.03f, 0.04f};
-static const float MAST[3] = {0.06f, 0.06f, 0.06f};
+/* The boot stripe's top above the design waterline. */
+#define BOOT_TOP 0.014
+/* The bulwark: its height above the deck, its thickness. */
+#define BULWARK    0.03
+#define BULWARK_IN 0.006
 
-/* Hull lines along u in [0, 1] (stern to bow): half beam, keel depth
- * below the waterline, sheer height above it. */
-static void lines(double u, double *beam, double *keel, double *sheer)
+enum {
+    HULL_PAINT, /* resolved by height: antifouling, boot stripe, topsides */
+    SHEER_BAND,
+    TOPSIDES,
+    BOOT_STRIPE,
+    ANTIFOULING,
+    DECK,
+    BULWARK_INSIDE,
+    WOOD, /* the rub rail and the bulwark's cap */
+    CABIN,
+    ROOF,
+    DOOR,
+    GLASS,
+    STEEL,
+    LAMP_PORT,
+    LAMP_STARBOARD,
+    LAMP_WHITE,
+    MATERIAL_COUNT
+};
+
+/* Colours linear; roughness perceptual. The lamps are lit by boat.lights
+ * (their emission a multiple of their colour). */
+static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
+    [HULL_PAINT] = {{0.60f, 0.58f, 0.53f}, 0.35f, 0.0f, 0.0f},
+    [TOPSIDES] = {{0.60f, 0.58f, 0.53f}, 0.35f, 0.0f, 0.0f},   /* off-white gloss */
+    [SHEER_BAND] = {{0.02f, 0.05f, 0.13f}, 0.35f, 0.0f, 0.0f}, /* navy */
+    [BOOT_STRIPE] = {{0.015f, 0.015f, 0.018f}, 0.3f, 0.0f, 0.0f},
+    [ANTIFOULING] = {{0.21f, 0.03f, 0.02f}, 0.75f, 0.0f, 0.0f}, /* matt red */
+    [DECK] = {{0.17f, 0.17f, 0.15f}, 0.85f, 0.0f, 0.0f},        /* grey non-slip */
+    [BULWARK_INSIDE] = {{0.55f, 0.55f, 0.52f}, 0.45f, 0.0f, 0.0f},
+    [WOOD] = {{0.10f, 0.045f, 0.018f}, 0.35f, 0.0f, 0.0f}, /* varnished teak */
+    [CABIN] = {{0.66f, 0.66f, 0.62f}, 0.35f, 0.0f, 0.0f},
+    [ROOF] = {{0.50f, 0.51f, 0.50f}, 0.55f, 0.0f, 0.0f},
+    [DOOR] = {{0.05f, 0.10f, 0.20f}, 0.4f, 0.0f, 0.0f},
+    [GLASS] = {{0.008f, 0.010f, 0.012f}, 0.05f, 0.0f, 0.0f},
+    [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
+    [LAMP_PORT] = {{0.80f, 0.03f, 0.02f}, 0.1f, 0.0f, 60.0f},
+    [LAMP_STARBOARD] = {{0.02f, 0.80f, 0.15f}, 0.1f, 0.0f, 60.0f},
+    [LAMP_WHITE] = {{0.80f, 0.78f, 0.70f}, 0.1f, 0.0f, 60.0f},
+};
+
+/* Parts: facets are smoothed only within their part, and only where they
+ * meet closer than its crease angle. */
+enum { P_BOTTOM, P_TOPSIDES, P_TRANSOM, P_KEEL, P_DECK, P_RAIL, P_BOX, P_TUBE, PART_COUNT };
+static const double CREASE_DEG[PART_COUNT] = {
+    [P_BOTTOM] = 30, [P_TOPSIDES] = 30, [P_TRANSOM] = 1, [P_KEEL] = 30,
+    [P_DECK] = 20,   [P_RAIL] = 80,     [P_BOX] = 1,     [P_TUBE] = 70,
+};
+
+static double smooth01(double a, double b, double x)
 {
+    double t = fmin(fmax((x - a) / (b - a), 0.0), 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+/* The hull's lines at u: half beam at the sheer and at the chine, the
+ * heights of the sheer, the chine and the bottom's root at the keel. */
+typedef struct lines {
+    double beam, chine_beam, sheer, chine, root, keel;
+} lines;
+
+static lines lines_at(double u)
+{
+    lines l;
     if (u < 0.45)
-        *beam = 0.125 + 0.045 * sin(0.5 * M_PI * u / 0.45);
+        l.beam = 0.128 + 0.034 * sin(0.5 * M_PI * u / 0.45);
     else
-        *beam = 0.17 * sqrt(fmax(0.0, 1.0 - pow((u - 0.45) / 0.55, 2.0)));
-    *keel = u < 0.5 ? 0.07 + 0.03 * sin(M_PI * u) : 0.1 - 0.075 * pow((u - 0.5) / 0.5, 2.0);
-    *sheer = 0.1 + 0.07 * u * u;
+        l.beam = 0.162 * pow(fmax(0.0, 1.0 - pow((u - 0.45) / 0.55, 2.2)), 0.55);
+    l.chine_beam = l.beam * (0.88 - 0.1 * u);
+    l.sheer = 0.1 + 0.07 * u * u;
+    l.chine = -0.015 + 0.075 * pow(fmax(0.0, (u - 0.5) / 0.5), 1.7);
+    if (u <= 0.75)
+        l.root = -0.03 - 0.03 * sin(0.5 * M_PI * fmin(u / 0.5, 1.0));
+    else
+        l.root = -0.06 + (l.chine + 0.06) * pow((u - 0.75) / 0.25, 1.8);
+    l.keel = -0.1 + (l.root + 0.1) * smooth01(0.55, 0.95, u);
+    return l;
 }
 
-/* Section parameter t in [0, 1] of row r: rows 0-5 from the keel to the
- * waterline, row 6 the waterline again (red below, white above), rows
- * 7-10 up to the gunwale. */
-static double row_t(int r, double t_water)
+/* z of a hull point at u and height y: the stem rakes, its forefoot
+ * standing back from the sheer's end. */
+static double hull_z(double u, double y)
 {
-    static const double below[6] = {0.0, 0.15, 0.35, 0.6, 0.85, 1.0};
-    if (r <= 5)
-        return below[r] * t_water;
-    return t_water + (1.0 - t_water) * (r - 6) / 4.0;
+    double h = fmin(fmax((y + 0.1) / 0.27, 0.0), 1.0);
+    return -0.5 + u * (1.0 - 0.08 * (1.0 - h));
 }
 
-static void hull_point(double u, int r, double p[3])
+/* Section rows: the V bottom (root to chine), then the topsides (chine to
+ * sheer) with a row where the navy sheer band starts. */
+#define BOTTOM_ROWS      6
+#define SIDE_ROWS        7
+#define SHEER_BAND_DEPTH 0.05
+
+static void section(double u, double bottom[BOTTOM_ROWS][3], double side[SIDE_ROWS][3])
 {
-    double beam, keel, sheer;
-    lines(u, &beam, &keel, &sheer);
-    double tw = keel / (keel + sheer);
-    double t = fmin(fmax(row_t(r, tw), 0.0), 1.0); /* rounding can step past 1 */
-    p[0] = beam * pow(1.0 - pow(1.0 - t, 2.2), 0.55);
-    p[1] = -keel + (keel + sheer) * t;
-    p[2] = u - 0.5;
+    lines l = lines_at(u);
+    for (int r = 0; r < BOTTOM_ROWS; r++) {
+        double s = (double)r / (BOTTOM_ROWS - 1);
+        bottom[r][0] = l.chine_beam * s;
+        bottom[r][1] = l.root + (l.chine - l.root) * pow(s, 1.3);
+    }
+    double band = fmax(0.05, 1.0 - SHEER_BAND_DEPTH / fmax(l.sheer - l.chine, 1e-6));
+    static const double below[5] = {0.0, 0.25, 0.5, 0.75, 1.0};
+    double flare = 1.2 + 0.5 * u;
+    for (int r = 0; r < SIDE_ROWS; r++) {
+        double t = r < 5 ? below[r] * band : band + (1.0 - band) * (r - 4) / 2.0;
+        side[r][0] = l.chine_beam + (l.beam - l.chine_beam) * pow(t, flare);
+        side[r][1] = l.chine + (l.sheer - l.chine) * t;
+    }
+    for (int r = 0; r < BOTTOM_ROWS; r++)
+        bottom[r][2] = hull_z(u, bottom[r][1]);
+    for (int r = 0; r < SIDE_ROWS; r++)
+        side[r][2] = hull_z(u, side[r][1]);
 }
 
-static void normalize3(double v[3])
+static void mirror_x(const double p[3], double out[3])
 {
-    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (l > 0.0)
-        for (int i = 0; i < 3; i++)
-            v[i] /= l;
+    out[0] = -p[0];
+    out[1] = p[1];
+    out[2] = p[2];
 }
 
-static uint32_t vertex(tl_mesh_builder *b, const double p[3], const double n[3], const float *rgb)
+/* A point inside the hull at the height of the waterline, level with p:
+ * the hull's faces turn away from it. */
+static void hull_inside(const double p[3], double out[3])
 {
-    const float pf[3] = {(float)p[0], (float)p[1], (float)p[2]};
-    const float nf[3] = {(float)n[0], (float)n[1], (float)n[2]};
-    return tl_mesh_add_vertex(b, pf, nf, rgb);
+    out[0] = 0.0;
+    out[1] = 0.02;
+    out[2] = p[2];
 }
 
-/* Both sides of the hull, smooth: normals from the grid's tangents. Row 5
- * and 6 coincide on the waterline so the colour changes sharply there. */
-static void hull(tl_mesh_builder *b)
+static void hull(tl_mesh_soup *s)
 {
-    for (int side = -1; side <= 1; side += 2) {
-        uint32_t idx[STATIONS + 1][ROWS];
-        for (int i = 0; i <= STATIONS; i++) {
-            double u = (double)i / STATIONS, du = 1e-3;
-            for (int r = 0; r < ROWS; r++) {
-                double p[3], pu[3], pm[3], pt[3], pb[3];
-                hull_point(u, r, p);
-                hull_point(fmin(u + du, 1.0), r, pu);
-                hull_point(fmax(u - du, 0.0), r, pm);
-                hull_point(u, r < ROWS - 1 ? r + 1 : r, pt);
-                hull_point(u, r > 0 ? r - 1 : r, pb);
-                double a[3], c[3], n[3];
-                for (int k = 0; k < 3; k++) {
-                    a[k] = pu[k] - pm[k]; /* toward the bow */
-                    c[k] = pt[k] - pb[k]; /* up the section */
+    static double bottom[STATIONS + 1][BOTTOM_ROWS][3], side[STATIONS + 1][SIDE_ROWS][3];
+    for (int i = 0; i <= STATIONS; i++)
+        section((double)i / STATIONS, bottom[i], side[i]);
+    for (int sx = 0; sx < 2; sx++)
+        for (int i = 0; i < STATIONS; i++) {
+            for (int r = 0; r + 1 < BOTTOM_ROWS; r++) {
+                double a[3], b[3], c[3], d[3], in[3];
+                memcpy(a, bottom[i][r], sizeof a);
+                memcpy(b, bottom[i + 1][r], sizeof b);
+                memcpy(c, bottom[i + 1][r + 1], sizeof c);
+                memcpy(d, bottom[i][r + 1], sizeof d);
+                if (sx) {
+                    mirror_x(a, a), mirror_x(b, b), mirror_x(c, c), mirror_x(d, d);
                 }
-                /* At the keel the section tangent is horizontal: aim down. */
-                if (r == 0) {
-                    c[0] = 1.0;
-                    c[1] = 0.0;
-                    c[2] = 0.0;
+                hull_inside(a, in);
+                in[1] = 0.1; /* above the bottom: its faces look down */
+                tl_mesh_soup_quad(s, a, b, c, d, HULL_PAINT, P_BOTTOM, in);
+            }
+            for (int r = 0; r + 1 < SIDE_ROWS; r++) {
+                double a[3], b[3], c[3], d[3], in[3];
+                memcpy(a, side[i][r], sizeof a);
+                memcpy(b, side[i + 1][r], sizeof b);
+                memcpy(c, side[i + 1][r + 1], sizeof c);
+                memcpy(d, side[i][r + 1], sizeof d);
+                if (sx) {
+                    mirror_x(a, a), mirror_x(b, b), mirror_x(c, c), mirror_x(d, d);
                 }
-                n[0] = c[1] * a[2] - c[2] * a[1];
-                n[1] = c[2] * a[0] - c[0] * a[2];
-                n[2] = c[0] * a[1] - c[1] * a[0];
-                normalize3(n);
-                p[0] *= side;
-                n[0] *= side;
-                idx[i][r] = vertex(b, p, n, r <= 5 ? HULL_BOTTOM : HULL_TOP);
+                hull_inside(a, in);
+                tl_mesh_soup_quad(s, a, b, c, d, r >= 4 ? SHEER_BAND : HULL_PAINT, P_TOPSIDES, in);
             }
         }
-        for (int i = 0; i < STATIONS; i++)
-            for (int r = 0; r < ROWS - 1; r++) {
-                if (r == 5)
-                    continue; /* rows 5 and 6 are the same points */
-                uint32_t a = idx[i][r], c = idx[i + 1][r], d = idx[i + 1][r + 1], e = idx[i][r + 1];
-                if (side > 0) {
-                    tl_mesh_add_triangle(b, a, e, d);
-                    tl_mesh_add_triangle(b, a, d, c);
-                } else {
-                    tl_mesh_add_triangle(b, a, d, e);
-                    tl_mesh_add_triangle(b, a, c, d);
-                }
-            }
+    /* The transom: the section at u = 0 closed across in strips between
+     * its rows, each strip one paint (cut at the waterline later like the
+     * rest), so the colours meet in straight lines. */
+    double outline[BOTTOM_ROWS + SIDE_ROWS - 1][3];
+    int count = 0;
+    for (int r = 0; r < BOTTOM_ROWS; r++)
+        memcpy(outline[count++], bottom[0][r], sizeof outline[0]);
+    for (int r = 1; r < SIDE_ROWS; r++)
+        memcpy(outline[count++], side[0][r], sizeof outline[0]);
+    const double ahead[3] = {0.0, 0.05, 0.0};
+    for (int k = 0; k + 1 < count; k++) {
+        double a[3], b[3];
+        mirror_x(outline[k], a);
+        mirror_x(outline[k + 1], b);
+        int material = k >= BOTTOM_ROWS + 3 ? SHEER_BAND : HULL_PAINT;
+        tl_mesh_soup_quad(s, outline[k], outline[k + 1], b, a, material, P_TRANSOM, ahead);
     }
 }
 
-/* The flat transom at the stern: a strip across it between each pair of
- * section rows, each strip its rows' colour, so the red bottom meets the
- * white topsides in a straight line at the waterline (rows 5 and 6
- * coincide). A fan from one white centre point blended the colours
- * across its triangles into a pale red X (dusk.tl, the boat seen from
- * astern). */
-static void transom(tl_mesh_builder *b)
+/* The keel and skeg: a thin fin under the bottom's root, from just ahead
+ * of the transom to the forefoot, where it fairs into the stem. */
+static void keel(tl_mesh_soup *s)
 {
-    const double n[3] = {0.0, 0.0, -1.0};
-    uint32_t left = 0, right = 0;
-    for (int r = 0; r < ROWS; r++) {
-        if (r == 6)
-            continue; /* the same points as row 5 */
-        double p[3], q[3];
-        hull_point(0.0, r, p);
-        memcpy(q, p, sizeof q);
-        q[0] = -p[0];
-        /* Rows 5 and 6 meet at the waterline: the strip above it starts
-         * there in white. */
-        const float *rgb = r <= 4 ? HULL_BOTTOM : HULL_TOP;
-        uint32_t l = vertex(b, q, n, rgb), rt = vertex(b, p, n, rgb);
-        if (r == 5) {
-            /* the red strip below ends here: close it with red vertices */
-            uint32_t lr = vertex(b, q, n, HULL_BOTTOM), rr = vertex(b, p, n, HULL_BOTTOM);
-            tl_mesh_add_triangle(b, left, rr, right);
-            tl_mesh_add_triangle(b, left, lr, rr);
-        } else if (r > 0) {
-            tl_mesh_add_triangle(b, left, rt, right);
-            tl_mesh_add_triangle(b, left, l, rt);
+    const double half = 0.006, u0 = 0.04, u1 = 0.95;
+    const int n = 24;
+    double prev[4][3];
+    for (int i = 0; i <= n; i++) {
+        double u = u0 + (u1 - u0) * i / n;
+        lines l = lines_at(u);
+        double top = l.root + 0.004; /* into the bottom: no gap at its root */
+        double pts[4][3] = {{half, l.keel, 0}, {half, top, 0}, {-half, top, 0}, {-half, l.keel, 0}};
+        for (int k = 0; k < 4; k++)
+            pts[k][2] = hull_z(u, pts[k][1]);
+        if (i == 0) {
+            const double ahead[3] = {0.0, 0.5 * (l.keel + top), pts[0][2] + 1.0};
+            tl_mesh_soup_quad(s, pts[0], pts[1], pts[2], pts[3], ANTIFOULING, P_BOX, ahead);
+        } else {
+            for (int side = 0; side < 2; side++) {
+                const double in[3] = {0.0, prev[0][1], prev[0][2]};
+                int a = side ? 2 : 0, b = side ? 3 : 1;
+                tl_mesh_soup_quad(s, prev[a], pts[a], pts[b], prev[b], ANTIFOULING, P_KEEL, in);
+            }
+            const double above[3] = {0.0, 0.0, prev[0][2]};
+            tl_mesh_soup_quad(s, prev[0], pts[0], pts[3], prev[3], ANTIFOULING, P_KEEL, above);
         }
-        left = l;
-        right = rt;
+        memcpy(prev, pts, sizeof prev);
     }
 }
 
-/* The deck, 3% below the sheer, and the inside of the bulwark above it. */
-static void deck(tl_mesh_builder *b)
+/* The deck (with a little camber), the bulwark's inside and its cap, the
+ * inside of the transom, and the rub rail along the sheer. */
+static void deck(tl_mesh_soup *s)
 {
-    const double up[3] = {0.0, 1.0, 0.0};
-    const double inboard[2][3] = {{1.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}}; /* port, starboard */
-    uint32_t prev_d[2] = {0, 0}, prev_e[2] = {0, 0}, prev_t[2] = {0, 0};
+    enum { ACROSS = 4 };
+    double prev_deck[ACROSS + 1][3], prev_edge[2][2][3], prev_rail[2][5][3];
     for (int i = 0; i <= STATIONS; i++) {
-        double u = (double)i / STATIONS, beam, keel, sheer;
-        lines(u, &beam, &keel, &sheer);
-        double inner = beam * 0.96, y = sheer - 0.03, z = u - 0.5;
-        uint32_t d[2], e[2], t[2];
-        for (int k = 0; k < 2; k++) {
-            double sx = k ? 1.0 : -1.0;
-            double edge[3] = {sx * inner, y, z}, top[3] = {sx * beam, sheer, z};
-            d[k] = vertex(b, edge, up, DECK);
-            e[k] = vertex(b, edge, inboard[k], HULL_TOP);
-            t[k] = vertex(b, top, inboard[k], HULL_TOP);
+        double u = (double)i / STATIONS;
+        lines l = lines_at(u);
+        double inner = fmax(l.beam - BULWARK_IN, 0.0), y = l.sheer - BULWARK;
+        double z = hull_z(u, l.sheer);
+        double dk[ACROSS + 1][3], edge[2][2][3], rail[2][5][3];
+        for (int k = 0; k <= ACROSS; k++) {
+            double x = inner * (2.0 * k / ACROSS - 1.0);
+            double r = inner > 0.0 ? x / inner : 0.0;
+            dk[k][0] = x;
+            dk[k][1] = y + 0.005 * (1.0 - r * r);
+            dk[k][2] = z;
+        }
+        for (int sx = 0; sx < 2; sx++) {
+            double sign = sx ? -1.0 : 1.0;
+            /* The bulwark's inner face, bottom and top; the cap meets the
+             * hull's sheer. */
+            edge[sx][0][0] = sign * inner, edge[sx][0][1] = y, edge[sx][0][2] = z;
+            edge[sx][1][0] = sign * inner, edge[sx][1][1] = l.sheer, edge[sx][1][2] = z;
+            /* The rub rail's half-round: from the hull up and out and back. */
+            static const double prof[5][2] = {{-0.001, -0.019},
+                                              {0.006, -0.017},
+                                              {0.008, -0.011},
+                                              {0.006, -0.005},
+                                              {-0.001, -0.003}};
+            double rail_beam = l.beam * (1.0 - 0.25 * smooth01(0.9, 1.0, u));
+            for (int k = 0; k < 5; k++) {
+                double grow = smooth01(1.0, 0.96, u); /* the rail ends at the stem */
+                rail[sx][k][0] = sign * (rail_beam + prof[k][0] * grow);
+                rail[sx][k][1] = l.sheer + prof[k][1];
+                rail[sx][k][2] = hull_z(u, rail[sx][k][1]);
+            }
         }
         if (i > 0) {
-            tl_mesh_add_triangle(b, prev_d[0], d[0], d[1]);
-            tl_mesh_add_triangle(b, prev_d[0], d[1], prev_d[1]);
-            tl_mesh_add_triangle(b, prev_e[0], t[0], e[0]);
-            tl_mesh_add_triangle(b, prev_e[0], prev_t[0], t[0]);
-            tl_mesh_add_triangle(b, prev_e[1], e[1], t[1]);
-            tl_mesh_add_triangle(b, prev_e[1], t[1], prev_t[1]);
+            for (int k = 0; k < ACROSS; k++) {
+                double below[3] = {0.5 * (dk[k][0] + dk[k + 1][0]), y - 1.0, z};
+                tl_mesh_soup_quad(s, prev_deck[k], dk[k], dk[k + 1], prev_deck[k + 1], DECK, P_DECK,
+                                  below);
+            }
+            for (int sx = 0; sx < 2; sx++) {
+                double sign = sx ? -1.0 : 1.0;
+                double outboard[3] = {sign * 1.0, y, z};
+                tl_mesh_soup_quad(s, prev_edge[sx][0], edge[sx][0], edge[sx][1], prev_edge[sx][1],
+                                  BULWARK_INSIDE, P_BOX, outboard);
+                /* The cap, from the inner top edge to the sheer. */
+                double a[3] = {sign * lines_at((double)(i - 1) / STATIONS).beam,
+                               prev_edge[sx][1][1], prev_edge[sx][1][2]};
+                double b[3] = {sign * l.beam, l.sheer, z};
+                double under[3] = {sign * inner, l.sheer - 1.0, z};
+                tl_mesh_soup_quad(s, prev_edge[sx][1], edge[sx][1], b, a, WOOD, P_BOX, under);
+                for (int k = 0; k < 4; k++) {
+                    double in[3] = {0.0, rail[sx][k][1], rail[sx][k][2]};
+                    tl_mesh_soup_quad(s, prev_rail[sx][k], rail[sx][k], rail[sx][k + 1],
+                                      prev_rail[sx][k + 1], WOOD, P_RAIL, in);
+                }
+            }
+        } else {
+            /* The transom's inside, from the deck to the cap, and its cap. */
+            double ahead[3] = {0.0, y, z - 1.0};
+            double a[3] = {-inner, y, z + BULWARK_IN}, b[3] = {inner, y, z + BULWARK_IN};
+            double c[3] = {inner, l.sheer, z + BULWARK_IN},
+                   d[3] = {-inner, l.sheer, z + BULWARK_IN};
+            tl_mesh_soup_quad(s, a, b, c, d, BULWARK_INSIDE, P_BOX, ahead);
+            double e[3] = {l.beam, l.sheer, z}, f[3] = {-l.beam, l.sheer, z};
+            double down[3] = {0.0, l.sheer - 1.0, z};
+            tl_mesh_soup_quad(s, d, c, e, f, WOOD, P_BOX, down);
         }
-        memcpy(prev_d, d, sizeof d);
-        memcpy(prev_e, e, sizeof e);
-        memcpy(prev_t, t, sizeof t);
+        memcpy(prev_deck, dk, sizeof dk);
+        memcpy(prev_edge, edge, sizeof edge);
+        memcpy(prev_rail, rail, sizeof rail);
     }
 }
 
-/* An axis-aligned box with flat faces. */
-static void box(tl_mesh_builder *b, const double lo[3], const double hi[3], const float *rgb)
+/* A box with flat faces between corners lo and hi. */
+static void box(tl_mesh_soup *s, const double lo[3], const double hi[3], int material)
 {
+    double c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = 0.5 * (lo[k] + hi[k]);
     for (int axis = 0; axis < 3; axis++)
-        for (int s = 0; s < 2; s++) {
-            double n[3] = {0, 0, 0};
-            n[axis] = s ? 1.0 : -1.0;
+        for (int side = 0; side < 2; side++) {
             int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            uint32_t q[4];
+            double q[4][3];
             for (int k = 0; k < 4; k++) {
-                double p[3];
-                p[axis] = s ? hi[axis] : lo[axis];
-                p[u] = (k == 1 || k == 2) ? hi[u] : lo[u];
-                p[v] = (k >= 2) ? hi[v] : lo[v];
-                q[k] = vertex(b, p, n, rgb);
+                q[k][axis] = side ? hi[axis] : lo[axis];
+                q[k][u] = (k == 1 || k == 2) ? hi[u] : lo[u];
+                q[k][v] = k >= 2 ? hi[v] : lo[v];
             }
-            if (s) {
-                tl_mesh_add_triangle(b, q[0], q[1], q[2]);
-                tl_mesh_add_triangle(b, q[0], q[2], q[3]);
-            } else {
-                tl_mesh_add_triangle(b, q[0], q[2], q[1]);
-                tl_mesh_add_triangle(b, q[0], q[3], q[2]);
-            }
+            tl_mesh_soup_quad(s, q[0], q[1], q[2], q[3], material, P_BOX, c);
         }
+}
+
+/* A tube of radius r from a to b, `sides` faces round, ends open (they sit
+ * in other parts or are too small to see). */
+static void tube(tl_mesh_soup *s, const double a[3], const double b[3], double r, int sides,
+                 int material)
+{
+    double d[3], t1[3], t2[3];
+    for (int k = 0; k < 3; k++)
+        d[k] = b[k] - a[k];
+    double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (l <= 0.0)
+        return;
+    for (int k = 0; k < 3; k++)
+        d[k] /= l;
+    double up[3] = {fabs(d[1]) < 0.9 ? 0.0 : 1.0, fabs(d[1]) < 0.9 ? 1.0 : 0.0, 0.0};
+    t1[0] = d[1] * up[2] - d[2] * up[1];
+    t1[1] = d[2] * up[0] - d[0] * up[2];
+    t1[2] = d[0] * up[1] - d[1] * up[0];
+    double l1 = sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+    for (int k = 0; k < 3; k++)
+        t1[k] /= l1;
+    t2[0] = d[1] * t1[2] - d[2] * t1[1];
+    t2[1] = d[2] * t1[0] - d[0] * t1[2];
+    t2[2] = d[0] * t1[1] - d[1] * t1[0];
+    for (int i = 0; i < sides; i++) {
+        double p0 = 2.0 * M_PI * i / sides, p1 = 2.0 * M_PI * (i + 1) / sides;
+        double q[4][3];
+        for (int k = 0; k < 3; k++) {
+            double o0 = r * (cos(p0) * t1[k] + sin(p0) * t2[k]);
+            double o1 = r * (cos(p1) * t1[k] + sin(p1) * t2[k]);
+            q[0][k] = a[k] + o0;
+            q[1][k] = a[k] + o1;
+            q[2][k] = b[k] + o1;
+            q[3][k] = b[k] + o0;
+        }
+        /* Away from the axis at the face's own position along it. */
+        double axis_pt[3];
+        double along = 0.0;
+        for (int k = 0; k < 3; k++)
+            along += (0.25 * (q[0][k] + q[1][k] + q[2][k] + q[3][k]) - a[k]) * d[k];
+        for (int k = 0; k < 3; k++)
+            axis_pt[k] = a[k] + d[k] * along;
+        tl_mesh_soup_quad(s, q[0], q[1], q[2], q[3], material, P_TUBE, axis_pt);
+    }
+}
+
+/* A quad on a plane, a hair out from it along `out`: a window pane. */
+static void pane(tl_mesh_soup *s, const double corner[3], const double du[3], const double dv[3],
+                 const double out[3], int material)
+{
+    double q[4][3], in[3];
+    for (int k = 0; k < 3; k++) {
+        double o = corner[k] + 0.0015 * out[k];
+        q[0][k] = o;
+        q[1][k] = o + du[k];
+        q[2][k] = o + du[k] + dv[k];
+        q[3][k] = o + dv[k];
+        in[k] = o + 0.5 * (du[k] + dv[k]) - out[k];
+    }
+    tl_mesh_soup_quad(s, q[0], q[1], q[2], q[3], material, P_BOX, in);
+}
+
+/* The wheelhouse: walls with a raked front, windows all round, a door
+ * aft, a roof with an overhang, and the side lights at its front corners. */
+static void wheelhouse(tl_mesh_soup *s, double deck_y)
+{
+    const double x = 0.085, z0 = -0.16, z1 = 0.05, rake = 0.022;
+    const double y0 = deck_y - 0.012, y1 = deck_y + 0.15;
+    double c[8][3] = {{-x, y0, z0}, {x, y0, z0}, {x, y0, z1},        {-x, y0, z1},
+                      {-x, y1, z0}, {x, y1, z0}, {x, y1, z1 - rake}, {-x, y1, z1 - rake}};
+    const double centre[3] = {0.0, 0.5 * (y0 + y1), 0.5 * (z0 + z1)};
+    tl_mesh_soup_quad(s, c[0], c[1], c[5], c[4], CABIN, P_BOX, centre); /* aft */
+    tl_mesh_soup_quad(s, c[3], c[2], c[6], c[7], CABIN, P_BOX, centre); /* front */
+    tl_mesh_soup_quad(s, c[1], c[2], c[6], c[5], CABIN, P_BOX, centre); /* port */
+    tl_mesh_soup_quad(s, c[0], c[3], c[7], c[4], CABIN, P_BOX, centre); /* starboard */
+    /* Windows: three in the raked front, two a side; a door aft. */
+    const double wy0 = deck_y + 0.093, wy1 = deck_y + 0.138;
+    double front_n[3] = {0.0, rake, y1 - y0};
+    double fl = sqrt(front_n[1] * front_n[1] + front_n[2] * front_n[2]);
+    front_n[1] /= fl, front_n[2] /= fl;
+    for (int k = 0; k < 3; k++) {
+        double xa = -0.075 + k * 0.051, xb = xa + 0.046;
+        double za = z1 - rake * (wy0 - y0) / (y1 - y0), zb = z1 - rake * (wy1 - y0) / (y1 - y0);
+        double corner[3] = {xa, wy0, za}, du[3] = {xb - xa, 0, 0}, dv[3] = {0, wy1 - wy0, zb - za};
+        pane(s, corner, du, dv, front_n, GLASS);
+    }
+    for (int side = 0; side < 2; side++) {
+        double sx = side ? -1.0 : 1.0, out[3] = {sx, 0, 0};
+        const double spans[2][2] = {{-0.075, -0.012}, {0.0, 0.032}};
+        for (int k = 0; k < 2; k++) {
+            double corner[3] = {sx * x, wy0, spans[k][0]},
+                   du[3] = {0, 0, spans[k][1] - spans[k][0]};
+            double dv[3] = {0, wy1 - wy0, 0};
+            pane(s, corner, du, dv, out, GLASS);
+        }
+    }
+    const double aft[3] = {0, 0, -1};
+    double door[3] = {-0.028, deck_y + 0.004, z0}, du[3] = {0.056, 0, 0}, dv[3] = {0, 0.128, 0};
+    pane(s, door, du, dv, aft, DOOR);
+    double door_glass[3] = {-0.018, deck_y + 0.09, z0 - 0.0015}, gu[3] = {0.036, 0, 0},
+           gv[3] = {0, 0.03, 0};
+    pane(s, door_glass, gu, gv, aft, GLASS);
+    const double aft_win[2][2] = {{-0.075, -0.038}, {0.038, 0.075}};
+    for (int k = 0; k < 2; k++) {
+        double corner[3] = {aft_win[k][0], wy0, z0}, u[3] = {aft_win[k][1] - aft_win[k][0], 0, 0},
+               v[3] = {0, wy1 - wy0, 0};
+        pane(s, corner, u, v, aft, GLASS);
+    }
+    box(s, (double[]){-x - 0.008, y1, z0 - 0.008},
+        (double[]){x + 0.008, y1 + 0.012, z1 - rake + 0.012}, ROOF);
+    /* Side lights: red to port (+x, the bow at +z), green to starboard. */
+    box(s, (double[]){x, y1 - 0.02, z1 - rake - 0.016},
+        (double[]){x + 0.006, y1 - 0.008, z1 - rake}, LAMP_PORT);
+    box(s, (double[]){-x - 0.006, y1 - 0.02, z1 - rake - 0.016},
+        (double[]){-x, y1 - 0.008, z1 - rake}, LAMP_STARBOARD);
+}
+
+/* Stanchions along the deck's edge between u0 and u1, joined by a rail at
+ * their tops; `bow`: the two sides' rails meet at the stem (a pulpit). */
+static void rails(tl_mesh_soup *s, double u0, double u1, int posts, int bow)
+{
+    const double height = 0.05, r = 0.0022;
+    for (int side = 0; side < 2; side++) {
+        double sign = side ? -1.0 : 1.0, prev[3] = {0, 0, 0};
+        for (int i = 0; i < posts; i++) {
+            double u = u0 + (u1 - u0) * i / (posts - 1);
+            lines l = lines_at(u);
+            double z = hull_z(u, l.sheer);
+            double foot[3] = {sign * (l.beam - 0.5 * BULWARK_IN), l.sheer, z};
+            double top[3] = {foot[0], l.sheer + height, z};
+            tube(s, foot, top, r, 5, STEEL);
+            if (i > 0)
+                tube(s, prev, top, r, 5, STEEL);
+            memcpy(prev, top, sizeof prev);
+        }
+        if (bow) {
+            lines l = lines_at(0.985);
+            double tip[3] = {0.0, l.sheer + height, hull_z(0.985, l.sheer)};
+            tube(s, prev, tip, r, 5, STEEL);
+        }
+    }
+}
+
+/* The mast with its spreader, a derrick boom and the forestay, and its
+ * white masthead light. */
+static void mast(tl_mesh_soup *s, double deck_y)
+{
+    const double z = 0.167, top = deck_y + 0.42;
+    tube(s, (double[]){0.0, deck_y - 0.02, z}, (double[]){0.0, top, z}, 0.0055, 8, STEEL);
+    tube(s, (double[]){-0.055, deck_y + 0.32, z}, (double[]){0.055, deck_y + 0.32, z}, 0.003, 6,
+         STEEL);
+    tube(s, (double[]){0.0, deck_y + 0.09, z + 0.005}, (double[]){0.0, deck_y + 0.17, 0.37}, 0.004,
+         6, STEEL);
+    lines bow = lines_at(0.985);
+    tube(s, (double[]){0.0, top - 0.01, z},
+         (double[]){0.0, bow.sheer + 0.004, hull_z(0.985, bow.sheer)}, 0.0012, 4, STEEL);
+    box(s, (double[]){-0.0045, deck_y + 0.37, z + 0.0055},
+        (double[]){0.0045, deck_y + 0.385, z + 0.012}, LAMP_WHITE);
 }
 
 int tl_mesh_default_boat(tl_mesh *out, tl_error *err)
 {
-    tl_mesh_builder b = {0};
-    hull(&b);
-    transom(&b);
-    deck(&b);
-    double beam, keel, sheer;
-    lines(0.4, &beam, &keel, &sheer);
-    double deck_y = sheer - 0.03;
-    /* Wheelhouse with a window band, a roof and a mast. */
-    box(&b, (double[]){-0.085, deck_y, -0.16}, (double[]){0.085, deck_y + 0.15, 0.05}, CABIN);
-    box(&b, (double[]){-0.0855, deck_y + 0.09, -0.1605}, (double[]){0.0855, deck_y + 0.13, 0.0505},
-        GLASS);
-    box(&b, (double[]){-0.095, deck_y + 0.15, -0.17}, (double[]){0.095, deck_y + 0.165, 0.06},
-        ROOF);
-    box(&b, (double[]){-0.007, deck_y, 0.16}, (double[]){0.007, deck_y + 0.42, 0.174}, MAST);
-    box(&b, (double[]){-0.004, deck_y + 0.3, 0.02}, (double[]){0.004, deck_y + 0.308, 0.17}, MAST);
-    return tl_mesh_builder_finish(&b, out, err);
+    double crease[PART_COUNT];
+    for (int p = 0; p < PART_COUNT; p++)
+        crease[p] = cos(CREASE_DEG[p] * M_PI / 180.0);
+    tl_mesh_soup s = {0};
+    s.materials = MATERIALS;
+    s.crease_cos = crease;
+    hull(&s);
+    /* The waterline and the boot stripe's top cut the hull: paint by height. */
+    const unsigned painted = 1u << P_BOTTOM | 1u << P_TOPSIDES | 1u << P_TRANSOM;
+    tl_mesh_soup_split_y(&s, painted, 0.0);
+    tl_mesh_soup_split_y(&s, painted, BOOT_TOP);
+    for (size_t i = 0; i < s.count; i++) {
+        tl_mesh_facet *f = &s.facets[i];
+        if (f->material != HULL_PAINT)
+            continue;
+        double y = (f->p[0][1] + f->p[1][1] + f->p[2][1]) / 3.0;
+        f->material = y < 0.0 ? ANTIFOULING : (y < BOOT_TOP ? BOOT_STRIPE : TOPSIDES);
+    }
+    keel(&s);
+    deck(&s);
+    /* The wheelhouse stands on the deck at u = 0.4, the mast before it. */
+    lines l = lines_at(0.4);
+    double deck_y = l.sheer - BULWARK;
+    wheelhouse(&s, deck_y);
+    mast(&s, deck_y);
+    rails(&s, 0.56, 0.94, 7, 1);
+    rails(&s, 0.03, 0.3, 5, 0);
+    /* The stern light, on the transom's cap. */
+    lines stern = lines_at(0.0);
+    box(&s, (double[]){-0.005, stern.sheer, -0.4985}, (double[]){0.005, stern.sheer + 0.01, -0.492},
+        LAMP_WHITE);
+    int rc = tl_mesh_soup_finish(&s, out, err);
+    if (!rc)
+        rc = tl_mesh_bake_occlusion(out, TL_MESH_OCCLUSION_REACH, err);
+    if (rc)
+        tl_mesh_free(out);
+    return rc;
 }

@@ -24,7 +24,8 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
     "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
-    "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW"};
+    "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW",
+    "TL_FEATURE_BOAT_SHADOW"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "giant wave",
                                                              "boat",
@@ -42,7 +43,8 @@ static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "breaking crest",
                                                              "lip",
                                                              "spray",
-                                                             "crest glow"};
+                                                             "crest glow",
+                                                             "boat shadow"};
 
 const char *tl_feature_define(int index)
 {
@@ -258,6 +260,43 @@ static int sphere_in_view(const tl_scene *s, const double c[3], double r)
            fabs(y) <= z * ty + r * sqrt(1.0 + ty * ty);
 }
 
+/* The sun's orthographic view of the boat's bounding sphere (centre c,
+ * radius r, camera-relative): shadow map coordinates s, t across the
+ * sun's beam and depth along it, each 0 to 1 over the sphere. Every point
+ * in that beam projects into the map, the water under the boat's shadow
+ * too; past the sphere, away from the sun, depth is clamped by the lookup. */
+static void prepare_boat_shadow(const double c[3], double r, const double sun[3],
+                                tl_frame_uniforms *u)
+{
+    double a[3] = {0.0, 1.0, 0.0};
+    if (fabs(sun[1]) > 0.99)
+        a[0] = 1.0, a[1] = 0.0;
+    double e1[3] = {a[1] * sun[2] - a[2] * sun[1], a[2] * sun[0] - a[0] * sun[2],
+                    a[0] * sun[1] - a[1] * sun[0]};
+    double l = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (int k = 0; k < 3; k++)
+        e1[k] /= l;
+    double e2[3] = {sun[1] * e1[2] - sun[2] * e1[1], sun[2] * e1[0] - sun[0] * e1[2],
+                    sun[0] * e1[1] - sun[1] * e1[0]};
+    /* Rows of the map: s = 0.5 + e1.(p - c) / 2r, t likewise with e2,
+     * depth = 0.5 - sun.(p - c) / 2r; stored column-major. */
+    const double *rows[3] = {e1, e2, sun};
+    const double sign[3] = {1.0, 1.0, -1.0};
+    memset(u->boat_shadow, 0, sizeof u->boat_shadow);
+    for (int i = 0; i < 3; i++) {
+        double offset = 0.5;
+        for (int k = 0; k < 3; k++) {
+            double m = sign[i] * rows[i][k] / (2.0 * r);
+            u->boat_shadow[4 * k + i] = (float)m;
+            offset -= m * c[k];
+        }
+        u->boat_shadow[12 + i] = (float)offset;
+    }
+    u->boat_shadow[15] = 1.0f;
+    u->boat_shadow_texel = (float)(2.0 * r / TL_BOAT_SHADOW_SIZE);
+    u->features |= TL_FEATURE_BOAT_SHADOW;
+}
+
 /* The boat's matrices in camera-relative space, and its feature bit when
  * its bounding sphere is in view; how much of the sun its hull sees past
  * the giant wave's crest, at the hull's centre (the shadow's edge is soft
@@ -334,6 +373,9 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
     u->boat_sunlit =
         (float)tl_giant_sunlit(giant, cw[0] + s->camera.position[0], cw[2] + s->camera.position[2],
                                cw[1] + s->camera.position[1], sun);
+    u->boat_lights = (float)b->lights;
+    if (b->shadows && sun[1] > 0.0)
+        prepare_boat_shadow(world, radius, sun, u);
 }
 
 /* How far from its path, `behind` metres back from the boat, the wake's

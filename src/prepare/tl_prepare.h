@@ -43,9 +43,10 @@ typedef enum tl_feature {
     TL_FEATURE_GIANT_SPRAY = 1u << 16, /* giant.spray, where a crest is tall or a bow meets it */
     TL_FEATURE_GIANT_GLOW =
         1u << 17, /* giant.scatter > 0 with the sun up: light through the crest */
+    TL_FEATURE_BOAT_SHADOW = 1u << 18, /* boat.shadows with the sun up: its shadow map */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 18
+#define TL_FEATURE_COUNT 19
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -184,6 +185,12 @@ typedef struct tl_frame_uniforms {
     float boat_top;          /* model y of the hull's top */
     float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
     float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
+    float boat_lights;       /* boat.lights: the lamps' share of their emission */
+    /* TL_FEATURE_BOAT_SHADOW: the sun's orthographic view of the boat,
+     * camera-relative world -> shadow map s, t and depth in [0, 1] (depth
+     * grows away from the sun), and its texel's width in metres. */
+    float boat_shadow[16];
+    float boat_shadow_texel;
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */
@@ -249,7 +256,13 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
 
 /* Near and far planes of the boat's rasterised pass, metres. */
 #define TL_BOAT_NEAR 0.05
-#define TL_BOAT_FAR  1.0e5
+/* The boat's shadow map: texels a side (a 10 m boat's at half a centimetre). */
+#define TL_BOAT_SHADOW_SIZE 2048
+/* The share of the sun's part of the light the water scatters up that a
+ * boat's shadow takes away: that light entered the water over metres
+ * around the point, most of a boat's shadow wide. */
+#define TL_BOAT_SHADOW_SCATTER 0.5
+#define TL_BOAT_FAR            1.0e5
 
 /* Fills `u` from `scene` (validated by the caller). `waves` must have been
  * built from scene->ocean; it is passed in so callers reuse it per shot. */

@@ -117,6 +117,8 @@ void tl_scene_defaults(tl_scene *s)
     s->boat.float_time = 0.3;
     s->boat.wake = 1.0;
     s->boat.wake_time = 6.0;
+    s->boat.lights = 0.0;
+    s->boat.shadows = true;
     s->boat.scale = 8.0;
     const double lo[3] = TL_BOAT_BUILTIN_MIN, hi[3] = TL_BOAT_BUILTIN_MAX;
     for (int i = 0; i < 3; i++) {

@@ -171,6 +171,8 @@ typedef struct tl_boat {
     double float_time;  /* response time of the floating spring, seconds */
     double wake;        /* strength of the wake's foam, 0 = none */
     double wake_time;   /* seconds over which the wake's foam fades (e-fold) */
+    double lights;      /* navigation lights' share of their emission, 0 = off */
+    bool shadows;       /* the sun casts the boat's shadows (TL_FEATURE_BOAT_SHADOW) */
     /* Derived by evaluation from the model: */
     double scale;                      /* metres per model unit */
     double model_min[3], model_max[3]; /* the model's bounds, model units */

@@ -191,6 +191,10 @@ static const tl_channel channels[] = {
          "time over which the wake's foam fades"),
     REAL("boat.float_time", 1, TL_UNIT_TIME, 0.01, 10.0, boat.float_time,
          "response time of the floating spring (smaller follows the waves closer)"),
+    REAL("boat.lights", 1, TL_UNIT_NONE, 0.0, 1.0, boat.lights,
+         "its navigation lights' brightness (for dusk and night), 0 off"),
+    {"boat.shadows", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.shadows),
+     NULL, "the sun casts the boat's shadows, on itself and on the water"},
 
     {"quality.march_octaves", TL_CH_INT, 1, TL_UNIT_NONE, 1, TL_MAX_OCTAVES, false,
      offsetof(tl_scene, quality.march_octaves), NULL, "wave octaves while marching"},

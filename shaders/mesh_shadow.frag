@@ -1,0 +1,4 @@
+// The shadow map keeps depth alone.
+void main()
+{
+}

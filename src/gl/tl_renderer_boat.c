@@ -1,0 +1,236 @@
+/* The boat's passes (tl_renderer_internal.h): its mesh on the GPU, the
+ * sun's shadow map of it, the lit hull and its distance, and its mirror
+ * image in the water, for the ocean pass to composite (shaders/boat.glsl). */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tl_renderer_internal.h"
+
+int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
+{
+    gpu_mesh *g = &r->mesh;
+    if (g->vao) {
+        glDeleteVertexArrays(1, &g->vao);
+        glDeleteBuffers(1, &g->vbo);
+        glDeleteBuffers(1, &g->ibo);
+    }
+    memset(g, 0, sizeof *g);
+    if (!mesh || mesh->index_count == 0)
+        return TL_OK;
+    if (mesh->index_count > 0x7fffffff)
+        return tl_error_set(err, TL_ERR_RUNTIME, "the boat mesh has too many triangles");
+    /* Interleaved per vertex: position, normal, colour (3 each), then
+     * roughness, metallic, occlusion, emission. */
+    enum { STRIDE = 13 };
+    size_t n = mesh->vertex_count;
+    float *interleaved = malloc(n * STRIDE * sizeof(float));
+    if (!interleaved)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (size_t i = 0; i < n; i++) {
+        float *v = interleaved + STRIDE * i;
+        memcpy(v, mesh->positions + 3 * i, 3 * sizeof(float));
+        memcpy(v + 3, mesh->normals + 3 * i, 3 * sizeof(float));
+        memcpy(v + 6, mesh->colors + 3 * i, 3 * sizeof(float));
+        if (mesh->surface)
+            memcpy(v + 9, mesh->surface + 4 * i, 4 * sizeof(float));
+        else
+            memcpy(v + 9, (const float[]){0.5f, 0.0f, 1.0f, 0.0f}, 4 * sizeof(float));
+    }
+    glGenVertexArrays(1, &g->vao);
+    glBindVertexArray(g->vao);
+    glGenBuffers(1, &g->vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, g->vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * STRIDE * sizeof(float)), interleaved,
+                 GL_STATIC_DRAW);
+    free(interleaved);
+    glGenBuffers(1, &g->ibo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g->ibo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(mesh->index_count * sizeof(uint32_t)),
+                 mesh->indices, GL_STATIC_DRAW);
+    for (GLuint a = 0; a < 4; a++) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, a < 3 ? 3 : 4, GL_FLOAT, GL_FALSE, STRIDE * sizeof(float),
+                              (const void *)(uintptr_t)(a * 3 * sizeof(float)));
+    }
+    glBindVertexArray(r->vao);
+    g->indices = (GLsizei)mesh->index_count;
+    return tl_renderer_check("uploading the boat mesh", err);
+}
+
+/* Draws the mesh into `t` (cleared first): directly, or mirrored in the
+ * water plane and clipped to what stands above it. */
+static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
+                      int mirrored)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+    glViewport(0, 0, u->width, u->height);
+    const float zero[4] = {0, 0, 0, 0};
+    const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    if (t->attachments > 1)
+        glClearBufferfv(GL_COLOR, 1, sky);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    /* Reflection about y = h: y -> 2h - y (column-major). */
+    float h = u->boat_water;
+    const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
+    glUniformMatrix4fv(tl_renderer_loc(program, "u_mirror"), 1, GL_FALSE,
+                       mirrored ? mirror : identity);
+    glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
+    /* The direct pass clips nothing, whatever the clip-distance state. */
+    glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
+    if (mirrored)
+        glEnable(GL_CLIP_DISTANCE0);
+    glBindVertexArray(r->mesh.vao);
+    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
+    glBindVertexArray(r->vao);
+    glDisable(GL_CLIP_DISTANCE0);
+}
+
+/* The sun's view of the boat into the shadow map: depth alone, pushed a
+ * little away from the sun (polygon offset) so that lit faces do not
+ * shadow themselves. */
+static int draw_shadow(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
+{
+    if (!r->shadow_fbo) {
+        glGenTextures(1, &r->shadow_tex);
+        glBindTexture(GL_TEXTURE_2D, r->shadow_tex);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, TL_BOAT_SHADOW_SIZE,
+                     TL_BOAT_SHADOW_SIZE, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        /* Compared in the lookup: bilinear percentage-closer filtering. */
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        glGenFramebuffers(1, &r->shadow_fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, r->shadow_tex,
+                               0);
+        glDrawBuffer(GL_NONE);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            return tl_error_set(err, TL_ERR_RUNTIME, "the boat's shadow map is not supported");
+    }
+    if (!r->shadow_program) {
+        char defines[TL_DEFINES_SIZE];
+        tl_renderer_defines(TL_FEATURE_BOAT | TL_FEATURE_BOAT_SHADOW, defines, sizeof defines);
+        r->shadow_program =
+            tl_renderer_build_program(r, "mesh_shadow.vert", "mesh_shadow.frag", defines, err);
+        if (!r->shadow_program)
+            return err ? (int)err->status : TL_ERR_RUNTIME;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
+    glViewport(0, 0, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SIZE);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(r->shadow_program);
+    glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_model"), 1, GL_FALSE,
+                       u->boat_model);
+    glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_shadow"), 1, GL_FALSE,
+                       u->boat_shadow);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 2.0f);
+    glBindVertexArray(r->mesh.vao);
+    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
+    glBindVertexArray(r->vao);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    return TL_OK;
+}
+
+static void bind_shadow(const tl_renderer *r, GLuint program)
+{
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_SHADOW);
+    glBindTexture(GL_TEXTURE_2D, r->shadow_tex);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glUniform1i(tl_renderer_loc(program, "u_boat_shadow_map"), TL_UNIT_BOAT_SHADOW);
+}
+
+/* The features that change how the hull is lit: the sun, the sky, the
+ * water around it from below, its shadows. */
+static const unsigned MESH_FEATURES[TL_MESH_PROGRAMS] = {
+    TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL, TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW};
+
+int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
+{
+    const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
+    int rc = tl_renderer_target_ensure_depth(&r->boat, u->width, u->height, 2, formats, 1, err);
+    if (!rc)
+        rc = tl_renderer_target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
+    if (rc)
+        return rc;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE); /* models may be open or wound either way */
+    glDisable(GL_BLEND);
+    unsigned features = 0;
+    int variant = 0;
+    for (int i = 0; i < 4; i++)
+        if (u->features & MESH_FEATURES[i]) {
+            features |= MESH_FEATURES[i];
+            variant |= 1 << i;
+        }
+    if (features & TL_FEATURE_BOAT_SHADOW) {
+        rc = draw_shadow(r, u, err);
+        if (rc) {
+            glDisable(GL_DEPTH_TEST);
+            return rc;
+        }
+    }
+    GLuint *program = &r->mesh_program[variant];
+    if (!*program) {
+        char defines[TL_DEFINES_SIZE];
+        tl_renderer_defines(features | TL_FEATURE_BOAT, defines, sizeof defines);
+        *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
+        if (!*program) {
+            glDisable(GL_DEPTH_TEST);
+            return err ? (int)err->status : TL_ERR_RUNTIME;
+        }
+    }
+    glUseProgram(*program);
+    tl_renderer_upload_uniforms(*program, u);
+    glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
+    glUniformMatrix4fv(tl_renderer_loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
+    glUniform1f(tl_renderer_loc(*program, "u_sunlit"), u->boat_sunlit);
+    glUniform1f(tl_renderer_loc(*program, "u_lights"), u->boat_lights);
+    if (features & TL_FEATURE_BOAT_SHADOW)
+        bind_shadow(r, *program);
+    draw_mesh(r, *program, &r->boat, u, 0);
+    draw_mesh(r, *program, &r->mirror, u, 1);
+    glDisable(GL_DEPTH_TEST);
+    return tl_renderer_check("drawing the boat", err);
+}
+
+void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned features)
+{
+    const GLuint textures[3] = {r->boat.tex[0], r->boat.tex[1], r->mirror.tex[0]};
+    for (int i = 0; i < 3; i++) {
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_COLOR + (GLenum)i);
+        glBindTexture(GL_TEXTURE_2D, textures[i]);
+    }
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
+    glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
+    glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
+    if (features & TL_FEATURE_BOAT_SHADOW)
+        bind_shadow(r, program);
+}
+
+void tl_renderer_drop_boat_programs(tl_renderer *r)
+{
+    for (int i = 0; i < TL_MESH_PROGRAMS; i++)
+        tl_renderer_drop_program(&r->mesh_program[i]);
+    tl_renderer_drop_program(&r->shadow_program);
+}
+
+void tl_renderer_free_boat(tl_renderer *r)
+{
+    tl_renderer_set_mesh(r, NULL, NULL);
+    tl_renderer_drop_boat_programs(r);
+    if (r->shadow_fbo)
+        glDeleteFramebuffers(1, &r->shadow_fbo);
+    if (r->shadow_tex)
+        glDeleteTextures(1, &r->shadow_tex);
+    r->shadow_fbo = r->shadow_tex = 0;
+}

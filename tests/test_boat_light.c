@@ -1,0 +1,399 @@
+/* The boat's light on the GPU (llvmpipe on CI): its materials' formulas
+ * against their CPU mirror (shaders/material.glsl, tl_mesh_shading.c); the
+ * sun's shadows, of the wheelhouse on the deck by the factor the BRDF
+ * says, and of the boat on the water beside it; the hull seen from below,
+ * dark against the surface and modelled by the water's light; and above
+ * the water, no part of it black. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "mesh/tl_mesh.h"
+#include "tl_gl_test.h"
+
+/* The built-in boat, 9 m long, at the origin with its bow north (+z). */
+static void boat_at_origin(tl_scene *s)
+{
+    tl_scene_defaults(s);
+    s->width = 320;
+    s->height = 180;
+    s->time = 3.0;
+    s->boat.enabled = true;
+    s->boat.size = 9.0;
+    s->boat.scale = 9.0;
+    s->boat.length = 9.0;
+    s->boat.beam = 9.0 * TL_BOAT_BEAM_RATIO;
+    s->boat.wake = 0.0;
+    s->boat.heading = 0.0;
+    /* Floating: its design waterline on the waves (the spring settled). */
+    tl_waves w;
+    tl_waves_init(&w, &s->ocean);
+    s->boat.position[1] = tl_waves_height(&w, 0.0, 0.0, s->time, TL_MAX_OCTAVES);
+}
+
+/* Model point m through the frame's matrices: camera-relative world w and
+ * its pixel (top row first); 0 when it is behind the camera. */
+static int project(const tl_scene *s, const tl_frame_uniforms *u, const double m[3], double w[3],
+                   int *px, int *py)
+{
+    for (int i = 0; i < 3; i++)
+        w[i] = u->boat_model[i] * m[0] + u->boat_model[4 + i] * m[1] + u->boat_model[8 + i] * m[2] +
+               u->boat_model[12 + i];
+    double clip[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 4; k++)
+            clip[i] += u->view_proj[k * 4 + i] * (k < 3 ? w[k] : 1.0);
+    if (clip[3] <= 0.0)
+        return 0;
+    *px = (int)((clip[0] / clip[3] * 0.5 + 0.5) * s->width);
+    *py = s->height - 1 - (int)((clip[1] / clip[3] * 0.5 + 0.5) * s->height);
+    return *px >= 0 && *px < s->width && *py >= 0 && *py < s->height;
+}
+
+static const float *pixel(const tl_frame *f, int x, int y)
+{
+    return f->color + ((size_t)y * f->width + x) * 4;
+}
+
+/* The GPU's BRDF, environment share and wetness against the CPU's. */
+static void test_material_probe(tl_renderer *r)
+{
+    enum { N = 64 };
+    tl_scene s;
+    boat_at_origin(&s);
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    float in[N * 4], brdf[N * 4], env[N * 4], wet[N * 4];
+    srand(7);
+    for (int i = 0; i < N; i++) {
+        in[4 * i] = (float)(1.5 * rand() / RAND_MAX);      /* view from the normal */
+        in[4 * i + 1] = (float)(1.5 * rand() / RAND_MAX);  /* light from the normal */
+        in[4 * i + 2] = (float)(6.28 * rand() / RAND_MAX); /* azimuth between */
+        float rough = (float)(0.02 + 0.98 * rand() / RAND_MAX);
+        in[4 * i + 3] = i % 3 == 0 ? -rough : rough; /* every third a metal */
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    float env_in[N * 4], wet_in[N * 4];
+    for (int i = 0; i < N; i++) {
+        env_in[4 * i] = (float)i / (N - 1);                  /* cos */
+        env_in[4 * i + 1] = (float)((i * 37) % N) / (N - 1); /* roughness */
+        wet_in[4 * i] = (float)(0.8 * i / (N - 1));          /* metres above */
+        wet_in[4 * i + 1] = (float)((i * 11) % N) / (N - 1);
+        env_in[4 * i + 2] = env_in[4 * i + 3] = wet_in[4 * i + 2] = wet_in[4 * i + 3] = 0.0f;
+    }
+    int rc = tl_renderer_probe4(r, &u, 13, in, N, u.octaves, brdf, &err) ||
+             tl_renderer_probe4(r, &u, 14, env_in, N, u.octaves, env, &err) ||
+             tl_renderer_probe4(r, &u, 15, wet_in, N, u.octaves, wet, &err);
+    if (rc) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    double worst = 0.0, worst_env = 0.0, worst_wet = 0.0;
+    const double base[3] = {0.8, 0.4, 0.1}, up[3] = {0.0, 1.0, 0.0};
+    const double f0[3] = {0.04, 0.5, 0.9};
+    for (int i = 0; i < N; i++) {
+        double tv = in[4 * i], tl = in[4 * i + 1], az = in[4 * i + 2];
+        double v[3] = {sin(tv), cos(tv), 0.0};
+        double l[3] = {sin(tl) * cos(az), cos(tl), sin(tl) * sin(az)};
+        double want[3], want_env[3];
+        tl_mesh_brdf(up, v, l, base, fabs(in[4 * i + 3]), in[4 * i + 3] < 0.0f ? 1.0 : 0.0, want);
+        tl_mesh_env_brdf(f0, env_in[4 * i + 1], env_in[4 * i], want_env);
+        for (int c = 0; c < 3; c++) {
+            /* Relative where the lobe is tall (the sun's highlight on a
+             * smooth metal), absolute where it is small. */
+            worst = fmax(worst, fabs(brdf[4 * i + c] - want[c]) / fmax(fabs(want[c]), 0.05));
+            worst_env = fmax(worst_env, fabs(env[4 * i + c] - want_env[c]));
+        }
+        worst_wet =
+            fmax(worst_wet, fabs(wet[4 * i] - tl_mesh_wetness(wet_in[4 * i], wet_in[4 * i + 1])));
+    }
+    printf("materials, GPU against CPU over %d inputs: BRDF %.2g (relative), environment %.2g, "
+           "wetness %.2g\n",
+           N, worst, worst_env, worst_wet);
+    CHECK(worst < 1e-3);
+    CHECK(worst_env < 1e-5);
+    CHECK(worst_wet < 1e-5);
+    /* Known values: a smooth surface seen head-on reflects its f0 of an
+     * even environment (Karis's fit within 1%), and the hull is wet at its
+     * waterline and dry well above it. */
+    double head_on[3];
+    tl_mesh_env_brdf(f0, 0.0, 1.0, head_on);
+    for (int c = 0; c < 3; c++)
+        CHECK_NEAR(head_on[c], f0[c], 0.01);
+    CHECK_NEAR(tl_mesh_wetness(0.0, 0.5), 1.0, 1e-12);
+    CHECK_NEAR(tl_mesh_wetness(TL_MESH_WET_HIGH + 0.01, 1.0), 0.0, 1e-12);
+}
+
+/* Sun ahead of the bow, 40 degrees up: the wheelhouse shades the deck
+ * behind it. There the shadowed frame is darker than the unshadowed one
+ * by the sun's term the CPU's BRDF gives (what is left is the sky's);
+ * out on the open aft deck the two agree. */
+static void test_deck_shadow(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.sun.elevation = 40.0 * M_PI / 180.0;
+    s.sun.azimuth = 0.0;
+    s.camera.position[0] = 5.0;
+    s.camera.position[1] = 12.0;
+    s.camera.position[2] = -8.0;
+    const double target[3] = {0.0, 0.5, -2.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_scene off = s;
+    off.boat.shadows = false;
+    tl_frame lit, unlit;
+    if (render(r, &s, &lit))
+        return;
+    if (render(r, &off, &unlit)) {
+        tl_frame_free(&lit);
+        return;
+    }
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_BOAT_SHADOW);
+    tl_frame_uniforms u_off;
+    gl_test_prepare(r, &off, &u_off);
+    CHECK(!(u_off.features & TL_FEATURE_BOAT_SHADOW));
+    /* The deck's crown, 0.05 units behind the wheelhouse's aft wall (in
+     * its shadow, which reaches 0.18 units aft), and 0.38 units further
+     * aft (in the sun). */
+    const double deck_y = 0.1 + 0.07 * 0.3 * 0.3 - 0.03 + 0.005;
+    const double shaded[3] = {0.0, deck_y, -0.21}, sunny[3] = {0.0, deck_y, -0.44};
+    double ws[3], wu[3];
+    int sx, sy, ux, uy;
+    CHECK(project(&s, &u, shaded, ws, &sx, &sy));
+    CHECK(project(&s, &u, sunny, wu, &ux, &uy));
+    /* The sun's term there: the deck's material (grey non-slip, dry,
+     * facing up) under the frame's sun, seen from the camera. */
+    double n[3] = {0.0, 1.0, 0.0}, v[3], l[3], base[3] = {0.17, 0.17, 0.15}, sun_term[3];
+    double len = sqrt(ws[0] * ws[0] + ws[1] * ws[1] + ws[2] * ws[2]);
+    for (int k = 0; k < 3; k++) {
+        v[k] = -ws[k] / len;
+        l[k] = u.sun_dir[k];
+    }
+    tl_mesh_brdf(n, v, l, base, 0.85, 0.0, sun_term);
+    double want = 0.0, on = 0.0, off_sh = 0.0;
+    for (int c = 0; c < 3; c++) {
+        want += sun_term[c] * u.sun_light[c] * u.boat_sunlit;
+        on += pixel(&lit, sx, sy)[c];
+        off_sh += pixel(&unlit, sx, sy)[c];
+    }
+    double on_sun = 0.0, off_sun = 0.0;
+    for (int c = 0; c < 3; c++) {
+        on_sun += pixel(&lit, ux, uy)[c];
+        off_sun += pixel(&unlit, ux, uy)[c];
+    }
+    printf("deck in the wheelhouse's shadow (%d, %d): %.4f, unshadowed %.4f, the sun's term "
+           "%.4f (CPU); in the sun (%d, %d): %.4f against %.4f\n",
+           sx, sy, on, off_sh, want, ux, uy, on_sun, off_sun);
+    CHECK(on < 0.6 * off_sh);
+    CHECK(fabs((off_sh - on) - want) < 0.1 * want);
+    CHECK(fabs(on_sun - off_sun) < 0.02 * off_sun);
+    tl_frame_free(&lit);
+    tl_frame_free(&unlit);
+}
+
+/* Sun from the east, 30 degrees up: the boat's shadow falls on the water
+ * west of it. The water there is darker with shadows on; east of the boat
+ * it is the same. */
+static void test_water_shadow(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.sun.elevation = 30.0 * M_PI / 180.0;
+    s.sun.azimuth = 90.0 * M_PI / 180.0;
+    s.camera.position[0] = -2.0;
+    s.camera.position[1] = 16.0;
+    s.camera.position[2] = -14.0;
+    const double target[3] = {-1.5, 0.0, 0.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_scene off = s;
+    off.boat.shadows = false;
+    tl_frame lit, unlit;
+    if (render(r, &s, &lit))
+        return;
+    if (render(r, &off, &unlit)) {
+        tl_frame_free(&lit);
+        return;
+    }
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    /* Where the wheelhouse's middle casts its shadow on the water plane,
+     * and as far on the sunny side. */
+    const double cabin[3] = {0.0, 0.16, -0.05};
+    double w[3];
+    int px, py;
+    project(&s, &u, cabin, w, &px, &py);
+    double along = (w[1] - u.boat_water) / u.sun_dir[1];
+    double shadow_model_x = -along * u.sun_dir[0] / 9.0; /* heading 0: world x is model x */
+    const double in_shadow[3] = {shadow_model_x, 0.0, -0.05},
+                 sunny[3] = {-shadow_model_x, 0.0, -0.05};
+    int ax, ay, bx, by;
+    CHECK(project(&s, &u, in_shadow, w, &ax, &ay));
+    CHECK(project(&s, &u, sunny, w, &bx, &by));
+    double dark = 0.0, dark_off = 0.0, same_diff = 0.0, same = 0.0;
+    int count = 0;
+    for (int dy = -2; dy <= 2; dy++)
+        for (int dx = -2; dx <= 2; dx++) {
+            dark += luminance(pixel(&lit, ax + dx, ay + dy));
+            dark_off += luminance(pixel(&unlit, ax + dx, ay + dy));
+            same += luminance(pixel(&unlit, bx + dx, by + dy));
+            same_diff += fabs(luminance(pixel(&lit, bx + dx, by + dy)) -
+                              luminance(pixel(&unlit, bx + dx, by + dy)));
+            count++;
+        }
+    printf("water in the boat's shadow (%d, %d), %.2f m west: %.4f against %.4f unshadowed; "
+           "east of it (%d, %d): differs by %.2g of %.4f\n",
+           ax, ay, shadow_model_x * 9.0, dark / count, dark_off / count, bx, by, same_diff / count,
+           same / count);
+    CHECK(dark < 0.85 * dark_off);
+    CHECK(same_diff < 1e-3 * same);
+    tl_frame_free(&lit);
+    tl_frame_free(&unlit);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The hull's pixels: where the frame with the boat is nearer than the one
+ * without. Their luminances sorted into *out (freed by the caller). */
+static int hull_pixels(const tl_frame *with, const tl_frame *without, double **out, double *behind)
+{
+    size_t n = (size_t)with->width * with->height;
+    double *l = malloc(n * sizeof *l), *b = malloc(n * sizeof *b);
+    int count = 0;
+    for (size_t i = 0; l && b && i < n; i++)
+        if (with->depth[i] < without->depth[i] - 0.2) {
+            l[count] = luminance(with->color + 4 * i);
+            b[count++] = luminance(without->color + 4 * i);
+        }
+    if (l && b && count > 0) {
+        qsort(l, (size_t)count, sizeof *l, by_value);
+        qsort(b, (size_t)count, sizeof *b, by_value);
+        *behind = b[count / 2];
+    }
+    free(b);
+    *out = l;
+    return count;
+}
+
+/* From below in daylight (the dive's view): the hull is darker than the
+ * surface behind it, and its form shows: the spread of its luminance (10th
+ * to 90th percentile over the median) is at least 0.5. */
+static void test_hull_from_below(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.boat.size = s.boat.scale = s.boat.length = 8.0;
+    s.sun.elevation = 40.0 * M_PI / 180.0;
+    s.sun.azimuth = 200.0 * M_PI / 180.0;
+    s.camera.position[0] = 2.5;
+    s.camera.position[1] = -4.5;
+    s.camera.position[2] = 0.0;
+    s.camera.yaw = -90.0 * M_PI / 180.0;
+    s.camera.pitch = 60.0 * M_PI / 180.0;
+    s.camera.vfov = 75.0 * M_PI / 180.0;
+    tl_scene none = s;
+    none.boat.enabled = false;
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return;
+    if (render(r, &none, &without)) {
+        tl_frame_free(&with);
+        return;
+    }
+    double *l = NULL, behind = 0.0;
+    int count = hull_pixels(&with, &without, &l, &behind);
+    CHECK(count > 500);
+    if (count > 500) {
+        double p10 = l[count / 10], median = l[count / 2], p90 = l[count * 9 / 10];
+        double spread = (p90 - p10) / median;
+        printf("hull from below, %d pixels: luminance 10th %.4f, median %.4f, 90th %.4f: spread "
+               "%.2f; the surface behind it %.4f\n",
+               count, p10, median, p90, spread, behind);
+        CHECK(spread >= 0.5);
+        CHECK(median < 0.7 * behind);
+    }
+    free(l);
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+}
+
+/* Above the water in daylight no part of the hull is black: its darkest
+ * twentieth (glass, shadowed recesses) is still over 3% of the frame's
+ * mean, and its median well above that. */
+static void test_hull_above(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.sun.elevation = 28.0 * M_PI / 180.0;
+    s.sun.azimuth = 130.0 * M_PI / 180.0;
+    s.camera.position[0] = 7.0;
+    s.camera.position[1] = 2.2;
+    s.camera.position[2] = -8.0;
+    const double target[3] = {0.0, 1.0, 0.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_scene none = s;
+    none.boat.enabled = false;
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return;
+    if (render(r, &none, &without)) {
+        tl_frame_free(&with);
+        return;
+    }
+    double mean = 0.0;
+    for (size_t i = 0; i < (size_t)with.width * with.height; i++)
+        mean += luminance(with.color + 4 * i);
+    mean /= (double)with.width * with.height;
+    double *l = NULL, behind = 0.0;
+    int count = hull_pixels(&with, &without, &l, &behind);
+    CHECK(count > 500);
+    if (count > 500) {
+        printf("hull above the water, %d pixels: 5th percentile %.4f, median %.4f, frame mean "
+               "%.4f\n",
+               count, l[count / 20], l[count / 2], mean);
+        CHECK(l[count / 20] > 0.03 * mean);
+        CHECK(l[count / 2] > 0.3 * mean);
+    }
+    free(l);
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+}
+
+int main(void)
+{
+    tl_gl_context *ctx = NULL;
+    tl_renderer *r = gl_test_open(&ctx);
+    if (!r)
+        return 1;
+    tl_error err;
+    tl_error_clear(&err);
+    tl_mesh boat;
+    CHECK(tl_mesh_default_boat(&boat, &err) == 0);
+    test_material_probe(r);
+    test_deck_shadow(r, &boat);
+    test_water_shadow(r, &boat);
+    test_hull_from_below(r, &boat);
+    test_hull_above(r, &boat);
+    tl_mesh_free(&boat);
+    tl_renderer_destroy(r);
+    tl_gl_context_destroy(ctx);
+    TEST_END();
+}
