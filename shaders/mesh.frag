@@ -39,7 +39,7 @@ void main()
     float streak = 0.6 * material_streak(v_wet.y * 6.0) + 0.4 * material_streak(v_wet.y * 23.0);
     float wet = material_wetness(v_wet.x, streak);
     float porous = smoothstep(0.3, 0.8, roughness);
-    base *= 1.0 - 0.5 * wet * porous;
+    base *= 1.0 - wet * (TL_MESH_WET_DARKEN + (0.5 - TL_MESH_WET_DARKEN) * porous);
     roughness = mix(roughness, min(roughness, 0.1), wet);
     vec3 f0 = material_f0(base, metallic);
     float nv = max(dot(n, v), 1.0e-4);

@@ -128,7 +128,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_BOAT_SHADOW_SCATTER %.17g\n"
         "#define TL_MESH_MIN_ALPHA %.17g\n"
         "#define TL_MESH_WET_LOW %.17g\n"
-        "#define TL_MESH_WET_HIGH %.17g\n",
+        "#define TL_MESH_WET_HIGH %.17g\n"
+        "#define TL_MESH_WET_DARKEN %.17g\n",
         TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
         TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
         TL_GIANT_TROUGH_LIFT, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP,
@@ -139,7 +140,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS, TL_WAKE_GROUP,
         TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
         TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
-        TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH);
+        TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -579,7 +580,7 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
         features &= ~(unsigned)(TL_FEATURE_BOAT | TL_FEATURE_BOAT_SHADOW);
     if (features & TL_FEATURE_BOAT) {
         tl_timers_start(&r->timers, TL_TIMED_BOAT);
-        int rc = tl_renderer_draw_boat(r, u, err);
+        int rc = tl_renderer_draw_boat(r, u, only > 0, err);
         tl_timers_stop(&r->timers);
         if (rc)
             return rc;

@@ -152,7 +152,7 @@ static void bind_shadow(const tl_renderer *r, GLuint program)
 static const unsigned MESH_FEATURES[TL_MESH_PROGRAMS] = {
     TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL, TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW};
 
-int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
+int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err)
 {
     const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
     int rc = tl_renderer_target_ensure_depth(&r->boat, u->width, u->height, 2, formats, 1, err);
@@ -171,7 +171,8 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *
             features |= MESH_FEATURES[i];
             variant |= 1 << i;
         }
-    if (features & TL_FEATURE_BOAT_SHADOW) {
+    /* The sun's view does not move with a sample's offset: one map a frame. */
+    if ((features & TL_FEATURE_BOAT_SHADOW) && !(reuse && r->shadow_fbo)) {
         rc = draw_shadow(r, u, err);
         if (rc) {
             glDisable(GL_DEPTH_TEST);

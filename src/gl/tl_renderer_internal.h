@@ -149,7 +149,8 @@ struct tl_renderer {
  * the lit hull, its mirror image); the textures they leave bound for an
  * ocean program; its programs dropped (built again on next use); all of
  * it freed. */
-int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err);
+/* `reuse`: a later sample of the same frame, whose shadow map still holds. */
+int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err);
 void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned features);
 void tl_renderer_drop_boat_programs(tl_renderer *r);
 void tl_renderer_free_boat(tl_renderer *r);

@@ -73,6 +73,8 @@ void tl_mesh_free(tl_mesh *m);
  * and dry from TL_MESH_WET_HIGH, where spray and the waves reach. */
 #define TL_MESH_WET_LOW  0.1
 #define TL_MESH_WET_HIGH 0.6
+/* How much darker wet gloss paint is (a rough, porous surface: half). */
+#define TL_MESH_WET_DARKEN 0.15
 /* BRDF x cos(l) of a surface with normal n (facing v) for light from l
  * toward v, unit vectors: Lambert under a GGX lobe. */
 void tl_mesh_brdf(const double n[3], const double v[3], const double l[3], const double base[3],

@@ -64,11 +64,11 @@ double tl_mesh_wetness(double height, double streak)
 
 void tl_mesh_wet_surface(double wet, double base[3], double *roughness)
 {
-    /* Water fills a rough surface's pores and darkens it (light is
-     * trapped under the film); gloss paint hardly changes colour. The film
-     * is smooth. */
+    /* Water fills a rough surface's pores and darkens it by up to half
+     * (light is trapped under the film); gloss paint darkens less
+     * (TL_MESH_WET_DARKEN). The film is smooth. */
     double porous = smoothstep(0.3, 0.8, *roughness);
     for (int k = 0; k < 3; k++)
-        base[k] *= 1.0 - 0.5 * wet * porous;
+        base[k] *= 1.0 - wet * (TL_MESH_WET_DARKEN + (0.5 - TL_MESH_WET_DARKEN) * porous);
     *roughness += (fmin(*roughness, 0.1) - *roughness) * wet;
 }
