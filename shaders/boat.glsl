@@ -8,6 +8,10 @@
 uniform sampler2D u_boat_color;      // lit hull, alpha = covered
 uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
+// The hull's outline at its waterline (tl_mesh_waterline): half widths at
+// evenly spaced model z from u_boat_waterline_z.x (aft) to .y (forward).
+uniform float u_boat_waterline[TL_MESH_WATERLINE_STATIONS];
+uniform vec2 u_boat_waterline_z;
 
 // Whether the water point (camera-relative x z, absolute y) is inside the hull.
 bool boat_contains(vec3 p)
@@ -31,6 +35,58 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
         return texelFetch(u_boat_color, px, 0).rgb;
     }
     return water;
+}
+
+// Metres from the water point p (camera-relative x z, absolute y) out to
+// the hull's waterline outline (0 inside it); *along: where along the hull
+// it lies, 0 at the stern to 1 at the stem; *model: p's model x z, metres.
+float boat_waterline_gap(vec3 p, out float along, out vec2 model)
+{
+    vec3 m = (u_boat_to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
+    float per_metre = length(u_boat_to_model[0].xyz); // model units per metre
+    float z0 = u_boat_waterline_z.x, z1 = u_boat_waterline_z.y;
+    along = clamp((m.z - z0) / max(z1 - z0, 1.0e-6), 0.0, 1.0);
+    float f = along * float(TL_MESH_WATERLINE_STATIONS - 1);
+    int i = min(int(f), TL_MESH_WATERLINE_STATIONS - 2);
+    float half_width = mix(u_boat_waterline[i], u_boat_waterline[i + 1], f - float(i));
+    vec2 outside = max(vec2(abs(m.x) - half_width, abs(m.z - clamp(m.z, z0, z1))), 0.0);
+    model = m.xz / per_metre;
+    return length(outside) / per_metre;
+}
+
+// Foam where the hull meets the water: a thin line all round it (the
+// water slapping the hull), and the bow wave's white water, from the stem
+// back along both sides, wider the faster the boat goes (u_boat_speed)
+// and where the bow meets rising water (`slope`: the surface's height
+// gradient there). Broken up like the wake's, in the hull's frame (it
+// travels with the boat), by the waves' `value`; `footprint`: the water a
+// pixel covers (m). Returns the cover; *thickness as foam_shade takes it.
+float boat_contact_foam(vec3 p, vec2 slope, float value, float footprint, out float thickness)
+{
+    thickness = 0.0;
+    float along;
+    vec2 model;
+    float gap = boat_waterline_gap(p, along, model);
+    float speed = u_boat_speed;
+    float reach = TL_BOAT_CONTACT_LINE + TL_BOAT_BOW_WAVE * speed; // the bow wave's width, m
+    if (gap > 4.0 * reach + 0.5)
+        return 0.0;
+    // The bow's heading: the model's +z in the world (the inverse's row).
+    vec2 heading = normalize(vec2(u_boat_to_model[0].z, u_boat_to_model[2].z));
+    float rising = clamp(dot(slope, heading), 0.0, 1.0);
+    float line = exp(-(gap * gap) / (TL_BOAT_CONTACT_LINE * TL_BOAT_CONTACT_LINE));
+    float bow = smoothstep(0.3, 0.95, along) * smoothstep(0.2, 1.5, speed + 8.0 * rising);
+    float wave = bow * exp(-gap / (reach * (1.0 + 3.0 * rising)));
+    float cover = max(0.9 * line, wave);
+    if (cover < 0.02)
+        return 0.0;
+    float lace = 0.55 * foam_lace(model * vec2(3.0, 1.5)) + 0.25 * value +
+                 0.9 * foam_detail(model * 2.0, footprint);
+    // A lower threshold than the wake's: churned against the hull, the
+    // water is white wherever the cover is full, seen near or far.
+    float threshold = 0.7 - 0.55 * cover;
+    thickness = clamp(smoothstep(threshold, threshold + 0.25, lace), 0.0, 1.0);
+    return smoothstep(threshold, threshold + 0.06, lace);
 }
 
 #ifdef TL_BOAT_MIRROR

@@ -184,5 +184,11 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     color += foam_aerated(ray, n, aerated, u_scatter_color, sunlit);
     color = foam_shade(color, n, wake, thickness, sunlit);
 #endif
+#ifdef TL_FEATURE_BOAT
+    float contact_thickness;
+    float contact =
+        boat_contact_foam(hit, -n.xz / max(n.y, 0.1), value, footprint, contact_thickness);
+    color = foam_shade(color, n, contact, contact_thickness, sunlit);
+#endif
     return color;
 }

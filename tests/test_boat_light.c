@@ -2,8 +2,8 @@
  * against their CPU mirror (shaders/material.glsl, tl_mesh_shading.c); the
  * sun's shadows, of the wheelhouse on the deck by the factor the BRDF
  * says, and of the boat on the water beside it; the hull seen from below,
- * dark against the surface and modelled by the water's light; and above
- * the water, no part of it black. */
+ * dark against the surface and modelled by the water's light; above the
+ * water, no part of it black; and the bow wave of a boat under way. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -377,6 +377,68 @@ static void test_hull_above(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&without);
 }
 
+/* The boat under way (5 m/s over its last stretch) throws a bow wave: the
+ * water round its bow is whiter than with the same boat drifting, and only
+ * there: every pixel that changed lies within 3 m of the hull. */
+static void test_bow_wave(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.sun.elevation = 35.0 * M_PI / 180.0;
+    s.sun.azimuth = 200.0 * M_PI / 180.0;
+    s.camera.position[0] = 3.0;
+    s.camera.position[1] = 14.0;
+    s.camera.position[2] = -4.0;
+    const double target[3] = {0.0, 0.0, 2.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    s.boat.wake_step = 0.5;
+    tl_scene drifting = s;
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        s.boat.wake_path[k][1] = -2.5 * k; /* 5 m/s */
+        drifting.boat.wake_path[k][1] = 0.0;
+    }
+    tl_frame under_way, still;
+    if (render(r, &s, &under_way))
+        return;
+    if (render(r, &drifting, &still)) {
+        tl_frame_free(&under_way);
+        return;
+    }
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK_NEAR(u.boat_speed, 5.0, 1e-3);
+    /* The hull's bounds 3 m out, on the water plane, on screen. */
+    int x0 = s.width, y0 = s.height, x1 = -1, y1 = -1;
+    for (int i = 0; i < 4; i++) {
+        double c[3] = {(i & 1 ? 0.17 : -0.17) + (i & 1 ? 1.0 : -1.0) * 3.0 / 9.0, 0.0,
+                       (i & 2 ? 0.5 : -0.5) + (i & 2 ? 1.0 : -1.0) * 3.0 / 9.0},
+               w[3];
+        int px = 0, py = 0;
+        project(&s, &u, c, w, &px, &py);
+        x0 = px < x0 ? px : x0, x1 = px > x1 ? px : x1;
+        y0 = py < y0 ? py : y0, y1 = py > y1 ? py : y1;
+    }
+    long whiter = 0, outside = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            double d = luminance(pixel(&under_way, x, y)) - luminance(pixel(&still, x, y));
+            if (fabs(d) < 0.01)
+                continue;
+            whiter += d > 0.0;
+            outside += x < x0 || x > x1 || y < y0 || y > y1;
+        }
+    printf("bow wave at 5 m/s: %ld pixels whiter than drifting, %ld changed outside the hull's "
+           "bounds 3 m out (%d..%d, %d..%d)\n",
+           whiter, outside, x0, x1, y0, y1);
+    CHECK(whiter > 50);
+    CHECK(outside == 0);
+    tl_frame_free(&under_way);
+    tl_frame_free(&still);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -392,6 +454,7 @@ int main(void)
     test_water_shadow(r, &boat);
     test_hull_from_below(r, &boat);
     test_hull_above(r, &boat);
+    test_bow_wave(r, &boat);
     tl_mesh_free(&boat);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);

@@ -126,6 +126,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_MIRROR_SHIFT %g\n"
         "#define TL_BOAT_SHADOW_SIZE %d\n"
         "#define TL_BOAT_SHADOW_SCATTER %.17g\n"
+        "#define TL_BOAT_CONTACT_LINE %.17g\n"
+        "#define TL_BOAT_BOW_WAVE %.17g\n"
+        "#define TL_MESH_WATERLINE_STATIONS %d\n"
         "#define TL_MESH_MIN_ALPHA %.17g\n"
         "#define TL_MESH_WET_LOW %.17g\n"
         "#define TL_MESH_WET_HIGH %.17g\n"
@@ -140,7 +143,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS, TL_WAKE_GROUP,
         TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
         TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
-        TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN);
+        TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_MESH_MIN_ALPHA,
+        TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

@@ -55,6 +55,7 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
     }
     glBindVertexArray(r->vao);
     g->indices = (GLsizei)mesh->index_count;
+    tl_mesh_waterline(mesh, g->waterline, g->waterline_z);
     return tl_renderer_check("uploading the boat mesh", err);
 }
 
@@ -214,6 +215,9 @@ void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned featur
     glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
     glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
     glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
+    glUniform1fv(tl_renderer_loc(program, "u_boat_waterline"), TL_MESH_WATERLINE_STATIONS,
+                 r->mesh.waterline);
+    glUniform2fv(tl_renderer_loc(program, "u_boat_waterline_z"), 1, r->mesh.waterline_z);
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, program);
 }

@@ -10,6 +10,7 @@
 #include <stddef.h>
 
 #include "gl/tl_renderer.h"
+#include "mesh/tl_mesh.h"
 #include "sky/tl_sky.h"
 
 #define MAX_PROGRAMS 24
@@ -92,6 +93,9 @@ typedef struct readback_slot {
 typedef struct gpu_mesh {
     GLuint vao, vbo, ibo;
     GLsizei indices;
+    /* Its outline at the waterline (tl_mesh_waterline), for the water's
+     * contact foam. */
+    float waterline[TL_MESH_WATERLINE_STATIONS], waterline_z[2];
 } gpu_mesh;
 
 struct tl_renderer {

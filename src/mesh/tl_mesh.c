@@ -100,6 +100,61 @@ int tl_mesh_builder_finish(tl_mesh_builder *b, tl_mesh *out, tl_error *err)
     return TL_OK;
 }
 
+/* The points where triangle t's edges cross y = 0 (x z pairs), up to 2. */
+static int waterline_crossings(const tl_mesh *m, size_t t, double out[2][2])
+{
+    int n = 0;
+    for (int e = 0; e < 3 && n < 2; e++) {
+        const float *a = m->positions + 3 * m->indices[t + e];
+        const float *b = m->positions + 3 * m->indices[t + (e + 1) % 3];
+        if ((a[1] < 0.0f) == (b[1] < 0.0f))
+            continue;
+        double f = (double)a[1] / ((double)a[1] - b[1]);
+        out[n][0] = a[0] + (b[0] - a[0]) * f;
+        out[n][1] = a[2] + (b[2] - a[2]) * f;
+        n++;
+    }
+    return n;
+}
+
+void tl_mesh_waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS], float z[2])
+{
+    memset(half, 0, TL_MESH_WATERLINE_STATIONS * sizeof *half);
+    z[0] = z[1] = 0.0f;
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t t = 0; t + 2 < m->index_count; t += 3) {
+        double c[2][2];
+        int n = waterline_crossings(m, t, c);
+        for (int k = 0; k < n; k++) {
+            lo = fmin(lo, c[k][1]);
+            hi = fmax(hi, c[k][1]);
+        }
+    }
+    if (!(hi > lo))
+        return;
+    /* Each crossing segment widens the stations it spans. */
+    const int n_st = TL_MESH_WATERLINE_STATIONS;
+    double step = (hi - lo) / (n_st - 1);
+    for (size_t t = 0; t + 2 < m->index_count; t += 3) {
+        double c[2][2];
+        int n = waterline_crossings(m, t, c);
+        if (n < 2)
+            continue;
+        for (int i = 0; i < n_st; i++) {
+            double zs = lo + step * i;
+            double z0 = fmin(c[0][1], c[1][1]), z1 = fmax(c[0][1], c[1][1]);
+            if (zs < z0 - 0.5 * step || zs > z1 + 0.5 * step)
+                continue;
+            double f = z1 > z0 ? fmin(fmax((zs - c[0][1]) / (c[1][1] - c[0][1]), 0.0), 1.0) : 0.5;
+            double x = fabs(c[0][0] + (c[1][0] - c[0][0]) * f);
+            if (x > half[i])
+                half[i] = (float)x;
+        }
+    }
+    z[0] = (float)lo;
+    z[1] = (float)hi;
+}
+
 void tl_mesh_free(tl_mesh *m)
 {
     if (!m)

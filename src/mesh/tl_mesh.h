@@ -64,6 +64,14 @@ int tl_mesh_bake_occlusion(tl_mesh *m, double reach, tl_error *err);
 
 void tl_mesh_free(tl_mesh *m);
 
+/* The hull's outline where it meets the water (the design waterline,
+ * y = 0): its half width at TL_MESH_WATERLINE_STATIONS evenly spaced z
+ * from z[0] (aft) to z[1] (forward), model units, from the triangles that
+ * cross the plane. The water's contact foam follows it. 0 and z = 0 0
+ * for a mesh that does not reach the plane. */
+#define TL_MESH_WATERLINE_STATIONS 32
+void tl_mesh_waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS], float z[2]);
+
 /* The meshes' shading in double: the CPU mirror of shaders/material.glsl
  * (test_mesh_shading probes the GPU against it). */
 /* GGX's least alpha (roughness squared): a perfect mirror would show the

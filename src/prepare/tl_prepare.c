@@ -374,6 +374,11 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
         (float)tl_giant_sunlit(giant, cw[0] + s->camera.position[0], cw[2] + s->camera.position[2],
                                cw[1] + s->camera.position[1], sun);
     u->boat_lights = (float)b->lights;
+    /* Over the last stretch of its path the wake keeps. */
+    if (b->wake_step > 0.0)
+        u->boat_speed = (float)(hypot(b->wake_path[0][0] - b->wake_path[1][0],
+                                      b->wake_path[0][1] - b->wake_path[1][1]) /
+                                b->wake_step);
     if (b->shadows && sun[1] > 0.0)
         prepare_boat_shadow(world, radius, sun, u);
 }

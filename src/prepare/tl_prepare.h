@@ -186,6 +186,7 @@ typedef struct tl_frame_uniforms {
     float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
     float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
     float boat_lights;       /* boat.lights: the lamps' share of their emission */
+    float boat_speed;        /* its speed over the ground, m/s (the bow wave's) */
     /* TL_FEATURE_BOAT_SHADOW: the sun's orthographic view of the boat,
      * camera-relative world -> shadow map s, t and depth in [0, 1] (depth
      * grows away from the sun), and its texel's width in metres. */
@@ -262,7 +263,12 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
  * boat's shadow takes away: that light entered the water over metres
  * around the point, most of a boat's shadow wide. */
 #define TL_BOAT_SHADOW_SCATTER 0.5
-#define TL_BOAT_FAR            1.0e5
+/* The water's foam at the hull (shaders/boat.glsl): a line this wide (m)
+ * all round the waterline, and the bow wave's white water reaching out
+ * TL_BOAT_CONTACT_LINE + TL_BOAT_BOW_WAVE x the speed (m/s) from the bow. */
+#define TL_BOAT_CONTACT_LINE 0.35
+#define TL_BOAT_BOW_WAVE     0.2
+#define TL_BOAT_FAR          1.0e5
 
 /* Fills `u` from `scene` (validated by the caller). `waves` must have been
  * built from scene->ocean; it is passed in so callers reuse it per shot. */

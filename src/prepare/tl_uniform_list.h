@@ -123,6 +123,7 @@
     X(MAT4, boat_to_model, 0, TL_FEATURE_BOAT, "camera-relative world -> model") \
     X(VEC4, boat_hull, 0, TL_FEATURE_BOAT, "waterplane ellipse: centre x z, semi-axes x z (model units)") \
     X(FLOAT, boat_top, 0, TL_FEATURE_BOAT, "model y of the hull's top") \
+    X(FLOAT, boat_speed, 0, TL_FEATURE_BOAT, "the boat's speed over the ground, m/s") \
     X(MAT4, boat_shadow, 0, TL_FEATURE_BOAT_SHADOW, "camera-relative world -> the shadow map's s t and depth, 0 to 1") \
     X(FLOAT, boat_shadow_texel, 0, TL_FEATURE_BOAT_SHADOW, "a shadow map texel's width, metres")
 /* clang-format on */
