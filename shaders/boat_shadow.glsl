@@ -12,7 +12,8 @@ uniform sampler2DShadow u_boat_shadow_map;
 float boat_shadow(vec3 p)
 {
     vec3 s = (u_boat_shadow * vec4(p, 1.0)).xyz;
-    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z <= 0.0)
+    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(u_boat_shadow_extent))) ||
+        s.z <= 0.0)
         return 1.0;
     float depth = min(s.z, 1.0);
     float texel = 1.0 / float(TL_BOAT_SHADOW_SIZE);

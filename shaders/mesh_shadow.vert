@@ -9,5 +9,7 @@ uniform mat4 u_boat_model;
 void main()
 {
     vec3 s = (u_boat_shadow * (u_boat_model * vec4(a_position, 1.0))).xyz;
+    // The map's corner in use fills the viewport.
+    s.xy /= u_boat_shadow_extent;
     gl_Position = vec4(2.0 * s - 1.0, 1.0);
 }

@@ -122,11 +122,21 @@ static int draw_shadow(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err
         if (!r->shadow_program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
     }
+    /* Only the corner the frame uses: clearing and drawing all of it for
+     * a boat a few pixels across cost a small frame four times over. */
+    const int size = u->boat_shadow_size;
     glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
-    glViewport(0, 0, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SIZE);
-    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glViewport(0, 0, size, size);
+    /* Cleared a texel past it: the lookup's filtered taps at its edge read
+     * there, not what a larger map left. */
+    const int cleared = size + 2 < TL_BOAT_SHADOW_SIZE ? size + 2 : TL_BOAT_SHADOW_SIZE;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, cleared, cleared);
+    glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
     glUseProgram(r->shadow_program);
+    glUniform1f(tl_renderer_loc(r->shadow_program, "u_boat_shadow_extent"), u->boat_shadow_extent);
     glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_model"), 1, GL_FALSE,
                        u->boat_model);
     glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_shadow"), 1, GL_FALSE,

@@ -14,10 +14,10 @@
 /* Rays over the whole mesh, shared out among its vertices within these
  * bounds: a small model gets smooth occlusion, a large one a bake that
  * stays within seconds. */
-#define RAY_BUDGET 4000000.0
+#define RAY_BUDGET 1000000.0
 #define RAYS_MOST  32
-#define RAYS_LEAST 8
-#define GRID_MOST  64 /* cells along an axis */
+#define RAYS_LEAST 4
+#define GRID_MOST  128 /* cells along an axis */
 
 typedef struct grid {
     double lo[3];

@@ -265,9 +265,19 @@ static int sphere_in_view(const tl_scene *s, const double c[3], double r)
  * sun's beam and depth along it, each 0 to 1 over the sphere. Every point
  * in that beam projects into the map, the water under the boat's shadow
  * too; past the sphere, away from the sun, depth is clamped by the lookup. */
-static void prepare_boat_shadow(const double c[3], double r, const double sun[3],
+static void prepare_boat_shadow(const tl_scene *s, const double c[3], double r, const double sun[3],
                                 tl_frame_uniforms *u)
 {
+    /* Texels: twice the pixels the boat spans on screen, a power of two
+     * from TL_BOAT_SHADOW_LEAST to TL_BOAT_SHADOW_SIZE (a boat far off, or
+     * a thumbnail, does not raster a full map). The map's part in use is
+     * the corner of that many texels: its share `extent` of the texture. */
+    double dist = fmax(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) - r, r);
+    double across = 2.0 * r / (2.0 * dist * tan(0.5 * s->camera.vfov)) * s->height;
+    int size = TL_BOAT_SHADOW_LEAST;
+    while (size < TL_BOAT_SHADOW_SIZE && size < 2.0 * across)
+        size *= 2;
+    double extent = (double)size / TL_BOAT_SHADOW_SIZE;
     double a[3] = {0.0, 1.0, 0.0};
     if (fabs(sun[1]) > 0.99)
         a[0] = 1.0, a[1] = 0.0;
@@ -284,16 +294,18 @@ static void prepare_boat_shadow(const double c[3], double r, const double sun[3]
     const double sign[3] = {1.0, 1.0, -1.0};
     memset(u->boat_shadow, 0, sizeof u->boat_shadow);
     for (int i = 0; i < 3; i++) {
-        double offset = 0.5;
+        double scale = i < 2 ? extent : 1.0, offset = 0.5 * scale;
         for (int k = 0; k < 3; k++) {
-            double m = sign[i] * rows[i][k] / (2.0 * r);
+            double m = scale * sign[i] * rows[i][k] / (2.0 * r);
             u->boat_shadow[4 * k + i] = (float)m;
             offset -= m * c[k];
         }
         u->boat_shadow[12 + i] = (float)offset;
     }
     u->boat_shadow[15] = 1.0f;
-    u->boat_shadow_texel = (float)(2.0 * r / TL_BOAT_SHADOW_SIZE);
+    u->boat_shadow_texel = (float)(2.0 * r / size);
+    u->boat_shadow_extent = (float)extent;
+    u->boat_shadow_size = size;
     u->features |= TL_FEATURE_BOAT_SHADOW;
 }
 
@@ -380,7 +392,7 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
                                       b->wake_path[0][1] - b->wake_path[1][1]) /
                                 b->wake_step);
     if (b->shadows && sun[1] > 0.0)
-        prepare_boat_shadow(world, radius, sun, u);
+        prepare_boat_shadow(s, world, radius, sun, u);
 }
 
 /* How far from its path, `behind` metres back from the boat, the wake's

@@ -192,6 +192,8 @@ typedef struct tl_frame_uniforms {
      * grows away from the sun), and its texel's width in metres. */
     float boat_shadow[16];
     float boat_shadow_texel;
+    float boat_shadow_extent; /* the share of the map's texture in use, s and t */
+    int boat_shadow_size;     /* texels of it in use a side */
 
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */
@@ -257,8 +259,10 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
 
 /* Near and far planes of the boat's rasterised pass, metres. */
 #define TL_BOAT_NEAR 0.05
-/* The boat's shadow map: texels a side (a 10 m boat's at half a centimetre). */
-#define TL_BOAT_SHADOW_SIZE 2048
+/* The boat's shadow map: texels a side at most (a 10 m boat's at half a
+ * centimetre) and at least; a frame uses twice the boat's size on screen. */
+#define TL_BOAT_SHADOW_SIZE  2048
+#define TL_BOAT_SHADOW_LEAST 128
 /* The share of the sun's part of the light the water scatters up that a
  * boat's shadow takes away: that light entered the water over metres
  * around the point, most of a boat's shadow wide. */

@@ -125,7 +125,8 @@
     X(FLOAT, boat_top, 0, TL_FEATURE_BOAT, "model y of the hull's top") \
     X(FLOAT, boat_speed, 0, TL_FEATURE_BOAT, "the boat's speed over the ground, m/s") \
     X(MAT4, boat_shadow, 0, TL_FEATURE_BOAT_SHADOW, "camera-relative world -> the shadow map's s t and depth, 0 to 1") \
-    X(FLOAT, boat_shadow_texel, 0, TL_FEATURE_BOAT_SHADOW, "a shadow map texel's width, metres")
+    X(FLOAT, boat_shadow_texel, 0, TL_FEATURE_BOAT_SHADOW, "a shadow map texel's width, metres") \
+    X(FLOAT, boat_shadow_extent, 0, TL_FEATURE_BOAT_SHADOW, "the share of the map's texture in use, s and t")
 /* clang-format on */
 
 /* The kinds, for code that switches on them (TL_UNIFORM_##kind). */
