@@ -33,6 +33,9 @@
 //           f0 = 0.04 0.5 0.9                            (tl_mesh_env_brdf)
 //   mode 15: how wet a hull is x metres above its waterline with the
 //           streak y                                     (tl_mesh_wetness)
+//   mode 16: the Kelvin wake's slope at x metres behind the boat, y across,
+//           speed z m/s, footprint w m, the frame's hull length
+//           (tl_kelvin_slope)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -82,6 +85,10 @@ void main()
         result.x = underwater_lens_gap(ray);
     }
 #endif
+#ifdef TL_FEATURE_WAKE
+    else if (u_probe_mode == 16)
+        result.xy = wake_kelvin_slope(input4.x, input4.y, input4.z, u_wake_params.w, input4.w);
+#endif
     else if (u_probe_mode == 13) {
         vec3 v = vec3(sin(input4.x), cos(input4.x), 0.0);
         vec3 l = vec3(sin(input4.y) * cos(input4.z), cos(input4.y), sin(input4.y) * sin(input4.z));
@@ -130,7 +137,8 @@ void main()
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 9) {
         float thickness, aerated;
-        result.x = wake_foam(p, 0.5, 0.0, thickness, aerated);
+        vec2 waves;
+        result.x = wake_foam(p, 0.5, 0.0, thickness, aerated, waves);
         result.yz = vec2(thickness, aerated);
     }
 #endif

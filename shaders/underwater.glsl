@@ -104,7 +104,8 @@ vec3 trace_underwater(vec3 ray, out float dist)
 #endif
 #ifdef TL_FEATURE_WAKE
     float wake_thickness, wake_aerated;
-    float wake = wake_foam(hit.xz, value, footprint, wake_thickness, wake_aerated);
+    vec2 wake_waves; // the Kelvin waves' slope: not drawn from below
+    float wake = wake_foam(hit.xz, value, footprint, wake_thickness, wake_aerated, wake_waves);
 #ifdef TL_FEATURE_GIANT_WAVE
     float swept = wake_swept(giant);
     wake *= swept;

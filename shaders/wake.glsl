@@ -5,15 +5,59 @@
 // both fading with age. u_wake and the other u_wake_* uniforms are
 // frame_uniforms.glsl's (src/prepare/tl_uniform_list.h).
 
+// The Kelvin wake's waves (src/waves/tl_kelvin.c, tl_kelvin_slope, holds
+// the same in double): their slope d height / d (behind, across) at a
+// point `behind` metres back along the track and `across` to its side,
+// for a boat `length` long at `speed`; waves shorter than four footprints
+// faded out.
+vec2 wake_kelvin_slope(float behind, float across, float speed, float length,
+                       float footprint)
+{
+    if (!(behind > 0.0) || !(speed > 0.1) || !(length > 0.0))
+        return vec2(0.0);
+    const float g = 9.81;
+    float k0 = g / (speed * speed);
+    float r = across / behind;
+    float c = 1.0 - 8.0 * r * r;
+    if (c <= 0.0)
+        return vec2(0.0);
+    float f = min(speed / sqrt(g * length) / TL_KELVIN_FROUDE, 1.0);
+    float distance = sqrt(behind * behind + across * across);
+    float wavelength = 2.0 * TL_PI / k0;
+    float height = TL_KELVIN_HEIGHT * length * f * f * sqrt(wavelength / (wavelength + distance));
+    height *= (1.0 + 0.8 * (1.0 - smoothstep(0.0, 0.3, c))) * smoothstep(0.0, 0.04, c);
+    height *= smoothstep(0.0, length, behind);
+    float root = sqrt(c);
+    vec2 slope = vec2(0.0);
+    for (int system = 0; system < 2; system++) {
+        if (system == 1 && abs(r) < 1.0e-9)
+            continue; // the divergent waves' crests lie along the track itself
+        float t = system == 0 ? 2.0 * r / (1.0 + root) : (1.0 + root) / (4.0 * r);
+        float secant = sqrt(1.0 + t * t);
+        float k = k0 * secant * secant;
+        float resolved = footprint > 0.0 ? 1.0 - smoothstep(0.25, 0.5, k * footprint / TL_PI) : 1.0;
+        // Reduced in double would be exact; behind and across stay within
+        // the wake's few hundred metres, where float keeps the phase.
+        float phase = k0 * (behind + across * t) * secant;
+        float a = height * resolved * (k0 / k) * sin(phase);
+        slope -= a * k0 * secant * vec2(1.0, t);
+    }
+    return slope;
+}
+
 // Foam cover in [0, 1] at p; `footprint`: the water a pixel covers there
-// (metres, 0: no level of detail). Out: the foam's thickness, and the
-// bubbles under it (foam_aerated).
+// (metres, 0: no level of detail). Out: the foam's thickness, the
+// bubbles under it (foam_aerated), and the slope the Kelvin wake's waves
+// add to the surface there (d height / d (x, z), camera-relative).
 float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
-                out float aerated)
+                out float aerated, out vec2 waves)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
     float half_beam = u_wake_params.x, cover = 0.0;
     vec2 path = vec2(0.0); // where on the path the foam's texture hangs: along, across (m)
+    // The nearest segment p lies beside: where the Kelvin waves are taken.
+    float near = 1.0e30, kelvin_behind = 0.0, kelvin_across = 0.0, kelvin_speed = 0.0;
+    vec2 kelvin_track = vec2(0.0), kelvin_side = vec2(0.0);
     // Only the segments of the groups whose circles hold p (the CPU sizes
     // them to the foam's reach): the loop's bounds differ per pixel, so it
     // ends once every pixel of a block is done (llvmpipe runs a loop's
@@ -53,6 +97,14 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
         float speed = (u_wake[k + 1].w - u_wake[k].w) / max(u_wake[k + 1].z - u_wake[k].z, 1.0e-3);
         float churn = smoothstep(TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, speed);
         float here = fade * max(turbulent, arms) * churn;
+        if (beside > 0.0 && d < near) {
+            near = d;
+            kelvin_behind = behind;
+            kelvin_speed = speed;
+            kelvin_track = ab / sqrt(len2); // toward where the boat was
+            kelvin_side = vec2(-kelvin_track.y, kelvin_track.x);
+            kelvin_across = dot(p - a, kelvin_side);
+        }
         if (here > cover) {
             cover = here;
             float side = ab.x * (p.y - a.y) - ab.y * (p.x - a.x) < 0.0 ? -1.0 : 1.0;
@@ -62,6 +114,9 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     cover *= u_wake_params.z;
     thickness = 0.0;
     aerated = 0.0;
+    vec2 s = wake_kelvin_slope(kelvin_behind, kelvin_across, kelvin_speed, u_wake_params.w,
+                               footprint);
+    waves = s.x * kelvin_track + s.y * kelvin_side;
     if (cover <= 0.0)
         return 0.0; // most of the sea: none of the texture below
     // The texture hangs on the path and the world, where the boat left

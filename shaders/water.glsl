@@ -128,6 +128,23 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
     ocean_y -= giant.height;
 #endif
+#ifdef TL_FEATURE_WAKE
+    // The wake: its foam (shaded below) and the Kelvin waves' slope,
+    // added like the giant wave's. The footprint is the unperturbed
+    // normal's.
+    float thickness, aerated;
+    vec2 wake_waves;
+    float wake = wake_foam(hit.xz, value, dist * u_lod_angle / max(abs(dot(ray, n)), 0.2),
+                           thickness, aerated, wake_waves);
+#ifdef TL_FEATURE_GIANT_WAVE
+    float swept = wake_swept(giant); // the giant wave sweeps the wake away
+    wake *= swept;
+    aerated *= swept;
+    wake_waves *= swept;
+#endif
+    vec2 wave_slope = -n.xz / n.y + wake_waves;
+    n = normalize(vec3(-wave_slope.x, 1.0, -wave_slope.y));
+#endif
     // The share of the sun in the light the water scatters back up: that
     // light entered over metres around and under the point, so a shadow
     // as small as a boat's takes only part of it.
@@ -174,13 +191,6 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     color = giant_shade(color, hit, ray, n, giant, value, footprint, sunlit);
 #endif
 #ifdef TL_FEATURE_WAKE
-    float thickness, aerated;
-    float wake = wake_foam(hit.xz, value, footprint, thickness, aerated);
-#ifdef TL_FEATURE_GIANT_WAVE
-    float swept = wake_swept(giant); // the giant wave sweeps the wake away
-    wake *= swept;
-    aerated *= swept;
-#endif
     color += foam_aerated(ray, n, aerated, u_scatter_color, sunlit);
     color = foam_shade(color, n, wake, thickness, sunlit);
 #endif

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "tl_gl_test.h"
+#include "waves/tl_kelvin.h"
 
 enum { NX = 48, NB = 120, LANES = 8 };
 
@@ -324,6 +325,76 @@ static void test_split_matches_whole(tl_renderer *r)
     tl_frame_free(&whole);
 }
 
+/* The Kelvin wake's waves: the GPU's slope against the CPU's
+ * (tl_kelvin_slope) behind a boat at 4 m/s; none outside the wedge; on the
+ * track the transverse waves' crests come every 2 pi U^2 / g (10.2 m). */
+static void test_kelvin(tl_renderer *r)
+{
+    enum { N = 96 };
+    tl_scene s;
+    straight_wake(&s, 4.0, 0);
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_WAKE);
+    const double length = u.wake_params[3];
+    CHECK(length > 1.0);
+    float in[N * 4], out[N * 4];
+    srand(11);
+    for (int i = 0; i < N; i++) {
+        double behind = 1.0 + 60.0 * rand() / RAND_MAX;
+        in[4 * i] = (float)behind;
+        in[4 * i + 1] = (float)(behind * (1.2 * rand() / RAND_MAX - 0.6)); /* out past the wedge */
+        in[4 * i + 2] = (float)(1.0 + 6.0 * rand() / RAND_MAX);
+        in[4 * i + 3] = i % 2 ? 0.0f : (float)(0.2 * rand() / RAND_MAX);
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe4(r, &u, 16, in, N, u.octaves, out, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    double worst = 0.0, largest = 0.0;
+    int outside = 0, outside_zero = 1;
+    for (int i = 0; i < N; i++) {
+        double want[2];
+        tl_kelvin_slope(in[4 * i], in[4 * i + 1], in[4 * i + 2], length, in[4 * i + 3], want);
+        for (int c = 0; c < 2; c++) {
+            worst = fmax(worst, fabs(out[4 * i + c] - want[c]));
+            largest = fmax(largest, fabs(want[c]));
+        }
+        double ratio = in[4 * i + 1] / in[4 * i];
+        if (ratio * ratio > 1.0 / 8.0) {
+            outside++;
+            outside_zero &=
+                want[0] == 0.0 && want[1] == 0.0 && out[4 * i] == 0.0f && out[4 * i + 1] == 0.0f;
+        }
+    }
+    /* The track: zero crossings of the transverse waves' slope. */
+    double last = 0.0, first_cross = -1.0, last_cross = -1.0;
+    int crossings = 0;
+    for (double b = 20.0; b <= 80.0; b += 0.01) {
+        double sl[2];
+        tl_kelvin_slope(b, 0.0, 4.0, length, 0.0, sl);
+        if (b > 20.0 && (sl[0] > 0.0) != (last > 0.0)) {
+            if (first_cross < 0.0)
+                first_cross = b;
+            last_cross = b;
+            crossings++;
+        }
+        last = sl[0];
+    }
+    double spacing = 2.0 * (last_cross - first_cross) / (crossings - 1);
+    printf("Kelvin waves: GPU against CPU at %d points, worst %.2g of slopes up to %.3f; %d points "
+           "outside the wedge, all flat: %d; crest spacing on the track %.3f m (2 pi U^2 / g = "
+           "%.3f)\n",
+           N, worst, largest, outside, outside_zero, spacing, 2.0 * M_PI * 16.0 / 9.81);
+    CHECK(worst < 2e-3 * fmax(largest, 0.01));
+    CHECK(largest > 0.01);
+    CHECK(outside > 10 && outside_zero);
+    CHECK_NEAR(spacing, 2.0 * M_PI * 16.0 / 9.81, 0.02);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -337,6 +408,7 @@ int main(void)
     test_from_below(r);
     test_rect();
     test_split_matches_whole(r);
+    test_kelvin(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

@@ -11,6 +11,7 @@
 #include "mesh/tl_mesh.h"
 #include "prepare/tl_uniform_list.h"
 #include "waves/tl_giant_spray.h"
+#include "waves/tl_kelvin.h"
 
 int tl_renderer_check(const char *what, tl_error *err)
 {
@@ -129,6 +130,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_BOAT_CONTACT_LINE %.17g\n"
         "#define TL_BOAT_BOW_WAVE %.17g\n"
         "#define TL_MESH_WATERLINE_STATIONS %d\n"
+        "#define TL_KELVIN_HEIGHT %.17g\n"
+        "#define TL_KELVIN_FROUDE %.17g\n"
         "#define TL_MESH_MIN_ALPHA %.17g\n"
         "#define TL_MESH_WET_LOW %.17g\n"
         "#define TL_MESH_WET_HIGH %.17g\n"
@@ -143,8 +146,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS, TL_WAKE_GROUP,
         TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
         TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
-        TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_MESH_MIN_ALPHA,
-        TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN);
+        TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT,
+        TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

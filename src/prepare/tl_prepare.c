@@ -484,6 +484,7 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
     u->wake_params[0] = (float)(0.5 * b->beam);
     u->wake_params[1] = (float)b->wake_time;
     u->wake_params[2] = (float)b->wake;
+    u->wake_params[3] = (float)b->length;
     u->world_offset[0] = (float)wrap65536(cam[0]);
     u->world_offset[1] = (float)wrap65536(cam[2]);
 }

@@ -198,7 +198,7 @@ typedef struct tl_frame_uniforms {
     /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
      * age in seconds and distance behind the boat along its path. */
     float wake[TL_WAKE_POINTS][4];
-    float wake_params[4];             /* half beam, fade time, strength, unused */
+    float wake_params[4];             /* half beam, fade time, strength, hull length */
     float wake_along[TL_WAKE_POINTS]; /* tl_boat.wake_along, wrapped every 65536 m */
     /* Per group of TL_WAKE_GROUP segments: a circle (camera-relative x z,
      * radius, unused) holding every point the group's foam can reach. */

@@ -115,7 +115,7 @@
     X(VEC2, fog, 0, TL_FEATURE_FOG, "density per metre at the water, height over which it thins by e") \
     X(VEC3, fog_color, 0, TL_FEATURE_FOG, "") \
     X(VEC4, wake, TL_WAKE_POINTS, TL_FEATURE_WAKE, "camera-relative x z, age (s), distance behind the boat (m)") \
-    X(VEC4, wake_params, 0, TL_FEATURE_WAKE, "half beam, fade time, strength, unused") \
+    X(VEC4, wake_params, 0, TL_FEATURE_WAKE, "half beam, fade time, strength, hull length") \
     X(VEC4, wake_groups, TL_WAKE_GROUPS, TL_FEATURE_WAKE, "per TL_WAKE_GROUP segments: circle x z, radius") \
     X(FLOAT, wake_along, TL_WAKE_POINTS, TL_FEATURE_WAKE, "metres along the boat's path, wrapped every 65536 m") \
     X(VEC2, world_offset, 0, TL_FEATURE_WAKE, "camera x z wrapped every 65536 m: texture coordinates") \
