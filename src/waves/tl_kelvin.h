@@ -11,7 +11,7 @@
 /* Their height at the boat is this share of the hull's length at a
  * Froude number U / sqrt(g L) of TL_KELVIN_FROUDE and above (quadratic
  * below: a slow boat's waves are low). */
-#define TL_KELVIN_HEIGHT 0.02
+#define TL_KELVIN_HEIGHT 0.03
 #define TL_KELVIN_FROUDE 0.4
 
 /* The waves' slope d height / d (behind, across) at a point `behind`
