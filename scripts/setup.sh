@@ -15,6 +15,7 @@ packages=(
   libpng-dev                       # PNG output
   libglfw3-dev                     # windows (the live preview)
   libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
+  libstb-dev                       # boat textures: PNG and JPEG decoding (stb_image)
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
   xvfb xauth                       # a virtual display for the preview's tests
   gnuplot-nox                      # tideline bench --plot

@@ -3,7 +3,8 @@
 // Smith-Schlick shadowing, Schlick's Fresnel) over a Lambert base; the sky
 // and the sea around are an environment, its specular share from Karis's
 // analytic fit of the split-sum integral. src/mesh/tl_mesh_shading.c holds
-// the same formulas in double (tl_mesh_brdf, tl_mesh_env_brdf).
+// the same formulas in double (tl_mesh_brdf, tl_mesh_env_brdf,
+// tl_mesh_normal_map).
 
 // GGX's alpha from perceptual roughness, held off zero: a perfect mirror
 // would reflect the sun as a single sample-sized point.
@@ -65,6 +66,24 @@ vec3 material_environment(vec3 dir, vec3 upwelling)
     float fresnel = optics_fresnel(-dir.y, 1.0, u_water_ior);
     vec3 mirrored = sky_atmosphere(vec3(dir.x, -dir.y, dir.z), u_sun_dir);
     return fresnel * mirrored + (1.0 - fresnel) * upwelling;
+}
+
+// The normal a tangent-space normal map's texel gives a surface of unit
+// normal n and tangent t (t.w: the bitangent's side of n x t), its tilt
+// scaled (glTF's normalTexture). The interpolated tangent is made square
+// to n first; without one the map does nothing (tl_mesh_normal_map).
+vec3 material_normal_map(vec3 n, vec4 t, vec3 texel, float scale)
+{
+    vec3 tt = t.xyz - n * dot(n, t.xyz);
+    float len = length(tt);
+    if (!(len > 1.0e-12))
+        return n;
+    tt /= len;
+    vec3 b = (t.w < 0.0 ? -1.0 : 1.0) * cross(n, tt);
+    vec3 m = (2.0 * texel - 1.0) * vec3(scale, scale, 1.0);
+    vec3 mapped = tt * m.x + b * m.y + n * m.z;
+    float l = length(mapped);
+    return l > 0.0 ? mapped / l : n;
 }
 
 // Where runs of water dried, the wet line stands higher: a smooth value

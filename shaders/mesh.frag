@@ -2,7 +2,9 @@
 // vertex's material (shaders/material.glsl) under the sun, the sky and the
 // sea as an environment, its baked occlusion, wet and glossy where the sea
 // has been; below the waterline, the light of the water around it (with
-// TL_FEATURE_UNDERWATER). Writes linear radiance and the distance along
+// TL_FEATURE_UNDERWATER). With TL_MESH_MAPS (a model with textures), the
+// part's maps scale its factors (glTF's metallic-roughness material).
+// Writes linear radiance and the distance along
 // the view ray, like the ocean, for the ocean pass to composite
 // (shaders/boat.glsl).
 #include "uniforms.glsl"
@@ -22,6 +24,15 @@ in vec2 v_wet;
 uniform vec3 u_eye;     // the camera (the origin), or its mirror image for the reflection
 uniform float u_sunlit; // the share of the sun the hull sees past the giant wave's crest
 uniform float u_lights; // boat.lights: the lamps' share of their emission
+#ifdef TL_MESH_MAPS
+in vec2 v_uv;
+in vec4 v_tangent;
+uniform int u_maps; // which of the part's maps it has: bit k for tl_mesh_map k
+uniform sampler2D u_map_base_color, u_map_metallic_roughness, u_map_normal, u_map_occlusion,
+    u_map_emissive;
+uniform vec3 u_emissive; // the part's emissive radiance (factor x TL_MESH_EMISSIVE_RADIANCE)
+uniform float u_normal_scale, u_occlusion_strength;
+#endif
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
@@ -31,11 +42,30 @@ void main()
     vec3 view = normalize(v_world - u_eye); // from the eye
     vec3 v = -view;
     vec3 n = normalize(v_normal);
-    // Two-sided: models may be open or wound either way.
-    if (dot(n, view) > 0.0)
-        n = -n;
+    // Two-sided: models may be open or wound either way. A back face's
+    // normal, mapped or not, is turned round whole (as glTF's double-sided
+    // materials have it), by which way the geometry faces.
+    bool back = dot(n, view) > 0.0;
     vec3 base = v_color;
     float roughness = v_surface.x, metallic = v_surface.y, occlusion = v_surface.z;
+    vec3 emission = v_color * v_surface.w;
+#ifdef TL_MESH_MAPS
+    // glTF: the maps multiply the factors; occlusion by its strength.
+    if ((u_maps & 1) != 0)
+        base *= texture(u_map_base_color, v_uv).rgb;
+    if ((u_maps & 2) != 0) {
+        vec3 mr = texture(u_map_metallic_roughness, v_uv).rgb;
+        roughness *= mr.g;
+        metallic *= mr.b;
+    }
+    if ((u_maps & 4) != 0)
+        n = material_normal_map(n, v_tangent, texture(u_map_normal, v_uv).rgb, u_normal_scale);
+    if ((u_maps & 8) != 0)
+        occlusion *= 1.0 + u_occlusion_strength * (texture(u_map_occlusion, v_uv).r - 1.0);
+    emission += u_emissive * ((u_maps & 16) != 0 ? texture(u_map_emissive, v_uv).rgb : vec3(1.0));
+#endif
+    if (back)
+        n = -n;
     float streak = 0.6 * material_streak(v_wet.y * 6.0) + 0.4 * material_streak(v_wet.y * 23.0);
     float wet = material_wetness(v_wet.x, streak);
     float porous = smoothstep(0.3, 0.8, roughness);
@@ -87,7 +117,7 @@ void main()
         color = material_brdf(n, v, u_sun_dir, base, roughness, metallic) * sunlight +
                 (diffuse_color * ambient + env * material_env_brdf(f0, roughness, nv)) * occlusion;
     }
-    color += v_color * (v_surface.w * u_lights);
+    color += emission * u_lights;
     if (any(isnan(color)) || any(isinf(color)))
         color = vec3(0.0);
     out_color = vec4(max(color, vec3(0.0)), 1.0);

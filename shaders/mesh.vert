@@ -7,6 +7,10 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec3 a_color;
 layout(location = 3) in vec4 a_surface; // roughness, metallic, occlusion, emission
+#ifdef TL_MESH_MAPS
+layout(location = 4) in vec2 a_uv;
+layout(location = 5) in vec4 a_tangent; // xyz, and w: the bitangent's side of n x t
+#endif
 
 uniform mat4 u_view_proj;
 uniform mat4 u_boat_model;
@@ -18,6 +22,10 @@ out vec3 v_normal;
 out vec3 v_color;
 out vec4 v_surface;
 out vec2 v_wet; // metres above the design waterline, and along the hull (the streaks)
+#ifdef TL_MESH_MAPS
+out vec2 v_uv;
+out vec4 v_tangent;
+#endif
 
 void main()
 {
@@ -27,6 +35,10 @@ void main()
     v_normal = mat3(u_boat_model) * a_normal;
     v_color = a_color;
     v_surface = a_surface;
+#ifdef TL_MESH_MAPS
+    v_uv = a_uv;
+    v_tangent = vec4(mat3(u_boat_model) * a_tangent.xyz, a_tangent.w);
+#endif
     float scale = length(u_boat_model[0].xyz);
     v_wet = vec2(a_position.y, a_position.z + 0.7 * a_position.x) * scale;
     gl_ClipDistance[0] = world.y - u_clip_height;

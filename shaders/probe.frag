@@ -36,6 +36,10 @@
 //   mode 16: the Kelvin wake's slope at x metres behind the boat, y across,
 //           speed z m/s, footprint w m, the frame's hull length
 //           (tl_kelvin_slope)
+//   mode 17: the normal a normal map's texel (x y z) gives the normal
+//           normalize(0.3, 0.9, -0.2) with the tangent (1, 0, 0.4), its
+//           tilt scaled by |w|, the bitangent's side the sign of w
+//           (tl_mesh_normal_map)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -98,6 +102,10 @@ void main()
         result.xyz = material_env_brdf(vec3(0.04, 0.5, 0.9), p.y, p.x);
     else if (u_probe_mode == 15)
         result.x = material_wetness(p.x, p.y);
+    else if (u_probe_mode == 17)
+        result.xyz = material_normal_map(normalize(vec3(0.3, 0.9, -0.2)),
+                                         vec4(1.0, 0.0, 0.4, input4.w < 0.0 ? -1.0 : 1.0),
+                                         input4.xyz, abs(input4.w));
     else if (u_probe_mode == 5) {
         vec3 dir = vec3(cos(p.x) * sin(p.y), sin(p.x), cos(p.x) * cos(p.y));
         float a = atan(u_sun_dir.x, u_sun_dir.z); // turn azimuth 0 to the sun's

@@ -44,6 +44,7 @@ tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOUR
 tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
   ARGS ${PROJECT_SOURCE_DIR}/tests/meshes ${PROJECT_SOURCE_DIR}/timelines LABELS gl)
 tl_add_test(test_boat_light SOURCES test_boat_light.c LIBS tideline_gl LABELS gl)
+tl_add_test(test_boat_maps SOURCES test_boat_maps.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_wake SOURCES test_wake.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_underwater SOURCES test_underwater.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_polish SOURCES test_polish.c LIBS tideline_gl LABELS gl)

@@ -3,8 +3,11 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include <unistd.h>
+
 #include "mesh/tl_mesh.h"
 #include "scene/tl_scene.h"
+#include "tl_gltf_test.h"
 #include "tl_test.h"
 
 static const char *dir;
@@ -67,9 +70,11 @@ static void test_obj(void)
     printf("crate.obj: %zu vertices, %zu triangles\n", m.vertex_count, m.index_count / 3);
     CHECK(m.index_count == 12 * 3); /* six quads, triangulated; the line is dropped */
     CHECK(m.vertex_count >= 8 && m.vertex_count <= 24);
+    /* The unit cube from 0 to 1, x mirrored into tideline's left-handed
+     * world. */
     for (int c = 0; c < 3; c++) {
-        CHECK_NEAR(m.bounds_min[c], 0.0, 1e-6);
-        CHECK_NEAR(m.bounds_max[c], 1.0, 1e-6);
+        CHECK_NEAR(m.bounds_min[c], c ? 0.0 : -1.0, 1e-6);
+        CHECK_NEAR(m.bounds_max[c], c ? 1.0 : 0.0, 1e-6);
     }
     /* The material's Kd. */
     CHECK_NEAR(m.colors[0], 0.2, 1e-6);
@@ -160,6 +165,206 @@ static void test_default_boat(void)
     tl_mesh_free(&m);
 }
 
+static char tmp[] = "/tmp/tideline-mesh-XXXXXX";
+
+static const char *tmp_of(const char *name)
+{
+    static char buf[2][1024];
+    static int which;
+    which ^= 1;
+    snprintf(buf[which], sizeof buf[which], "%s/%s", tmp, name);
+    return buf[which];
+}
+
+/* A solid map, `size` texels a side, of one RGBA value. */
+static unsigned char *solid(int size, unsigned char r, unsigned char g, unsigned char b)
+{
+    unsigned char *p = malloc((size_t)size * (size_t)size * 4);
+    for (int i = 0; p && i < size * size; i++) {
+        p[4 * i] = r;
+        p[4 * i + 1] = g;
+        p[4 * i + 2] = b;
+        p[4 * i + 3] = 255;
+    }
+    return p;
+}
+
+/* The quad with all five maps, and what the loader must make of it. */
+static gltf_quad full_quad(unsigned char *checker, unsigned char *mr, unsigned char *normal,
+                           unsigned char *occlusion, unsigned char *emissive)
+{
+    gltf_quad q = {0};
+    q.base_color[0] = q.base_color[1] = q.base_color[2] = 1.0;
+    q.roughness = 0.8;
+    q.metallic = 1.0;
+    q.emissive[0] = 0.5;
+    q.emissive[1] = 0.25;
+    q.normal_scale = 0.7;
+    q.occlusion_strength = 0.5;
+    q.material = "hull";
+    q.map[TL_MESH_MAP_BASE_COLOR] = (gltf_map){8, 8, checker, 0};
+    q.map[TL_MESH_MAP_METALLIC_ROUGHNESS] = (gltf_map){4, 4, mr, 0};
+    q.map[TL_MESH_MAP_NORMAL] = (gltf_map){4, 4, normal, 0};
+    q.map[TL_MESH_MAP_OCCLUSION] = (gltf_map){4, 4, occlusion, 0};
+    q.map[TL_MESH_MAP_EMISSIVE] = (gltf_map){16, 16, emissive, 1};
+    return q;
+}
+
+static void check_full_quad(const char *name, const tl_mesh *m)
+{
+    printf("%s: %zu parts, %zu images\n", name, m->part_count, m->image_count);
+    CHECK(m->part_count == 1 && m->image_count == 5);
+    CHECK(tl_mesh_has_maps(m));
+    if (m->part_count != 1 || m->image_count != 5)
+        return;
+    const tl_mesh_part *p = &m->parts[0];
+    for (int k = 0; k < TL_MESH_MAP_COUNT; k++)
+        CHECK(p->map[k] >= 0 && p->map[k] < 5);
+    CHECK(p->first_index == 0 && p->index_count == 6);
+    CHECK_NEAR(p->normal_scale, 0.7, 1e-6);
+    CHECK_NEAR(p->occlusion_strength, 0.5, 1e-6);
+    CHECK_NEAR(p->emissive[0], 0.5 * TL_MESH_EMISSIVE_RADIANCE, 1e-4);
+    CHECK_NEAR(p->emissive[1], 0.25 * TL_MESH_EMISSIVE_RADIANCE, 1e-4);
+    CHECK_NEAR(p->emissive[2], 0.0, 1e-6);
+    /* The checker, its rows turned over: the first row is the image's
+     * bottom, whose left square is dark. */
+    const tl_mesh_image *c = &m->images[p->map[TL_MESH_MAP_BASE_COLOR]];
+    CHECK(c->width == 8 && c->height == 8);
+    CHECK(c->rgba[0] == 40 && c->rgba[4 * 7] == 230);
+    CHECK(c->rgba[4 * (7 * 8)] == 230 && c->rgba[4 * (7 * 8 + 7)] == 40);
+    const tl_mesh_image *mr = &m->images[p->map[TL_MESH_MAP_METALLIC_ROUGHNESS]];
+    CHECK(mr->rgba[1] == 128 && mr->rgba[2] == 255);
+    const tl_mesh_image *e = &m->images[p->map[TL_MESH_MAP_EMISSIVE]];
+    CHECK(e->width == 16 && abs(e->rgba[0] - 200) <= 3); /* JPEG: near */
+    /* UVs in GL's convention (v up the image); x mirrored into tideline's
+     * left-handed world, so u runs along -x, and the tangent with it, its
+     * bitangent (+y, along v) now on the other side of n x t. */
+    CHECK(m->uvs != NULL && m->tangents != NULL);
+    for (size_t i = 0; m->uvs && i < m->vertex_count; i++) {
+        const float *pos = m->positions + 3 * i, *uv = m->uvs + 2 * i, *t = m->tangents + 4 * i;
+        CHECK_NEAR(uv[0], (1.0 - pos[0]) / 2.0, 1e-6);
+        CHECK_NEAR(uv[1], (pos[1] - 1.0) / 2.0, 1e-6);
+        CHECK_NEAR(t[0], -1.0, 1e-4);
+        CHECK_NEAR(t[1], 0.0, 1e-4);
+        CHECK_NEAR(t[3], -1.0, 0.0);
+        CHECK_NEAR(m->normals[3 * i + 2], 1.0, 1e-6);
+    }
+}
+
+/* Every map of glTF's material, from files beside the model and embedded
+ * in a .glb; OBJ's map_Kd; a model without maps has none. */
+static void test_maps(void)
+{
+    unsigned char *checker = gltf_checker(8, 230, 40), *mr = solid(4, 0, 128, 255),
+                  *normal = solid(4, 128, 128, 255), *occlusion = solid(4, 64, 64, 64),
+                  *emissive = solid(16, 200, 200, 200);
+    gltf_quad q = full_quad(checker, mr, normal, occlusion, emissive);
+    tl_error err;
+    tl_error_clear(&err);
+    const char *names[2] = {"quad.gltf", "quad.glb"};
+    for (int i = 0; i < 2; i++) {
+        CHECK(gltf_write_quad(tmp_of(names[i]), &q) == 0);
+        tl_mesh m;
+        int rc = tl_mesh_load(tmp_of(names[i]), &m, &err);
+        if (rc)
+            printf("%s\n", err.message);
+        CHECK(rc == TL_OK);
+        if (!rc) {
+            check_full_quad(names[i], &m);
+            tl_mesh_free(&m);
+        }
+    }
+    /* OBJ: the diffuse map is the base colour. */
+    const char *obj = "mtllib quad.mtl\nv -1 1 0\nv 1 1 0\nv 1 3 0\nv -1 3 0\n"
+                      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\nusemtl deck\n"
+                      "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+    const char *mtl = "newmtl deck\nKd 1 1 1\nmap_Kd quad_map0.png\n";
+    CHECK(gltf_write_file(tmp_of("quad.obj"), obj, strlen(obj)) == 0);
+    CHECK(gltf_write_file(tmp_of("quad.mtl"), mtl, strlen(mtl)) == 0);
+    tl_mesh m;
+    CHECK(tl_mesh_load(tmp_of("quad.obj"), &m, &err) == TL_OK);
+    CHECK(m.part_count == 1 && m.image_count == 1);
+    if (m.part_count == 1 && m.image_count == 1) {
+        CHECK(m.parts[0].map[TL_MESH_MAP_BASE_COLOR] == 0);
+        CHECK(m.images[0].width == 8 && m.images[0].rgba[0] == 40);
+    }
+    tl_mesh_free(&m);
+    /* The skiff has factors only: no maps, no UVs kept. */
+    CHECK(tl_mesh_load(path_of("skiff.gltf"), &m, &err) == TL_OK);
+    CHECK(!tl_mesh_has_maps(&m) && m.uvs == NULL && m.image_count == 0);
+    tl_mesh_free(&m);
+    free(checker);
+    free(mr);
+    free(normal);
+    free(occlusion);
+    free(emissive);
+}
+
+/* A texture that is missing or cannot be decoded: one line naming the
+ * model, the material, the map and the image. */
+static void test_map_errors(void)
+{
+    unsigned char *checker = gltf_checker(8, 230, 40);
+    gltf_quad q = {0};
+    q.base_color[0] = q.base_color[1] = q.base_color[2] = 1.0;
+    q.roughness = 0.5;
+    q.material = "topsides";
+    q.map[TL_MESH_MAP_BASE_COLOR] = (gltf_map){8, 8, checker, 0};
+    q.missing_base_color = "paint.png";
+    tl_mesh m;
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(gltf_write_quad(tmp_of("missing.gltf"), &q) == 0);
+    CHECK(tl_mesh_load(tmp_of("missing.gltf"), &m, &err) == TL_ERR_USAGE);
+    printf("%s\n", err.message);
+    CHECK_STR_CONTAINS(err.message, tmp_of("missing.gltf"));
+    CHECK_STR_CONTAINS(err.message, "material 'topsides': base colour texture");
+    CHECK_STR_CONTAINS(err.message, tmp_of("paint.png"));
+    CHECK_STR_CONTAINS(err.message, "no such file");
+    CHECK(m.positions == NULL && m.image_count == 0);
+    q.missing_base_color = NULL;
+    q.garbage_base_color = "this is not an image";
+    const char *names[2] = {"garbage.gltf", "garbage.glb"};
+    for (int i = 0; i < 2; i++) {
+        CHECK(gltf_write_quad(tmp_of(names[i]), &q) == 0);
+        tl_error_clear(&err);
+        CHECK(tl_mesh_load(tmp_of(names[i]), &m, &err) == TL_ERR_USAGE);
+        printf("%s\n", err.message);
+        CHECK_STR_CONTAINS(err.message, tmp_of(names[i]));
+        CHECK_STR_CONTAINS(err.message, "material 'topsides': base colour texture");
+        CHECK_STR_CONTAINS(err.message, "cannot be decoded");
+        CHECK(strchr(err.message, '\n') == NULL);
+    }
+    free(checker);
+}
+
+/* The normal map's CPU mirror: a flat texel keeps the normal, a tilted one
+ * turns it toward the tangent (or the bitangent) by its angle, scaled. */
+static void test_normal_map(void)
+{
+    const double n[3] = {0, 0, 1}, t[4] = {1, 0, 0, 1}, t_flipped[4] = {1, 0, 0, -1};
+    double out[3];
+    tl_mesh_normal_map(n, t, (const double[]){0.5, 0.5, 1.0}, 1.0, out);
+    CHECK_NEAR(out[2], 1.0, 1e-12);
+    const double a = 0.5; /* radians */
+    const double tilted[3] = {0.5 + 0.5 * sin(a), 0.5, 0.5 + 0.5 * cos(a)};
+    tl_mesh_normal_map(n, t, tilted, 1.0, out);
+    CHECK_NEAR(out[0], sin(a), 1e-12);
+    CHECK_NEAR(out[2], cos(a), 1e-12);
+    const double up[3] = {0.5, 0.5 + 0.5 * sin(a), 0.5 + 0.5 * cos(a)};
+    tl_mesh_normal_map(n, t, up, 1.0, out);
+    CHECK_NEAR(out[1], sin(a), 1e-12);
+    tl_mesh_normal_map(n, t_flipped, up, 1.0, out);
+    CHECK_NEAR(out[1], -sin(a), 1e-12);
+    tl_mesh_normal_map(n, t, tilted, 0.0, out); /* scale 0: flat */
+    CHECK_NEAR(out[2], 1.0, 1e-12);
+    /* A tangent not square to n is made so; none at all leaves n. */
+    tl_mesh_normal_map(n, (const double[]){1, 0, 5, 1}, tilted, 1.0, out);
+    CHECK_NEAR(out[0], sin(a), 1e-12);
+    tl_mesh_normal_map(n, (const double[]){0, 0, 2, 1}, tilted, 1.0, out);
+    CHECK_NEAR(out[2], 1.0, 1e-12);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
@@ -169,5 +374,17 @@ int main(int argc, char **argv)
     test_obj();
     test_errors();
     test_default_boat();
+    test_normal_map();
+    if (!mkdtemp(tmp))
+        return 1;
+    test_maps();
+    test_map_errors();
+    const char *files[] = {"quad.gltf",     "quad.bin",      "quad.glb",      "quad_map0.png",
+                           "quad_map1.png", "quad_map2.png", "quad_map3.png", "quad_map4.jpg",
+                           "quad.obj",      "quad.mtl",      "missing.gltf",  "missing.bin",
+                           "garbage.gltf",  "garbage.bin",   "garbage.glb",   "garbage_map0.png"};
+    for (size_t i = 0; i < sizeof files / sizeof *files; i++)
+        unlink(tmp_of(files[i]));
+    rmdir(tmp);
     TEST_END();
 }

@@ -7,24 +7,99 @@
 
 #include "tl_renderer_internal.h"
 
-int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
+/* Frees the mesh's buffers and textures. */
+static void drop_mesh(gpu_mesh *g)
 {
-    gpu_mesh *g = &r->mesh;
     if (g->vao) {
         glDeleteVertexArrays(1, &g->vao);
         glDeleteBuffers(1, &g->vbo);
         glDeleteBuffers(1, &g->ibo);
     }
+    for (size_t i = 0; i < g->texture_count; i++) {
+        if (g->textures[i])
+            glDeleteTextures(1, &g->textures[i]);
+        if (g->srgb[i])
+            glDeleteTextures(1, &g->srgb[i]);
+    }
+    free(g->textures);
+    free(g->srgb);
+    free(g->parts);
     memset(g, 0, sizeof *g);
+}
+
+/* An image as a mipmapped, repeating texture. */
+static GLuint upload_image(const tl_mesh_image *image, int srgb)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image->width, image->height,
+                 0, GL_RGBA, GL_UNSIGNED_BYTE, image->rgba);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return tex;
+}
+
+/* The colour maps (base colour, emissive) are sRGB, as glTF has them. */
+static int map_is_srgb(int k)
+{
+    return k == TL_MESH_MAP_BASE_COLOR || k == TL_MESH_MAP_EMISSIVE;
+}
+
+/* The model's parts and their maps' textures, each image uploaded in the
+ * encodings its maps read it in. */
+static int upload_maps(gpu_mesh *g, const tl_mesh *mesh, tl_error *err)
+{
+    g->parts = malloc(mesh->part_count * sizeof *g->parts);
+    g->textures = calloc(mesh->image_count ? mesh->image_count : 1, sizeof *g->textures);
+    g->srgb = calloc(mesh->image_count ? mesh->image_count : 1, sizeof *g->srgb);
+    if (!g->parts || !g->textures || !g->srgb)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    memcpy(g->parts, mesh->parts, mesh->part_count * sizeof *g->parts);
+    g->part_count = mesh->part_count;
+    g->texture_count = mesh->image_count;
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &most);
+    for (size_t p = 0; p < mesh->part_count; p++)
+        for (int k = 0; k < TL_MESH_MAP_COUNT; k++) {
+            int i = mesh->parts[p].map[k];
+            if (i < 0)
+                continue;
+            const tl_mesh_image *image = &mesh->images[i];
+            if (image->width > most || image->height > most)
+                return tl_error_set(err, TL_ERR_USAGE,
+                                    "the boat's texture of %d x %d texels is over the GPU's "
+                                    "limit of %d a side",
+                                    image->width, image->height, (int)most);
+            GLuint *slot = map_is_srgb(k) ? &g->srgb[i] : &g->textures[i];
+            if (!*slot)
+                *slot = upload_image(image, map_is_srgb(k));
+        }
+    g->maps = 1;
+    return TL_OK;
+}
+
+int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
+{
+    gpu_mesh *g = &r->mesh;
+    drop_mesh(g);
     if (!mesh || mesh->index_count == 0)
         return TL_OK;
     if (mesh->index_count > 0x7fffffff)
         return tl_error_set(err, TL_ERR_RUNTIME, "the boat mesh has too many triangles");
     /* Interleaved per vertex: position, normal, colour (3 each), then
-     * roughness, metallic, occlusion, emission. */
-    enum { STRIDE = 13 };
+     * roughness, metallic, occlusion, emission, then u v and the tangent
+     * with its bitangent's sign (zero without maps). */
+    enum { STRIDE = 19 };
+    static const GLint SIZES[6] = {3, 3, 3, 4, 2, 4}, OFFSETS[6] = {0, 3, 6, 9, 13, 15};
     size_t n = mesh->vertex_count;
-    float *interleaved = malloc(n * STRIDE * sizeof(float));
+    float *interleaved = calloc(n * STRIDE, sizeof(float));
     if (!interleaved)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     for (size_t i = 0; i < n; i++) {
@@ -36,6 +111,10 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
             memcpy(v + 9, mesh->surface + 4 * i, 4 * sizeof(float));
         else
             memcpy(v + 9, (const float[]){0.5f, 0.0f, 1.0f, 0.0f}, 4 * sizeof(float));
+        if (mesh->uvs)
+            memcpy(v + 13, mesh->uvs + 2 * i, 2 * sizeof(float));
+        if (mesh->tangents)
+            memcpy(v + 15, mesh->tangents + 4 * i, 4 * sizeof(float));
     }
     glGenVertexArrays(1, &g->vao);
     glBindVertexArray(g->vao);
@@ -48,15 +127,59 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g->ibo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(mesh->index_count * sizeof(uint32_t)),
                  mesh->indices, GL_STATIC_DRAW);
-    for (GLuint a = 0; a < 4; a++) {
+    for (GLuint a = 0; a < 6; a++) {
         glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, a < 3 ? 3 : 4, GL_FLOAT, GL_FALSE, STRIDE * sizeof(float),
-                              (const void *)(uintptr_t)(a * 3 * sizeof(float)));
+        glVertexAttribPointer(a, SIZES[a], GL_FLOAT, GL_FALSE, STRIDE * sizeof(float),
+                              (const void *)(uintptr_t)(OFFSETS[a] * sizeof(float)));
     }
     glBindVertexArray(r->vao);
     g->indices = (GLsizei)mesh->index_count;
     tl_mesh_waterline(mesh, g->waterline, g->waterline_z);
+    int rc = tl_mesh_has_maps(mesh) ? upload_maps(g, mesh, err) : TL_OK;
+    if (rc) {
+        drop_mesh(g);
+        return rc;
+    }
     return tl_renderer_check("uploading the boat mesh", err);
+}
+
+/* Binds part p's maps and factors for the mesh program (TL_MESH_MAPS). */
+static void bind_part(const gpu_mesh *g, GLuint program, size_t p)
+{
+    static const char *const SAMPLERS[TL_MESH_MAP_COUNT] = {
+        "u_map_base_color", "u_map_metallic_roughness", "u_map_normal", "u_map_occlusion",
+        "u_map_emissive"};
+    const tl_mesh_part *part = &g->parts[p];
+    int mask = 0;
+    for (int k = 0; k < TL_MESH_MAP_COUNT; k++) {
+        int i = part->map[k];
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_MESH_MAPS + (GLenum)k);
+        glBindTexture(GL_TEXTURE_2D, i < 0 ? 0 : (map_is_srgb(k) ? g->srgb[i] : g->textures[i]));
+        glUniform1i(tl_renderer_loc(program, SAMPLERS[k]), TL_UNIT_MESH_MAPS + k);
+        mask |= i < 0 ? 0 : 1 << k;
+    }
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glUniform1i(tl_renderer_loc(program, "u_maps"), mask);
+    glUniform3fv(tl_renderer_loc(program, "u_emissive"), 1, part->emissive);
+    glUniform1f(tl_renderer_loc(program, "u_normal_scale"), part->normal_scale);
+    glUniform1f(tl_renderer_loc(program, "u_occlusion_strength"), part->occlusion_strength);
+}
+
+/* Draws the mesh: at once, or part by part with each one's maps. */
+static void draw_elements(const gpu_mesh *g, GLuint program)
+{
+    glBindVertexArray(g->vao);
+    if (!g->maps || !program) {
+        glDrawElements(GL_TRIANGLES, g->indices, GL_UNSIGNED_INT, NULL);
+        return;
+    }
+    for (size_t p = 0; p < g->part_count; p++) {
+        if (!g->parts[p].index_count)
+            continue;
+        bind_part(g, program, p);
+        glDrawElements(GL_TRIANGLES, (GLsizei)g->parts[p].index_count, GL_UNSIGNED_INT,
+                       (const void *)(uintptr_t)(g->parts[p].first_index * sizeof(uint32_t)));
+    }
 }
 
 /* Draws the mesh into `t` (cleared first): directly, or mirrored in the
@@ -83,8 +206,7 @@ static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_
     glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
     if (mirrored)
         glEnable(GL_CLIP_DISTANCE0);
-    glBindVertexArray(r->mesh.vao);
-    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
+    draw_elements(&r->mesh, program);
     glBindVertexArray(r->vao);
     glDisable(GL_CLIP_DISTANCE0);
 }
@@ -143,8 +265,7 @@ static int draw_shadow(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err
                        u->boat_shadow);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
-    glBindVertexArray(r->mesh.vao);
-    glDrawElements(GL_TRIANGLES, r->mesh.indices, GL_UNSIGNED_INT, NULL);
+    draw_elements(&r->mesh, 0); /* depth alone: no maps */
     glBindVertexArray(r->vao);
     glDisable(GL_POLYGON_OFFSET_FILL);
     return TL_OK;
@@ -160,8 +281,8 @@ static void bind_shadow(const tl_renderer *r, GLuint program)
 
 /* The features that change how the hull is lit: the sun, the sky, the
  * water around it from below, its shadows. */
-static const unsigned MESH_FEATURES[TL_MESH_PROGRAMS] = {
-    TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL, TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW};
+static const unsigned MESH_FEATURES[4] = {TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL,
+                                          TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW};
 
 int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err)
 {
@@ -182,6 +303,7 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
             features |= MESH_FEATURES[i];
             variant |= 1 << i;
         }
+    variant |= r->mesh.maps ? 1 << 4 : 0;
     /* The sun's view does not move with a sample's offset: one map a frame. */
     if ((features & TL_FEATURE_BOAT_SHADOW) && !(reuse && r->shadow_fbo)) {
         rc = draw_shadow(r, u, err);
@@ -194,6 +316,9 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     if (!*program) {
         char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(features | TL_FEATURE_BOAT, defines, sizeof defines);
+        /* Compiled in only for a model that has maps. */
+        if (r->mesh.maps)
+            strncat(defines, "#define TL_MESH_MAPS\n", sizeof defines - strlen(defines) - 1);
         *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
         if (!*program) {
             glDisable(GL_DEPTH_TEST);

@@ -14,8 +14,9 @@
 #include "sky/tl_sky.h"
 
 #define MAX_PROGRAMS 24
-/* Mesh programs: one per set of the four features that light the hull. */
-#define TL_MESH_PROGRAMS 16
+/* Mesh programs: one per set of the four features that light the hull,
+ * with and without the model's texture maps. */
+#define TL_MESH_PROGRAMS 32
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
 #define TL_PREPASS_LEVELS 2
 /* The most the waves shift the hull's mirror image, as a share of the
@@ -35,6 +36,7 @@ enum {
     TL_UNIT_SKY_VIEW = 4,          /* the physical sky's sky-view table, */
     TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances, */
     TL_UNIT_BOAT_SHADOW = 6,       /* the boat's shadow map (the mesh pass's too) */
+    TL_UNIT_MESH_MAPS = 7,         /* the mesh pass's maps, 7 to 11 in tl_mesh_map order */
     TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
     TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
     TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
@@ -89,10 +91,17 @@ typedef struct readback_slot {
     int width, height;
 } readback_slot;
 
-/* The boat's mesh on the GPU: interleaved position, normal, colour. */
+/* The boat's mesh on the GPU: interleaved position, normal, colour,
+ * surface, UV and tangent; a loaded model's maps as textures. */
 typedef struct gpu_mesh {
     GLuint vao, vbo, ibo;
     GLsizei indices;
+    /* Drawn part by part with their maps when `maps` (tl_mesh_has_maps). */
+    int maps;
+    size_t part_count, texture_count;
+    tl_mesh_part *parts;
+    GLuint *textures; /* per image, as RGBA8 */
+    GLuint *srgb;     /* per image, as sRGB8_ALPHA8 (colour maps), or 0 */
     /* Its outline at the waterline (tl_mesh_waterline), for the water's
      * contact foam. */
     float waterline[TL_MESH_WATERLINE_STATIONS], waterline_z[2];

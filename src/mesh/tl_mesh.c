@@ -1,5 +1,7 @@
 #include "tl_mesh.h"
 
+#include "tl_mesh_maps.h"
+
 #include <assimp/cimport.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -164,7 +166,26 @@ void tl_mesh_free(tl_mesh *m)
     free(m->colors);
     free(m->surface);
     free(m->indices);
+    free(m->uvs);
+    free(m->tangents);
+    for (size_t i = 0; m->images && i < m->image_count; i++)
+        free(m->images[i].rgba);
+    free(m->images);
+    free(m->parts);
     memset(m, 0, sizeof *m);
+}
+
+int tl_mesh_has_maps(const tl_mesh *m)
+{
+    for (size_t i = 0; i < m->part_count; i++) {
+        const tl_mesh_part *p = &m->parts[i];
+        if (p->emissive[0] > 0.0f || p->emissive[1] > 0.0f || p->emissive[2] > 0.0f)
+            return 1;
+        for (int k = 0; k < TL_MESH_MAP_COUNT; k++)
+            if (p->map[k] >= 0)
+                return 1;
+    }
+    return 0;
 }
 
 static float clamp01(float v)
@@ -263,10 +284,10 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
 
     /* Triangles only (points and lines dropped), one flat list of meshes
      * with their node transforms applied. */
-    const struct aiScene *scene =
-        aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                               aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
-                               aiProcess_SortByPType | aiProcess_FindInvalidData);
+    const struct aiScene *scene = aiImportFile(
+        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
+                  aiProcess_PreTransformVertices | aiProcess_SortByPType |
+                  aiProcess_FindInvalidData | aiProcess_CalcTangentSpace);
     if (!scene) {
         const char *why = aiGetErrorString();
         /* assimp's messages can run over several lines: keep the first. */
@@ -288,17 +309,53 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
                             path, vertices, triangles, TL_MESH_MAX_VERTICES, TL_MESH_MAX_TRIANGLES);
     }
     tl_mesh_builder b = {0};
-    for (unsigned i = 0; i < scene->mNumMeshes; i++) {
+    tl_mesh_map_cache cache = {0};
+    tl_mesh maps = {0}; /* the images and parts, moved into *out at the end */
+    float *uvs = calloc(vertices ? vertices : 1, 2 * sizeof(float));
+    float *tangents = calloc(vertices ? vertices : 1, 4 * sizeof(float));
+    maps.parts = calloc(scene->mNumMeshes ? scene->mNumMeshes : 1, sizeof *maps.parts);
+    int rc =
+        uvs && tangents && maps.parts ? TL_OK : tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
+    for (unsigned i = 0; !rc && i < scene->mNumMeshes; i++) {
         const struct aiMesh *m = scene->mMeshes[i];
         if (!(m->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !m->mNormals)
             continue;
         tl_mesh_material material;
         material_of(scene, m->mMaterialIndex, &material);
+        tl_mesh_part *part = &maps.parts[maps.part_count++];
+        rc = tl_mesh_read_maps(scene, m->mMaterialIndex, path, &maps, &cache, part, err);
+        if (rc)
+            break;
+        if (!m->mTextureCoords[0]) /* nothing to sample them at */
+            for (int k = 0; k < TL_MESH_MAP_COUNT; k++)
+                part->map[k] = -1;
+        part->first_index = b.mesh.index_count;
         uint32_t base = (uint32_t)b.mesh.vertex_count;
+        /* glTF and OBJ are right-handed, tideline's world is left-handed
+         * (+X east of +Z north): x is mirrored, so that the model reads as
+         * authored (lettering the right way round, starboard to
+         * starboard). Tangents turn with it, and their bitangent's side. */
         for (unsigned v = 0; v < m->mNumVertices; v++) {
-            const float p[3] = {m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z};
-            const float n[3] = {m->mNormals[v].x, m->mNormals[v].y, m->mNormals[v].z};
+            const float p[3] = {-m->mVertices[v].x, m->mVertices[v].y, m->mVertices[v].z};
+            const float n[3] = {-m->mNormals[v].x, m->mNormals[v].y, m->mNormals[v].z};
             tl_mesh_add_vertex(&b, p, n, &material);
+            if (m->mTextureCoords[0]) {
+                uvs[2 * ((size_t)base + v)] = m->mTextureCoords[0][v].x;
+                uvs[2 * ((size_t)base + v) + 1] = m->mTextureCoords[0][v].y;
+            }
+            if (m->mTangents && m->mBitangents) {
+                const struct aiVector3D t = m->mTangents[v], bt = m->mBitangents[v];
+                const struct aiVector3D fn = m->mNormals[v];
+                /* The bitangent's side of n x t (glTF's tangent w), in the
+                 * file's axes; mirrored, it changes side. */
+                const double c[3] = {fn.y * t.z - fn.z * t.y, fn.z * t.x - fn.x * t.z,
+                                     fn.x * t.y - fn.y * t.x};
+                float *out_t = tangents + 4 * ((size_t)base + v);
+                out_t[0] = -t.x;
+                out_t[1] = t.y;
+                out_t[2] = t.z;
+                out_t[3] = c[0] * bt.x + c[1] * bt.y + c[2] * bt.z < 0.0 ? 1.0f : -1.0f;
+            }
         }
         for (unsigned f = 0; f < m->mNumFaces; f++) {
             const struct aiFace *face = &m->mFaces[f];
@@ -306,15 +363,32 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
                 tl_mesh_add_triangle(&b, base + face->mIndices[0], base + face->mIndices[1],
                                      base + face->mIndices[2]);
         }
+        part->index_count = b.mesh.index_count - part->first_index;
     }
     aiReleaseImport(scene);
-    if (!b.failed && b.mesh.index_count == 0) {
+    tl_mesh_map_cache_free(&cache, maps.image_count);
+    if (!rc && !b.failed && b.mesh.index_count == 0)
+        rc = tl_error_set(err, TL_ERR_USAGE, "boat model %s: has no triangles", path);
+    if (!rc)
+        rc = tl_mesh_builder_finish(&b, out, err);
+    if (rc) {
         tl_mesh_free(&b.mesh);
-        return tl_error_set(err, TL_ERR_USAGE, "boat model %s: has no triangles", path);
-    }
-    int rc = tl_mesh_builder_finish(&b, out, err);
-    if (rc)
+        tl_mesh_free(&maps);
+        free(uvs);
+        free(tangents);
         return rc;
+    }
+    out->parts = maps.parts;
+    out->part_count = maps.part_count;
+    out->images = maps.images;
+    out->image_count = maps.image_count;
+    if (tl_mesh_has_maps(out)) {
+        out->uvs = uvs;
+        out->tangents = tangents;
+    } else {
+        free(uvs);
+        free(tangents);
+    }
     for (size_t i = 0; i < out->vertex_count; i++) {
         float *p = out->positions + 3 * i, *n = out->normals + 3 * i;
         if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2])) {
@@ -330,6 +404,14 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
             for (int c = 0; c < 3; c++)
                 n[c] /= len;
         }
+        /* A UV or tangent a file left non-finite samples the map's corner
+         * and leaves the normal unmapped (the shader skips a zero tangent). */
+        for (int c = 0; out->uvs && c < 2; c++)
+            if (!isfinite(out->uvs[2 * i + c]))
+                out->uvs[2 * i + c] = 0.0f;
+        float *t = out->tangents ? out->tangents + 4 * i : NULL;
+        if (t && !(isfinite(t[0]) && isfinite(t[1]) && isfinite(t[2])))
+            t[0] = t[1] = t[2] = 0.0f;
     }
     /* Occlusion out to a tenth of the model's longest side: the reach of a
      * wheelhouse's shade on its deck. */

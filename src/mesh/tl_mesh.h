@@ -22,6 +22,42 @@ typedef struct tl_mesh_material {
     float emission;  /* a lamp's radiance as a multiple of its colour, lit by boat.lights; 0 */
 } tl_mesh_material;
 
+/* The texture maps of glTF's metallic-roughness material (OBJ: map_Kd as
+ * the base colour). */
+enum tl_mesh_map {
+    TL_MESH_MAP_BASE_COLOR,         /* sRGB; multiplies the base colour */
+    TL_MESH_MAP_METALLIC_ROUGHNESS, /* linear; G multiplies roughness, B metallic */
+    TL_MESH_MAP_NORMAL,             /* linear; tangent-space normal, scaled */
+    TL_MESH_MAP_OCCLUSION,          /* linear; R, by its strength */
+    TL_MESH_MAP_EMISSIVE,           /* sRGB; multiplies the emissive colour */
+    TL_MESH_MAP_COUNT
+};
+
+/* A decoded texture: 8-bit RGBA, its first row the image's bottom (the
+ * UV origin assimp gives both glTF and OBJ). */
+typedef struct tl_mesh_image {
+    int width, height;
+    unsigned char *rgba;
+} tl_mesh_image;
+
+/* A run of triangles with one material's maps and the factors that go
+ * with them (the per-vertex ones are in colors and surface). */
+typedef struct tl_mesh_part {
+    size_t first_index, index_count;
+    int map[TL_MESH_MAP_COUNT]; /* an index into images, or -1 */
+    float emissive[3];          /* radiance: glTF's emissive factor x TL_MESH_EMISSIVE_RADIANCE */
+    float normal_scale;         /* glTF normalTexture.scale */
+    float occlusion_strength;   /* glTF occlusionTexture.strength */
+} tl_mesh_part;
+
+/* The radiance of an emissive factor of 1 (glTF's emissive, the built-in
+ * boat's lamps): a lamp that reads as lit against a dusk sky and feeds
+ * the glare; boat.lights scales it. */
+#define TL_MESH_EMISSIVE_RADIANCE 60.0f
+/* The largest texture side accepted (a map over it is refused with its
+ * size): what every GL 4.5 driver can hold. */
+#define TL_MESH_MAX_TEXTURE 16384
+
 typedef struct tl_mesh {
     size_t vertex_count;
     size_t index_count; /* three per triangle */
@@ -32,8 +68,17 @@ typedef struct tl_mesh {
      * sky the vertex sees past the mesh itself, tl_mesh_bake_occlusion;
      * 1 until baked) and emission. */
     float *surface;
+    /* Only for a model with textures, else NULL: per vertex u v (the first
+     * UV set), and the tangent x y z with the bitangent's sign w. */
+    float *uvs;
+    float *tangents;
     uint32_t *indices;
     float bounds_min[3], bounds_max[3];
+    /* A loaded model's materials' runs of triangles (the built-in boat
+     * has none: one run, no maps) and the images they sample. */
+    size_t part_count, image_count;
+    tl_mesh_part *parts;
+    tl_mesh_image *images;
 } tl_mesh;
 
 /* The most a model may have (tl_mesh_load refuses more, with its counts):
@@ -43,9 +88,11 @@ typedef struct tl_mesh {
 
 /* Loads every triangle of a glTF 2.0 (.glb, .gltf) or Wavefront OBJ file,
  * its node transforms applied, with smooth normals where the file has
- * none. A missing, empty or unreadable file, a folder, another format, a
- * file assimp cannot parse and one without triangles each fail with a
- * one-line message naming the file (TL_ERR_USAGE). */
+ * none, and its materials' textures (PNG or JPEG, embedded or beside the
+ * file). A missing, empty or unreadable file, a folder, another format, a
+ * file assimp cannot parse, one without triangles and a texture that is
+ * missing or cannot be decoded each fail with a one-line message naming
+ * the file (and the material and texture) (TL_ERR_USAGE). */
 int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err);
 
 /* The built-in fishing boat, one unit long: scale it by the hull length.
@@ -64,6 +111,10 @@ int tl_mesh_bake_occlusion(tl_mesh *m, double reach, tl_error *err);
 
 void tl_mesh_free(tl_mesh *m);
 
+/* Whether any part samples a map or glows: the mesh pass then draws the
+ * model part by part with its maps. */
+int tl_mesh_has_maps(const tl_mesh *m);
+
 /* The hull's outline where it meets the water (the design waterline,
  * y = 0): its half width at TL_MESH_WATERLINE_STATIONS evenly spaced z
  * from z[0] (aft) to z[1] (forward), model units, from the triangles that
@@ -81,6 +132,11 @@ void tl_mesh_waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS],
  * and dry from TL_MESH_WET_HIGH, where spray and the waves reach. */
 #define TL_MESH_WET_LOW  0.1
 #define TL_MESH_WET_HIGH 0.6
+/* The normal a tangent-space normal map's texel (r g b in [0, 1]) gives a
+ * surface of unit normal n and unit tangent t (t[3]: the bitangent's sign,
+ * b = sign * n x t), its tilt scaled by `scale` (glTF's normal map). */
+void tl_mesh_normal_map(const double n[3], const double t[4], const double texel[3], double scale,
+                        double out[3]);
 /* How much darker wet gloss paint is (a rough, porous surface: half). */
 #define TL_MESH_WET_DARKEN 0.15
 /* BRDF x cos(l) of a surface with normal n (facing v) for light from l

@@ -72,3 +72,36 @@ void tl_mesh_wet_surface(double wet, double base[3], double *roughness)
         base[k] *= 1.0 - wet * (TL_MESH_WET_DARKEN + (0.5 - TL_MESH_WET_DARKEN) * porous);
     *roughness += (fmin(*roughness, 0.1) - *roughness) * wet;
 }
+
+void tl_mesh_normal_map(const double n[3], const double t[4], const double texel[3], double scale,
+                        double out[3])
+{
+    /* glTF: the texel's xy tilt scaled, in the frame (t, b, n), b = w n x t,
+     * t made square to n first (it is interpolated across the triangle). */
+    double tt[3], nt = dot3(n, t), tlen = 0.0;
+    for (int i = 0; i < 3; i++) {
+        tt[i] = t[i] - n[i] * nt;
+        tlen += tt[i] * tt[i];
+    }
+    tlen = sqrt(tlen);
+    if (!(tlen > 1e-12)) { /* no tangent: no map */
+        for (int i = 0; i < 3; i++)
+            out[i] = n[i];
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        tt[i] /= tlen;
+    const double x = (2.0 * texel[0] - 1.0) * scale, y = (2.0 * texel[1] - 1.0) * scale,
+                 z = 2.0 * texel[2] - 1.0;
+    const double w = t[3] < 0.0 ? -1.0 : 1.0;
+    const double b[3] = {w * (n[1] * tt[2] - n[2] * tt[1]), w * (n[2] * tt[0] - n[0] * tt[2]),
+                         w * (n[0] * tt[1] - n[1] * tt[0])};
+    double len = 0.0;
+    for (int i = 0; i < 3; i++) {
+        out[i] = tt[i] * x + b[i] * y + n[i] * z;
+        len += out[i] * out[i];
+    }
+    len = sqrt(len);
+    for (int i = 0; i < 3; i++)
+        out[i] = len > 0.0 ? out[i] / len : n[i];
+}
