@@ -1,24 +1,48 @@
 // The boat in the ocean pass: the mesh pass rendered the lit hull and its
 // distance into textures; here they are composited with the water per
 // sample. The hull wins where it is nearer; water that lies inside the
-// hull's waterplane (an ellipse just within the model's bounds) under a
-// pixel the hull covers is hidden too, so no water shows on deck or
-// through the hull however the boat floats.
+// hull (its outline: the waterline's, widening to its widest plan above)
+// under a pixel the hull covers is hidden too, so no water shows on deck
+// or through the hull however the boat floats, pitches or heels.
 
 uniform sampler2D u_boat_color;      // lit hull, alpha = covered
 uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
-// The hull's outline at its waterline (tl_mesh_waterline): half widths at
-// evenly spaced model z from u_boat_waterline_z.x (aft) to .y (forward).
+// The hull's outline (tl_mesh_outline): half widths at evenly spaced model
+// z, at its waterline from u_boat_waterline_z.x (aft) to .y (forward), and
+// its widest, at model height u_boat_plan_y, from u_boat_plan_z.x to .y.
 uniform float u_boat_waterline[TL_MESH_WATERLINE_STATIONS];
 uniform vec2 u_boat_waterline_z;
+uniform float u_boat_plan[TL_MESH_WATERLINE_STATIONS];
+uniform float u_boat_plan_y[TL_MESH_WATERLINE_STATIONS];
+uniform vec2 u_boat_plan_z;
 
-// Whether the water point (camera-relative x z, absolute y) is inside the hull.
+// A table of half widths at model z: its stations' blend, 0 outside.
+float boat_station(float table[TL_MESH_WATERLINE_STATIONS], vec2 range, float z)
+{
+    if (!(range.y > range.x) || z < range.x || z > range.y)
+        return 0.0;
+    float f = (z - range.x) / (range.y - range.x) * float(TL_MESH_WATERLINE_STATIONS - 1);
+    int i = min(int(f), TL_MESH_WATERLINE_STATIONS - 2);
+    return mix(table[i], table[i + 1], f - float(i));
+}
+
+// Whether the water point (camera-relative x z, absolute y) is inside the
+// hull (tl_mesh_outline_contains).
 bool boat_contains(vec3 p)
 {
     vec3 m = (u_boat_to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
-    vec2 e = (m.xz - u_boat_hull.xy) / u_boat_hull.zw;
-    return dot(e, e) < 1.0 && m.y < u_boat_top;
+    if (!(m.y < u_boat_top))
+        return false;
+    float water = boat_station(u_boat_waterline, u_boat_waterline_z, m.z);
+    float half_width = water;
+    if (m.y > 0.0) {
+        float wide = boat_station(u_boat_plan, u_boat_plan_z, m.z);
+        float high = boat_station(u_boat_plan_y, u_boat_plan_z, m.z);
+        float f = high > 1.0e-9 ? min(m.y / high, 1.0) : 1.0;
+        half_width = water + (max(wide, water) - water) * f;
+    }
+    return abs(m.x) < half_width;
 }
 
 // The sample's radiance and distance after the hull: `water` at `dist`

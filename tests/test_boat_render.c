@@ -469,6 +469,117 @@ static void test_no_water_on_deck(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&f);
 }
 
+/* The nearest hit of pixel (px, py)'s ray with the mesh placed by `u`:
+ * its distance (INFINITY for none), the hit in model units and its
+ * triangle's model normal's y, facing up. */
+static double cast_hit(const tl_scene *s, const tl_mesh *m, const tl_frame_uniforms *u, int px,
+                       int py, double model_hit[3], double *normal_y)
+{
+    double ray[3];
+    pixel_ray(s, px, py, ray);
+    const double origin[3] = {0.0, 0.0, 0.0};
+    double best = INFINITY;
+    size_t hit = 0;
+    for (size_t t = 0; t < m->index_count; t += 3) {
+        double v[3][3];
+        for (int k = 0; k < 3; k++) {
+            const float *p = m->positions + 3 * m->indices[t + k];
+            for (int i = 0; i < 3; i++)
+                v[k][i] = u->boat_model[i] * p[0] + u->boat_model[4 + i] * p[1] +
+                          u->boat_model[8 + i] * p[2] + u->boat_model[12 + i];
+        }
+        double d = ray_triangle(origin, ray, v[0], v[1], v[2]);
+        if (d < best) {
+            best = d;
+            hit = t;
+        }
+    }
+    if (!isfinite(best))
+        return best;
+    double w[3] = {ray[0] * best, ray[1] * best, ray[2] * best};
+    for (int i = 0; i < 3; i++)
+        model_hit[i] = u->boat_to_model[i] * w[0] + u->boat_to_model[4 + i] * w[1] +
+                       u->boat_to_model[8 + i] * w[2] + u->boat_to_model[12 + i];
+    const float *a = m->positions + 3 * m->indices[hit],
+                *b = m->positions + 3 * m->indices[hit + 1],
+                *c = m->positions + 3 * m->indices[hit + 2];
+    double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+           e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    *normal_y = fabs(n[1]) / sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return best;
+}
+
+/* The clip surface: a boat pitched bow up with its stern deck below the
+ * sea, seen from above and astern. Over every pixel where the CPU's ray
+ * meets the deck, the frame shows the deck, not water nearer than it,
+ * though at many of them the sea outside stands above the deck. */
+static void test_pitched_deck(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_scene(&s);
+    s.boat.heading = 0.0;
+    s.boat.pitch = 0.25; /* bow up, 14 degrees: the stern deck goes under */
+    s.boat.roll = 0.05;
+    s.boat.position[1] = -0.3;
+    s.camera.position[0] = 2.5;
+    s.camera.position[1] = 6.0;
+    s.camera.position[2] = -9.0;
+    const double target[3] = {0.0, 0.0, -2.5};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_frame f;
+    if (render(r, &s, &f))
+        return;
+    tl_frame_uniforms u;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_prepare_frame(&s, &w, &u);
+    int deck = 0, under = 0, water = 0;
+    for (int y = 0; y < s.height; y += 2)
+        for (int x = 0; x < s.width; x += 2) {
+            double mh[3], ny;
+            double d = cast_hit(&s, m, &u, x, y, mh, &ny);
+            /* The deck: faces up, above the waterline, inside the bulwarks. */
+            if (!isfinite(d) || ny < 0.9 || mh[1] < 0.05 || fabs(mh[0]) > 0.1)
+                continue;
+            deck++;
+            double ray[3];
+            pixel_ray(&s, x, y, ray);
+            const double wx = s.camera.position[0] + ray[0] * d,
+                         wy = s.camera.position[1] + ray[1] * d,
+                         wz = s.camera.position[2] + ray[2] * d;
+            under += tl_waves_height(&w, wx, wz, s.time, TL_MAX_OCTAVES) > wy;
+            /* Water nearer than the deck, and within the hull's length:
+             * inside it. (Beyond the transom a crest standing above the
+             * deck rightly hides the deck's edge.) */
+            float seen = f.depth[(size_t)y * s.width + x];
+            double wm[3];
+            for (int i = 0; i < 3; i++)
+                wm[i] = u.boat_to_model[i] * ray[0] * seen +
+                        u.boat_to_model[4 + i] * ray[1] * seen +
+                        u.boat_to_model[8 + i] * ray[2] * seen + u.boat_to_model[12 + i];
+            if (seen < d - 0.05) {
+                int inside = wm[2] > m->bounds_min[2] && wm[2] < m->bounds_max[2];
+                water += inside;
+                printf("  water over the deck at (%d, %d): deck at %.3f m (model %.3f %.3f %.3f), "
+                       "water at %.3f m (model %.3f %.3f %.3f: %s the hull's length)\n",
+                       x, y, d, mh[0], mh[1], mh[2], seen, wm[0], wm[1], wm[2],
+                       inside ? "within" : "beyond");
+            }
+        }
+    printf("pitched boat: %d deck pixels, %d of them below the sea outside, %d showing water "
+           "inside the hull\n",
+           deck, under, water);
+    CHECK(deck > 100);
+    CHECK(under > 20);
+    CHECK(water == 0);
+    tl_frame_free(&f);
+}
+
 /* Supersampled, the hull's edges are anti-aliased: a pass per sample with
  * the hull drawn at that sample's offset (tl_prepare_boat_sample, what
  * tl_render does with a boat in view) comes closer to the frame rendered
@@ -562,6 +673,7 @@ int main(int argc, char **argv)
     }
     test_depth(r, &skiff, "skiff.gltf", &s);
     test_no_water_on_deck(r, &builtin);
+    test_pitched_deck(r, &builtin);
     test_hull_antialiased(r, &builtin);
     test_wake_groups(r, &builtin);
     test_wake_swept(r, &builtin, argv[2]);

@@ -136,8 +136,8 @@ static void test_default_boat(void)
     }
     check_normals(&m);
     /* The transom (the faces at the stern whose normal points astern):
-     * each triangle is one colour, red wholly below the waterline and white
-     * wholly above, so they meet in a straight line. A fan from a white
+     * each triangle is one colour, red wholly below the boot stripe and
+     * the rest wholly above its foot, so they meet in a straight line. A fan from a white
      * centre point blended them into a pale red X. */
     int transom = 0, mixed = 0, misplaced = 0;
     for (size_t t = 0; t + 2 < m.index_count; t += 3) {
@@ -154,7 +154,8 @@ static void test_default_boat(void)
             mixed += memcmp(m.colors + 3 * v[k], c0, 3 * sizeof(float)) != 0;
         for (int k = 0; k < 3; k++) {
             float y = m.positions[3 * v[k] + 1];
-            misplaced += red ? y > 1e-6f : y < -1e-6f;
+            /* The black boot stripe starts 0.008 below the waterline. */
+            misplaced += red ? y > 1e-6f : y < -0.008f - 1e-6f;
         }
     }
     printf("default boat's transom: %d triangles, %d mixed, %d vertices on the wrong side\n",
@@ -162,6 +163,24 @@ static void test_default_boat(void)
     CHECK(transom >= 10);
     CHECK(mixed == 0);
     CHECK(misplaced == 0);
+    /* Its outline: the waterline at midships narrower than the widest
+     * plan (the topsides flare), which stands higher; what is inside. */
+    tl_mesh_outline o;
+    tl_mesh_outline_of(&m, &o);
+    const int mid = TL_MESH_WATERLINE_STATIONS / 2;
+    printf("default boat's outline at midships: %.4f at the waterline, %.4f at y = %.4f\n",
+           o.waterline[mid], o.plan[mid], o.plan_y[mid]);
+    CHECK(o.waterline[mid] > 0.1 && o.plan[mid] > o.waterline[mid] && o.plan_y[mid] > 0.05);
+    CHECK_NEAR(o.plan[mid], m.bounds_max[0], 0.01);
+    const double zm = 0.5 * (o.waterline_z[0] + o.waterline_z[1]);
+    const double w = o.waterline[mid], p = o.plan[mid], py = o.plan_y[mid];
+    CHECK(tl_mesh_outline_contains(&o, (const double[]){0.0, 0.05, zm}));
+    CHECK(tl_mesh_outline_contains(&o, (const double[]){0.9 * w, -0.02, zm}));
+    CHECK(!tl_mesh_outline_contains(&o, (const double[]){w + 0.01, 0.0, zm}));
+    CHECK(tl_mesh_outline_contains(&o, (const double[]){0.5 * (w + p), py, zm}));
+    CHECK(!tl_mesh_outline_contains(&o, (const double[]){0.5 * (w + p), 0.1 * py, zm}));
+    CHECK(!tl_mesh_outline_contains(&o, (const double[]){0.0, 0.05, 0.51}));
+    CHECK(!tl_mesh_outline_contains(&o, (const double[]){0.0, m.bounds_max[1] + 0.01, zm}));
     tl_mesh_free(&m);
 }
 

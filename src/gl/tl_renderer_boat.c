@@ -134,7 +134,7 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
     }
     glBindVertexArray(r->vao);
     g->indices = (GLsizei)mesh->index_count;
-    tl_mesh_waterline(mesh, g->waterline, g->waterline_z);
+    tl_mesh_outline_of(mesh, &g->outline);
     int rc = tl_mesh_has_maps(mesh) ? upload_maps(g, mesh, err) : TL_OK;
     if (rc) {
         drop_mesh(g);
@@ -350,9 +350,13 @@ void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned featur
     glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
     glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
     glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
+    const tl_mesh_outline *o = &r->mesh.outline;
     glUniform1fv(tl_renderer_loc(program, "u_boat_waterline"), TL_MESH_WATERLINE_STATIONS,
-                 r->mesh.waterline);
-    glUniform2fv(tl_renderer_loc(program, "u_boat_waterline_z"), 1, r->mesh.waterline_z);
+                 o->waterline);
+    glUniform2fv(tl_renderer_loc(program, "u_boat_waterline_z"), 1, o->waterline_z);
+    glUniform1fv(tl_renderer_loc(program, "u_boat_plan"), TL_MESH_WATERLINE_STATIONS, o->plan);
+    glUniform1fv(tl_renderer_loc(program, "u_boat_plan_y"), TL_MESH_WATERLINE_STATIONS, o->plan_y);
+    glUniform2fv(tl_renderer_loc(program, "u_boat_plan_z"), 1, o->plan_z);
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, program);
 }

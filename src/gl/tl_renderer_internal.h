@@ -102,9 +102,9 @@ typedef struct gpu_mesh {
     tl_mesh_part *parts;
     GLuint *textures; /* per image, as RGBA8 */
     GLuint *srgb;     /* per image, as sRGB8_ALPHA8 (colour maps), or 0 */
-    /* Its outline at the waterline (tl_mesh_waterline), for the water's
-     * contact foam. */
-    float waterline[TL_MESH_WATERLINE_STATIONS], waterline_z[2];
+    /* Its outline (tl_mesh_outline_of): the water's contact foam follows
+     * its waterline, and its plan keeps the sea out of it. */
+    tl_mesh_outline outline;
 } gpu_mesh;
 
 struct tl_renderer {

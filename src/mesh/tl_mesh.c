@@ -119,7 +119,7 @@ static int waterline_crossings(const tl_mesh *m, size_t t, double out[2][2])
     return n;
 }
 
-void tl_mesh_waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS], float z[2])
+static void waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS], float z[2])
 {
     memset(half, 0, TL_MESH_WATERLINE_STATIONS * sizeof *half);
     z[0] = z[1] = 0.0f;
@@ -155,6 +155,80 @@ void tl_mesh_waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS],
     }
     z[0] = (float)lo;
     z[1] = (float)hi;
+}
+
+/* The widest section of each triangle at each station within half a
+ * step of it (so no corner slips between stations). */
+static void plan(const tl_mesh *m, tl_mesh_outline *o)
+{
+    const int n_st = TL_MESH_WATERLINE_STATIONS;
+    memset(o->plan, 0, sizeof o->plan);
+    memset(o->plan_y, 0, sizeof o->plan_y);
+    double lo = m->bounds_min[2], hi = m->bounds_max[2];
+    o->plan_z[0] = (float)lo;
+    o->plan_z[1] = (float)hi;
+    if (!(hi > lo))
+        return;
+    double step = (hi - lo) / (n_st - 1);
+    for (size_t t = 0; t + 2 < m->index_count; t += 3) {
+        const float *v[3];
+        double z0 = INFINITY, z1 = -INFINITY;
+        for (int k = 0; k < 3; k++) {
+            v[k] = m->positions + 3 * m->indices[t + k];
+            z0 = fmin(z0, v[k][2]);
+            z1 = fmax(z1, v[k][2]);
+        }
+        int first = (int)ceil((z0 - lo) / step - 0.5), last = (int)floor((z1 - lo) / step + 0.5);
+        for (int i = first < 0 ? 0 : first; i <= last && i < n_st; i++) {
+            double zs = fmin(fmax(lo + step * i, z0), z1);
+            /* Where the edges cross the plane z = zs (or touch it). */
+            for (int e = 0; e < 3; e++) {
+                const float *a = v[e], *b = v[(e + 1) % 3];
+                double za = a[2], zb = b[2];
+                if ((zs < fmin(za, zb)) || (zs > fmax(za, zb)))
+                    continue;
+                double f = zb != za ? (zs - za) / (zb - za) : 0.0;
+                double x = fabs(a[0] + (b[0] - a[0]) * f), y = a[1] + (b[1] - a[1]) * f;
+                if (x > o->plan[i]) {
+                    o->plan[i] = (float)x;
+                    o->plan_y[i] = (float)y;
+                }
+            }
+        }
+    }
+}
+
+void tl_mesh_outline_of(const tl_mesh *m, tl_mesh_outline *out)
+{
+    memset(out, 0, sizeof *out);
+    waterline(m, out->waterline, out->waterline_z);
+    plan(m, out);
+    out->top = m->bounds_max[1];
+}
+
+/* A half-width table's value at model z, 0 outside its range. */
+static double station_half(const float *half, const float z[2], double at)
+{
+    if (!(z[1] > z[0]) || at < z[0] || at > z[1])
+        return 0.0;
+    double f = (at - z[0]) / ((double)z[1] - z[0]) * (TL_MESH_WATERLINE_STATIONS - 1);
+    int i = (int)f < TL_MESH_WATERLINE_STATIONS - 2 ? (int)f : TL_MESH_WATERLINE_STATIONS - 2;
+    return half[i] + (half[i + 1] - half[i]) * (f - i);
+}
+
+int tl_mesh_outline_contains(const tl_mesh_outline *o, const double p[3])
+{
+    if (!(p[1] < o->top))
+        return 0;
+    double water = station_half(o->waterline, o->waterline_z, p[2]);
+    double half = water;
+    if (p[1] > 0.0) {
+        double wide = station_half(o->plan, o->plan_z, p[2]);
+        double high = station_half(o->plan_y, o->plan_z, p[2]);
+        double f = high > 1e-9 ? fmin(p[1] / high, 1.0) : 1.0;
+        half = water + (fmax(wide, water) - water) * f;
+    }
+    return fabs(p[0]) < half;
 }
 
 void tl_mesh_free(tl_mesh *m)

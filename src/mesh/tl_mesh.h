@@ -115,13 +115,27 @@ void tl_mesh_free(tl_mesh *m);
  * model part by part with its maps. */
 int tl_mesh_has_maps(const tl_mesh *m);
 
-/* The hull's outline where it meets the water (the design waterline,
- * y = 0): its half width at TL_MESH_WATERLINE_STATIONS evenly spaced z
- * from z[0] (aft) to z[1] (forward), model units, from the triangles that
- * cross the plane. The water's contact foam follows it. 0 and z = 0 0
- * for a mesh that does not reach the plane. */
+/* The hull's outline, for the water around it: where it meets the water
+ * (the design waterline, y = 0: the contact foam follows it) and its
+ * widest plan (what keeps the sea out of the hull when it sits low).
+ * Half widths at TL_MESH_WATERLINE_STATIONS evenly spaced z, model units. */
 #define TL_MESH_WATERLINE_STATIONS 32
-void tl_mesh_waterline(const tl_mesh *m, float half[TL_MESH_WATERLINE_STATIONS], float z[2]);
+typedef struct tl_mesh_outline {
+    /* At the waterline, from z = waterline_z[0] (aft) to [1] (forward),
+     * from the triangles that cross the plane; all 0 for a mesh that does
+     * not reach it. */
+    float waterline[TL_MESH_WATERLINE_STATIONS], waterline_z[2];
+    /* The widest half width over the mesh's whole height and the model y
+     * where it is, from z = plan_z[0] to [1] (the bounds). */
+    float plan[TL_MESH_WATERLINE_STATIONS], plan_y[TL_MESH_WATERLINE_STATIONS], plan_z[2];
+    float top; /* the mesh's highest y */
+} tl_mesh_outline;
+void tl_mesh_outline_of(const tl_mesh *m, tl_mesh_outline *out);
+/* Whether model point p is inside the hull: below its top, and within
+ * the waterline's half width at or below y = 0, widening linearly to the
+ * plan's at the plan's height (the flare) above. The CPU mirror of
+ * boat_contains in shaders/boat.glsl. */
+int tl_mesh_outline_contains(const tl_mesh_outline *o, const double p[3]);
 
 /* The meshes' shading in double: the CPU mirror of shaders/material.glsl
  * (test_mesh_shading probes the GPU against it). */

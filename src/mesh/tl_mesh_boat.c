@@ -17,8 +17,11 @@
 
 #define STATIONS 48 /* sections from the transom to the stem */
 
-/* The boot stripe's top above the design waterline. */
-#define BOOT_TOP 0.014
+/* The boot stripe straddles the design waterline, as a real boot top
+ * does: the band the water alternately wets and leaves, so that the red
+ * antifouling shows only in a deep trough or as the boat rolls. */
+#define BOOT_BOTTOM (-0.008)
+#define BOOT_TOP    0.014
 /* The bulwark: its height above the deck, its thickness. */
 #define BULWARK    0.03
 #define BULWARK_IN 0.006
@@ -502,16 +505,16 @@ int tl_mesh_default_boat(tl_mesh *out, tl_error *err)
     s.materials = MATERIALS;
     s.crease_cos = crease;
     hull(&s);
-    /* The waterline and the boot stripe's top cut the hull: paint by height. */
+    /* The boot stripe's edges cut the hull: paint by height. */
     const unsigned painted = 1u << P_BOTTOM | 1u << P_TOPSIDES | 1u << P_TRANSOM;
-    tl_mesh_soup_split_y(&s, painted, 0.0);
+    tl_mesh_soup_split_y(&s, painted, BOOT_BOTTOM);
     tl_mesh_soup_split_y(&s, painted, BOOT_TOP);
     for (size_t i = 0; i < s.count; i++) {
         tl_mesh_facet *f = &s.facets[i];
         if (f->material != HULL_PAINT)
             continue;
         double y = (f->p[0][1] + f->p[1][1] + f->p[2][1]) / 3.0;
-        f->material = y < 0.0 ? ANTIFOULING : (y < BOOT_TOP ? BOOT_STRIPE : TOPSIDES);
+        f->material = y < BOOT_BOTTOM ? ANTIFOULING : (y < BOOT_TOP ? BOOT_STRIPE : TOPSIDES);
     }
     keel(&s);
     deck(&s);

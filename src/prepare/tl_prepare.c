@@ -374,10 +374,6 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
     memcpy(u->boat_model, model, sizeof u->boat_model);
     memcpy(u->boat_to_model, inverse, sizeof u->boat_to_model);
     /* The water is hidden inside this ellipse, just within the bounds. */
-    u->boat_hull[0] = (float)(0.5 * (b->model_min[0] + b->model_max[0]));
-    u->boat_hull[1] = (float)(0.5 * (b->model_min[2] + b->model_max[2]));
-    u->boat_hull[2] = (float)(0.47 * (b->model_max[0] - b->model_min[0]));
-    u->boat_hull[3] = (float)(0.47 * (b->model_max[2] - b->model_min[2]));
     u->boat_top = (float)b->model_max[1];
     u->boat_water = (float)rel[1];
     double sun[3];

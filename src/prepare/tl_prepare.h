@@ -181,7 +181,6 @@ typedef struct tl_frame_uniforms {
     float view_proj[16];     /* camera-relative world -> clip */
     float boat_model[16];    /* model -> camera-relative world */
     float boat_to_model[16]; /* its inverse */
-    float boat_hull[4];      /* waterplane ellipse in model units: centre x z, semi-axes x z */
     float boat_top;          /* model y of the hull's top */
     float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
     float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */

@@ -121,7 +121,6 @@
     X(VEC2, world_offset, 0, TL_FEATURE_WAKE, "camera x z wrapped every 65536 m: texture coordinates") \
     X(FLOAT, boat_water, 0, TL_FEATURE_BOAT, "camera-relative y of the plane the hull mirrors in") \
     X(MAT4, boat_to_model, 0, TL_FEATURE_BOAT, "camera-relative world -> model") \
-    X(VEC4, boat_hull, 0, TL_FEATURE_BOAT, "waterplane ellipse: centre x z, semi-axes x z (model units)") \
     X(FLOAT, boat_top, 0, TL_FEATURE_BOAT, "model y of the hull's top") \
     X(FLOAT, boat_speed, 0, TL_FEATURE_BOAT, "the boat's speed over the ground, m/s") \
     X(MAT4, boat_shadow, 0, TL_FEATURE_BOAT_SHADOW, "camera-relative world -> the shadow map's s t and depth, 0 to 1") \
