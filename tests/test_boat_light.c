@@ -3,7 +3,8 @@
  * sun's shadows, of the wheelhouse on the deck by the factor the BRDF
  * says, and of the boat on the water beside it; the hull seen from below,
  * dark against the surface and modelled by the water's light; above the
- * water, no part of it black; and the bow wave of a boat under way. */
+ * water, no part of it black; the bow wave of a boat under way; and all
+ * of it 1e4 m out at t = 1e5 s as at the origin. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -439,6 +440,94 @@ static void test_bow_wave(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&still);
 }
 
+/* The boat's look where it is drawn at (x0 + dx, z0 + dz) at time t: its
+ * hull's pixels and their mean luminance, the pixels its bow wave whitens
+ * (under way at 5 m/s against drifting) and those its shadow darkens
+ * (against the water plate, boat.visible off). */
+typedef struct boat_look {
+    long hull, whiter, darker;
+    double hull_mean;
+} boat_look;
+
+static int look_at(tl_renderer *r, double dx, double dz, double t, boat_look *out)
+{
+    tl_scene s;
+    boat_at_origin(&s);
+    s.time = t;
+    s.boat.position[0] = dx;
+    s.boat.position[1] = 0.0; /* posed alike wherever it is */
+    s.boat.position[2] = dz;
+    s.boat.pitch = 0.02;
+    s.boat.roll = -0.03;
+    s.sun.elevation = 35.0 * M_PI / 180.0;
+    s.sun.azimuth = 200.0 * M_PI / 180.0;
+    s.camera.position[0] = dx + 6.0;
+    s.camera.position[1] = 10.0;
+    s.camera.position[2] = dz - 9.0;
+    const double target[3] = {dx, 0.0, dz + 1.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    s.boat.wake = 0.6;
+    s.boat.wake_step = 0.5;
+    tl_scene drifting = s, plate = s;
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        s.boat.wake_path[k][0] = drifting.boat.wake_path[k][0] = dx;
+        s.boat.wake_path[k][1] = dz - 2.5 * k;
+        drifting.boat.wake_path[k][1] = dz;
+    }
+    memcpy(plate.boat.wake_path, s.boat.wake_path, sizeof s.boat.wake_path);
+    plate.boat.visible = false;
+    tl_frame f[3];
+    const tl_scene *scenes[3] = {&s, &drifting, &plate};
+    for (int i = 0; i < 3; i++)
+        if (render(r, scenes[i], &f[i])) {
+            for (int k = 0; k < i; k++)
+                tl_frame_free(&f[k]);
+            return 1;
+        }
+    memset(out, 0, sizeof *out);
+    for (size_t i = 0; i < (size_t)s.width * s.height; i++) {
+        const double lw = luminance(f[0].color + 4 * i), ld = luminance(f[1].color + 4 * i),
+                     lp = luminance(f[2].color + 4 * i);
+        if (f[0].depth[i] < f[2].depth[i] - 0.05f) {
+            out->hull++;
+            out->hull_mean += lw;
+            continue;
+        }
+        out->whiter += lw > ld + 0.01;
+        out->darker += ld < lp - 0.003;
+    }
+    out->hull_mean /= out->hull ? out->hull : 1;
+    for (int k = 0; k < 3; k++)
+        tl_frame_free(&f[k]);
+    return 0;
+}
+
+/* A boat 1e4 m out at t = 1e5 s looks as at the origin at t = 10 s: its
+ * hull alike (the same pose, sun and sky), its bow wave and shadow of a
+ * like extent (the waves under them differ). */
+static void test_boat_far(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    boat_look near, far;
+    if (look_at(r, 0.0, 0.0, 10.0, &near) || look_at(r, 1e4, -1e4, 1e5, &far))
+        return;
+    printf("boat at the origin at 10 s: hull %ld pixels, mean %.4f; bow wave and wake %ld pixels "
+           "whiter, "
+           "shadow %ld darker\n",
+           near.hull, near.hull_mean, near.whiter, near.darker);
+    printf("boat 1e4 m out at 1e5 s:    hull %ld pixels, mean %.4f; bow wave and wake %ld pixels "
+           "whiter, "
+           "shadow %ld darker\n",
+           far.hull, far.hull_mean, far.whiter, far.darker);
+    CHECK(near.hull > 1000 && near.whiter > 50 && near.darker > 50);
+    CHECK(labs(far.hull - near.hull) <= 0.03 * near.hull);
+    CHECK(fabs(far.hull_mean - near.hull_mean) <= 0.03 * near.hull_mean);
+    CHECK(labs(far.whiter - near.whiter) <= 0.35 * near.whiter);
+    CHECK(labs(far.darker - near.darker) <= 0.35 * near.darker);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -455,6 +544,7 @@ int main(void)
     test_hull_from_below(r, &boat);
     test_hull_above(r, &boat);
     test_bow_wave(r, &boat);
+    test_boat_far(r, &boat);
     tl_mesh_free(&boat);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
