@@ -163,6 +163,19 @@ static void test_default_boat(void)
     CHECK(transom >= 10);
     CHECK(mixed == 0);
     CHECK(misplaced == 0);
+    /* The side lights: red (port) at -x, green (starboard) at +x, the
+     * world being left-handed (+X east of +Z north). */
+    int red_port = 0, green_starboard = 0, wrong_side = 0;
+    for (size_t i = 0; i < m.vertex_count; i++) {
+        const float *c = m.colors + 3 * i, x = m.positions[3 * i];
+        if (m.surface[4 * i + 3] < 30.0f)
+            continue; /* not a lamp */
+        int red = c[0] > 10.0f * c[1], green = c[1] > 10.0f * c[0];
+        red_port += red && x < 0.0f;
+        green_starboard += green && x > 0.0f;
+        wrong_side += (red && x > 0.0f) || (green && x < 0.0f);
+    }
+    CHECK(red_port > 0 && green_starboard > 0 && wrong_side == 0);
     /* Its outline: the waterline at midships narrower than the widest
      * plan (the topsides flare), which stands higher; what is inside. */
     tl_mesh_outline o;

@@ -60,7 +60,10 @@ static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
     [CABIN] = {{0.66f, 0.66f, 0.62f}, 0.35f, 0.0f, 0.0f},
     [ROOF] = {{0.50f, 0.51f, 0.50f}, 0.55f, 0.0f, 0.0f},
     [DOOR] = {{0.05f, 0.10f, 0.20f}, 0.4f, 0.0f, 0.0f},
-    [GLASS] = {{0.008f, 0.010f, 0.012f}, 0.05f, 0.0f, 0.0f},
+    /* Glass over the wheelhouse's dim interior: its diffuse is what shows
+     * through (by day a fraction of the light outside, a warm lamp inside
+     * with boat.lights), the gloss the sky's reflection. */
+    [GLASS] = {{0.036f, 0.030f, 0.021f}, 0.05f, 0.0f, 0.4f},
     [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
     [LAMP_PORT] = {{0.80f, 0.03f, 0.02f}, 0.1f, 0.0f, 60.0f},
     [LAMP_STARBOARD] = {{0.02f, 0.80f, 0.15f}, 0.1f, 0.0f, 60.0f},
@@ -446,11 +449,13 @@ static void wheelhouse(tl_mesh_soup *s, double deck_y)
     }
     box(s, (double[]){-x - 0.008, y1, z0 - 0.008},
         (double[]){x + 0.008, y1 + 0.012, z1 - rake + 0.012}, ROOF);
-    /* Side lights: red to port (+x, the bow at +z), green to starboard. */
+    /* Side lights: red to port, green to starboard (+x: the world is
+     * left-handed, +X east of +Z north, so facing the bow at +z starboard
+     * is +x). */
     box(s, (double[]){x, y1 - 0.02, z1 - rake - 0.016},
-        (double[]){x + 0.006, y1 - 0.008, z1 - rake}, LAMP_PORT);
+        (double[]){x + 0.006, y1 - 0.008, z1 - rake}, LAMP_STARBOARD);
     box(s, (double[]){-x - 0.006, y1 - 0.02, z1 - rake - 0.016},
-        (double[]){-x, y1 - 0.008, z1 - rake}, LAMP_STARBOARD);
+        (double[]){-x, y1 - 0.008, z1 - rake}, LAMP_PORT);
 }
 
 /* Stanchions along the deck's edge between u0 and u1, joined by a rail at
