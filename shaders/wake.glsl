@@ -141,9 +141,26 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     // foam is thicker, whiter, the further the lace is above it: thin at
     // a patch's edge, where the water shows through.
     float density = clamp(pow(cover, 1.3) * (0.4 + 1.2 * streaks), 0.0, 1.0);
-    float threshold = 0.75 - 0.5 * density + 0.35 * (1.0 - density) * (1.0 - density);
+    float threshold = 0.75 - 0.45 * density + 0.35 * (1.0 - density) * (1.0 - density);
     thickness = clamp(smoothstep(threshold, threshold + 0.25, lace) + detail, 0.0, 1.0);
-    return smoothstep(threshold, threshold + 0.06, lace);
+    float patches = smoothstep(threshold, threshold + 0.06, lace);
+    // Between the patches the churned water is a web of foam: veins along
+    // the middle contours of a lace drawn out along the path, wider where
+    // the wash is dense (as the giant wave's trail; patches alone read as
+    // milky sheets with soft edges). A vein narrower than the pixel is
+    // drawn a pixel wide and as much fainter, so it cannot flicker.
+    float web = 0.7 * foam_lace(path * vec2(1.2, 3.5)) + 0.3 * foam_lace(world * 6.0) +
+                0.15 * detail;
+    float half_width = mix(0.008, 0.025, density);
+    float drawn = max(half_width, 0.2 * footprint);
+    float veins = (1.0 - smoothstep(drawn, 2.0 * drawn, abs(web - 0.5))) * (half_width / drawn) *
+                  smoothstep(0.0, 0.5, cover);
+    // Broken into drifts, brighter and fainter, as a web of foam ages.
+    veins *= smoothstep(0.25, 0.55, foam_noise(world * 0.45 + vec2(3.3, 1.7)) + 0.3 * density) *
+             (0.55 + 0.45 * foam_noise(world * 1.7 + vec2(8.2, 2.9)));
+    aerated *= 0.7 + 0.6 * clamp(web - 0.2, 0.0, 0.5);
+    thickness = max(thickness, 0.4 * veins);
+    return max(patches, 0.85 * veins);
 }
 
 #ifdef TL_FEATURE_GIANT_WAVE

@@ -392,6 +392,14 @@ static void test_mirror_hidden(tl_renderer *r, const tl_mesh *m, const char *tim
     if (cutscene_frame_edited(r, m, timelines, "voyage.tl", 120, "set giant.arrival 10.5s",
                               "set giant.arrival 8.7s", &s))
         return;
+    /* The camera where the timeline once had it at 5 s, 24 m off, low on
+     * a swell's back (it now rides beside the boat at the deck's height). */
+    s.camera.position[0] = -10.247;
+    s.camera.position[1] = 2.563;
+    s.camera.position[2] = 12.517;
+    s.camera.yaw = 40.118 * M_PI / 180.0;
+    s.camera.pitch = 2.273 * M_PI / 180.0;
+    s.camera.vfov = 49.697 * M_PI / 180.0;
     /* The premise: the boat's water well below the camera's. */
     tl_waves waves;
     tl_waves_init(&waves, &s.ocean);
