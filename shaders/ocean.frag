@@ -31,6 +31,9 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #include "lip.glsl"
 #include "lip_shade.glsl"
 #endif
+// Before spray.glsl, which includes it too: a file is expanded once, and
+// here outside any #ifdef (its parts have their own).
+#include "bow_spray.glsl"
 #ifdef TL_FEATURE_GIANT_SPRAY
 #include "spray.glsl"
 #endif
@@ -148,6 +151,9 @@ vec3 trace(vec3 ray, out float dist)
 #endif
 #ifdef TL_FEATURE_GIANT_SPRAY
     color = giant_spray(ray, dist, color);
+#endif
+#ifdef TL_FEATURE_BOW_SPRAY
+    color = bow_spray(ray, dist, color);
 #endif
 #ifdef TL_FEATURE_FOG
     color = optics_fog(color, u_cam_height, ray, dist);

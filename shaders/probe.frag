@@ -40,6 +40,8 @@
 //           normalize(0.3, 0.9, -0.2) with the tangent (1, 0, 0.4), its
 //           tilt scaled by |w|, the bitangent's side the sign of w
 //           (tl_mesh_normal_map)
+//   mode 18: the bow's spray density at camera-relative (x, z) and height
+//           y, the input's third float       (tl_bow_spray_density)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -52,6 +54,9 @@
 #ifdef TL_FEATURE_GIANT_LIP
 #include "lip.glsl"
 #endif
+// Before spray.glsl, which includes it too: a file is expanded once, and
+// here outside any #ifdef (its parts have their own).
+#include "bow_spray.glsl"
 #ifdef TL_FEATURE_GIANT_SPRAY
 #include "spray.glsl"
 #endif
@@ -102,6 +107,10 @@ void main()
         result.xyz = material_env_brdf(vec3(0.04, 0.5, 0.9), p.y, p.x);
     else if (u_probe_mode == 15)
         result.x = material_wetness(p.x, p.y);
+#ifdef TL_FEATURE_BOW_SPRAY
+    else if (u_probe_mode == 18)
+        result.x = bow_spray_density(vec3(p.x, input4.z, p.y));
+#endif
     else if (u_probe_mode == 17)
         result.xyz = material_normal_map(normalize(vec3(0.3, 0.9, -0.2)),
                                          vec4(1.0, 0.0, 0.4, input4.w < 0.0 ? -1.0 : 1.0),

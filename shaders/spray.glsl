@@ -3,6 +3,7 @@
 // meets the face, as a light volume composited over whatever the ray saw
 // before it. src/waves/tl_giant_spray.c is the same density in double and
 // has the TL_SPRAY_* constants; keep the two in step.
+#include "bow_spray.glsl"
 
 // erf, to 1.5e-7 (Abramowitz and Stegun 7.1.26).
 float giant_erf(float x)
@@ -77,20 +78,9 @@ float giant_spray_density(vec3 p, float span)
         }
 #endif
     }
-    if (u_giant_spray_bow.w > 0.0) {
-        // A sheet thrown up and out to both sides of the bow: thin along
-        // the heading, wide across it, rising; torn by the noise.
-        vec3 d = p - u_giant_spray_bow.xyz;
-        vec2 h = u_giant_spray_heading;
-        float R = u_giant_spray.w;
-        float along = dot(d.xz, h) / (0.4 * R);
-        float side = (d.x * h.y - d.z * h.x) / (1.3 * R);
-        float up = d.y / (0.9 * R);
-        float r2 = along * along + side * side + up * up;
-        if (r2 < 9.0)
-            density += u_giant_spray_bow.w * exp(-r2) *
-                       smoothstep(0.4, 0.75, foam_noise(vec2(side * 2.6 + 17.0, up * 3.1 - along)));
-    }
+    if (u_giant_spray_bow.w > 0.0)
+        density += u_giant_spray_bow.w * bow_spray_sheet(p - u_giant_spray_bow.xyz,
+                                                         u_giant_spray_heading, u_giant_spray.w);
     return density;
 }
 
@@ -108,15 +98,11 @@ float giant_spray_density(vec3 p, float span)
 // the back of the wave).
 // Steps: one per quality.spray_step metres of the ray in the boxes
 // (u_spray_step), at least TL_SPRAY_STEPS_MIN and at most
-// TL_SPRAY_STEPS_MAX. Sixteen over the whole box, whatever its length, put
-// 4 m between the samples of a ray that crossed the landing's tall box,
-// against wisps under a metre: each pixel's few samples found other wisps,
-// a grain like asphalt over the back of the wave.
-#define TL_SPRAY_STEPS_MIN   16
-#define TL_SPRAY_STEPS_MAX   64
-#define TL_SPRAY_PHASE_G     0.7
-#define TL_SPRAY_ALBEDO      0.9
-#define TL_SPRAY_DIFFUSE     0.6
+// TL_SPRAY_STEPS_MAX (bow_spray.glsl). Sixteen over the whole box, whatever
+// its length, put 4 m between the samples of a ray that crossed the
+// landing's tall box, against wisps under a metre: each pixel's few
+// samples found other wisps, a grain like asphalt over the back of the
+// wave.
 #define TL_SPRAY_SHADE_WATER 10.0
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {

@@ -149,7 +149,7 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     // the wash is dense (as the giant wave's trail; patches alone read as
     // milky sheets with soft edges). A vein narrower than the pixel is
     // drawn a pixel wide and as much fainter, so it cannot flicker.
-    float web = 0.7 * foam_lace(path * vec2(1.2, 3.5)) + 0.3 * foam_lace(world * 6.0) +
+    float web = 0.8 * foam_lace(path * vec2(0.7, 4.0)) + 0.2 * foam_lace(world * 6.0) +
                 0.15 * detail;
     float half_width = mix(0.008, 0.025, density);
     float drawn = max(half_width, 0.2 * footprint);

@@ -80,7 +80,7 @@ tl_add_test(test_extremes_params SOURCES test_extremes_params.c LIBS tideline_gl
   ARGS channels LABELS gl)
 add_test(NAME test_extremes_keys COMMAND test_extremes_params keys
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-set_tests_properties(test_extremes_params test_extremes_keys PROPERTIES LABELS gl TIMEOUT 300)
+set_tests_properties(test_extremes_params test_extremes_keys PROPERTIES LABELS gl TIMEOUT 900)
 # Soak: renders killed (SIGKILL, SIGTERM) at random moments and resumed with
 # --skip-existing end as an uninterrupted run does, with no temporary left.
 add_test(NAME test_soak

@@ -10,6 +10,7 @@
 
 #include "mesh/tl_mesh.h"
 #include "tl_gl_test.h"
+#include "waves/tl_bow_spray.h"
 
 /* The built-in boat, 9 m long, at the origin with its bow north (+z). */
 static void boat_at_origin(tl_scene *s)
@@ -440,6 +441,96 @@ static void test_bow_wave(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&still);
 }
 
+/* The bow's spray: compiled in only where the water rises against the bow
+ * fast enough; its density on the GPU against the CPU's; drawn, it whitens
+ * the water around the stem and nothing beyond the sheet's sphere. */
+static void test_bow_spray(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.camera.position[0] = 9.0;
+    s.camera.position[1] = 3.0;
+    s.camera.position[2] = 6.0;
+    const double target[3] = {0.0, 1.0, 3.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_scene calm = s;
+    calm.boat.impact = 0.3; /* riding the chop */
+    s.boat.impact = 2.0;    /* slamming into a wave */
+    tl_frame_uniforms u, u_calm;
+    gl_test_prepare(r, &calm, &u_calm);
+    CHECK(!(u_calm.features & TL_FEATURE_BOW_SPRAY));
+    gl_test_prepare(r, &s, &u);
+    CHECK(u.features & TL_FEATURE_BOW_SPRAY);
+    tl_bow_spray sp;
+    tl_bow_spray_prepare(&sp, &s.boat);
+    CHECK(sp.active && sp.radius > 0.0);
+    enum { N = 256 };
+    float in[N * 4], out[N * 4];
+    srand(5);
+    for (int i = 0; i < N; i++) {
+        for (int c = 0; c < 3; c++)
+            in[4 * i + (c == 1   ? 2
+                        : c == 2 ? 1
+                                 : 0)] =
+                (float)(sp.center[c] - (c == 1 ? 0.0 : s.camera.position[c]) +
+                        2.0 * sp.radius * (2.0 * rand() / RAND_MAX - 1.0));
+        in[4 * i + 3] = 0.0f;
+    }
+    if (tl_renderer_probe4(r, &u, 18, in, N, u.octaves, out, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    double worst = 0.0, most = 0.0;
+    int dense = 0;
+    for (int i = 0; i < N; i++) {
+        double want = tl_bow_spray_density(&sp, in[4 * i] + s.camera.position[0], in[4 * i + 2],
+                                           in[4 * i + 1] + s.camera.position[2]);
+        worst = fmax(worst, fabs(out[4 * i] - want));
+        most = fmax(most, want);
+        dense += want > 0.1 * sp.amount;
+    }
+    printf("bow spray: radius %.2f m, amount %.2f; GPU against CPU over %d points: %.2g (the "
+           "densest %.2f, %d over a tenth of the amount)\n",
+           sp.radius, sp.amount, N, worst, most, dense);
+    CHECK(dense > 10);
+    CHECK(worst < 1e-3 * sp.amount);
+    /* Drawn: whiter around the stem, nothing beyond the sheet's sphere. */
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return;
+    if (render(r, &calm, &without)) {
+        tl_frame_free(&with);
+        return;
+    }
+    const double reach = 3.0 * 1.3 * sp.radius;
+    long whiter = 0, outside = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            double d = luminance(pixel(&with, x, y)) - luminance(pixel(&without, x, y));
+            if (fabs(d) < 0.005)
+                continue;
+            whiter += d > 0.0;
+            /* The pixel's ray's closest approach to the sphere's centre. */
+            double ray[3], c[3], along = 0.0, c2 = 0.0;
+            pixel_ray(&s, x, y, ray);
+            for (int k = 0; k < 3; k++) {
+                c[k] = sp.center[k] - s.camera.position[k];
+                along += c[k] * ray[k];
+                c2 += c[k] * c[k];
+            }
+            outside += c2 - along * along > (reach + 0.5) * (reach + 0.5);
+        }
+    printf("bow spray drawn: %ld pixels whiter, %ld changed beyond its sphere\n", whiter, outside);
+    CHECK(whiter > 200);
+    CHECK(outside == 0);
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+}
+
 /* The boat's look where it is drawn at (x0 + dx, z0 + dz) at time t: its
  * hull's pixels and their mean luminance, the pixels its bow wave whitens
  * (under way at 5 m/s against drifting) and those its shadow darkens
@@ -545,6 +636,7 @@ int main(void)
     test_hull_above(r, &boat);
     test_bow_wave(r, &boat);
     test_boat_far(r, &boat);
+    test_bow_spray(r, &boat);
     tl_mesh_free(&boat);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);

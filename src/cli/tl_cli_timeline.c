@@ -14,6 +14,7 @@
 #include "mesh/tl_mesh.h"
 #include "prepare/tl_prepare.h"
 #include "timeline/tl_parse.h"
+#include "waves/tl_bow_spray.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
 
@@ -522,6 +523,8 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame,
                num(s.boat.position[1]), num(s.boat.position[2]));
         printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", "boat pose",
                s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
+        printf("  %-26s %.6g m/s (the bow's spray from %g m/s, all of it from %g)\n",
+               "water rising at the bow", s.boat.impact, TL_BOW_SPRAY_FROM, TL_BOW_SPRAY_FULL);
     }
     print_report_text(tl, &s);
     print_probes_text(&s, probes);
@@ -559,9 +562,10 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
     printf("}, \"boat\": ");
     if (s.boat.enabled)
         printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g, \"pitch\": %.17g, "
-               "\"roll\": %.17g, \"length\": %.17g, \"beam\": %.17g}",
+               "\"roll\": %.17g, \"length\": %.17g, \"beam\": %.17g, \"impact\": %.17g}",
                s.boat.position[0], s.boat.position[1], s.boat.position[2], s.boat.heading / TL_DEG,
-               s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
+               s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam,
+               s.boat.impact);
     else
         printf("null");
     print_report_json(tl, &s);

@@ -12,6 +12,7 @@
 #include "optics/tl_optics.h"
 #include "prepare/tl_uniform_list.h"
 #include "sky/tl_sky.h"
+#include "waves/tl_bow_spray.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_giant_spray.h"
 
@@ -25,7 +26,7 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
     "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
     "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW",
-    "TL_FEATURE_BOAT_SHADOW"};
+    "TL_FEATURE_BOAT_SHADOW", "TL_FEATURE_BOW_SPRAY"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "giant wave",
                                                              "boat",
@@ -44,7 +45,8 @@ static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "lip",
                                                              "spray",
                                                              "crest glow",
-                                                             "boat shadow"};
+                                                             "boat shadow",
+                                                             "bow spray"};
 
 const char *tl_feature_define(int index)
 {
@@ -313,6 +315,32 @@ static void prepare_boat_shadow(const tl_scene *s, const double c[3], double r, 
  * its bounding sphere is in view; how much of the sun its hull sees past
  * the giant wave's crest, at the hull's centre (the shadow's edge is soft
  * over metres, the hull is a few long). */
+/* The bow's spray where it meets rising water (TL_FEATURE_BOW_SPRAY), with
+ * the boat in view and its sheet's sphere too; the giant wave's spray
+ * throws its own where the bow meets the face. */
+static void prepare_bow_spray(const tl_scene *s, tl_frame_uniforms *u)
+{
+    if (!(u->features & TL_FEATURE_BOAT) ||
+        ((u->features & TL_FEATURE_GIANT_SPRAY) && u->giant_spray_bow[3] > 0.0f))
+        return;
+    tl_bow_spray sp;
+    tl_bow_spray_prepare(&sp, &s->boat);
+    double c[3];
+    for (int i = 0; i < 3; i++)
+        c[i] = sp.center[i] - s->camera.position[i];
+    if (!sp.active || !sphere_in_view(s, c, 3.0 * 1.3 * sp.radius))
+        return;
+    u->features |= TL_FEATURE_BOW_SPRAY;
+    u->bow_spray[0] = (float)c[0];
+    u->bow_spray[1] = (float)sp.center[1];
+    u->bow_spray[2] = (float)c[2];
+    u->bow_spray[3] = (float)sp.amount;
+    u->bow_spray_shape[0] = (float)sp.heading[0];
+    u->bow_spray_shape[1] = (float)sp.heading[1];
+    u->bow_spray_shape[2] = (float)sp.radius;
+    u->bow_spray_shape[3] = 0.0f;
+}
+
 static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_uniforms *u)
 {
     const tl_boat *b = &s->boat;
@@ -783,6 +811,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, w, &giant, u);
     prepare_boat(s, &giant, u);
+    prepare_bow_spray(s, u);
     prepare_wake(s, u);
     prepare_water_body(s, w, &giant, u);
     prepare_fog(s, u);

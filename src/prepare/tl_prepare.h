@@ -44,9 +44,10 @@ typedef enum tl_feature {
     TL_FEATURE_GIANT_GLOW =
         1u << 17, /* giant.scatter > 0 with the sun up: light through the crest */
     TL_FEATURE_BOAT_SHADOW = 1u << 18, /* boat.shadows with the sun up: its shadow map */
+    TL_FEATURE_BOW_SPRAY = 1u << 19,   /* the bow meets rising water: its spray (not the giant's) */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 19
+#define TL_FEATURE_COUNT 20
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -165,6 +166,9 @@ typedef struct tl_frame_uniforms {
      * amount). */
     float giant_spray[4], giant_spray_box[4], giant_spray_bow[4], giant_spray_heading[2];
     float spray_step; /* quality.spray_step: metres a step of the spray's march */
+    /* TL_FEATURE_BOW_SPRAY (tl_bow_spray): the centre relative to the
+     * camera (y absolute) and amount; the heading (x, z) and radius. */
+    float bow_spray[4], bow_spray_shape[4];
     float giant_foam[4], giant_scatter[4], giant_scatter_color[3], giant_sigma[3];
     float giant_slope[TL_GIANT_SLOPE_BINS]; /* slope bound per bin of s */
     float giant_world[2]; /* the crest's world (s, w) wrapped to [0, 65536) m: foam */

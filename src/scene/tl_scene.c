@@ -118,6 +118,7 @@ void tl_scene_defaults(tl_scene *s)
     s->boat.wake = 1.0;
     s->boat.wake_time = 6.0;
     s->boat.lights = 0.0;
+    s->boat.spray = 1.0;
     s->boat.shadows = true;
     s->boat.scale = 8.0;
     const double lo[3] = TL_BOAT_BUILTIN_MIN, hi[3] = TL_BOAT_BUILTIN_MAX;

@@ -177,6 +177,10 @@ typedef struct tl_boat {
     double scale;                      /* metres per model unit */
     double model_min[3], model_max[3]; /* the model's bounds, model units */
     double length, beam;               /* hull length and beam, metres */
+    /* How fast the water rises against the bow, m/s (0 unless floated by
+     * a timeline): it throws the bow's spray. */
+    double impact;
+    double spray; /* boat.spray: the bow spray's strength, 0 = none */
     /* The wake: where the boat was, every wake_step seconds back from now
      * (wake_path[0] is the boat itself), world x z. */
     double wake_path[TL_WAKE_POINTS][2];

@@ -193,6 +193,8 @@ static const tl_channel channels[] = {
          "response time of the floating spring (smaller follows the waves closer)"),
     REAL("boat.lights", 1, TL_UNIT_NONE, 0.0, 1.0, boat.lights,
          "its navigation lights' brightness (for dusk and night), 0 off"),
+    REAL("boat.spray", 1, TL_UNIT_NONE, 0.0, 10.0, boat.spray,
+         "strength of the spray the bow throws where it meets rising water"),
     {"boat.shadows", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.shadows),
      NULL, "the sun casts the boat's shadows, on itself and on the water"},
 

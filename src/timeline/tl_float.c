@@ -183,6 +183,24 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
         b->position[1] = lowest;
 }
 
+double tl_timeline_bow_gap(const tl_scene *s)
+{
+    const tl_boat *b = &s->boat;
+    tl_waves waves;
+    tl_waves_init(&waves, &s->ocean);
+    tl_giant giant;
+    tl_giant_prepare(&giant, &s->giant, s->time);
+    ocean_ctx oc = {&waves, s->time, s->quality.march_octaves, &giant, s->quality.giant_iterations};
+    const double a = 0.5 * b->length;
+    const double x = b->position[0] + sin(b->heading) * a, z = b->position[2] + cos(b->heading) * a;
+    double water = ocean_height(&oc, x, z);
+    if (giant.active) {
+        giant_ctx gc = {&giant, s->quality.giant_iterations, -0.5 * s->ocean.depth};
+        water += giant_height(&gc, x, z);
+    }
+    return water - (b->position[1] + sin(b->pitch) * a);
+}
+
 void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],
                                  const float bounds_max[3])
 {

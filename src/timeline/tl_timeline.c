@@ -123,8 +123,9 @@ static void aim_giant(const tl_timeline *tl, tl_scene *s)
     s->giant.center[1] = along * dir[1] - across * dir[0];
 }
 
-/* The scene at t; floating (the costly part) only when asked. */
-static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_boat)
+/* The scene at t; floating (the costly part) only when asked, and the
+ * bow's impact (floating twice) only with it. */
+static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_boat, bool impact)
 {
     tl_scene_defaults(s);
     s->time = t;
@@ -180,9 +181,19 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
     /* Where it was, for its wake: twice the fade time back. */
     if (s->boat.enabled)
         boat_wake(&tl->boat_path.path, t, &s->boat);
-    /* ... and floats on the waves, the giant one included. */
-    if (s->boat.enabled && float_boat)
+    /* ... and floats on the waves, the giant one included. How fast the
+     * water rises against its bow (its spray) is the change of the bow's
+     * gap to the water over TL_BOW_IMPACT_DT: the pose a moment before,
+     * floated alike (the pose depends on the time alone, so this does). */
+    if (s->boat.enabled && float_boat) {
         tl_timeline_float_boat(tl, t, heading_from_path, s);
+        if (impact) {
+            tl_scene before;
+            eval_scene(tl, t - TL_BOW_IMPACT_DT, &before, true, false);
+            s->boat.impact =
+                (tl_timeline_bow_gap(s) - tl_timeline_bow_gap(&before)) / TL_BOW_IMPACT_DT;
+        }
+    }
     if (tl->camera_follow.target == TL_TARGET_BOAT)
         add3(s->camera.position, s->boat.position, tl->camera_follow.offset);
     /* Paths (a Catmull-Rom curve may overshoot its points) and links (boat +
@@ -210,7 +221,7 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
 
 void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
 {
-    eval_scene(tl, t, s, true);
+    eval_scene(tl, t, s, true, true);
 }
 
 bool tl_timeline_has_cut_between(const tl_timeline *tl, double t0, double t1)
@@ -239,7 +250,7 @@ void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *f)
         double t = samples == frames ? tl_timeline_frame_time(tl, i)
                                      : tl->duration * (double)i / (double)(samples - 1);
         tl_scene s;
-        eval_scene(tl, t, &s, false); /* the features do not depend on the boat's pose */
+        eval_scene(tl, t, &s, false, false); /* the features do not depend on the boat's pose */
         f->boat |= s.boat.enabled;
         f->giant_wave |= s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
         f->fog |= s.fog.density > 0.0;

@@ -77,6 +77,16 @@ typedef struct tl_timeline {
 #define TL_FLOAT_TILT_KNEE (20.0 * 3.14159265358979323846 / 180.0)
 void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s);
 
+/* The water's height at the boat's stem (half its length ahead of its
+ * centre) less the stem's at its waterline, metres, for the scene's
+ * floated pose: its change over time is how fast the water rises against
+ * the bow (tl_boat.impact). */
+double tl_timeline_bow_gap(const tl_scene *s);
+/* The interval over which tl_boat.impact is taken: long enough that a
+ * ripple's quick rise and fall at the stem does not flicker the spray
+ * from frame to frame, short against a wave that the bow slams into. */
+#define TL_BOW_IMPACT_DT 0.25
+
 /* Records the loaded boat model's bounds: its hull length and beam (which
  * floating samples) and its extent on screen. */
 void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],

@@ -1,5 +1,7 @@
 #include "tl_giant_spray.h"
 
+#include "tl_bow_spray.h"
+
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -184,17 +186,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         }
     }
     if (sp->bow_amount > 0.0) {
-        /* A sheet thrown up and out to both sides of the bow: thin along
-         * the heading, wide across it, rising; torn by the noise. */
-        double dx = x - sp->bow[0], dy = y - sp->bow[1], dz = z - sp->bow[2];
-        double along = (dx * sp->heading[0] + dz * sp->heading[1]) / (0.4 * sp->bow_radius);
-        double side = (dx * sp->heading[1] - dz * sp->heading[0]) / (1.3 * sp->bow_radius);
-        double up = dy / (0.9 * sp->bow_radius);
-        double r2 = along * along + side * side + up * up;
-        if (r2 < 9.0)
-            density +=
-                sp->bow_amount * exp(-r2) *
-                smoothstep(0.4, 0.75, tl_giant_spray_noise(side * 2.6 + 17.0, up * 3.1 - along));
+        const double d[3] = {x - sp->bow[0], y - sp->bow[1], z - sp->bow[2]};
+        density += sp->bow_amount * tl_bow_spray_sheet(d, sp->heading, sp->bow_radius);
     }
     return density;
 }

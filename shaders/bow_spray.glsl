@@ -1,0 +1,84 @@
+// The spray a boat's bow throws where it meets rising water: a sheet
+// thrown up and out to both sides of the stem (bow_spray_sheet, which the
+// giant wave's spray throws too where the bow meets its face), and, with
+// TL_FEATURE_BOW_SPRAY, its light volume over what the ray saw.
+// src/waves/tl_bow_spray.c is the same density in double.
+
+// The spray's light, for the giant wave's (spray.glsl) and the bow's: a
+// march of at least TL_SPRAY_STEPS_MIN and at most TL_SPRAY_STEPS_MAX
+// steps, the droplets' forward lobe g, their albedo, and the share of
+// TL_SPRAY_DIFFUSE / pi a dense cloud scatters many times inside.
+#define TL_SPRAY_STEPS_MIN 16
+#define TL_SPRAY_STEPS_MAX 64
+#define TL_SPRAY_PHASE_G   0.7
+#define TL_SPRAY_ALBEDO    0.9
+#define TL_SPRAY_DIFFUSE   0.6
+
+// The sheet's shape at offset d (metres) from its centre for a boat
+// heading h (unit x z) and a burst of `radius`: thin along the heading,
+// wide across it, rising; torn by the noise. 0 beyond three radii.
+float bow_spray_sheet(vec3 d, vec2 h, float radius)
+{
+    float along = dot(d.xz, h) / (0.4 * radius);
+    float side = (d.x * h.y - d.z * h.x) / (1.3 * radius);
+    float up = d.y / (0.9 * radius);
+    float r2 = along * along + side * side + up * up;
+    if (r2 >= 9.0)
+        return 0.0;
+    // Torn into sheets and clots of droplets: two scales of noise.
+    float torn = 0.65 * foam_noise(vec2(side * 2.6 + 17.0, up * 3.1 - along)) +
+                 0.35 * foam_noise(vec2(side * 7.3 - 4.0, up * 8.9 + along * 2.0));
+    return exp(-r2) * smoothstep(0.4, 0.75, torn);
+}
+
+#ifdef TL_FEATURE_BOW_SPRAY
+// The burst's density at camera-relative p (y absolute)
+// (tl_bow_spray_density).
+float bow_spray_density(vec3 p)
+{
+    return u_bow_spray.w * bow_spray_sheet(p - u_bow_spray.xyz, u_bow_spray_shape.xy,
+                                           u_bow_spray_shape.z);
+}
+
+// The burst along `ray` from the camera to `dist`, over `color`, lit as
+// the giant wave's spray is (giant_spray, without the wave's shade): the
+// sun's single scattering in a forward lobe, many times inside where it is
+// dense, and the sky; in steps over the ray's part in the sheet's sphere,
+// each at an offset by a hash of the pixel (a frame is the same alone or
+// in a sequence).
+vec3 bow_spray(vec3 ray, float dist, vec3 color)
+{
+    vec3 c = u_bow_spray.xyz - vec3(0.0, u_cam_height, 0.0);
+    float along = dot(c, ray), R = 3.0 * 1.3 * u_bow_spray_shape.z; // the sheet's widest
+    float h = R * R - (dot(c, c) - along * along);
+    if (h <= 0.0)
+        return color;
+    float t0 = max(along - sqrt(h), 0.0), t1 = min(along + sqrt(h), dist);
+    if (!(t0 < t1))
+        return color;
+    const float g = TL_SPRAY_PHASE_G;
+    float mu = dot(ray, u_sun_dir);
+    float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
+    vec3 sun = sky_sun_light(), ambient = sky_ambient();
+    int steps = clamp(int(ceil((t1 - t0) / u_spray_step)), TL_SPRAY_STEPS_MIN, TL_SPRAY_STEPS_MAX);
+    float dt = (t1 - t0) / float(steps);
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint k = pixel.x * 0x8da6b343u ^ pixel.y * 0xd8163841u;
+    k ^= k >> 15;
+    k *= 0x2c1b3c6du;
+    k ^= k >> 12;
+    float offset = float(k & 0xffffu) / 65536.0;
+    float trans = 1.0;
+    vec3 scattered = vec3(0.0);
+    for (int i = 0; i < steps; i++) {
+        vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
+        float density = bow_spray_density(p);
+        float step_trans = exp(-TL_SPRAY_SIGMA * density * dt);
+        float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
+        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) + ambient);
+        scattered += trans * (1.0 - step_trans) * light;
+        trans *= step_trans;
+    }
+    return color * trans + scattered;
+}
+#endif

@@ -1,0 +1,54 @@
+#include "waves/tl_bow_spray.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "waves/tl_giant_spray.h"
+
+static double smoothstep(double a, double b, double x)
+{
+    double t = (x - a) / (b - a);
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    return t * t * (3.0 - 2.0 * t);
+}
+
+void tl_bow_spray_prepare(tl_bow_spray *sp, const tl_boat *b)
+{
+    memset(sp, 0, sizeof *sp);
+    double strength = smoothstep(TL_BOW_SPRAY_FROM, TL_BOW_SPRAY_FULL, b->impact);
+    if (!(strength > 0.0) || !(b->spray > 0.0) || !(b->length > 0.0))
+        return;
+    sp->heading[0] = sin(b->heading);
+    sp->heading[1] = cos(b->heading);
+    /* A harder slam throws a larger sheet, up and out from the stem. */
+    sp->radius = TL_BOW_SPRAY_RADIUS * b->length * (0.6 + 0.4 * strength);
+    const double a = 0.5 * b->length; /* the stem, at its waterline */
+    sp->center[0] = b->position[0] + sp->heading[0] * a;
+    sp->center[1] = b->position[1] + sin(b->pitch) * a + 0.6 * sp->radius;
+    sp->center[2] = b->position[2] + sp->heading[1] * a;
+    sp->amount = TL_BOW_SPRAY_GAIN * b->spray * strength;
+    sp->active = true;
+}
+
+double tl_bow_spray_sheet(const double d[3], const double heading[2], double radius)
+{
+    /* Thin along the heading, wide across it, rising; torn by the noise. */
+    double along = (d[0] * heading[0] + d[2] * heading[1]) / (0.4 * radius);
+    double side = (d[0] * heading[1] - d[2] * heading[0]) / (1.3 * radius);
+    double up = d[1] / (0.9 * radius);
+    double r2 = along * along + side * side + up * up;
+    if (r2 >= 9.0)
+        return 0.0;
+    /* Torn into sheets and clots of droplets: two scales of noise. */
+    double torn = 0.65 * tl_giant_spray_noise(side * 2.6 + 17.0, up * 3.1 - along) +
+                  0.35 * tl_giant_spray_noise(side * 7.3 - 4.0, up * 8.9 + along * 2.0);
+    return exp(-r2) * smoothstep(0.4, 0.75, torn);
+}
+
+double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z)
+{
+    if (!sp->active)
+        return 0.0;
+    const double d[3] = {x - sp->center[0], y - sp->center[1], z - sp->center[2]};
+    return sp->amount * tl_bow_spray_sheet(d, sp->heading, sp->radius);
+}
