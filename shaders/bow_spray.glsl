@@ -14,6 +14,20 @@
 #define TL_SPRAY_ALBEDO    0.9
 #define TL_SPRAY_DIFFUSE   0.6
 
+// Where in its segment a spray march's steps sample, in [0, 1): a hash
+// of the pixel, the same every frame (a frame renders alike alone or in a
+// sequence), different between neighbours (no blotches where the same
+// offset everywhere would alias).
+float spray_step_offset()
+{
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint k = pixel.x * 0x8da6b343u ^ pixel.y * 0xd8163841u;
+    k ^= k >> 15;
+    k *= 0x2c1b3c6du;
+    k ^= k >> 12;
+    return float(k & 0xffffu) / 65536.0;
+}
+
 // The sheet's shape at offset d (metres) from its centre for a boat
 // heading h (unit x z) and a burst of `radius`: thin along the heading,
 // wide across it, rising; torn by the noise. 0 beyond three radii.
@@ -62,12 +76,7 @@ vec3 bow_spray(vec3 ray, float dist, vec3 color)
     vec3 sun = sky_sun_light(), ambient = sky_ambient();
     int steps = clamp(int(ceil((t1 - t0) / u_spray_step)), TL_SPRAY_STEPS_MIN, TL_SPRAY_STEPS_MAX);
     float dt = (t1 - t0) / float(steps);
-    uvec2 pixel = uvec2(gl_FragCoord.xy);
-    uint k = pixel.x * 0x8da6b343u ^ pixel.y * 0xd8163841u;
-    k ^= k >> 15;
-    k *= 0x2c1b3c6du;
-    k ^= k >> 12;
-    float offset = float(k & 0xffffu) / 65536.0;
+    float offset = spray_step_offset();
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
     for (int i = 0; i < steps; i++) {

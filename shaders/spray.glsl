@@ -132,12 +132,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float dt = (t1 - t0) / float(steps);
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
-    uvec2 pixel = uvec2(gl_FragCoord.xy);
-    uint h = pixel.x * 0x8da6b343u ^ pixel.y * 0xd8163841u;
-    h ^= h >> 15;
-    h *= 0x2c1b3c6du;
-    h ^= h >> 12;
-    float offset = float(h & 0xffffu) / 65536.0;
+    float offset = spray_step_offset();
     for (int i = 0; i < steps; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
         float density = giant_spray_density(p, abs(ray.y) * dt);

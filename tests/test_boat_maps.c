@@ -19,18 +19,6 @@ static double srgb_to_linear(unsigned char v)
     return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
 
-static unsigned char *solid(int size, unsigned char r, unsigned char g, unsigned char b)
-{
-    unsigned char *p = malloc((size_t)size * (size_t)size * 4);
-    for (int i = 0; p && i < size * size; i++) {
-        p[4 * i] = r;
-        p[4 * i + 1] = g;
-        p[4 * i + 2] = b;
-        p[4 * i + 3] = 255;
-    }
-    return p;
-}
-
 /* A quad of plain white paint with no maps: the factors alone. */
 static gltf_quad plain_quad(void)
 {
@@ -176,8 +164,8 @@ static void test_normal_map_probe(tl_renderer *r)
 static void test_checker(tl_renderer *r)
 {
     enum { SIZE = 64 };
-    unsigned char *checker = gltf_checker(SIZE, 230, 40), *white = solid(SIZE, 255, 255, 255),
-                  *black = solid(SIZE, 0, 0, 0);
+    unsigned char *checker = gltf_checker(SIZE, 230, 40), *white = gltf_solid(SIZE, 255, 255, 255),
+                  *black = gltf_solid(SIZE, 0, 0, 0);
     const unsigned char *maps[3] = {checker, white, black};
     tl_frame f[3], none;
     int ok = 1;
@@ -251,9 +239,9 @@ static void test_checker(tl_renderer *r)
 static void test_normal_map(tl_renderer *r)
 {
     const double tilt = 0.4;
-    unsigned char *tilted = solid(8, (unsigned char)lround(255 * (0.5 + 0.5 * sin(tilt))), 128,
-                                  (unsigned char)lround(255 * (0.5 + 0.5 * cos(tilt))));
-    unsigned char *flat = solid(8, 128, 128, 255);
+    unsigned char *tilted = gltf_solid(8, (unsigned char)lround(255 * (0.5 + 0.5 * sin(tilt))), 128,
+                                       (unsigned char)lround(255 * (0.5 + 0.5 * cos(tilt))));
+    unsigned char *flat = gltf_solid(8, 128, 128, 255);
     const unsigned char *maps[3] = {tilted, flat, flat};
     const double turns[3] = {0.0, tilt, 0.0};
     double centre[3] = {0, 0, 0};
@@ -311,8 +299,8 @@ static double quads_differ(tl_renderer *r, const gltf_quad *a, const gltf_quad *
  * light it) and emissive (sRGB, lit by boat.lights). */
 static void test_factor_maps(tl_renderer *r)
 {
-    unsigned char *mr = solid(4, 0, 128, 255), *occlusion = solid(4, 64, 64, 64),
-                  *emissive = solid(4, 188, 188, 188);
+    unsigned char *mr = gltf_solid(4, 0, 128, 255), *occlusion = gltf_solid(4, 64, 64, 64),
+                  *emissive = gltf_solid(4, 188, 188, 188);
     gltf_quad mapped = plain_quad(), plain = plain_quad();
     mapped.roughness = 1.0;
     mapped.metallic = 1.0;

@@ -208,19 +208,6 @@ static const char *tmp_of(const char *name)
     return buf[which];
 }
 
-/* A solid map, `size` texels a side, of one RGBA value. */
-static unsigned char *solid(int size, unsigned char r, unsigned char g, unsigned char b)
-{
-    unsigned char *p = malloc((size_t)size * (size_t)size * 4);
-    for (int i = 0; p && i < size * size; i++) {
-        p[4 * i] = r;
-        p[4 * i + 1] = g;
-        p[4 * i + 2] = b;
-        p[4 * i + 3] = 255;
-    }
-    return p;
-}
-
 /* The quad with all five maps, and what the loader must make of it. */
 static gltf_quad full_quad(unsigned char *checker, unsigned char *mr, unsigned char *normal,
                            unsigned char *occlusion, unsigned char *emissive)
@@ -287,9 +274,9 @@ static void check_full_quad(const char *name, const tl_mesh *m)
  * in a .glb; OBJ's map_Kd; a model without maps has none. */
 static void test_maps(void)
 {
-    unsigned char *checker = gltf_checker(8, 230, 40), *mr = solid(4, 0, 128, 255),
-                  *normal = solid(4, 128, 128, 255), *occlusion = solid(4, 64, 64, 64),
-                  *emissive = solid(16, 200, 200, 200);
+    unsigned char *checker = gltf_checker(8, 230, 40), *mr = gltf_solid(4, 0, 128, 255),
+                  *normal = gltf_solid(4, 128, 128, 255), *occlusion = gltf_solid(4, 64, 64, 64),
+                  *emissive = gltf_solid(16, 200, 200, 200);
     gltf_quad q = full_quad(checker, mr, normal, occlusion, emissive);
     tl_error err;
     tl_error_clear(&err);

@@ -249,4 +249,17 @@ static unsigned char *gltf_checker(int size, unsigned char light, unsigned char 
     return p;
 }
 
+/* A map of one opaque RGB value, `size` texels a side. */
+static unsigned char *gltf_solid(int size, unsigned char r, unsigned char g, unsigned char b)
+{
+    unsigned char *p = malloc((size_t)size * (size_t)size * 4);
+    for (int i = 0; p && i < size * size; i++) {
+        p[4 * i] = r;
+        p[4 * i + 1] = g;
+        p[4 * i + 2] = b;
+        p[4 * i + 3] = 255;
+    }
+    return p;
+}
+
 #endif
