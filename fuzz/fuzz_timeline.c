@@ -54,17 +54,21 @@ static void check_scene(const tl_timeline *tl, double t)
 {
     tl_scene s;
     tl_timeline_eval(tl, t, &s);
-    for (int i = 0; i < tl_channel_count(); i++) {
-        const tl_channel *ch = tl_channel_at(i);
-        double v[3];
-        tl_channel_get(ch, &s, v);
-        for (int c = 0; c < ch->components; c++)
-            if (!isfinite(v[c]) || v[c] < ch->min || v[c] > ch->max)
-                breach(ch->name, t);
-    }
-    for (int k = 0; k < 3; k++)
-        if (!isfinite(s.boat.position[k]))
-            breach("the boat's position", t);
+    for (int k = 0; k < s.objects; k++)
+        for (int i = 0; i < tl_channel_count(); i++) {
+            const tl_channel *ch = tl_channel_at(i);
+            if (k > 0 && !tl_channel_is_object(ch))
+                continue;
+            double v[3];
+            tl_channel_get_object(ch, &s, k, v);
+            for (int c = 0; c < ch->components; c++)
+                if (!isfinite(v[c]) || v[c] < ch->min || v[c] > ch->max)
+                    breach(ch->name, t);
+        }
+    for (int o = 0; o < s.objects; o++)
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(tl_scene_object(&s, o)->position[k]))
+                breach("a floating object's position", t);
 
     /* eval's report: the giant wave after its clamps, water heights. */
     tl_waves waves;
@@ -104,8 +108,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     tl_timeline_features f;
     tl_timeline_features_of(&tl, &f);
     long frames = tl_timeline_frame_count(&tl);
-    if (tl.boat_path.present && size % 5 < 4)
-        tl_timeline_set_boat_bounds(&tl, model_bounds[size % 5][0], model_bounds[size % 5][1]);
+    for (int k = 0; k < tl.object_count; k++)
+        if (tl.objects[k].path.present && (size + (size_t)k) % 5 < 4)
+            tl_timeline_set_object_model(&tl, k, k, model_bounds[(size + (size_t)k) % 5][0],
+                                         model_bounds[(size + (size_t)k) % 5][1]);
 
     const double d = tl.duration;
     const double times[] = {

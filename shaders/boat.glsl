@@ -1,6 +1,6 @@
-// The boat in the ocean pass: the mesh pass rendered the lit hull and its
-// distance into textures; here they are composited with the water per
-// sample. The hull wins where it is nearer; water that lies inside the
+// The floating objects in the ocean pass: the mesh pass rendered their lit
+// hulls and distance into textures; here they are composited with the
+// water per sample. The hull wins where it is nearer; water that lies inside the
 // hull (its outline: the waterline's, widening to its widest plan above)
 // under a pixel the hull covers is hidden too, so no water shows on deck
 // or through the hull however the boat floats, pitches or heels.
@@ -8,44 +8,55 @@
 uniform sampler2D u_boat_color;      // lit hull, alpha = covered
 uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
-// The hull's outline (tl_mesh_outline): half widths at evenly spaced model
-// z, at its waterline from u_boat_waterline_z.x (aft) to .y (forward), and
-// its widest, at model height u_boat_plan_y, from u_boat_plan_z.x to .y.
-uniform float u_boat_waterline[TL_MESH_WATERLINE_STATIONS];
-uniform vec2 u_boat_waterline_z;
-uniform float u_boat_plan[TL_MESH_WATERLINE_STATIONS];
-uniform float u_boat_plan_y[TL_MESH_WATERLINE_STATIONS];
-uniform vec2 u_boat_plan_z;
+// The hulls' outlines (tl_mesh_outline, in the objects' uniform block:
+// objects.glsl): half widths at evenly spaced model z, at the waterline
+// from outline_z.x (aft) to .y (forward), and the widest, at model height
+// plan_y, from outline_z.z to .w.
 
-// A table of half widths at model z: its stations' blend, 0 outside.
-float boat_station(float table[TL_MESH_WATERLINE_STATIONS], vec2 range, float z)
+// Object o's waterline (plan: 0) or widest plan (1) half width at model z,
+// 0 outside; its plan's height (2) likewise.
+float boat_station(int o, int table, vec2 range, float z)
 {
     if (!(range.y > range.x) || z < range.x || z > range.y)
         return 0.0;
     float f = (z - range.x) / (range.y - range.x) * float(TL_MESH_WATERLINE_STATIONS - 1);
     int i = min(int(f), TL_MESH_WATERLINE_STATIONS - 2);
-    return mix(table[i], table[i + 1], f - float(i));
+    float a = table == 0 ? object_waterline(o, i) : table == 1 ? object_plan(o, i) : object_plan_y(o, i);
+    float b = table == 0   ? object_waterline(o, i + 1)
+              : table == 1 ? object_plan(o, i + 1)
+                           : object_plan_y(o, i + 1);
+    return mix(a, b, f - float(i));
 }
 
-// Whether the water point (camera-relative x z, absolute y) is inside the
-// hull (tl_mesh_outline_contains).
-bool boat_contains(vec3 p)
+// Whether the water point (camera-relative x z, absolute y) is inside
+// object o's hull (tl_mesh_outline_contains).
+bool boat_contains_one(int o, vec3 p)
 {
-    vec3 m = (u_boat_to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
-    if (!(m.y < u_boat_top))
+    vec3 m = (u_objects[o].to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
+    if (!(m.y < u_objects[o].hull.x))
         return false;
-    float water = boat_station(u_boat_waterline, u_boat_waterline_z, m.z);
+    vec4 z = u_objects[o].outline_z;
+    float water = boat_station(o, 0, z.xy, m.z);
     float half_width = water;
     if (m.y > 0.0) {
-        float wide = boat_station(u_boat_plan, u_boat_plan_z, m.z);
-        float high = boat_station(u_boat_plan_y, u_boat_plan_z, m.z);
+        float wide = boat_station(o, 1, z.zw, m.z);
+        float high = boat_station(o, 2, z.zw, m.z);
         float f = high > 1.0e-9 ? min(m.y / high, 1.0) : 1.0;
         half_width = water + (max(wide, water) - water) * f;
     }
     return abs(m.x) < half_width;
 }
 
-// The sample's radiance and distance after the hull: `water` at `dist`
+// Inside any hull in view.
+bool boat_contains(vec3 p)
+{
+    for (int o = 0; o < u_object_count; o++)
+        if (boat_contains_one(o, p))
+            return true;
+    return false;
+}
+
+// The sample's radiance and distance after the hulls: `water` at `dist`
 // (TL_SKY_DEPTH for the sky) along `ray`.
 vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 {
@@ -62,41 +73,44 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 }
 
 // Metres from the water point p (camera-relative x z, absolute y) out to
-// the hull's waterline outline (0 inside it); *along: where along the hull
+// object o's waterline outline (0 inside it); *along: where along the hull
 // it lies, 0 at the stern to 1 at the stem; *model: p's model x z, metres.
-float boat_waterline_gap(vec3 p, out float along, out vec2 model)
+float boat_waterline_gap(int o, vec3 p, out float along, out vec2 model)
 {
-    vec3 m = (u_boat_to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
-    float per_metre = length(u_boat_to_model[0].xyz); // model units per metre
-    float z0 = u_boat_waterline_z.x, z1 = u_boat_waterline_z.y;
+    mat4 to_model = u_objects[o].to_model;
+    vec3 m = (to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).xyz;
+    float per_metre = length(to_model[0].xyz); // model units per metre
+    float z0 = u_objects[o].outline_z.x, z1 = u_objects[o].outline_z.y;
     along = clamp((m.z - z0) / max(z1 - z0, 1.0e-6), 0.0, 1.0);
     float f = along * float(TL_MESH_WATERLINE_STATIONS - 1);
     int i = min(int(f), TL_MESH_WATERLINE_STATIONS - 2);
-    float half_width = mix(u_boat_waterline[i], u_boat_waterline[i + 1], f - float(i));
+    float half_width = mix(object_waterline(o, i), object_waterline(o, i + 1), f - float(i));
     vec2 outside = max(vec2(abs(m.x) - half_width, abs(m.z - clamp(m.z, z0, z1))), 0.0);
     model = m.xz / per_metre;
     return length(outside) / per_metre;
 }
 
-// Foam where the hull meets the water: a thin line all round it (the
-// water slapping the hull), and the bow wave's white water, from the stem
-// back along both sides, wider the faster the boat goes (u_boat_speed)
-// and where the bow meets rising water (`slope`: the surface's height
-// gradient there). Broken up like the wake's, in the hull's frame (it
-// travels with the boat), by the waves' `value`; `footprint`: the water a
-// pixel covers (m). Returns the cover; *thickness as foam_shade takes it.
-float boat_contact_foam(vec3 p, vec2 slope, float value, float footprint, out float thickness)
+// Foam where a hull meets the water: a thin line all round it (the water
+// slapping the hull), and the bow wave's white water, from the stem back
+// along both sides, wider the faster the object goes (hull.z) and where
+// the bow meets rising water (`slope`: the surface's height gradient
+// there). Broken up like the wake's, in the hull's frame (it travels with
+// the object), by the waves' `value`; `footprint`: the water a pixel
+// covers (m). Returns the cover; *thickness as foam_shade takes it.
+float boat_contact_foam_one(int o, vec3 p, vec2 slope, float value, float footprint,
+                            out float thickness)
 {
     thickness = 0.0;
     float along;
     vec2 model;
-    float gap = boat_waterline_gap(p, along, model);
-    float speed = u_boat_speed;
+    float gap = boat_waterline_gap(o, p, along, model);
+    float speed = u_objects[o].hull.z;
     float reach = TL_BOAT_CONTACT_LINE + TL_BOAT_BOW_WAVE * speed; // the bow wave's width, m
     if (gap > 4.0 * reach + 0.5)
         return 0.0;
     // The bow's heading: the model's +z in the world (the inverse's row).
-    vec2 heading = normalize(vec2(u_boat_to_model[0].z, u_boat_to_model[2].z));
+    mat4 to_model = u_objects[o].to_model;
+    vec2 heading = normalize(vec2(to_model[0].z, to_model[2].z));
     float rising = clamp(dot(slope, heading), 0.0, 1.0);
     float line = exp(-(gap * gap) / (TL_BOAT_CONTACT_LINE * TL_BOAT_CONTACT_LINE));
     float bow = smoothstep(0.3, 0.95, along) * smoothstep(0.2, 1.5, speed + 8.0 * rising);
@@ -111,6 +125,22 @@ float boat_contact_foam(vec3 p, vec2 slope, float value, float footprint, out fl
     float threshold = 0.7 - 0.55 * cover;
     thickness = clamp(smoothstep(threshold, threshold + 0.25, lace), 0.0, 1.0);
     return smoothstep(threshold, threshold + 0.06, lace);
+}
+
+// The contact foam of every hull in view: the most of any.
+float boat_contact_foam(vec3 p, vec2 slope, float value, float footprint, out float thickness)
+{
+    float cover = 0.0;
+    thickness = 0.0;
+    for (int o = 0; o < u_object_count; o++) {
+        float t;
+        float c = boat_contact_foam_one(o, p, slope, value, footprint, t);
+        if (c > cover) {
+            cover = c;
+            thickness = t;
+        }
+    }
+    return cover;
 }
 
 #ifdef TL_BOAT_MIRROR
@@ -146,7 +176,10 @@ vec3 boat_reflect(vec3 sky, vec3 n, vec3 hit)
     hull *= 0.25;
     // The taps' colours are weighted by their coverage: unpremultiply.
     vec3 color = hull.a > 0.0 ? hull.rgb / hull.a : vec3(0.0);
-    float off_plane = abs(hit.y - (u_boat_water + u_cam_height));
+    // The nearest of the objects' planes (each is mirrored in its own).
+    float off_plane = 1.0e30;
+    for (int o = 0; o < u_object_count; o++)
+        off_plane = min(off_plane, abs(hit.y - (u_objects[o].hull.y + u_cam_height)));
     return mix(sky, color, hull.a * (1.0 - smoothstep(0.5 * u_depth, u_depth, off_plane)));
 }
 #endif

@@ -46,24 +46,27 @@ float bow_spray_sheet(vec3 d, vec2 h, float radius)
 }
 
 #ifdef TL_FEATURE_BOW_SPRAY
-// The burst's density at camera-relative p (y absolute)
+// Object o's burst's density at camera-relative p (y absolute)
 // (tl_bow_spray_density).
-float bow_spray_density(vec3 p)
+float bow_spray_density(int o, vec3 p)
 {
-    return u_bow_spray.w * bow_spray_sheet(p - u_bow_spray.xyz, u_bow_spray_shape.xy,
-                                           u_bow_spray_shape.z);
+    vec4 spray = u_objects[o].bow_spray, shape = u_objects[o].bow_spray_shape;
+    return spray.w * bow_spray_sheet(p - spray.xyz, shape.xy, shape.z);
 }
 
-// The burst along `ray` from the camera to `dist`, over `color`, lit as
-// the giant wave's spray is (giant_spray, without the wave's shade): the
-// sun's single scattering in a forward lobe, many times inside where it is
-// dense, and the sky; in steps over the ray's part in the sheet's sphere,
-// each at an offset by a hash of the pixel (a frame is the same alone or
-// in a sequence).
-vec3 bow_spray(vec3 ray, float dist, vec3 color)
+// Object o's burst along `ray` from the camera to `dist`, over `color`,
+// lit as the giant wave's spray is (giant_spray, without the wave's
+// shade): the sun's single scattering in a forward lobe, many times inside
+// where it is dense, and the sky; in steps over the ray's part in the
+// sheet's sphere, each at an offset by a hash of the pixel (a frame is the
+// same alone or in a sequence).
+vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
 {
-    vec3 c = u_bow_spray.xyz - vec3(0.0, u_cam_height, 0.0);
-    float along = dot(c, ray), R = 3.0 * 1.3 * u_bow_spray_shape.z; // the sheet's widest
+    vec4 spray = u_objects[o].bow_spray;
+    if (!(spray.w > 0.0))
+        return color;
+    vec3 c = spray.xyz - vec3(0.0, u_cam_height, 0.0);
+    float along = dot(c, ray), R = 3.0 * 1.3 * u_objects[o].bow_spray_shape.z; // the sheet's widest
     float h = R * R - (dot(c, c) - along * along);
     if (h <= 0.0)
         return color;
@@ -81,7 +84,7 @@ vec3 bow_spray(vec3 ray, float dist, vec3 color)
     vec3 scattered = vec3(0.0);
     for (int i = 0; i < steps; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
-        float density = bow_spray_density(p);
+        float density = bow_spray_density(o, p);
         float step_trans = exp(-TL_SPRAY_SIGMA * density * dt);
         float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
         vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) + ambient);
@@ -89,5 +92,13 @@ vec3 bow_spray(vec3 ray, float dist, vec3 color)
         trans *= step_trans;
     }
     return color * trans + scattered;
+}
+
+// Every object's burst in view.
+vec3 bow_spray(vec3 ray, float dist, vec3 color)
+{
+    for (int o = 0; o < u_object_count; o++)
+        color = bow_spray_one(o, ray, dist, color);
+    return color;
 }
 #endif

@@ -24,6 +24,7 @@ in vec2 v_wet;
 uniform vec3 u_eye;     // the camera (the origin), or its mirror image for the reflection
 uniform float u_sunlit; // the share of the sun the hull sees past the giant wave's crest
 uniform float u_lights; // boat.lights: the lamps' share of their emission
+uniform int u_object;   // the object's slot in u_objects (objects.glsl)
 #ifdef TL_MESH_MAPS
 in vec2 v_uv;
 in vec4 v_tangent;
@@ -77,7 +78,7 @@ void main()
     vec3 diffuse_color = base * (1.0 - metallic);
     vec3 color;
 #ifdef TL_FEATURE_UNDERWATER
-    float depth = u_boat_water - v_world.y;
+    float depth = u_objects[u_object].hull.y - v_world.y;
     if (depth > 0.0) {
         // Under the water: the sun refracted and dimmed along its path
         // down, the sky's light from above and the water's own from below
@@ -103,7 +104,7 @@ void main()
 #ifdef TL_FEATURE_BOAT_SHADOW
         // Looked up a texel and a half off the surface along its normal,
         // so that a face lit at a grazing angle does not shadow itself.
-        sunlight *= boat_shadow(v_world + n * (1.5 * u_boat_shadow_texel));
+        sunlight *= boat_shadow(v_world + n * (1.5 * u_objects[u_object].shadow_map.x));
 #endif
         vec3 upwelling = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
 #ifdef TL_FEATURE_SKY_PHYSICAL

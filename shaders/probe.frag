@@ -96,7 +96,8 @@ void main()
 #endif
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 16)
-        result.xy = wake_kelvin_slope(input4.x, input4.y, input4.z, u_wake_params.w, input4.w);
+        result.xy = wake_kelvin_slope(input4.x, input4.y, input4.z, u_objects[0].wake_params.w,
+                                      input4.w);
 #endif
     else if (u_probe_mode == 13) {
         vec3 v = vec3(sin(input4.x), cos(input4.x), 0.0);
@@ -109,7 +110,7 @@ void main()
         result.x = material_wetness(p.x, p.y);
 #ifdef TL_FEATURE_BOW_SPRAY
     else if (u_probe_mode == 18)
-        result.x = bow_spray_density(vec3(p.x, input4.z, p.y));
+        result.x = bow_spray_density(0, vec3(p.x, input4.z, p.y));
 #endif
     else if (u_probe_mode == 17)
         result.xyz = material_normal_map(normalize(vec3(0.3, 0.9, -0.2)),

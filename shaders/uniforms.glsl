@@ -21,3 +21,5 @@
 #ifndef TL_NORMAL_OCTAVES
 #define TL_NORMAL_OCTAVES u_normal_octaves
 #endif
+
+#include "objects.glsl"

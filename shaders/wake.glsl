@@ -1,9 +1,9 @@
-// The boat's wake (TL_FEATURE_WAKE): foam along where the boat was, from
-// its past positions (u_wake, filled on the CPU from the boat's path, so
-// every frame renders alone): a turbulent band behind the hull that widens
-// slowly, and the two arms of the Kelvin wedge (half-angle 19.47 deg),
-// both fading with age. u_wake and the other u_wake_* uniforms are
-// frame_uniforms.glsl's (src/prepare/tl_uniform_list.h).
+// The floating objects' wakes (TL_FEATURE_WAKE): foam along where each
+// was, from its past positions (u_objects[o].wake, filled on the CPU from
+// its path, so every frame renders alone): a turbulent band behind the
+// hull that widens slowly, and the two arms of the Kelvin wedge
+// (half-angle 19.47 deg), both fading with age. The wake's data is the
+// objects' uniform block's (objects.glsl, src/prepare/tl_prepare.h).
 
 // The Kelvin wake's waves (src/waves/tl_kelvin.c, tl_kelvin_slope, holds
 // the same in double): their slope d height / d (behind, across) at a
@@ -49,12 +49,14 @@ vec2 wake_kelvin_slope(float behind, float across, float speed, float length,
 // (metres, 0: no level of detail). Out: the foam's thickness, the
 // bubbles under it (foam_aerated), and the slope the Kelvin wake's waves
 // add to the surface there (d height / d (x, z), camera-relative).
-float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
-                out float aerated, out vec2 waves)
+// Object o's wake at p: its cover (before its strength), where on its
+// path the texture hangs (along, across; metres) and the Kelvin waves'
+// slope there.
+float wake_cover(int o, vec2 p, float footprint, out vec2 path, out vec2 waves)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
-    float half_beam = u_wake_params.x, cover = 0.0;
-    vec2 path = vec2(0.0); // where on the path the foam's texture hangs: along, across (m)
+    float half_beam = u_objects[o].wake_params.x, cover = 0.0;
+    path = vec2(0.0);
     // The nearest segment p lies beside: where the Kelvin waves are taken.
     float near = 1.0e30, kelvin_behind = 0.0, kelvin_across = 0.0, kelvin_speed = 0.0;
     vec2 kelvin_track = vec2(0.0), kelvin_side = vec2(0.0);
@@ -64,27 +66,29 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     // masked iterations, and an if's both sides, for the whole block).
     int first = TL_WAKE_GROUPS, last = -1;
     for (int g = 0; g < TL_WAKE_GROUPS; g++) {
-        vec2 c = p - u_wake_groups[g].xy;
-        if (dot(c, c) <= u_wake_groups[g].z * u_wake_groups[g].z) {
+        vec4 group = u_objects[o].wake_groups[g];
+        vec2 c = p - group.xy;
+        if (dot(c, c) <= group.z * group.z) {
             first = min(first, g);
             last = g;
         }
     }
     int end = min((last + 1) * TL_WAKE_GROUP, TL_WAKE_POINTS - 1);
     for (int k = first * TL_WAKE_GROUP; k < end; k++) {
-        vec2 a = u_wake[k].xy, ab = u_wake[k + 1].xy - a;
+        vec4 w0 = u_objects[o].wake[k], w1 = u_objects[o].wake[k + 1];
+        vec2 a = w0.xy, ab = w1.xy - a;
         float len2 = dot(ab, ab);
         if (len2 < 1.0e-8)
             continue;
         float along = dot(p - a, ab) / len2;
         float u = clamp(along, 0.0, 1.0);
         float d = length(p - (a + ab * u));
-        float behind = mix(u_wake[k].w, u_wake[k + 1].w, u);
+        float behind = mix(w0.w, w1.w, u);
         float arm = half_beam + behind * tan_kelvin; // the wedge's half width here
         if (d > arm * 1.3 + 2.0)
             continue;
-        float age = mix(u_wake[k].z, u_wake[k + 1].z, u);
-        float fade = exp(-age / u_wake_params.y);
+        float age = mix(w0.z, w1.z, u);
+        float fade = exp(-age / u_objects[o].wake_params.y);
         float band = d / (1.3 * half_beam * (1.0 + 0.06 * behind));
         float turbulent = exp(-band * band);
         // The arms are lines beside the path: only where the point lies
@@ -94,7 +98,7 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
         float arms = 0.6 * beside * exp(-edge * edge) * smoothstep(0.0, 2.0 * half_beam, behind);
         // Only a boat under way churns the water white (tl_scene.h,
         // TL_WAKE_SPEED_NONE: the CPU turns the feature off when none can).
-        float speed = (u_wake[k + 1].w - u_wake[k].w) / max(u_wake[k + 1].z - u_wake[k].z, 1.0e-3);
+        float speed = (w1.w - w0.w) / max(w1.z - w0.z, 1.0e-3);
         float churn = smoothstep(TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, speed);
         float here = fade * max(turbulent, arms) * churn;
         if (beside > 0.0 && d < near) {
@@ -108,15 +112,41 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
         if (here > cover) {
             cover = here;
             float side = ab.x * (p.y - a.y) - ab.y * (p.x - a.x) < 0.0 ? -1.0 : 1.0;
-            path = vec2(mix(u_wake_along[k], u_wake_along[k + 1], u), side * d);
+            path = vec2(mix(object_wake_along(o, k), object_wake_along(o, k + 1), u), side * d);
         }
     }
-    cover *= u_wake_params.z;
+    vec2 s = wake_kelvin_slope(kelvin_behind, kelvin_across, kelvin_speed,
+                               u_objects[o].wake_params.w, footprint);
+    waves = s.x * kelvin_track + s.y * kelvin_side;
+    return cover;
+}
+
+// Foam cover in [0, 1] at p; `footprint`: the water a pixel covers there
+// (metres, 0: no level of detail). Out: the foam's thickness, the
+// bubbles under it (foam_aerated), and the slope the Kelvin wakes' waves
+// add to the surface there (d height / d (x, z), camera-relative). The
+// wakes of several objects: the densest's foam, every one's waves.
+float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
+                out float aerated, out vec2 waves)
+{
+    float cover = 0.0;
+    vec2 path = vec2(0.0);
+    waves = vec2(0.0);
+    for (int o = 0; o < u_object_count; o++) {
+        float strength = u_objects[o].wake_params.z;
+        if (!(strength > 0.0))
+            continue;
+        vec2 at, slope;
+        float c = strength * wake_cover(o, p, footprint, at, slope);
+        waves += slope;
+        if (c > cover) {
+            cover = c;
+            // Each object's texture a kilometre along from the last's.
+            path = at + vec2(1000.0 * float(o), 0.0);
+        }
+    }
     thickness = 0.0;
     aerated = 0.0;
-    vec2 s = wake_kelvin_slope(kelvin_behind, kelvin_across, kelvin_speed, u_wake_params.w,
-                               footprint);
-    waves = s.x * kelvin_track + s.y * kelvin_side;
     if (cover <= 0.0)
         return 0.0; // most of the sea: none of the texture below
     // The texture hangs on the path and the world, where the boat left

@@ -46,6 +46,8 @@ tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
 tl_add_test(test_boat_light SOURCES test_boat_light.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_boat_maps SOURCES test_boat_maps.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_wake SOURCES test_wake.c LIBS tideline_gl LABELS gl)
+# Several floating objects: each floats, wakes and casts alone.
+tl_add_test(test_objects SOURCES test_objects.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_underwater SOURCES test_underwater.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_polish SOURCES test_polish.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_glare SOURCES test_glare.c LIBS tideline_gl LABELS gl)

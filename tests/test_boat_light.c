@@ -38,8 +38,8 @@ static int project(const tl_scene *s, const tl_frame_uniforms *u, const double m
                    int *px, int *py)
 {
     for (int i = 0; i < 3; i++)
-        w[i] = u->boat_model[i] * m[0] + u->boat_model[4 + i] * m[1] + u->boat_model[8 + i] * m[2] +
-               u->boat_model[12 + i];
+        w[i] = u->object_pass[0].model[i] * m[0] + u->object_pass[0].model[4 + i] * m[1] +
+               u->object_pass[0].model[8 + i] * m[2] + u->object_pass[0].model[12 + i];
     double clip[4] = {0, 0, 0, 0};
     for (int i = 0; i < 4; i++)
         for (int k = 0; k < 4; k++)
@@ -180,7 +180,7 @@ static void test_deck_shadow(tl_renderer *r, const tl_mesh *m)
     tl_mesh_brdf(n, v, l, base, 0.85, 0.0, sun_term);
     double want = 0.0, on = 0.0, off_sh = 0.0;
     for (int c = 0; c < 3; c++) {
-        want += sun_term[c] * u.sun_light[c] * u.boat_sunlit;
+        want += sun_term[c] * u.sun_light[c] * u.object_pass[0].sunlit;
         on += pixel(&lit, sx, sy)[c];
         off_sh += pixel(&unlit, sx, sy)[c];
     }
@@ -233,7 +233,7 @@ static void test_water_shadow(tl_renderer *r, const tl_mesh *m)
     double w[3];
     int px, py;
     project(&s, &u, cabin, w, &px, &py);
-    double along = (w[1] - u.boat_water) / u.sun_dir[1];
+    double along = (w[1] - u.objects[0].hull[1]) / u.sun_dir[1];
     double shadow_model_x = -along * u.sun_dir[0] / 9.0; /* heading 0: world x is model x */
     const double in_shadow[3] = {shadow_model_x, 0.0, -0.05},
                  sunny[3] = {-shadow_model_x, 0.0, -0.05};
@@ -411,7 +411,7 @@ static void test_bow_wave(tl_renderer *r, const tl_mesh *m)
     }
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
-    CHECK_NEAR(u.boat_speed, 5.0, 1e-3);
+    CHECK_NEAR(u.objects[0].hull[2], 5.0, 1e-3);
     /* The hull's bounds 3 m out, on the water plane, on screen. */
     int x0 = s.width, y0 = s.height, x1 = -1, y1 = -1;
     for (int i = 0; i < 4; i++) {

@@ -73,8 +73,8 @@ static double cast_into_mesh(const tl_scene *s, const tl_mesh *m, int px, int py
         for (int k = 0; k < 3; k++) {
             const float *p = m->positions + 3 * m->indices[t + k];
             for (int i = 0; i < 3; i++) /* column-major: row i of M times (p, 1) */
-                v[k][i] = u.boat_model[i] * p[0] + u.boat_model[4 + i] * p[1] +
-                          u.boat_model[8 + i] * p[2] + u.boat_model[12 + i];
+                v[k][i] = u.object_pass[0].model[i] * p[0] + u.object_pass[0].model[4 + i] * p[1] +
+                          u.object_pass[0].model[8 + i] * p[2] + u.object_pass[0].model[12 + i];
         }
         best = fmin(best, ray_triangle(origin, ray, v[0], v[1], v[2]));
     }
@@ -104,7 +104,9 @@ static void test_depth(tl_renderer *r, const tl_mesh *m, const char *name, tl_sc
     tl_frame_uniforms u;
     tl_prepare_frame(s, &w, &u);
     CHECK(u.features & TL_FEATURE_BOAT);
-    float c[4] = {u.boat_model[12], u.boat_model[13], u.boat_model[14], 1.0f}, clip[4] = {0};
+    float c[4] = {u.object_pass[0].model[12], u.object_pass[0].model[13],
+                  u.object_pass[0].model[14], 1.0f},
+          clip[4] = {0};
     for (int i = 0; i < 4; i++)
         for (int k = 0; k < 4; k++)
             clip[i] += u.view_proj[k * 4 + i] * c[k];
@@ -179,25 +181,26 @@ static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_WAKE);
-    const float half_beam = u.wake_params[0];
+    const float half_beam = u.objects[0].wake_params[0];
     long reached = 0, outside = 0;
     for (int j = 0; j <= 400; j++)
         for (int i = 0; i <= 400; i++) {
-            float p[2] = {u.wake[0][0] - 80.0f + 0.45f * (float)i,
-                          u.wake[0][1] - 100.0f + 0.45f * (float)j};
+            float p[2] = {u.objects[0].wake[0][0] - 80.0f + 0.45f * (float)i,
+                          u.objects[0].wake[0][1] - 100.0f + 0.45f * (float)j};
             for (int k = 0; k + 1 < TL_WAKE_POINTS; k++) {
-                float ax = u.wake[k][0], az = u.wake[k][1];
-                float bx = u.wake[k + 1][0] - ax, bz = u.wake[k + 1][1] - az;
+                float ax = u.objects[0].wake[k][0], az = u.objects[0].wake[k][1];
+                float bx = u.objects[0].wake[k + 1][0] - ax, bz = u.objects[0].wake[k + 1][1] - az;
                 float len2 = bx * bx + bz * bz;
                 if (len2 < 1.0e-8f)
                     continue;
                 float along = ((p[0] - ax) * bx + (p[1] - az) * bz) / len2;
                 float t = fminf(fmaxf(along, 0.0f), 1.0f);
                 float d = hypotf(p[0] - (ax + bx * t), p[1] - (az + bz * t));
-                float behind = u.wake[k][3] + (u.wake[k + 1][3] - u.wake[k][3]) * t;
+                float behind = u.objects[0].wake[k][3] +
+                               (u.objects[0].wake[k + 1][3] - u.objects[0].wake[k][3]) * t;
                 if (d > (half_beam + behind * 0.35355f) * 1.3f + 2.0f)
                     continue;
-                const float *c = u.wake_groups[k / TL_WAKE_GROUP];
+                const float *c = u.objects[0].wake_groups[k / TL_WAKE_GROUP];
                 float cx = p[0] - c[0], cz = p[1] - c[1];
                 reached++;
                 outside += cx * cx + cz * cz > c[2] * c[2];
@@ -215,8 +218,8 @@ static void test_wake_groups(tl_renderer *r, const tl_mesh *m)
     CHECK(tl_renderer_render(r, &u, &culled, &err) == 0);
     tl_frame_uniforms everywhere = u;
     for (int g = 0; g < TL_WAKE_GROUPS; g++) {
-        everywhere.wake_groups[g][0] = everywhere.wake_groups[g][1] = 0.0f;
-        everywhere.wake_groups[g][2] = 1.0e18f;
+        everywhere.objects[0].wake_groups[g][0] = everywhere.objects[0].wake_groups[g][1] = 0.0f;
+        everywhere.objects[0].wake_groups[g][2] = 1.0e18f;
     }
     CHECK(tl_renderer_render(r, &everywhere, &all, &err) == 0);
     size_t n = (size_t)s.width * s.height * 4;
@@ -493,8 +496,9 @@ static double cast_hit(const tl_scene *s, const tl_mesh *m, const tl_frame_unifo
         for (int k = 0; k < 3; k++) {
             const float *p = m->positions + 3 * m->indices[t + k];
             for (int i = 0; i < 3; i++)
-                v[k][i] = u->boat_model[i] * p[0] + u->boat_model[4 + i] * p[1] +
-                          u->boat_model[8 + i] * p[2] + u->boat_model[12 + i];
+                v[k][i] = u->object_pass[0].model[i] * p[0] +
+                          u->object_pass[0].model[4 + i] * p[1] +
+                          u->object_pass[0].model[8 + i] * p[2] + u->object_pass[0].model[12 + i];
         }
         double d = ray_triangle(origin, ray, v[0], v[1], v[2]);
         if (d < best) {
@@ -506,8 +510,8 @@ static double cast_hit(const tl_scene *s, const tl_mesh *m, const tl_frame_unifo
         return best;
     double w[3] = {ray[0] * best, ray[1] * best, ray[2] * best};
     for (int i = 0; i < 3; i++)
-        model_hit[i] = u->boat_to_model[i] * w[0] + u->boat_to_model[4 + i] * w[1] +
-                       u->boat_to_model[8 + i] * w[2] + u->boat_to_model[12 + i];
+        model_hit[i] = u->objects[0].to_model[i] * w[0] + u->objects[0].to_model[4 + i] * w[1] +
+                       u->objects[0].to_model[8 + i] * w[2] + u->objects[0].to_model[12 + i];
     const float *a = m->positions + 3 * m->indices[hit],
                 *b = m->positions + 3 * m->indices[hit + 1],
                 *c = m->positions + 3 * m->indices[hit + 2];
@@ -567,9 +571,10 @@ static void test_pitched_deck(tl_renderer *r, const tl_mesh *m)
             float seen = f.depth[(size_t)y * s.width + x];
             double wm[3];
             for (int i = 0; i < 3; i++)
-                wm[i] = u.boat_to_model[i] * ray[0] * seen +
-                        u.boat_to_model[4 + i] * ray[1] * seen +
-                        u.boat_to_model[8 + i] * ray[2] * seen + u.boat_to_model[12 + i];
+                wm[i] = u.objects[0].to_model[i] * ray[0] * seen +
+                        u.objects[0].to_model[4 + i] * ray[1] * seen +
+                        u.objects[0].to_model[8 + i] * ray[2] * seen +
+                        u.objects[0].to_model[12 + i];
             if (seen < d - 0.05) {
                 int inside = wm[2] > m->bounds_min[2] && wm[2] < m->bounds_max[2];
                 water += inside;

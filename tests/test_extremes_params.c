@@ -53,15 +53,15 @@ static int eval_text(tl_renderer *r, const char *text, double t, tl_scene *s, tl
         return -1;
     }
     tl_mesh mesh, *m = &builtin_boat;
-    if (tl.boat_model[0]) {
-        if (tl_mesh_load(tl.boat_model, &mesh, &err)) {
+    if (tl.objects[0].model[0]) {
+        if (tl_mesh_load(tl.objects[0].model, &mesh, &err)) {
             printf("  %s\n", err.message);
             tl_timeline_free(&tl);
             return -1;
         }
         m = &mesh;
     }
-    tl_timeline_set_boat_bounds(&tl, m->bounds_min, m->bounds_max);
+    tl_timeline_set_object_model(&tl, 0, 0, m->bounds_min, m->bounds_max);
     int rc = tl_renderer_set_mesh(r, m, &err);
     if (rc)
         printf("  mesh: %s\n", err.message);

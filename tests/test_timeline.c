@@ -408,7 +408,7 @@ static void test_wake_along(void)
     /* Three wake steps later, point k + 3 is where point k was. */
     tl_timeline_eval(&tl, 6.0 + 3.0 * a.boat.wake_step, &b);
     CHECK(a.boat.wake_step > 0.0);
-    CHECK_NEAR(a.boat.wake_along[0], 0.6 * tl.boat_path.path.length, 1e-9);
+    CHECK_NEAR(a.boat.wake_along[0], 0.6 * tl.objects[0].path.path.length, 1e-9);
     for (int k = 0; k + 3 < TL_WAKE_POINTS; k++) {
         CHECK_NEAR(b.boat.wake_along[k + 3], a.boat.wake_along[k], 1e-9);
         CHECK_NEAR(b.boat.wake_path[k + 3][0], a.boat.wake_path[k][0], 1e-9);
@@ -688,7 +688,7 @@ static void test_constant_speed(void)
         if (constant) {
             CHECK((hi - lo) / mean < 0.01);
             /* The whole length in the path's 10 s. */
-            CHECK_NEAR(mean, tl.boat_path.path.length / 10.0, 0.01 * mean);
+            CHECK_NEAR(mean, tl.objects[0].path.path.length / 10.0, 0.01 * mean);
             if (!((hi - lo) / mean < 0.01))
                 fprintf(stderr, "  constant speed: %g .. %g m/s\n", lo, hi);
         } else {
@@ -784,7 +784,7 @@ static void test_large_times(void)
 
 static tl_timeline_features features(const char *text)
 {
-    tl_timeline_features f = {true, true, true, true};
+    tl_timeline_features f = {true, true, true, true, 1};
     tl_timeline tl;
     if (!parse_ok(text, &tl))
         return f;
@@ -880,10 +880,10 @@ static void test_boat_model(void)
     tl_error_clear(&err);
     tl_timeline tl;
     CHECK(tl_timeline_parse_text("shots/sea/a.tl", text, strlen(text), &tl, &diags, &err) == 0);
-    CHECK(strcmp(tl.boat_model, "shots/sea/boats/skiff.glb") == 0);
-    CHECK(tl.boat_model_line == 5 && tl.boat_model_column == 16);
+    CHECK(strcmp(tl.objects[0].model, "shots/sea/boats/skiff.glb") == 0);
+    CHECK(tl.objects[0].model_line == 5 && tl.objects[0].model_column == 16);
     const float lo[3] = {-1.0f, 0.0f, -3.0f}, hi[3] = {1.0f, 2.0f, 3.0f};
-    tl_timeline_set_boat_bounds(&tl, lo, hi);
+    tl_timeline_set_object_model(&tl, 0, 0, lo, hi);
     tl_scene s;
     tl_timeline_eval(&tl, 1.0, &s);
     CHECK_NEAR(s.boat.scale, 2.0, 0.0);
@@ -892,7 +892,7 @@ static void test_boat_model(void)
     tl_timeline_free(&tl);
     const char *abs_text = "tideline 1\npath boat\n  0s 0 0\n  5s 0 20\nset boat.model /m/x.obj\n";
     CHECK(parse_ok(abs_text, &tl));
-    CHECK(strcmp(tl.boat_model, "/m/x.obj") == 0);
+    CHECK(strcmp(tl.objects[0].model, "/m/x.obj") == 0);
     tl_timeline_free(&tl);
     /* Without a model: the built-in boat, boat.size long. */
     CHECK(parse_ok("tideline 1\npath boat\n  0s 0 0\n  5s 0 20\nset boat.size 12\n", &tl));

@@ -51,7 +51,7 @@ static int probe_lane(tl_renderer *r, double speed, int lane, double x0, double 
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_WAKE); /* else the probe has no wake to return */
-    half_beam = u.wake_params[0];
+    half_beam = u.objects[0].wake_params[0];
     static float xz[NB * NX * 2];
     for (int j = 0; j < NB; j++)
         for (int i = 0; i < NX; i++) {
@@ -235,7 +235,7 @@ static int ray_reaches_wake(const void *ctx, const double ray[3])
     double t0 = s->camera.position[1] / -ray[1], t1 = (s->camera.position[1] + u->depth) / -ray[1];
     double a[2] = {ray[0] * t0, ray[2] * t0}, d[2] = {ray[0] * (t1 - t0), ray[2] * (t1 - t0)};
     for (int g = 0; g < TL_WAKE_GROUPS; g++) {
-        const float *c = u->wake_groups[g];
+        const float *c = u->objects[0].wake_groups[g];
         double q[2] = {c[0] - a[0], c[1] - a[1]}, len2 = d[0] * d[0] + d[1] * d[1];
         double k = len2 > 0.0 ? fmin(fmax((q[0] * d[0] + q[1] * d[1]) / len2, 0.0), 1.0) : 0.0;
         if (hypot(q[0] - k * d[0], q[1] - k * d[1]) <= c[2])
@@ -336,7 +336,7 @@ static void test_kelvin(tl_renderer *r)
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_WAKE);
-    const double length = u.wake_params[3];
+    const double length = u.objects[0].wake_params[3];
     CHECK(length > 1.0);
     float in[N * 4], out[N * 4];
     srand(11);

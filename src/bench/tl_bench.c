@@ -295,7 +295,7 @@ static int cached_reference(bench_state *s, int k, uint64_t *key)
     const bench_shot *b = &s->shots[k];
     const tl_bench_timeline *t = &s->timelines[b->timeline];
     *key = tl_bench_cache_key(s->cfg->cache, tl_render_describe(s->render), t->path,
-                              t->cutscene->timeline.boat_model, b->frame, s->cfg->width,
+                              t->cutscene->timeline.objects[0].model, b->frame, s->cfg->width,
                               s->cfg->height);
     return tl_bench_cache_load(s->cfg->cache, *key, s->cfg->width, s->cfg->height, b->reference);
 }

@@ -19,10 +19,10 @@ int tl_cli_bench(int argc, char **argv);
  * checks it when boat is NULL. Returns the exit status (0, or 1 when the
  * file or its model is invalid or unreadable; the timeline is then freed). */
 struct tl_timeline;
-struct tl_mesh;
+struct tl_models;
 struct tl_cutscene;
 int tl_cli_load_timeline(const char *command, const char *path, struct tl_timeline *tl,
-                         struct tl_mesh *boat);
+                         struct tl_models *models);
 /* The same, keeping the cutscene whole (tl_cutscene_free frees it). */
 int tl_cli_load_cutscene(const char *command, const char *path, struct tl_cutscene *cs);
 

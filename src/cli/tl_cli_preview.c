@@ -316,26 +316,26 @@ static int shot_of(const preview *p, long frame)
     return shot;
 }
 
-/* Loads (or reloads) the timeline and its boat; keeps the last good one
+/* Loads (or reloads) the timeline and its objects' models; keeps the last good one
  * on failure, reporting at file:line:col. */
 static int load(preview *p)
 {
     tl_timeline fresh;
-    tl_mesh boat;
-    if (tl_cli_load_timeline("preview", p->o->timeline, &fresh, &boat)) {
+    tl_models models;
+    if (tl_cli_load_timeline("preview", p->o->timeline, &fresh, &models)) {
         snprintf(p->problem, sizeof p->problem, "%s does not load (see the terminal)",
                  p->o->timeline);
         return 1;
     }
     tl_error err;
     tl_error_clear(&err);
-    if (boat.index_count && p->render && tl_render_set_boat(p->render, &boat, &err)) {
+    if (models.count && p->render && tl_render_set_models(p->render, &models, &err)) {
         tl_cli_print_error("preview", &err);
-        tl_mesh_free(&boat);
+        tl_models_free(&models);
         tl_timeline_free(&fresh);
         return 1;
     }
-    tl_mesh_free(&boat);
+    tl_models_free(&models);
     if (p->have_tl)
         tl_timeline_free(&p->tl);
     p->tl = fresh;

@@ -277,8 +277,8 @@ int tl_cli_render(int argc, char **argv)
         return 2;
     }
     tl_timeline tl;
-    tl_mesh boat;
-    if (tl_cli_load_timeline("render", o.timeline, &tl, &boat))
+    tl_models models;
+    if (tl_cli_load_timeline("render", o.timeline, &tl, &models))
         return 1;
 
     tl_render_settings settings = {.width = o.width,
@@ -326,7 +326,7 @@ int tl_cli_render(int argc, char **argv)
         tl_cli_print_error("render", &err);
         tl_frame_list_free(&frames);
         tl_timeline_free(&tl);
-        tl_mesh_free(&boat);
+        tl_models_free(&models);
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
@@ -343,8 +343,8 @@ int tl_cli_render(int argc, char **argv)
     tl_render *render = NULL;
     tl_movie *movie = NULL;
     rc = tl_render_open(&render, &lib, &err);
-    if (!rc && boat.index_count)
-        rc = tl_render_set_boat(render, &boat, &err);
+    if (!rc && models.count)
+        rc = tl_render_set_models(render, &models, &err);
     if (!rc && o.verbose)
         fprintf(stderr, "tideline render: %s\n", tl_render_describe(render));
     if (!rc && o.movie)
@@ -413,7 +413,7 @@ int tl_cli_render(int argc, char **argv)
                 o.movie, access(o.movie, F_OK) == 0 ? " (the earlier file is untouched)" : "");
 
     tl_render_close(render);
-    tl_mesh_free(&boat);
+    tl_models_free(&models);
     tl_frame_list_free(&frames);
     tl_timeline_free(&tl);
     if (interrupted)

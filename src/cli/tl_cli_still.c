@@ -200,13 +200,13 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
 
 /* The scene to render: the timeline's at the requested time (or the
  * defaults), then every flag the user gave on top. */
-static int build_scene(still_options *o, tl_scene *scene, tl_mesh *boat, tl_error *err)
+static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_error *err)
 {
     double fps = 24.0, t = 0.0;
     tl_timeline tl;
     int have_timeline = 0;
     if (o->timeline) {
-        if (tl_cli_load_timeline("still", o->timeline, &tl, boat))
+        if (tl_cli_load_timeline("still", o->timeline, &tl, models))
             return -1; /* diagnostics already printed */
         have_timeline = 1;
         fps = tl.fps;
@@ -279,9 +279,9 @@ int tl_cli_still(int argc, char **argv)
         return 0;
     }
     tl_scene scene;
-    tl_mesh boat = {0};
+    tl_models models = {0};
     if (!rc) {
-        rc = build_scene(&o, &scene, &boat, &err);
+        rc = build_scene(&o, &scene, &models, &err);
         if (rc < 0)
             return 1; /* the timeline's diagnostics were printed */
     }
@@ -301,7 +301,7 @@ int tl_cli_still(int argc, char **argv)
         tl_error_prefix(&err, "--shader-dir");
     if (rc) {
         tl_cli_print_error("still", &err);
-        tl_mesh_free(&boat);
+        tl_models_free(&models);
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
@@ -309,9 +309,9 @@ int tl_cli_still(int argc, char **argv)
     tl_render *render = NULL;
     tl_frame frame = {0};
     rc = tl_render_open(&render, &lib, &err);
-    if (!rc && boat.index_count)
-        rc = tl_render_set_boat(render, &boat, &err);
-    tl_mesh_free(&boat);
+    if (!rc && models.count)
+        rc = tl_render_set_models(render, &models, &err);
+    tl_models_free(&models);
     if (!rc && o.verbose)
         fprintf(stderr, "tideline still: %s\n", tl_render_describe(render));
     double t1 = tl_clock_seconds();

@@ -98,18 +98,18 @@ int tl_cli_load_cutscene(const char *command, const char *path, tl_cutscene *cs)
     return 0;
 }
 
-int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_mesh *boat)
+int tl_cli_load_timeline(const char *command, const char *path, tl_timeline *tl, tl_models *models)
 {
-    if (boat)
-        memset(boat, 0, sizeof *boat);
+    if (models)
+        memset(models, 0, sizeof *models);
     tl_cutscene cs;
     if (tl_cli_load_cutscene(command, path, &cs))
         return 1;
     *tl = cs.timeline;
-    if (boat && cs.has_boat)
-        *boat = cs.boat;
-    else if (cs.has_boat)
-        tl_mesh_free(&cs.boat);
+    if (models)
+        *models = cs.models;
+    else
+        tl_models_free(&cs.models);
     return 0;
 }
 
@@ -128,14 +128,25 @@ void tl_cli_warn_outside(const char *command, const char *flag, const char *give
 static void list_tracks(const tl_timeline *tl, tl_track_state state, const char *label)
 {
     int first = 1;
-    for (int i = 0; i < tl_channel_count(); i++) {
-        if (tl->tracks[i].state != state)
-            continue;
-        printf("%s%s", first ? label : ", ", tl_channel_at(i)->name);
-        first = 0;
-    }
+    for (int k = 0; k < tl->object_count; k++)
+        for (int i = 0; i < tl_channel_count(); i++) {
+            const tl_channel *ch = tl_channel_at(i);
+            if ((k > 0 && !tl_channel_is_object(ch)) || tl_timeline_track(tl, i, k)->state != state)
+                continue;
+            if (k > 0) /* NAME.field */
+                printf("%s%s%s", first ? label : ", ", tl->objects[k].name, ch->name + 4);
+            else
+                printf("%s%s", first ? label : ", ", ch->name);
+            first = 0;
+        }
     if (!first)
         printf("\n");
+}
+
+/* "boat", or "rescue" for the object `boat rescue` declared. */
+static const char *object_name(const tl_timeline *tl, const tl_link *l)
+{
+    return tl->objects[l->object].name;
 }
 
 /* One file of `check`: its summary, or its errors; the exit status. */
@@ -154,24 +165,39 @@ static int check_one(const char *file, int strict)
            tl_timeline_frame_count(&tl), tl.width, tl.height, tl.quality.name);
     list_tracks(&tl, TL_TRACK_KEYED, "  keyed     ");
     list_tracks(&tl, TL_TRACK_SET, "  set       ");
-    const tl_path_track *paths[2] = {&tl.boat_path, &tl.camera_path};
-    const char *names[2] = {"boat", "camera"};
-    for (int i = 0; i < 2; i++)
+    const tl_path_track *paths[TL_OBJECT_MAX + 1] = {&tl.camera_path};
+    const char *names[TL_OBJECT_MAX + 1] = {"camera"};
+    for (int k = 0; k < tl.object_count; k++) {
+        paths[k + 1] = &tl.objects[k].path;
+        names[k + 1] = tl.objects[k].name;
+    }
+    for (int i = 0; i < tl.object_count + 1; i++)
         if (paths[i]->present)
             printf("  path      %s: %zu points, %.6g m%s\n", names[i], paths[i]->path.count,
                    paths[i]->path.length, paths[i]->path.constant_speed ? ", constant speed" : "");
+    if (tl.object_count > 1) {
+        printf("  objects   %d floating:", tl.object_count);
+        for (int k = 0; k < tl.object_count; k++) {
+            const tl_object *o = &tl.objects[k];
+            const char *slash = strrchr(o->model, '/');
+            printf("%s %s (%s%s)", k ? "," : "", o->name,
+                   o->model[0] ? (slash ? slash + 1 : o->model) : "built-in boat",
+                   o->path.present ? "" : ", no path: not drawn");
+        }
+        printf("\n");
+    }
     if (tl.camera_look.target == TL_TARGET_BOAT)
-        printf("  link      camera looks at boat + %g %g %g\n", tl.camera_look.offset[0],
-               tl.camera_look.offset[1], tl.camera_look.offset[2]);
+        printf("  link      camera looks at %s + %g %g %g\n", object_name(&tl, &tl.camera_look),
+               tl.camera_look.offset[0], tl.camera_look.offset[1], tl.camera_look.offset[2]);
     else if (tl.camera_look.target == TL_TARGET_POINT)
         printf("  link      camera looks at %g %g %g\n", tl.camera_look.point[0],
                tl.camera_look.point[1], tl.camera_look.point[2]);
     if (tl.camera_follow.target == TL_TARGET_BOAT)
-        printf("  link      camera follows boat + %g %g %g\n", tl.camera_follow.offset[0],
-               tl.camera_follow.offset[1], tl.camera_follow.offset[2]);
+        printf("  link      camera follows %s + %g %g %g\n", object_name(&tl, &tl.camera_follow),
+               tl.camera_follow.offset[0], tl.camera_follow.offset[1], tl.camera_follow.offset[2]);
     if (tl.giant_follow.target == TL_TARGET_BOAT)
-        printf("  link      giant.center follows boat + %g %g\n", tl.giant_follow.offset[0],
-               tl.giant_follow.offset[2]);
+        printf("  link      giant.center follows %s + %g %g\n", object_name(&tl, &tl.giant_follow),
+               tl.giant_follow.offset[0], tl.giant_follow.offset[2]);
     tl_timeline_features f;
     tl_timeline_features_of(&tl, &f);
     printf("  features  ocean%s%s%s%s\n", f.giant_wave ? ", giant wave" : "",
@@ -518,16 +544,57 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame,
                 printf(" %s", value_text(ch, v[c]));
         printf("%s\n", unit_suffix(ch->unit));
     }
-    if (s.boat.enabled) {
-        printf("  %-26s %s %s %s m\n", "boat.position", num(s.boat.position[0]),
-               num(s.boat.position[1]), num(s.boat.position[2]));
-        printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", "boat pose",
-               s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam);
-        printf("  %-26s %.6g m/s (the bow's spray from %g m/s, all of it from %g)\n",
-               "water rising at the bow", s.boat.impact, TL_BOW_SPRAY_FROM, TL_BOW_SPRAY_FULL);
+    /* The other floating objects' channels, NAME.field. */
+    for (int k = 1; k < tl->object_count; k++)
+        for (int i = 0; i < tl_channel_count(); i++) {
+            const tl_channel *ch = tl_channel_at(i);
+            if (!tl_channel_is_object(ch))
+                continue;
+            double v[3];
+            tl_channel_get_object(ch, &s, k, v);
+            char name[64];
+            snprintf(name, sizeof name, "%s%s", tl->objects[k].name, ch->name + 4);
+            printf("  %-26s", name);
+            if (ch->kind == TL_CH_BOOL)
+                printf(" %s", v[0] >= 0.5 ? "on" : "off");
+            else
+                for (int c = 0; c < ch->components; c++)
+                    printf(" %s", value_text(ch, v[c]));
+            printf("%s\n", unit_suffix(ch->unit));
+        }
+    for (int k = 0; k < tl->object_count; k++) {
+        const tl_boat *b = tl_scene_object_const(&s, k);
+        const char *name = tl->objects[k].name;
+        if (!b->enabled)
+            continue;
+        char label[64];
+        snprintf(label, sizeof label, "%s.position", name);
+        printf("  %-26s %s %s %s m\n", label, num(b->position[0]), num(b->position[1]),
+               num(b->position[2]));
+        snprintf(label, sizeof label, "%s pose", name);
+        printf("  %-26s pitch %.6g deg, roll %.6g deg (%.6g m long, %.6g m beam)\n", label,
+               b->pitch / TL_DEG, b->roll / TL_DEG, b->length, b->beam);
+        if (k == 0)
+            snprintf(label, sizeof label, "water rising at the bow");
+        else
+            snprintf(label, sizeof label, "water rising at %s's bow", name);
+        printf("  %-26s %.6g m/s (the bow's spray from %g m/s, all of it from %g)\n", label,
+               b->impact, TL_BOW_SPRAY_FROM, TL_BOW_SPRAY_FULL);
     }
     print_report_text(tl, &s);
     print_probes_text(&s, probes);
+}
+
+/* A floating object's pose in JSON, or null when it is not on the water. */
+static void print_pose_json(const tl_boat *b)
+{
+    if (b->enabled)
+        printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g, \"pitch\": %.17g, "
+               "\"roll\": %.17g, \"length\": %.17g, \"beam\": %.17g, \"impact\": %.17g}",
+               b->position[0], b->position[1], b->position[2], b->heading / TL_DEG,
+               b->pitch / TL_DEG, b->roll / TL_DEG, b->length, b->beam, b->impact);
+    else
+        printf("null");
 }
 
 static void print_sample_json(const tl_timeline *tl, double t, long frame, int first,
@@ -560,14 +627,31 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
         }
     }
     printf("}, \"boat\": ");
-    if (s.boat.enabled)
-        printf("{\"position\": [%.17g, %.17g, %.17g], \"heading\": %.17g, \"pitch\": %.17g, "
-               "\"roll\": %.17g, \"length\": %.17g, \"beam\": %.17g, \"impact\": %.17g}",
-               s.boat.position[0], s.boat.position[1], s.boat.position[2], s.boat.heading / TL_DEG,
-               s.boat.pitch / TL_DEG, s.boat.roll / TL_DEG, s.boat.length, s.boat.beam,
-               s.boat.impact);
-    else
-        printf("null");
+    print_pose_json(&s.boat);
+    /* Every floating object, the boat first: its name, its boat.* channels
+     * and its pose (null without a path). */
+    printf(", \"objects\": [");
+    for (int k = 0; k < tl->object_count; k++) {
+        printf("%s{\"name\": \"%s\", \"channels\": {", k ? ", " : "", tl->objects[k].name);
+        int first = 1;
+        for (int i = 0; i < tl_channel_count(); i++) {
+            const tl_channel *ch = tl_channel_at(i);
+            if (!tl_channel_is_object(ch))
+                continue;
+            double v[3];
+            tl_channel_get_object(ch, &s, k, v);
+            printf("%s\"%s\": ", first ? "" : ", ", ch->name + 5);
+            first = 0;
+            if (ch->kind == TL_CH_BOOL)
+                printf("%s", v[0] >= 0.5 ? "true" : "false");
+            else
+                printf("%s", value_text(ch, v[0]));
+        }
+        printf("}, \"pose\": ");
+        print_pose_json(tl_scene_object_const(&s, k));
+        printf("}");
+    }
+    printf("]");
     print_report_json(tl, &s);
     print_probes_json(&s, probes);
     printf("}");

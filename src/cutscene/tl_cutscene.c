@@ -1,22 +1,39 @@
 #include "cutscene/tl_cutscene.h"
 
+#include <stdio.h>
 #include <string.h>
 
-/* Loads the mesh the timeline's boat is drawn with into *mesh. */
-static int load_boat(const char *path, tl_timeline *tl, tl_mesh *mesh, tl_error *err)
+/* Loads the mesh object k is drawn with into the models, unless an
+ * earlier object named the same file (or the built-in boat). */
+static int load_model(const char *path, tl_timeline *tl, int k, tl_models *models, tl_error *err)
 {
-    int rc = tl->boat_model[0] ? tl_mesh_load(tl->boat_model, mesh, err)
-                               : tl_mesh_default_boat(mesh, err);
-    if (rc && tl->boat_model_line) {
+    const tl_object *o = &tl->objects[k];
+    for (int j = 0; j < k; j++)
+        if (tl->objects[j].path.present && strcmp(tl->objects[j].model, o->model) == 0) {
+            const tl_mesh *m = &models->mesh[tl->objects[j].mesh];
+            tl_timeline_set_object_model(tl, k, tl->objects[j].mesh, m->bounds_min, m->bounds_max);
+            return TL_OK;
+        }
+    tl_mesh *mesh = &models->mesh[models->count];
+    int rc = o->model[0] ? tl_mesh_load(o->model, mesh, err) : tl_mesh_default_boat(mesh, err);
+    if (rc && o->model_line) {
         /* At the line that named the model; the message names the file. */
         char message[sizeof err->message];
         snprintf(message, sizeof message, "%s", err->message);
-        tl_error_set_at(err, err->status, path, tl->boat_model_line, tl->boat_model_column, "%s",
-                        message);
+        tl_error_set_at(err, err->status, path, o->model_line, o->model_column, "%s", message);
     }
-    if (!rc)
-        tl_timeline_set_boat_bounds(tl, mesh->bounds_min, mesh->bounds_max);
-    return rc;
+    if (rc)
+        return rc;
+    tl_timeline_set_object_model(tl, k, models->count, mesh->bounds_min, mesh->bounds_max);
+    models->count++;
+    return TL_OK;
+}
+
+void tl_models_free(tl_models *models)
+{
+    for (int i = 0; i < models->count; i++)
+        tl_mesh_free(&models->mesh[i]);
+    memset(models, 0, sizeof *models);
 }
 
 int tl_cutscene_load(const char *path, tl_cutscene *out, tl_diags *diags, tl_error *err)
@@ -25,15 +42,15 @@ int tl_cutscene_load(const char *path, tl_cutscene *out, tl_diags *diags, tl_err
     int rc = tl_timeline_parse_file(path, &out->timeline, diags, err);
     if (rc)
         return rc;
-    if (!out->timeline.boat_path.present)
-        return TL_OK;
-    rc = load_boat(path, &out->timeline, &out->boat, err);
+    for (int k = 0; k < out->timeline.object_count && !rc; k++)
+        if (out->timeline.objects[k].path.present)
+            rc = load_model(path, &out->timeline, k, &out->models, err);
     if (rc) {
+        tl_models_free(&out->models);
         tl_timeline_free(&out->timeline);
         memset(out, 0, sizeof *out);
         return rc;
     }
-    out->has_boat = 1;
     return TL_OK;
 }
 
@@ -54,8 +71,7 @@ void tl_cutscene_report(FILE *stream, const char *program, const tl_diags *diags
 
 void tl_cutscene_free(tl_cutscene *cs)
 {
-    if (cs->has_boat)
-        tl_mesh_free(&cs->boat);
+    tl_models_free(&cs->models);
     tl_timeline_free(&cs->timeline);
     memset(cs, 0, sizeof *cs);
 }

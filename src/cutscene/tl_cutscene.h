@@ -22,15 +22,25 @@
 #include "timeline/tl_parse.h"
 #include "timeline/tl_timeline.h"
 
+/* The meshes a timeline's floating objects are drawn with: one per
+ * distinct model among the objects that have a path (NAME.model, or the
+ * built-in boat), in the order the objects first name them; each object's
+ * tl_boat.model indexes them. */
+typedef struct tl_models {
+    int count;
+    tl_mesh mesh[TL_OBJECT_MAX];
+} tl_models;
+
+void tl_models_free(tl_models *models);
+
 typedef struct tl_cutscene {
     tl_timeline timeline;
-    int has_boat; /* the timeline draws a boat: `boat` holds its mesh */
-    tl_mesh boat; /* the timeline's model (boat.model), or the built-in boat */
+    tl_models models; /* none when no object has a path */
 } tl_cutscene;
 
 /* Parses the timeline at `path` and loads every file it references. On
  * success (TL_OK) `diags` may still hold warnings (likely mistakes; the
- * timeline loads) and the timeline knows its boat's bounds. On failure
+ * timeline loads) and the timeline knows its objects' models and bounds. On failure
  * nothing is left allocated: `diags` holds the parser's errors, or `err`
  * the failure, a model's at the timeline's line that named it. */
 int tl_cutscene_load(const char *path, tl_cutscene *out, tl_diags *diags, tl_error *err);

@@ -77,6 +77,10 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
         glDeleteProgram(p);
         return 0;
     }
+    /* The floating objects' block, for the programs that declare it. */
+    GLuint block = glGetUniformBlockIndex(p, "tl_objects");
+    if (block != GL_INVALID_INDEX)
+        glUniformBlockBinding(p, block, TL_OBJECTS_BINDING);
     return p;
 }
 
@@ -135,7 +139,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_MESH_MIN_ALPHA %.17g\n"
         "#define TL_MESH_WET_LOW %.17g\n"
         "#define TL_MESH_WET_HIGH %.17g\n"
-        "#define TL_MESH_WET_DARKEN %.17g\n",
+        "#define TL_MESH_WET_DARKEN %.17g\n"
+        "#define TL_OBJECT_MAX %d\n",
         TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
         TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
         TL_GIANT_TROUGH_LIFT, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP,
@@ -147,7 +152,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
         TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
         TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT,
-        TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN);
+        TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN,
+        TL_OBJECT_MAX);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -432,8 +438,9 @@ static int samples_per_draw(const tl_frame_uniforms *u, unsigned features)
         per_step += u->giant_iterations + 40;                   /* its inversion and slope bins */
         steps = (long)ceil(steps / TL_QUALITY_GIANT_STEP_COST); /* box steps cost less */
     }
-    long per_sample =
-        (steps + u->refine_steps) * per_step + 3L * (u->normal_octaves + 1) + TL_WAKE_POINTS + 256;
+    long per_sample = (steps + u->refine_steps) * per_step + 3L * (u->normal_octaves + 1) +
+                      (long)(TL_WAKE_POINTS + 8) * (u->object_count > 0 ? u->object_count : 1) +
+                      256;
     if (features & TL_FEATURE_UNDERWATER)
         per_sample *= 2; /* the march below the surface, and the lens */
     long n = 60000 / per_sample;
@@ -583,8 +590,11 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
         return tl_error_set(err, TL_ERR_RUNTIME, "pass size does not match the frame");
     /* No mesh, no boat pass (a library user may not have given one). */
     unsigned features = u->features;
-    if (!r->mesh.vao)
+    if (!r->mesh_count)
         features &= ~(unsigned)(TL_FEATURE_BOAT | TL_FEATURE_BOAT_SHADOW);
+    int rc0 = tl_renderer_upload_objects(r, u, err);
+    if (rc0)
+        return rc0;
     if (features & TL_FEATURE_BOAT) {
         tl_timers_start(&r->timers, TL_TIMED_BOAT);
         int rc = tl_renderer_draw_boat(r, u, only > 0, err);

@@ -52,6 +52,10 @@ int tl_renderer_prepare_sky(tl_renderer *r, struct tl_sky_luts *luts, double sun
 /* Uploads the boat's mesh (replacing any before it; NULL removes it). Frames
  * whose uniforms carry TL_FEATURE_BOAT draw it; without a mesh they do not. */
 int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err);
+/* Uploads `count` meshes (up to TL_OBJECT_MAX), replacing any before them:
+ * a floating object is drawn with mesh tl_boat.model, the first when that
+ * is out of range. */
+int tl_renderer_set_meshes(tl_renderer *r, const tl_mesh *meshes, int count, tl_error *err);
 
 /* Renders one frame of u->width x u->height into `frame` (allocated by the
  * caller with the same size). Rows come back top row first. The same as

@@ -1,6 +1,7 @@
-/* The boat's passes (tl_renderer_internal.h): its mesh on the GPU, the
- * sun's shadow map of it, the lit hull and its distance, and its mirror
- * image in the water, for the ocean pass to composite (shaders/boat.glsl). */
+/* The floating objects' passes (tl_renderer_internal.h): their meshes on
+ * the GPU, the sun's shadow map of each, the lit hulls and their distance,
+ * and their mirror images in the water, for the ocean pass to composite
+ * (shaders/boat.glsl); the uniform block the ocean pass reads them from. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -85,9 +86,8 @@ static int upload_maps(gpu_mesh *g, const tl_mesh *mesh, tl_error *err)
     return TL_OK;
 }
 
-int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
+static int upload_mesh(gpu_mesh *g, GLuint vao, const tl_mesh *mesh, tl_error *err)
 {
-    gpu_mesh *g = &r->mesh;
     drop_mesh(g);
     if (!mesh || mesh->index_count == 0)
         return TL_OK;
@@ -132,7 +132,7 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
         glVertexAttribPointer(a, SIZES[a], GL_FLOAT, GL_FALSE, STRIDE * sizeof(float),
                               (const void *)(uintptr_t)(OFFSETS[a] * sizeof(float)));
     }
-    glBindVertexArray(r->vao);
+    glBindVertexArray(vao);
     g->indices = (GLsizei)mesh->index_count;
     tl_mesh_outline_of(mesh, &g->outline);
     int rc = tl_mesh_has_maps(mesh) ? upload_maps(g, mesh, err) : TL_OK;
@@ -141,6 +141,77 @@ int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
         return rc;
     }
     return tl_renderer_check("uploading the boat mesh", err);
+}
+
+int tl_renderer_set_meshes(tl_renderer *r, const tl_mesh *meshes, int count, tl_error *err)
+{
+    for (int i = 0; i < TL_OBJECT_MAX; i++)
+        drop_mesh(&r->meshes[i]);
+    r->mesh_count = 0;
+    if (count > TL_OBJECT_MAX)
+        return tl_error_set(err, TL_ERR_USAGE, "at most %d models, not %d", TL_OBJECT_MAX, count);
+    for (int i = 0; i < count; i++) {
+        int rc = upload_mesh(&r->meshes[i], r->vao, &meshes[i], err);
+        if (rc) {
+            for (int j = 0; j <= i; j++)
+                drop_mesh(&r->meshes[j]);
+            return rc;
+        }
+    }
+    r->mesh_count = count;
+    return TL_OK;
+}
+
+int tl_renderer_set_mesh(tl_renderer *r, const tl_mesh *mesh, tl_error *err)
+{
+    return tl_renderer_set_meshes(r, mesh, mesh ? 1 : 0, err);
+}
+
+/* The mesh slot `pass` is drawn with: its model, or the first. */
+static const gpu_mesh *mesh_of(const tl_renderer *r, const tl_object_pass *pass)
+{
+    const gpu_mesh *g =
+        pass->mesh >= 0 && pass->mesh < r->mesh_count ? &r->meshes[pass->mesh] : &r->meshes[0];
+    return g->vao ? g : NULL;
+}
+
+int tl_renderer_upload_objects(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
+{
+    if (u->object_count <= 0)
+        return TL_OK;
+    if (!r->objects_ubo) {
+        GLint most = 0;
+        glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &most);
+        if ((size_t)most < sizeof u->objects)
+            return tl_error_set(err, TL_ERR_RUNTIME,
+                                "the GPU's uniform blocks hold %d bytes; the floating objects' "
+                                "need %zu",
+                                (int)most, sizeof u->objects);
+        glGenBuffers(1, &r->objects_ubo);
+        glBindBuffer(GL_UNIFORM_BUFFER, r->objects_ubo);
+        glBufferData(GL_UNIFORM_BUFFER, (GLsizeiptr)sizeof u->objects, NULL, GL_DYNAMIC_DRAW);
+    }
+    tl_object_uniforms objects[TL_OBJECT_MAX];
+    memcpy(objects, u->objects, (size_t)u->object_count * sizeof *objects);
+    for (int i = 0; i < u->object_count; i++) {
+        const gpu_mesh *g = mesh_of(r, &u->object_pass[i]);
+        if (!g)
+            continue;
+        const tl_mesh_outline *o = &g->outline;
+        tl_object_uniforms *b = &objects[i];
+        memcpy(b->waterline, o->waterline, sizeof b->waterline);
+        memcpy(b->plan, o->plan, sizeof b->plan);
+        memcpy(b->plan_y, o->plan_y, sizeof b->plan_y);
+        b->outline_z[0] = o->waterline_z[0];
+        b->outline_z[1] = o->waterline_z[1];
+        b->outline_z[2] = o->plan_z[0];
+        b->outline_z[3] = o->plan_z[1];
+    }
+    glBindBuffer(GL_UNIFORM_BUFFER, r->objects_ubo);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, (GLsizeiptr)((size_t)u->object_count * sizeof *objects),
+                    objects);
+    glBindBufferBase(GL_UNIFORM_BUFFER, TL_OBJECTS_BINDING, r->objects_ubo);
+    return tl_renderer_check("uploading the floating objects", err);
 }
 
 /* Binds part p's maps and factors for the mesh program (TL_MESH_MAPS). */
@@ -182,10 +253,10 @@ static void draw_elements(const gpu_mesh *g, GLuint program)
     }
 }
 
-/* Draws the mesh into `t` (cleared first): directly, or mirrored in the
- * water plane and clipped to what stands above it. */
-static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
-                      int mirrored)
+/* Draws every object in view into `t` (cleared first): directly, or each
+ * mirrored in its water plane and clipped to what stands above it. */
+static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
+                        int mirrored)
 {
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
     glViewport(0, 0, u->width, u->height);
@@ -195,46 +266,57 @@ static void draw_mesh(tl_renderer *r, GLuint program, const target *t, const tl_
     if (t->attachments > 1)
         glClearBufferfv(GL_COLOR, 1, sky);
     glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    /* Reflection about y = h: y -> 2h - y (column-major). */
-    float h = u->boat_water;
-    const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
-    glUniformMatrix4fv(tl_renderer_loc(program, "u_mirror"), 1, GL_FALSE,
-                       mirrored ? mirror : identity);
-    glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
-    /* The direct pass clips nothing, whatever the clip-distance state. */
-    glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
     if (mirrored)
         glEnable(GL_CLIP_DISTANCE0);
-    draw_elements(&r->mesh, program);
+    for (int i = 0; i < u->object_count; i++) {
+        const tl_object_pass *pass = &u->object_pass[i];
+        const gpu_mesh *g = mesh_of(r, pass);
+        if (!pass->drawn || !g)
+            continue;
+        /* Reflection about y = h: y -> 2h - y (column-major). */
+        float h = u->objects[i].hull[1];
+        const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        const float mirror[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 2 * h, 0, 1};
+        glUniformMatrix4fv(tl_renderer_loc(program, "u_mirror"), 1, GL_FALSE,
+                           mirrored ? mirror : identity);
+        glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
+        /* The direct pass clips nothing, whatever the clip-distance state. */
+        glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
+        glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_model"), 1, GL_FALSE, pass->model);
+        glUniform1i(tl_renderer_loc(program, "u_object"), i);
+        glUniform1f(tl_renderer_loc(program, "u_sunlit"), pass->sunlit);
+        glUniform1f(tl_renderer_loc(program, "u_lights"), pass->lights);
+        draw_elements(g, program);
+    }
     glBindVertexArray(r->vao);
     glDisable(GL_CLIP_DISTANCE0);
 }
 
-/* The sun's view of the boat into the shadow map: depth alone, pushed a
- * little away from the sun (polygon offset) so that lit faces do not
- * shadow themselves. */
-static int draw_shadow(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
+/* The sun's view of each object that casts a shadow into its layer of the
+ * shadow maps: depth alone, pushed a little away from the sun (polygon
+ * offset) so that lit faces do not shadow themselves. */
+static int draw_shadows(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err)
 {
-    if (!r->shadow_fbo) {
+    int layers = 0;
+    for (int i = 0; i < u->object_count; i++)
+        layers += u->object_pass[i].shadow_size > 0;
+    if (layers > r->shadow_layers) {
+        if (r->shadow_tex)
+            glDeleteTextures(1, &r->shadow_tex);
         glGenTextures(1, &r->shadow_tex);
-        glBindTexture(GL_TEXTURE_2D, r->shadow_tex);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, TL_BOAT_SHADOW_SIZE,
-                     TL_BOAT_SHADOW_SIZE, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, r->shadow_tex);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, TL_BOAT_SHADOW_SIZE,
+                     TL_BOAT_SHADOW_SIZE, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         /* Compared in the lookup: bilinear percentage-closer filtering. */
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        glGenFramebuffers(1, &r->shadow_fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, r->shadow_tex,
-                               0);
-        glDrawBuffer(GL_NONE);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            return tl_error_set(err, TL_ERR_RUNTIME, "the boat's shadow map is not supported");
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        r->shadow_layers = layers;
+        if (!r->shadow_fbo)
+            glGenFramebuffers(1, &r->shadow_fbo);
     }
     if (!r->shadow_program) {
         char defines[TL_DEFINES_SIZE];
@@ -244,37 +326,53 @@ static int draw_shadow(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err
         if (!r->shadow_program)
             return err ? (int)err->status : TL_ERR_RUNTIME;
     }
-    /* Only the corner the frame uses: clearing and drawing all of it for
-     * a boat a few pixels across cost a small frame four times over. */
-    const int size = u->boat_shadow_size;
     glBindFramebuffer(GL_FRAMEBUFFER, r->shadow_fbo);
-    glViewport(0, 0, size, size);
-    /* Cleared a texel past it: the lookup's filtered taps at its edge read
-     * there, not what a larger map left. */
-    const int cleared = size + 2 < TL_BOAT_SHADOW_SIZE ? size + 2 : TL_BOAT_SHADOW_SIZE;
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, cleared, cleared);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
+    glDrawBuffer(GL_NONE);
     glUseProgram(r->shadow_program);
-    glUniform1f(tl_renderer_loc(r->shadow_program, "u_boat_shadow_extent"), u->boat_shadow_extent);
-    glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_model"), 1, GL_FALSE,
-                       u->boat_model);
-    glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_shadow"), 1, GL_FALSE,
-                       u->boat_shadow);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
-    draw_elements(&r->mesh, 0); /* depth alone: no maps */
+    int rc = TL_OK;
+    for (int i = 0, layer = 0; i < u->object_count && !rc; i++) {
+        const tl_object_pass *pass = &u->object_pass[i];
+        const gpu_mesh *g = mesh_of(r, pass);
+        if (pass->shadow_size <= 0)
+            continue;
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, r->shadow_tex, 0, layer++);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "the boat's shadow map is not supported");
+            break;
+        }
+        /* Only the corner the frame uses: clearing and drawing all of it
+         * for a boat a few pixels across cost a small frame four times
+         * over. Cleared a texel past it: the lookup's filtered taps at its
+         * edge read there, not what a larger map left. */
+        const int size = pass->shadow_size;
+        glViewport(0, 0, size, size);
+        const int cleared = size + 2 < TL_BOAT_SHADOW_SIZE ? size + 2 : TL_BOAT_SHADOW_SIZE;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, cleared, cleared);
+        glClearDepth(1.0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        if (!g)
+            continue;
+        glUniform1f(tl_renderer_loc(r->shadow_program, "u_boat_shadow_extent"),
+                    u->objects[i].shadow_map[1]);
+        glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_model"), 1, GL_FALSE,
+                           pass->model);
+        glUniformMatrix4fv(tl_renderer_loc(r->shadow_program, "u_boat_shadow"), 1, GL_FALSE,
+                           u->objects[i].shadow);
+        draw_elements(g, 0); /* depth alone: no maps */
+    }
     glBindVertexArray(r->vao);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    return TL_OK;
+    return rc;
 }
 
 static void bind_shadow(const tl_renderer *r, GLuint program)
 {
     glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_SHADOW);
-    glBindTexture(GL_TEXTURE_2D, r->shadow_tex);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, r->shadow_tex);
     glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
     glUniform1i(tl_renderer_loc(program, "u_boat_shadow_map"), TL_UNIT_BOAT_SHADOW);
 }
@@ -303,10 +401,16 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
             features |= MESH_FEATURES[i];
             variant |= 1 << i;
         }
-    variant |= r->mesh.maps ? 1 << 4 : 0;
+    /* Compiled in only for models that have maps (a program with them
+     * draws a model without any as well). */
+    for (int i = 0; i < u->object_count; i++) {
+        const gpu_mesh *g = mesh_of(r, &u->object_pass[i]);
+        if (u->object_pass[i].drawn && g && g->maps)
+            variant |= 1 << 4;
+    }
     /* The sun's view does not move with a sample's offset: one map a frame. */
     if ((features & TL_FEATURE_BOAT_SHADOW) && !(reuse && r->shadow_fbo)) {
-        rc = draw_shadow(r, u, err);
+        rc = draw_shadows(r, u, err);
         if (rc) {
             glDisable(GL_DEPTH_TEST);
             return rc;
@@ -316,8 +420,7 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     if (!*program) {
         char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(features | TL_FEATURE_BOAT, defines, sizeof defines);
-        /* Compiled in only for a model that has maps. */
-        if (r->mesh.maps)
+        if (variant & (1 << 4))
             strncat(defines, "#define TL_MESH_MAPS\n", sizeof defines - strlen(defines) - 1);
         *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
         if (!*program) {
@@ -328,13 +431,10 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     glUseProgram(*program);
     tl_renderer_upload_uniforms(*program, u);
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
-    glUniformMatrix4fv(tl_renderer_loc(*program, "u_boat_model"), 1, GL_FALSE, u->boat_model);
-    glUniform1f(tl_renderer_loc(*program, "u_sunlit"), u->boat_sunlit);
-    glUniform1f(tl_renderer_loc(*program, "u_lights"), u->boat_lights);
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, *program);
-    draw_mesh(r, *program, &r->boat, u, 0);
-    draw_mesh(r, *program, &r->mirror, u, 1);
+    draw_meshes(r, *program, &r->boat, u, 0);
+    draw_meshes(r, *program, &r->mirror, u, 1);
     glDisable(GL_DEPTH_TEST);
     return tl_renderer_check("drawing the boat", err);
 }
@@ -350,13 +450,6 @@ void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned featur
     glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
     glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
     glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
-    const tl_mesh_outline *o = &r->mesh.outline;
-    glUniform1fv(tl_renderer_loc(program, "u_boat_waterline"), TL_MESH_WATERLINE_STATIONS,
-                 o->waterline);
-    glUniform2fv(tl_renderer_loc(program, "u_boat_waterline_z"), 1, o->waterline_z);
-    glUniform1fv(tl_renderer_loc(program, "u_boat_plan"), TL_MESH_WATERLINE_STATIONS, o->plan);
-    glUniform1fv(tl_renderer_loc(program, "u_boat_plan_y"), TL_MESH_WATERLINE_STATIONS, o->plan_y);
-    glUniform2fv(tl_renderer_loc(program, "u_boat_plan_z"), 1, o->plan_z);
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, program);
 }
@@ -370,11 +463,14 @@ void tl_renderer_drop_boat_programs(tl_renderer *r)
 
 void tl_renderer_free_boat(tl_renderer *r)
 {
-    tl_renderer_set_mesh(r, NULL, NULL);
+    tl_renderer_set_meshes(r, NULL, 0, NULL);
     tl_renderer_drop_boat_programs(r);
     if (r->shadow_fbo)
         glDeleteFramebuffers(1, &r->shadow_fbo);
     if (r->shadow_tex)
         glDeleteTextures(1, &r->shadow_tex);
-    r->shadow_fbo = r->shadow_tex = 0;
+    if (r->objects_ubo)
+        glDeleteBuffers(1, &r->objects_ubo);
+    r->shadow_fbo = r->shadow_tex = r->objects_ubo = 0;
+    r->shadow_layers = 0;
 }

@@ -35,7 +35,7 @@ enum {
     TL_UNIT_BOAT_REFLECTION = 3,   /* its mirror image, */
     TL_UNIT_SKY_VIEW = 4,          /* the physical sky's sky-view table, */
     TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances, */
-    TL_UNIT_BOAT_SHADOW = 6,       /* the boat's shadow map (the mesh pass's too) */
+    TL_UNIT_BOAT_SHADOW = 6,       /* the objects' shadow maps (the mesh pass's too) */
     TL_UNIT_MESH_MAPS = 7,         /* the mesh pass's maps, 7 to 11 in tl_mesh_map order */
     TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
     TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
@@ -91,7 +91,11 @@ typedef struct readback_slot {
     int width, height;
 } readback_slot;
 
-/* The boat's mesh on the GPU: interleaved position, normal, colour,
+/* The uniform block binding of the floating objects (shaders/objects.glsl):
+ * every program that declares the block reads it there. */
+#define TL_OBJECTS_BINDING 0
+
+/* A floating object's mesh on the GPU: interleaved position, normal, colour,
  * surface, UV and tangent; a loaded model's maps as textures. */
 typedef struct gpu_mesh {
     GLuint vao, vbo, ibo;
@@ -136,8 +140,12 @@ struct tl_renderer {
     GLuint filter_program;
     int display_filtered;                  /* the last display pass left its image in `filtered` */
     GLuint mesh_program[TL_MESH_PROGRAMS]; /* per feature set that lights it (tl_renderer_boat.c) */
-    GLuint shadow_program;                 /* the sun's depth view of the boat */
-    GLuint shadow_fbo, shadow_tex;         /* its shadow map, TL_BOAT_SHADOW_SIZE square */
+    GLuint shadow_program;                 /* the sun's depth view of an object */
+    /* The objects' shadow maps: an array of shadow_layers layers,
+     * TL_BOAT_SHADOW_SIZE square, one per object in view that casts one. */
+    GLuint shadow_fbo, shadow_tex;
+    int shadow_layers;
+    GLuint objects_ubo; /* the floating objects' uniform block (tl_object_uniforms) */
     /* The physical sky (tl_renderer_sky.c): the sky-view table, drawn
      * here for the sun and altitude below, and the atmosphere's two tables
      * it is drawn from, uploaded for sky_atmosphere. */
@@ -147,7 +155,8 @@ struct tl_renderer {
     tl_atmosphere sky_atmosphere;
     int sky_tables_valid, sky_view_valid;
     double sky_view_sun, sky_view_altitude;
-    gpu_mesh mesh;
+    gpu_mesh meshes[TL_OBJECT_MAX]; /* the floating objects' models (tl_renderer_set_meshes) */
+    int mesh_count;
     double readback_seconds; /* of the last tl_renderer_finish or finish_end */
     /* Frames whose planes are on their way (finish_begin), oldest first
      * from readback_head. */
@@ -165,6 +174,9 @@ struct tl_renderer {
 /* `reuse`: a later sample of the same frame, whose shadow map still holds. */
 int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err);
 void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned features);
+/* Uploads the frame's floating objects in view into the uniform block,
+ * their meshes' outlines filled in, and binds it (TL_OBJECTS_BINDING). */
+int tl_renderer_upload_objects(tl_renderer *r, const tl_frame_uniforms *u, tl_error *err);
 void tl_renderer_drop_boat_programs(tl_renderer *r);
 void tl_renderer_free_boat(tl_renderer *r);
 /* (Re)creates `t` as tl_renderer_target_ensure, with a depth buffer if

@@ -77,6 +77,7 @@ int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, con
         glViewport(0, 0, width, height);
         glUseProgram(program);
         tl_renderer_upload_uniforms(program, u);
+        rc = tl_renderer_upload_objects(r, u, err);
         /* target_ensure bound its own texture to unit 0: bind the points again. */
         glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
         glBindTexture(GL_TEXTURE_2D, points);
@@ -87,7 +88,8 @@ int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, con
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out);
         memcpy(out4, out, (size_t)count * 4 * sizeof(float));
-        rc = tl_renderer_check("probe", err);
+        if (!rc)
+            rc = tl_renderer_check("probe", err);
     }
     tl_renderer_target_free(&t);
     glDeleteTextures(1, &points);

@@ -262,18 +262,18 @@ static int sphere_in_view(const tl_scene *s, const double c[3], double r)
            fabs(y) <= z * ty + r * sqrt(1.0 + ty * ty);
 }
 
-/* The sun's orthographic view of the boat's bounding sphere (centre c,
+/* The sun's orthographic view of an object's bounding sphere (centre c,
  * radius r, camera-relative): shadow map coordinates s, t across the
  * sun's beam and depth along it, each 0 to 1 over the sphere. Every point
- * in that beam projects into the map, the water under the boat's shadow
+ * in that beam projects into the map, the water under the object's shadow
  * too; past the sphere, away from the sun, depth is clamped by the lookup. */
-static void prepare_boat_shadow(const tl_scene *s, const double c[3], double r, const double sun[3],
-                                tl_frame_uniforms *u)
+static void prepare_shadow(const tl_scene *s, const double c[3], double r, const double sun[3],
+                           int layer, tl_object_uniforms *o, tl_object_pass *pass)
 {
-    /* Texels: twice the pixels the boat spans on screen, a power of two
-     * from TL_BOAT_SHADOW_LEAST to TL_BOAT_SHADOW_SIZE (a boat far off, or
-     * a thumbnail, does not raster a full map). The map's part in use is
-     * the corner of that many texels: its share `extent` of the texture. */
+    /* Texels: twice the pixels the object spans on screen, a power of two
+     * from TL_BOAT_SHADOW_LEAST to TL_BOAT_SHADOW_SIZE (an object far off,
+     * or a thumbnail, does not raster a full map). The map's part in use is
+     * the corner of that many texels: its share `extent` of the layer. */
     double dist = fmax(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) - r, r);
     double across = 2.0 * r / (2.0 * dist * tan(0.5 * s->camera.vfov)) * s->height;
     int size = TL_BOAT_SHADOW_LEAST;
@@ -294,58 +294,57 @@ static void prepare_boat_shadow(const tl_scene *s, const double c[3], double r, 
      * depth = 0.5 - sun.(p - c) / 2r; stored column-major. */
     const double *rows[3] = {e1, e2, sun};
     const double sign[3] = {1.0, 1.0, -1.0};
-    memset(u->boat_shadow, 0, sizeof u->boat_shadow);
+    memset(o->shadow, 0, sizeof o->shadow);
     for (int i = 0; i < 3; i++) {
         double scale = i < 2 ? extent : 1.0, offset = 0.5 * scale;
         for (int k = 0; k < 3; k++) {
             double m = scale * sign[i] * rows[i][k] / (2.0 * r);
-            u->boat_shadow[4 * k + i] = (float)m;
+            o->shadow[4 * k + i] = (float)m;
             offset -= m * c[k];
         }
-        u->boat_shadow[12 + i] = (float)offset;
+        o->shadow[12 + i] = (float)offset;
     }
-    u->boat_shadow[15] = 1.0f;
-    u->boat_shadow_texel = (float)(2.0 * r / size);
-    u->boat_shadow_extent = (float)extent;
-    u->boat_shadow_size = size;
-    u->features |= TL_FEATURE_BOAT_SHADOW;
+    o->shadow[15] = 1.0f;
+    o->hull[3] = (float)layer;
+    o->shadow_map[0] = (float)(2.0 * r / size);
+    o->shadow_map[1] = (float)extent;
+    pass->shadow_size = size;
 }
 
-/* The boat's matrices in camera-relative space, and its feature bit when
- * its bounding sphere is in view; how much of the sun its hull sees past
- * the giant wave's crest, at the hull's centre (the shadow's edge is soft
- * over metres, the hull is a few long). */
 /* The bow's spray where it meets rising water (TL_FEATURE_BOW_SPRAY), with
- * the boat in view and its sheet's sphere too; the giant wave's spray
- * throws its own where the bow meets the face. */
-static void prepare_bow_spray(const tl_scene *s, tl_frame_uniforms *u)
+ * the object's hull in view and its sheet's sphere too; the giant wave's
+ * spray throws the boat's own where its bow meets the face. */
+static void prepare_bow_spray(const tl_scene *s, const tl_boat *b, int k, tl_object_uniforms *o,
+                              tl_frame_uniforms *u)
 {
-    if (!(u->features & TL_FEATURE_BOAT) ||
-        ((u->features & TL_FEATURE_GIANT_SPRAY) && u->giant_spray_bow[3] > 0.0f))
+    if (k == 0 && (u->features & TL_FEATURE_GIANT_SPRAY) && u->giant_spray_bow[3] > 0.0f)
         return;
     tl_bow_spray sp;
-    tl_bow_spray_prepare(&sp, &s->boat);
+    tl_bow_spray_prepare(&sp, b);
     double c[3];
     for (int i = 0; i < 3; i++)
         c[i] = sp.center[i] - s->camera.position[i];
     if (!sp.active || !sphere_in_view(s, c, 3.0 * 1.3 * sp.radius))
         return;
     u->features |= TL_FEATURE_BOW_SPRAY;
-    u->bow_spray[0] = (float)c[0];
-    u->bow_spray[1] = (float)sp.center[1];
-    u->bow_spray[2] = (float)c[2];
-    u->bow_spray[3] = (float)sp.amount;
-    u->bow_spray_shape[0] = (float)sp.heading[0];
-    u->bow_spray_shape[1] = (float)sp.heading[1];
-    u->bow_spray_shape[2] = (float)sp.radius;
-    u->bow_spray_shape[3] = 0.0f;
+    o->bow_spray[0] = (float)c[0];
+    o->bow_spray[1] = (float)sp.center[1];
+    o->bow_spray[2] = (float)c[2];
+    o->bow_spray[3] = (float)sp.amount;
+    o->bow_spray_shape[0] = (float)sp.heading[0];
+    o->bow_spray_shape[1] = (float)sp.heading[1];
+    o->bow_spray_shape[2] = (float)sp.radius;
+    o->bow_spray_shape[3] = 0.0f;
 }
 
-static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_uniforms *u)
+/* An object's matrices in camera-relative space, and whether its bounding
+ * sphere (or its mirror image's) is in view; how much of the sun its hull
+ * sees past the giant wave's crest, at the hull's centre (the shadow's
+ * edge is soft over metres, the hull is a few long). Returns 1 when it is
+ * in view: its mirror rectangle joins the frame's. */
+static int prepare_hull(const tl_scene *s, const tl_giant *giant, const tl_boat *b,
+                        tl_object_uniforms *o, tl_object_pass *pass, tl_frame_uniforms *u)
 {
-    const tl_boat *b = &s->boat;
-    if (!b->enabled || !b->visible)
-        return;
     double rel[3];
     for (int i = 0; i < 3; i++)
         rel[i] = b->position[i] - s->camera.position[i];
@@ -356,6 +355,19 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
     glm_rotate_z(model, (float)-b->roll, model);  /* starboard down */
     glm_rotate_y(model, (float)b->model_yaw, model);
     glm_scale_uni(model, (float)b->scale);
+    mat4 inverse;
+    glm_mat4_inv(model, inverse);
+    memcpy(pass->model, model, sizeof pass->model);
+    memcpy(o->to_model, inverse, sizeof o->to_model);
+    o->hull[0] = (float)b->model_max[1];
+    o->hull[1] = (float)rel[1];
+    o->hull[3] = -1.0f; /* no shadow map until one is made */
+    /* Over the last stretch of its path the wake keeps. */
+    if (b->wake_step > 0.0)
+        o->hull[2] = (float)(hypot(b->wake_path[0][0] - b->wake_path[1][0],
+                                   b->wake_path[0][1] - b->wake_path[1][1]) /
+                             b->wake_step);
+    pass->lights = (float)b->lights;
 
     double centre[3], half = 0.0;
     for (int i = 0; i < 3; i++) {
@@ -371,8 +383,7 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
     double mirrored[3] = {cw[0], 2.0 * rel[1] - cw[1], cw[2]};
     double radius = sqrt(half) * b->scale;
     if (!sphere_in_view(s, world, radius) && !sphere_in_view(s, mirrored, radius))
-        return;
-    u->features |= TL_FEATURE_BOAT;
+        return 0;
     double corner[8][3];
     for (int i = 0; i < 8; i++) {
         vec4 m = {(float)(i & 1 ? b->model_max[0] : b->model_min[0]),
@@ -384,7 +395,24 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
             corner[i][k] = w[k];
     }
     tl_prepare_mirror_rect(s, corner, rel[1], u);
+    double sun[3];
+    tl_scene_sun_direction(&s->sun, sun);
+    pass->sunlit =
+        (float)tl_giant_sunlit(giant, cw[0] + s->camera.position[0], cw[2] + s->camera.position[2],
+                               cw[1] + s->camera.position[1], sun);
+    if (b->shadows && sun[1] > 0.0) {
+        int layer = 0;
+        for (int i = 0; i < u->object_count; i++)
+            layer += u->object_pass[i].shadow_size > 0;
+        prepare_shadow(s, world, radius, sun, layer, o, pass);
+        u->features |= TL_FEATURE_BOAT_SHADOW;
+    }
+    return 1;
+}
 
+/* The view's projection (camera-relative world -> clip) for the meshes. */
+static void prepare_view_proj(const tl_scene *s, tl_frame_uniforms *u)
+{
     double right[3], up[3], fwd[3];
     tl_scene_camera_basis(&s->camera, right, up, fwd);
     mat4 view = GLM_MAT4_IDENTITY_INIT, proj, view_proj;
@@ -396,30 +424,10 @@ static void prepare_boat(const tl_scene *s, const tl_giant *giant, tl_frame_unif
     glm_perspective((float)s->camera.vfov, (float)s->width / (float)s->height, (float)TL_BOAT_NEAR,
                     (float)TL_BOAT_FAR, proj);
     glm_mat4_mul(proj, view, view_proj);
-    mat4 inverse;
-    glm_mat4_inv(model, inverse);
     memcpy(u->view_proj, view_proj, sizeof u->view_proj);
-    memcpy(u->boat_model, model, sizeof u->boat_model);
-    memcpy(u->boat_to_model, inverse, sizeof u->boat_to_model);
-    /* The water is hidden inside this ellipse, just within the bounds. */
-    u->boat_top = (float)b->model_max[1];
-    u->boat_water = (float)rel[1];
-    double sun[3];
-    tl_scene_sun_direction(&s->sun, sun);
-    u->boat_sunlit =
-        (float)tl_giant_sunlit(giant, cw[0] + s->camera.position[0], cw[2] + s->camera.position[2],
-                               cw[1] + s->camera.position[1], sun);
-    u->boat_lights = (float)b->lights;
-    /* Over the last stretch of its path the wake keeps. */
-    if (b->wake_step > 0.0)
-        u->boat_speed = (float)(hypot(b->wake_path[0][0] - b->wake_path[1][0],
-                                      b->wake_path[0][1] - b->wake_path[1][1]) /
-                                b->wake_step);
-    if (b->shadows && sun[1] > 0.0)
-        prepare_boat_shadow(s, world, radius, sun, u);
 }
 
-/* How far from its path, `behind` metres back from the boat, the wake's
+/* How far from its path, `behind` metres back from the object, the wake's
  * foam reaches: shaders/wake.glsl skips a segment farther than 1.3 times
  * the wedge's half width there plus 2 m (tan 19.47 deg = 0.35355). */
 static double wake_reach(const tl_boat *b, double behind)
@@ -430,8 +438,8 @@ static double wake_reach(const tl_boat *b, double behind)
 /* A circle around each group of the wake's segments that holds every point
  * of the water its foam can reach (the reach grows along the path), so
  * that a pixel loops only over the groups that reach it. Camera-relative,
- * from u->wake; the slack covers the shader's float rounding. */
-static void wake_groups(const tl_boat *b, tl_frame_uniforms *u)
+ * from o->wake; the slack covers the shader's float rounding. */
+static void wake_groups(const tl_boat *b, tl_object_uniforms *o)
 {
     for (int g = 0; g < TL_WAKE_GROUPS; g++) {
         int k0 = g * TL_WAKE_GROUP, k1 = k0 + TL_WAKE_GROUP;
@@ -440,17 +448,17 @@ static void wake_groups(const tl_boat *b, tl_frame_uniforms *u)
         double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
         for (int k = k0; k <= k1; k++)
             for (int i = 0; i < 2; i++) {
-                lo[i] = fmin(lo[i], u->wake[k][i]);
-                hi[i] = fmax(hi[i], u->wake[k][i]);
+                lo[i] = fmin(lo[i], o->wake[k][i]);
+                hi[i] = fmax(hi[i], o->wake[k][i]);
             }
         double cx = 0.5 * (lo[0] + hi[0]), cz = 0.5 * (lo[1] + hi[1]), spread = 0.0;
         for (int k = k0; k <= k1; k++)
-            spread = fmax(spread, hypot(u->wake[k][0] - cx, u->wake[k][1] - cz));
-        double radius = spread + wake_reach(b, u->wake[k1][3]);
-        u->wake_groups[g][0] = (float)cx;
-        u->wake_groups[g][1] = (float)cz;
-        u->wake_groups[g][2] = (float)(radius * 1.001 + 0.1);
-        u->wake_groups[g][3] = 0.0f;
+            spread = fmax(spread, hypot(o->wake[k][0] - cx, o->wake[k][1] - cz));
+        double radius = spread + wake_reach(b, o->wake[k1][3]);
+        o->wake_groups[g][0] = (float)cx;
+        o->wake_groups[g][1] = (float)cz;
+        o->wake_groups[g][2] = (float)(radius * 1.001 + 0.1);
+        o->wake_groups[g][3] = 0.0f;
     }
 }
 
@@ -463,13 +471,13 @@ static double wake_churn(double speed)
     return t * t * (3.0 - 2.0 * t);
 }
 
-/* The wake's past positions relative to the camera, and its feature bit
- * when the boat is under way and the wedge can be in view. */
-static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
+/* An object's past positions relative to the camera, for its wake; 1 when
+ * it is under way and the wedge can be in view (else the wake's strength
+ * stays 0 and its groups empty: the shader skips it). */
+static int prepare_wake(const tl_scene *s, const tl_boat *b, tl_object_uniforms *o)
 {
-    const tl_boat *b = &s->boat;
-    if (!b->enabled || !b->visible || !(b->wake > 0.0))
-        return;
+    if (!(b->wake > 0.0))
+        return 0;
     const double *cam = s->camera.position;
     double behind = 0.0, lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300}, churn = 0.0;
     for (int k = 0; k < TL_WAKE_POINTS; k++) {
@@ -480,37 +488,73 @@ static void prepare_wake(const tl_scene *s, tl_frame_uniforms *u)
             double speed = b->wake_step > 0.0 ? step / b->wake_step : 0.0;
             churn = fmax(churn, wake_churn(speed));
         }
-        u->wake[k][0] = (float)(x - cam[0]);
-        u->wake[k][1] = (float)(z - cam[2]);
-        u->wake[k][2] = (float)(k * b->wake_step);
-        u->wake[k][3] = (float)behind;
+        o->wake[k][0] = (float)(x - cam[0]);
+        o->wake[k][1] = (float)(z - cam[2]);
+        o->wake[k][2] = (float)(k * b->wake_step);
+        o->wake[k][3] = (float)behind;
         /* Half a wrap on: before the path's first point the distance is
          * negative, and the wrap's seam (a jump in the streaks' texture)
          * would lie at the path's start, often in view; it lies 32 km away. */
-        u->wake_along[k] = (float)wrap65536(b->wake_along[k] + 32768.0);
+        o->wake_along[k] = (float)wrap65536(b->wake_along[k] + 32768.0);
         lo[0] = fmin(lo[0], x);
         lo[1] = fmin(lo[1], z);
         hi[0] = fmax(hi[0], x);
         hi[1] = fmax(hi[1], z);
     }
-    /* A boat at rest, or drifting, leaves no white water. */
+    /* An object at rest, or drifting, leaves no white water. */
     if (behind < 0.1 || b->wake * churn < TL_WAKE_LEAST)
-        return;
+        return 0;
     /* The wedge's reach: the path's box widened by its widest arm. */
     double reach = wake_reach(b, behind);
     double centre[3] = {0.5 * (lo[0] + hi[0]) - cam[0], b->position[1] - cam[1],
                         0.5 * (lo[1] + hi[1]) - cam[2]};
     double radius = hypot(0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1])) + reach;
     if (!sphere_in_view(s, centre, radius))
-        return;
-    u->features |= TL_FEATURE_WAKE;
-    wake_groups(b, u);
-    u->wake_params[0] = (float)(0.5 * b->beam);
-    u->wake_params[1] = (float)b->wake_time;
-    u->wake_params[2] = (float)b->wake;
-    u->wake_params[3] = (float)b->length;
-    u->world_offset[0] = (float)wrap65536(cam[0]);
-    u->world_offset[1] = (float)wrap65536(cam[2]);
+        return 0;
+    wake_groups(b, o);
+    o->wake_params[0] = (float)(0.5 * b->beam);
+    o->wake_params[1] = (float)b->wake_time;
+    o->wake_params[2] = (float)b->wake;
+    o->wake_params[3] = (float)b->length;
+    return 1;
+}
+
+/* The floating objects: each one whose hull, mirror image or wake is in
+ * view takes the next slot of the ocean pass's block and the mesh pass;
+ * the others cost nothing. */
+static void prepare_objects(const tl_scene *s, const tl_giant *giant, tl_frame_uniforms *u)
+{
+    for (int k = 0; k < s->objects && k < TL_OBJECT_MAX; k++) {
+        const tl_boat *b = tl_scene_object_const(s, k);
+        if (!b->enabled || !b->visible)
+            continue;
+        tl_object_uniforms *o = &u->objects[u->object_count];
+        tl_object_pass *pass = &u->object_pass[u->object_count];
+        memset(o, 0, sizeof *o);
+        memset(pass, 0, sizeof *pass);
+        pass->object = k;
+        pass->mesh = b->model;
+        pass->drawn = prepare_hull(s, giant, b, o, pass, u);
+        int wake = prepare_wake(s, b, o);
+        if (!pass->drawn && !wake)
+            continue;
+        if (pass->drawn) {
+            u->features |= TL_FEATURE_BOAT;
+            prepare_bow_spray(s, b, k, o, u);
+        } else {
+            pass->shadow_size = 0;
+            o->hull[3] = -1.0f;
+        }
+        if (wake)
+            u->features |= TL_FEATURE_WAKE;
+        u->object_count++;
+    }
+    if (u->features & TL_FEATURE_BOAT)
+        prepare_view_proj(s, u);
+    if (u->features & TL_FEATURE_WAKE) {
+        u->world_offset[0] = (float)wrap65536(s->camera.position[0]);
+        u->world_offset[1] = (float)wrap65536(s->camera.position[2]);
+    }
 }
 
 tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
@@ -810,9 +854,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, w, &giant, u);
-    prepare_boat(s, &giant, u);
-    prepare_bow_spray(s, u);
-    prepare_wake(s, u);
+    prepare_objects(s, &giant, u);
     prepare_water_body(s, w, &giant, u);
     prepare_fog(s, u);
     prepare_sky(s, u);

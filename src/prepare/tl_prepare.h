@@ -11,6 +11,7 @@
 
 #include <stddef.h>
 
+#include "mesh/tl_mesh.h"
 #include "scene/tl_scene.h"
 #include "waves/tl_waves.h"
 
@@ -88,6 +89,51 @@ typedef struct tl_draw_plan {
     int march_prepass; /* quality.march_prepass: the prepass before every pass */
     int giant_prepass; /* quality.giant_prepass: the prepass over giant_rect alone */
 } tl_draw_plan;
+
+/* One floating object in the ocean pass's uniform block (shaders/
+ * objects.glsl declares the same in GLSL, std140: every member a vec4 or a
+ * mat4, or an array of vec4, so C's layout is the block's; the renderer
+ * checks the block's size against this struct's). Camera-relative,
+ * column-major. The outline's tables are the object's mesh's
+ * (tl_mesh_outline, model units): the renderer fills them. */
+typedef struct tl_object_uniforms {
+    float to_model[16]; /* camera-relative world -> model */
+    float shadow[16];   /* -> its shadow map's s, t and depth in [0, 1], depth away from the sun */
+    /* Model y of the hull's top, camera-relative y of the water plane its
+     * mirror image is taken in, speed over the ground (m/s, the bow
+     * wave's), its shadow map's layer (-1: it casts none). */
+    float hull[4];
+    float outline_z[4];  /* the waterline's model z from x to y, the widest plan's from z to w */
+    float shadow_map[4]; /* a texel's width (m), the share of the layer in use, unused x 2 */
+    float waterline[TL_MESH_WATERLINE_STATIONS];
+    float plan[TL_MESH_WATERLINE_STATIONS];
+    float plan_y[TL_MESH_WATERLINE_STATIONS];
+    /* Its wake: per past position, camera-relative x z, age in seconds and
+     * distance behind the object along its path; the distance along the
+     * path (tl_boat.wake_along, wrapped every 65536 m); per group of
+     * TL_WAKE_GROUP segments a circle (x z, radius, unused) holding every
+     * point the group's foam can reach (radius 0: none in view); half
+     * beam, fade time, strength (0: no wake), hull length. */
+    float wake[TL_WAKE_POINTS][4];
+    float wake_along[TL_WAKE_POINTS];
+    float wake_groups[TL_WAKE_GROUPS][4];
+    float wake_params[4];
+    /* The bow's spray (TL_FEATURE_BOW_SPRAY): camera-relative centre (y
+     * absolute) and amount (0: none); heading, unit (x, z), and radius. */
+    float bow_spray[4];
+    float bow_spray_shape[4];
+} tl_object_uniforms;
+
+/* A floating object's mesh pass, beside its uniforms. */
+typedef struct tl_object_pass {
+    int object;      /* its index in the scene (tl_scene_object) */
+    int mesh;        /* tl_boat.model: the mesh it is drawn with */
+    int drawn;       /* its hull or mirror image is in view: the mesh pass draws it */
+    float model[16]; /* model -> camera-relative world */
+    float sunlit;    /* the share of the sun its hull sees past the giant wave's crest */
+    float lights;    /* boat.lights: the lamps' share of their emission */
+    int shadow_size; /* texels of its shadow map's layer in use a side (0: none) */
+} tl_object_pass;
 
 /* What the GPU needs for one frame. The fields the shaders read are the
  * rows of tl_uniform_list.h, which declares them to GLSL and uploads them;
@@ -180,32 +226,15 @@ typedef struct tl_frame_uniforms {
     float giant_ride;             /* giant.ride */
     float giant_compression_foam; /* 1, or TL_GIANT_UNBROKEN_FOAM with a scripted break */
 
-    /* The boat (TL_FEATURE_BOAT). Matrices are column-major and work in
-     * camera-relative metres (the camera at the origin, y too). */
-    float view_proj[16];     /* camera-relative world -> clip */
-    float boat_model[16];    /* model -> camera-relative world */
-    float boat_to_model[16]; /* its inverse */
-    float boat_top;          /* model y of the hull's top */
-    float boat_water;        /* camera-relative y of the water plane its reflection mirrors in */
-    float boat_sunlit;       /* the share of the sun its hull sees past the giant wave's crest */
-    float boat_lights;       /* boat.lights: the lamps' share of their emission */
-    float boat_speed;        /* its speed over the ground, m/s (the bow wave's) */
-    /* TL_FEATURE_BOAT_SHADOW: the sun's orthographic view of the boat,
-     * camera-relative world -> shadow map s, t and depth in [0, 1] (depth
-     * grows away from the sun), and its texel's width in metres. */
-    float boat_shadow[16];
-    float boat_shadow_texel;
-    float boat_shadow_extent; /* the share of the map's texture in use, s and t */
-    int boat_shadow_size;     /* texels of it in use a side */
-
-    /* The wake (TL_FEATURE_WAKE): per past position, camera-relative x z,
-     * age in seconds and distance behind the boat along its path. */
-    float wake[TL_WAKE_POINTS][4];
-    float wake_params[4];             /* half beam, fade time, strength, hull length */
-    float wake_along[TL_WAKE_POINTS]; /* tl_boat.wake_along, wrapped every 65536 m */
-    /* Per group of TL_WAKE_GROUP segments: a circle (camera-relative x z,
-     * radius, unused) holding every point the group's foam can reach. */
-    float wake_groups[TL_WAKE_GROUPS][4];
+    /* The floating objects in view (their hulls, mirror images or wakes),
+     * slots 0 .. object_count - 1 of the ocean pass's uniform block
+     * (objects) and of the mesh pass (object_pass). Matrices are
+     * column-major and work in camera-relative metres (the camera at the
+     * origin, y too). */
+    int object_count;
+    tl_object_uniforms objects[TL_OBJECT_MAX];
+    tl_object_pass object_pass[TL_OBJECT_MAX];
+    float view_proj[16];   /* camera-relative world -> clip (TL_FEATURE_BOAT) */
     float world_offset[2]; /* camera x z wrapped to [0, 65536) m: texture coordinates */
 
     /* Under water (TL_FEATURE_UNDERWATER); water_ior in every frame, the

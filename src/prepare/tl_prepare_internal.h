@@ -13,7 +13,7 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u);
  * giant-wave uniforms filled. */
 void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u);
 
-/* The pixels that can show the boat's mirror image, into
+/* The pixels that can show an object's mirror image, added to
  * u->plan.boat_mirror_rect (tl_prepare_rect.c): those of the model's bounding
  * box (its eight corners camera-relative, corner i at the maximum along
  * axis k where bit k of i is set) above the water plane `water`

@@ -276,11 +276,23 @@ void tl_prepare_giant_rect(const tl_scene *s, tl_frame_uniforms *u)
     box_rect(s, u->width, u->height, dir, cam, lo, hi, u->plan.giant_rect);
 }
 
+/* rect grows to hold part (an empty one, x0 >= x1 or y0 >= y1, adds
+ * nothing). */
+static void union_rect(int rect[4], const int part[4])
+{
+    if (part[0] >= part[2] || part[1] >= part[3])
+        return;
+    int empty = rect[0] >= rect[2] || rect[1] >= rect[3];
+    for (int i = 0; i < 2; i++) {
+        rect[i] = !empty && rect[i] < part[i] ? rect[i] : part[i];
+        rect[i + 2] = !empty && rect[i + 2] > part[i + 2] ? rect[i + 2] : part[i + 2];
+    }
+}
+
 void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double water,
                             tl_frame_uniforms *u)
 {
     int *rect = u->plan.boat_mirror_rect;
-    rect[0] = rect[1] = rect[2] = rect[3] = 0;
     /* The box in the frame of the hull's length (its first edge), up and
      * across; what stands above the water, mirrored below it. */
     double dx = corner[1][0] - corner[0][0], dz = corner[1][2] - corner[0][2];
@@ -300,7 +312,9 @@ void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double
     lo[1] = 2.0 * water - hi[1];
     hi[1] = water;
     const double cam[3] = {0.0, 0.0, 0.0};
-    box_rect(s, u->width, u->height, dir, cam, lo, hi, rect);
+    int part[4];
+    box_rect(s, u->width, u->height, dir, cam, lo, hi, part);
+    union_rect(rect, part);
 }
 
 /* The union of the rectangles of the wake's groups: each group's circle
@@ -325,19 +339,16 @@ void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u)
         top = (double)u->giant_bounds[3] * u->giant_shape[1];
     const double dir[2] = {1.0, 0.0}; /* along x; across is -z */
     const double cam[3] = {0.0, s->camera.position[1], 0.0};
-    int any = 0;
-    for (int g = 0; g < TL_WAKE_GROUPS; g++) {
-        double x = u->wake_groups[g][0], z = u->wake_groups[g][1], r = u->wake_groups[g][2];
-        double lo[3] = {x - r, -(double)u->depth - top, -z - r};
-        double hi[3] = {x + r, top, -z + r};
-        int part[4];
-        box_rect(s, u->width, u->height, dir, cam, lo, hi, part);
-        if (part[0] >= part[2] || part[1] >= part[3])
-            continue;
-        for (int i = 0; i < 2; i++) {
-            rect[i] = any && rect[i] < part[i] ? rect[i] : part[i];
-            rect[i + 2] = any && rect[i + 2] > part[i + 2] ? rect[i + 2] : part[i + 2];
+    for (int k = 0; k < u->object_count; k++)
+        for (int g = 0; g < TL_WAKE_GROUPS; g++) {
+            const float *c = u->objects[k].wake_groups[g];
+            double x = c[0], z = c[1], r = c[2];
+            if (!(r > 0.0))
+                continue; /* no wake in view */
+            double lo[3] = {x - r, -(double)u->depth - top, -z - r};
+            double hi[3] = {x + r, top, -z + r};
+            int part[4];
+            box_rect(s, u->width, u->height, dir, cam, lo, hi, part);
+            union_rect(rect, part);
         }
-        any = 1;
-    }
 }

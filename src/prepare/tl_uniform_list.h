@@ -24,7 +24,9 @@
  * src/gl/tl_renderer_internal.h), and the uniforms a single pass sets
  * outside the frame's upload (the samples of one draw, the prepass's
  * scale and hint, the probe's mode, the boat's mesh pass: its matrices,
- * eye and clip plane, the sky-view table's air, the display's exposure).
+ * eye and clip plane, the sky-view table's air, the display's exposure),
+ * and the floating objects' uniform block (tl_object_uniforms, shaders/
+ * objects.glsl), which the renderer uploads as a buffer.
  *
  * This header needs nothing included before it: the C expansions name
  * TL_FEATURE_* and the TL_* sizes, which their files include. */
@@ -93,8 +95,6 @@
     X(VEC4, giant_spray_bow, 0, TL_FEATURE_GIANT_SPRAY, "the bow's burst: camera-relative centre, amount") \
     X(VEC2, giant_spray_heading, 0, TL_FEATURE_GIANT_SPRAY, "the boat's heading, unit (x, z)") \
     X(FLOAT, spray_step, 0, 0, "quality.spray_step: metres a step of the spray's march") \
-    X(VEC4, bow_spray, 0, TL_FEATURE_BOW_SPRAY, "the bow's spray: camera-relative centre (y absolute), amount") \
-    X(VEC4, bow_spray_shape, 0, TL_FEATURE_BOW_SPRAY, "its heading, unit (x, z), and radius") \
     X(VEC4, giant_foam, 0, TL_FEATURE_GIANT_WAVE, "(Jacobian where foam starts, trail metres, amount, breaking)") \
     X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, unused)") \
     X(VEC3, giant_scatter_color, 0, TL_FEATURE_GIANT_WAVE, "") \
@@ -116,18 +116,8 @@
     X(VEC3, sky_ambient, 0, TL_FEATURE_SKY_PHYSICAL, "the sky's irradiance on a surface facing up, over pi") \
     X(VEC2, fog, 0, TL_FEATURE_FOG, "density per metre at the water, height over which it thins by e") \
     X(VEC3, fog_color, 0, TL_FEATURE_FOG, "") \
-    X(VEC4, wake, TL_WAKE_POINTS, TL_FEATURE_WAKE, "camera-relative x z, age (s), distance behind the boat (m)") \
-    X(VEC4, wake_params, 0, TL_FEATURE_WAKE, "half beam, fade time, strength, hull length") \
-    X(VEC4, wake_groups, TL_WAKE_GROUPS, TL_FEATURE_WAKE, "per TL_WAKE_GROUP segments: circle x z, radius") \
-    X(FLOAT, wake_along, TL_WAKE_POINTS, TL_FEATURE_WAKE, "metres along the boat's path, wrapped every 65536 m") \
     X(VEC2, world_offset, 0, TL_FEATURE_WAKE, "camera x z wrapped every 65536 m: texture coordinates") \
-    X(FLOAT, boat_water, 0, TL_FEATURE_BOAT, "camera-relative y of the plane the hull mirrors in") \
-    X(MAT4, boat_to_model, 0, TL_FEATURE_BOAT, "camera-relative world -> model") \
-    X(FLOAT, boat_top, 0, TL_FEATURE_BOAT, "model y of the hull's top") \
-    X(FLOAT, boat_speed, 0, TL_FEATURE_BOAT, "the boat's speed over the ground, m/s") \
-    X(MAT4, boat_shadow, 0, TL_FEATURE_BOAT_SHADOW, "camera-relative world -> the shadow map's s t and depth, 0 to 1") \
-    X(FLOAT, boat_shadow_texel, 0, TL_FEATURE_BOAT_SHADOW, "a shadow map texel's width, metres") \
-    X(FLOAT, boat_shadow_extent, 0, TL_FEATURE_BOAT_SHADOW, "the share of the map's texture in use, s and t")
+    X(INT, object_count, 0, 0, "floating objects in view: slots of u_objects (shaders/objects.glsl)")
 /* clang-format on */
 
 /* The kinds, for code that switches on them (TL_UNIFORM_##kind). */

@@ -100,9 +100,14 @@ int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err)
     return tl_renderer_set_mesh(r->renderer, mesh, err);
 }
 
+int tl_render_set_models(tl_render *r, const tl_models *models, tl_error *err)
+{
+    return tl_renderer_set_meshes(r->renderer, models->mesh, models->count, err);
+}
+
 int tl_render_use_cutscene(tl_render *r, const tl_cutscene *cs, tl_error *err)
 {
-    return tl_render_set_boat(r, cs->has_boat ? &cs->boat : NULL, err);
+    return tl_render_set_models(r, &cs->models, err);
 }
 
 unsigned tl_render_last_features(const tl_render *r)

@@ -34,7 +34,10 @@ const char *tl_render_describe(const tl_render *r);
 /* The boat's mesh (the timeline's model or the built-in boat), uploaded
  * once; frames with a boat in view draw it. NULL removes it. */
 int tl_render_set_boat(tl_render *r, const tl_mesh *mesh, tl_error *err);
-/* Uploads what a loaded cutscene references (its boat's mesh, or none), so
+/* The floating objects' meshes (tl_models: object k is drawn with the
+ * mesh its tl_boat.model names), replacing any before them. */
+int tl_render_set_models(tl_render *r, const tl_models *models, tl_error *err);
+/* Uploads what a loaded cutscene references (its floating objects' meshes, or none), so
  * that its frames draw as `tideline still` draws them. */
 int tl_render_use_cutscene(tl_render *r, const tl_cutscene *cs, tl_error *err);
 

@@ -128,6 +128,9 @@ void tl_scene_defaults(tl_scene *s)
     }
     s->boat.length = 8.0;
     s->boat.beam = 8.0 * TL_BOAT_BEAM_RATIO;
+    for (int k = 0; k < TL_OBJECT_MAX - 1; k++)
+        s->fleet[k] = s->boat;
+    s->objects = 1;
     s->quality = tl_quality_default();
 }
 

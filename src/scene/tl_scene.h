@@ -158,7 +158,13 @@ typedef struct tl_giant_wave {
 #define TL_WAKE_SPEED_FULL 2.0
 #define TL_WAKE_LEAST      0.05
 
-/* The boat's pose and the knobs of its model and floating. */
+/* The most floating objects a scene holds: the boat and 15 declared with
+ * `boat NAME` (each has its own slot in the ocean pass's uniform block,
+ * src/prepare/tl_prepare.h, tl_object_uniforms). */
+#define TL_OBJECT_MAX 16
+
+/* A floating object's pose and the knobs of its model and floating (the
+ * boat, and each object a timeline declares). */
 typedef struct tl_boat {
     bool enabled;       /* true when the timeline has a boat path */
     bool visible;       /* drawn (hull, reflection, wake); off renders the water plate */
@@ -181,6 +187,7 @@ typedef struct tl_boat {
      * a timeline): it throws the bow's spray. */
     double impact;
     double spray; /* boat.spray: the bow spray's strength, 0 = none */
+    int model;    /* which of the loaded models it is drawn with (tl_cutscene.models) */
     /* The wake: where the boat was, every wake_step seconds back from now
      * (wake_path[0] is the boat itself), world x z. */
     double wake_path[TL_WAKE_POINTS][2];
@@ -205,9 +212,23 @@ typedef struct tl_scene {
     tl_fog fog;
     tl_underwater underwater;
     tl_giant_wave giant;
+    /* The floating objects: `boat` is the timeline's boat (object 0), the
+     * fleet the objects it declares with `boat NAME`, in their order. */
     tl_boat boat;
+    tl_boat fleet[TL_OBJECT_MAX - 1];
+    int objects; /* how many of them the scene has, the boat included */
     tl_quality quality;
 } tl_scene;
+
+/* Floating object k (0: the boat). */
+static inline tl_boat *tl_scene_object(tl_scene *s, int k)
+{
+    return k == 0 ? &s->boat : &s->fleet[k - 1];
+}
+static inline const tl_boat *tl_scene_object_const(const tl_scene *s, int k)
+{
+    return k == 0 ? &s->boat : &s->fleet[k - 1];
+}
 
 /* The default scene: the reference shader's ocean, a camera 1.5 m above
  * the water looking slightly down toward a low sun. */

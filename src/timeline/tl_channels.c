@@ -285,9 +285,25 @@ int tl_channel_index(const tl_channel *ch)
     return (int)(ch - channels);
 }
 
-void tl_channel_get(const tl_channel *ch, const tl_scene *scene, double out[3])
+/* Where a channel's value lives in the scene: floating object k's copy of
+ * a `boat.*` channel lies in its slot (tl_scene_object), at the same place
+ * in its tl_boat as the boat's. */
+static size_t channel_offset(const tl_channel *ch, int object)
 {
-    const char *base = (const char *)scene + ch->offset;
+    if (object <= 0 || !tl_channel_is_object(ch))
+        return ch->offset;
+    return ch->offset - offsetof(tl_scene, boat) + offsetof(tl_scene, fleet) +
+           (size_t)(object - 1) * sizeof(tl_boat);
+}
+
+bool tl_channel_is_object(const tl_channel *ch)
+{
+    return strncmp(ch->name, "boat.", 5) == 0;
+}
+
+void tl_channel_get_object(const tl_channel *ch, const tl_scene *scene, int object, double out[3])
+{
+    const char *base = (const char *)scene + channel_offset(ch, object);
     for (int i = 0; i < 3; i++)
         out[i] = 0.0;
     switch (ch->kind) {
@@ -298,15 +314,25 @@ void tl_channel_get(const tl_channel *ch, const tl_scene *scene, double out[3])
     }
 }
 
-void tl_channel_set(const tl_channel *ch, tl_scene *scene, const double in[3])
+void tl_channel_set_object(const tl_channel *ch, tl_scene *scene, int object, const double in[3])
 {
-    char *base = (char *)scene + ch->offset;
+    char *base = (char *)scene + channel_offset(ch, object);
     switch (ch->kind) {
     case TL_CH_REAL: memcpy(base, in, sizeof(double) * (size_t)ch->components); break;
     case TL_CH_BOOL: *(bool *)base = in[0] >= 0.5; break;
     case TL_CH_ENUM: *(int *)base = (int)lround(in[0]); break;
     case TL_CH_INT: *(int *)base = (int)lround(in[0]); break;
     }
+}
+
+void tl_channel_get(const tl_channel *ch, const tl_scene *scene, double out[3])
+{
+    tl_channel_get_object(ch, scene, 0, out);
+}
+
+void tl_channel_set(const tl_channel *ch, tl_scene *scene, const double in[3])
+{
+    tl_channel_set_object(ch, scene, 0, in);
 }
 
 /* Optimal string alignment distance (edits incl. transposition), capped

@@ -34,7 +34,7 @@ typedef struct tl_channel {
     tl_unit unit;
     double min, max; /* valid range of each component, in stored units */
     bool keyable;
-    size_t offset; /* into tl_scene */
+    size_t offset;            /* into tl_scene */
     const char *const *names; /* TL_CH_ENUM: value names, NULL-terminated */
     const char *doc;
 } tl_channel;
@@ -49,6 +49,14 @@ int tl_channel_index(const tl_channel *ch);
  * enums as 0/1/index). */
 void tl_channel_get(const tl_channel *ch, const tl_scene *scene, double out[3]);
 void tl_channel_set(const tl_channel *ch, tl_scene *scene, const double in[3]);
+
+/* The `boat.*` channels are every floating object's: a timeline's
+ * `rescue.wake` is boat.wake of the object it declared as `boat rescue`. */
+bool tl_channel_is_object(const tl_channel *ch);
+/* As tl_channel_get/set, for floating object k (0: the boat; other
+ * channels ignore k). */
+void tl_channel_get_object(const tl_channel *ch, const tl_scene *scene, int object, double out[3]);
+void tl_channel_set_object(const tl_channel *ch, tl_scene *scene, int object, const double in[3]);
 
 /* Closest of `candidates` (NULL-terminated) to `word`, or NULL when none is
  * close enough to be a likely typo. */

@@ -86,14 +86,14 @@ static double giant_height(const void *ctx, double x, double z)
 
 /* The boat's position and heading at time t (the heading channel, when it
  * is set or keyed, is taken at the frame's time). */
-static void boat_at(const tl_timeline *tl, double t, const tl_scene *s, int heading_from_path,
-                    double *x, double *z, double *heading)
+static void boat_at(const tl_timeline *tl, int object, double t, const tl_boat *b,
+                    int heading_from_path, double *x, double *z, double *heading)
 {
     double p[3], tangent[3];
-    tl_path_eval(&tl->boat_path.path, t, p, tangent);
+    tl_path_eval(&tl->objects[object].path.path, t, p, tangent);
     *x = p[0];
     *z = p[2];
-    *heading = s->boat.heading;
+    *heading = b->heading;
     if (heading_from_path && (tangent[0] != 0.0 || tangent[2] != 0.0))
         *heading = atan2(tangent[0], tangent[2]);
 }
@@ -108,19 +108,22 @@ static double limit_tilt(double a)
     return copysign(TL_FLOAT_TILT_KNEE + room * tanh(over / room), a);
 }
 
-void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s)
+void tl_timeline_float_boat(const tl_timeline *tl, int object, double t, int heading_from_path,
+                            tl_scene *s)
 {
-    tl_boat *b = &s->boat;
+    tl_boat *b = tl_scene_object(s, object);
     tl_waves waves;
     tl_waves_init(&waves, &s->ocean);
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, t);
     ocean_ctx oc = {&waves, t, s->quality.march_octaves, NULL, s->quality.giant_iterations};
-    const int follows = tl->giant_follow.target == TL_TARGET_BOAT;
+    /* The object the giant wave's centre follows, if any (this one or another). */
+    const int leader = tl->giant_follow.target == TL_TARGET_BOAT ? tl->giant_follow.object : -1;
+    const tl_boat *lead = leader >= 0 ? tl_scene_object(s, leader) : NULL;
 
     /* The spring, at the boat's past poses. The giant wave of a past
      * moment is this one moved back along its travel (and across with the
-     * boat, when its centre follows the boat). Its break and envelope are
+     * object its centre follows, if any). Its break and envelope are
      * this moment's: they change over seconds, the spring's past is short. */
     const double w = 1.0 / b->float_time, h = FLOAT_SPAN / FLOAT_NODES;
     hull_pose sum = {0.0, 0.0, 0.0};
@@ -132,16 +135,19 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
         if (weight == 0.0)
             continue;
         double past = t - x / w, px, pz, heading;
-        boat_at(tl, past, s, heading_from_path, &px, &pz, &heading);
+        boat_at(tl, object, past, b, heading_from_path, &px, &pz, &heading);
         oc.t = past;
         tl_giant then = giant;
         if (giant.active) {
             double back = giant.speed * (t - past);
             then.origin[0] -= giant.dir[0] * back;
             then.origin[1] -= giant.dir[1] * back;
-            if (follows) { /* the centre line follows the boat across */
-                double across = giant.across[0] * (px - b->position[0]) +
-                                giant.across[1] * (pz - b->position[2]);
+            if (lead) { /* the centre line follows its object across */
+                double lx = px, lz = pz, lh;
+                if (leader != object)
+                    boat_at(tl, leader, past, lead, 0, &lx, &lz, &lh);
+                double across = giant.across[0] * (lx - lead->position[0]) +
+                                giant.across[1] * (lz - lead->position[2]);
                 then.origin[0] += giant.across[0] * across;
                 then.origin[1] += giant.across[1] * across;
             }
@@ -183,9 +189,9 @@ void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_pa
         b->position[1] = lowest;
 }
 
-double tl_timeline_bow_gap(const tl_scene *s)
+double tl_timeline_bow_gap(const tl_scene *s, int object)
 {
-    const tl_boat *b = &s->boat;
+    const tl_boat *b = tl_scene_object_const(s, object);
     tl_waves waves;
     tl_waves_init(&waves, &s->ocean);
     tl_giant giant;
@@ -201,12 +207,14 @@ double tl_timeline_bow_gap(const tl_scene *s)
     return water - (b->position[1] + sin(b->pitch) * a);
 }
 
-void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],
-                                 const float bounds_max[3])
+void tl_timeline_set_object_model(tl_timeline *tl, int object, int mesh, const float bounds_min[3],
+                                  const float bounds_max[3])
 {
+    tl_object *o = &tl->objects[object];
     for (int i = 0; i < 3; i++) {
-        tl->boat_model_min[i] = bounds_min[i];
-        tl->boat_model_max[i] = bounds_max[i];
+        o->model_min[i] = bounds_min[i];
+        o->model_max[i] = bounds_max[i];
     }
-    tl->boat_bounds_known = true;
+    o->mesh = mesh;
+    o->bounds_known = true;
 }

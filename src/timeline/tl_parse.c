@@ -14,7 +14,7 @@
 #include <sys/stat.h>
 
 static const char *const directives[] = {"tideline", "fps",  "duration", "size",   "quality", "set",
-                                         "key",      "path", "look",     "follow", NULL};
+                                         "key",      "path", "look",     "follow", "boat",    NULL};
 static const char *const key_words[] = {
     "cut",           "constant",         "step",    "linear",    "bezier", "spline", "auto-clamped",
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
@@ -268,73 +268,118 @@ static int expect_args(parser *p, token *tok, int n, int min, int max, const cha
     return 0;
 }
 
-static const tl_channel *lookup_channel(parser *p, const token *t)
+/* The floating object a channel or path names: `NAME` of `NAME.field`
+ * (len characters of t), -1 when it is none. */
+static int object_named(const parser *p, const char *name, size_t len)
 {
+    char word[TL_OBJECT_NAME_MAX];
+    if (len == 0 || len >= sizeof word)
+        return -1;
+    memcpy(word, name, len);
+    word[len] = '\0';
+    return tl_timeline_object(p->tl, word);
+}
+
+/* The object names, for suggestions. */
+static void object_names(const parser *p, const char *names[TL_OBJECT_MAX + 1])
+{
+    for (int k = 0; k < p->tl->object_count; k++)
+        names[k] = p->tl->objects[k].name;
+    names[p->tl->object_count] = NULL;
+}
+
+/* A channel: a scene channel, or `NAME.field` of a floating object, which
+ * is the `boat.field` channel of object *object. */
+static const tl_channel *lookup_channel(parser *p, const token *t, int *object)
+{
+    *object = 0;
+    const char *dot = strchr(t->s, '.');
+    int k = dot ? object_named(p, t->s, (size_t)(dot - t->s)) : -1;
+    if (k > 0) {
+        char name[128];
+        snprintf(name, sizeof name, "boat%s", dot);
+        const tl_channel *ch = tl_channel_find(name);
+        if (!ch) {
+            const char *hint = tl_channel_suggest(name);
+            char suggestion[128];
+            if (hint && strncmp(hint, "boat.", 5) == 0)
+                snprintf(suggestion, sizeof suggestion, "%s%s", p->tl->objects[k].name, hint + 4);
+            tl_parse_diag(p, t->col, t->len,
+                          hint && strncmp(hint, "boat.", 5) == 0 ? suggestion : NULL,
+                          "'%s' has no channel '%s' (floating objects have the boat.* channels)",
+                          p->tl->objects[k].name, dot + 1);
+        }
+        *object = k;
+        return ch;
+    }
     const tl_channel *ch = tl_channel_find(t->s);
     if (!ch)
         tl_parse_diag(p, t->col, t->len, tl_channel_suggest(t->s), "unknown channel '%s'", t->s);
     return ch;
 }
 
-static tl_track *claim_track(parser *p, const tl_channel *ch, const token *t)
+static tl_track *claim_track(parser *p, const tl_channel *ch, int object, const token *t)
 {
-    tl_track *tr = &p->tl->tracks[tl_channel_index(ch)];
+    tl_track *tr = tl_timeline_track(p->tl, tl_channel_index(ch), object);
     if (tr->state != TL_TRACK_DEFAULT) {
-        ERR_AT(t, "%s is already %s on line %d", ch->name,
-               tr->state == TL_TRACK_SET ? "set" : "keyed", tr->line);
+        ERR_AT(t, "%s is already %s on line %d", t->s, tr->state == TL_TRACK_SET ? "set" : "keyed",
+               tr->line);
         return NULL;
     }
     tr->line = p->line_no;
     return tr;
 }
 
-/* `set boat.model PATH`: one word, relative to the timeline's folder. The
- * file is loaded by the commands that need it (check, eval, still,
- * render), which report its errors at this line. */
-static void set_boat_model(parser *p, token *tok, int n)
+/* `set NAME.model PATH` (`boat.model` for the boat): one word, relative to
+ * the timeline's folder. The file is loaded by the commands that need it
+ * (check, eval, still, render), which report its errors at this line. */
+static void set_object_model(parser *p, token *tok, int n, int object)
 {
     if (n != 3) {
-        ERR_AT(&tok[n - 1], "boat.model takes one path (no spaces), found %d words", n - 2);
+        ERR_AT(&tok[n - 1], "%s takes one path (no spaces), found %d words", tok[1].s, n - 2);
         return;
     }
-    tl_timeline *tl = p->tl;
-    if (tl->boat_model_line) {
-        ERR_AT(&tok[1], "boat.model is already set on line %d", tl->boat_model_line);
+    tl_object *o = &p->tl->objects[object];
+    if (o->model_line) {
+        ERR_AT(&tok[1], "%s is already set on line %d", tok[1].s, o->model_line);
         return;
     }
     const char *slash = strrchr(p->name, '/');
     int dir_len = tok[2].s[0] == '/' || !slash ? 0 : (int)(slash - p->name) + 1;
-    int len = snprintf(tl->boat_model, sizeof tl->boat_model, "%.*s%s", dir_len, p->name, tok[2].s);
-    if (len < 0 || (size_t)len >= sizeof tl->boat_model) {
-        tl->boat_model[0] = '\0';
-        ERR_AT(&tok[2], "boat.model: the path is too long");
+    int len = snprintf(o->model, sizeof o->model, "%.*s%s", dir_len, p->name, tok[2].s);
+    if (len < 0 || (size_t)len >= sizeof o->model) {
+        o->model[0] = '\0';
+        ERR_AT(&tok[2], "%s: the path is too long", tok[1].s);
         return;
     }
-    tl->boat_model_line = p->line_no;
-    tl->boat_model_column = tok[2].col;
+    o->model_line = p->line_no;
+    o->model_column = tok[2].col;
 }
 
 static void dir_set(parser *p, token *tok, int n)
 {
     if (expect_args(p, tok, n, 2, MAX_TOKENS, "a channel and its value"))
         return;
-    if (strcmp(tok[1].s, "boat.model") == 0) {
-        set_boat_model(p, tok, n);
+    const char *dot = strchr(tok[1].s, '.');
+    int named = dot ? object_named(p, tok[1].s, (size_t)(dot - tok[1].s)) : -1;
+    if (named >= 0 && strcmp(dot, ".model") == 0) {
+        set_object_model(p, tok, n, named);
         return;
     }
-    const tl_channel *ch = lookup_channel(p, &tok[1]);
+    int object;
+    const tl_channel *ch = lookup_channel(p, &tok[1], &object);
     if (!ch)
         return;
     if (n - 2 != ch->components) {
         tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
-                      ch->name, ch->components, ch->components > 1 ? "s" : "", n - 2);
+                      tok[1].s, ch->components, ch->components > 1 ? "s" : "", n - 2);
         return;
     }
     double v[3] = {0, 0, 0};
     for (int c = 0; c < ch->components; c++)
         if (tl_parse_channel_value(p, ch, &tok[2 + c], &v[c]))
             return;
-    tl_track *tr = claim_track(p, ch, &tok[1]);
+    tl_track *tr = claim_track(p, ch, object, &tok[1]);
     if (!tr)
         return;
     /* Render-setting channels (quality.*) apply on top of the preset at
@@ -343,13 +388,62 @@ static void dir_set(parser *p, token *tok, int n)
     memcpy(tr->value, v, sizeof v);
 }
 
+/* `boat NAME`: declares a floating object, whose channels are then
+ * NAME.size, NAME.wake ... (the boat.* channels), with `path NAME`. */
+static void dir_boat(parser *p, token *tok, int n)
+{
+    if (expect_args(p, tok, n, 1, 1, "a name for the floating object"))
+        return;
+    const token *t = &tok[1];
+    int valid = isalpha((unsigned char)t->s[0]) && t->len < TL_OBJECT_NAME_MAX;
+    for (int i = 0; valid && t->s[i]; i++)
+        valid = isalnum((unsigned char)t->s[i]) || t->s[i] == '_';
+    if (!valid) {
+        ERR_AT(t,
+               "'%s' is not a name for a floating object: letters, digits and '_', starting "
+               "with a letter, at most %d characters",
+               t->s, TL_OBJECT_NAME_MAX - 1);
+        return;
+    }
+    /* Not a name the language gives another meaning. */
+    static const char *const taken[] = {"camera",     "sun",   "ocean",   "water",  "sky", "fog",
+                                        "underwater", "giant", "quality", "render", "at",  NULL};
+    for (int i = 0; taken[i]; i++)
+        if (strcmp(t->s, taken[i]) == 0) {
+            ERR_AT(t, "'%s' names the %s channels; choose another name for the object", t->s, t->s);
+            return;
+        }
+    if (tl_channel_find(t->s)) {
+        ERR_AT(t, "'%s' is a channel; choose another name for the object", t->s);
+        return;
+    }
+    int k = tl_timeline_object(p->tl, t->s);
+    if (k == 0) {
+        ERR_AT(t, "'boat' is the timeline's boat, there from the start: name the other objects");
+        return;
+    }
+    if (k > 0) {
+        ERR_AT(t, "a floating object named '%s' is already declared on line %d", t->s,
+               p->tl->objects[k].line);
+        return;
+    }
+    if (p->tl->object_count >= TL_OBJECT_MAX) {
+        ERR_AT(t, "a timeline holds at most %d floating objects (the boat and %d more)",
+               TL_OBJECT_MAX, TL_OBJECT_MAX - 1);
+        return;
+    }
+    if (tl_timeline_add_object(p->tl, t->s, p->line_no, t->col) < 0)
+        ERR_AT(t, "out of memory");
+}
+
 static void dir_key(parser *p, token *tok, int n)
 {
     if (n < 2) {
         tl_parse_diag(p, tok[0].col + tok[0].len, 1, NULL, "'key' expects a channel name");
         return;
     }
-    const tl_channel *ch = lookup_channel(p, &tok[1]);
+    int object;
+    const tl_channel *ch = lookup_channel(p, &tok[1], &object);
     if (!ch)
         return;
     if (!ch->keyable) {
@@ -391,7 +485,7 @@ static void dir_key(parser *p, token *tok, int n)
     }
     if (ch->kind != TL_CH_REAL)
         interp = TL_INTERP_CONSTANT;
-    tl_track *tr = claim_track(p, ch, &tok[1]);
+    tl_track *tr = claim_track(p, ch, object, &tok[1]);
     if (!tr)
         return;
     tr->state = TL_TRACK_KEYED;
@@ -419,20 +513,27 @@ static void dir_key(parser *p, token *tok, int n)
 
 static void dir_path(parser *p, token *tok, int n)
 {
-    if (expect_args(p, tok, n, 1, 2, "boat or camera, then optionally constant-speed"))
+    if (expect_args(p, tok, n, 1, 2,
+                    "boat, camera or a floating object's name, then optionally constant-speed"))
         return;
     tl_path_track *pt;
     int dims;
-    if (strcmp(tok[1].s, "boat") == 0) {
-        pt = &p->tl->boat_path;
+    int object = tl_timeline_object(p->tl, tok[1].s);
+    if (object >= 0) {
+        pt = &p->tl->objects[object].path;
         dims = 2;
     } else if (strcmp(tok[1].s, "camera") == 0) {
         pt = &p->tl->camera_path;
         dims = 3;
     } else {
-        static const char *const names[] = {"boat", "camera", NULL};
+        const char *names[TL_OBJECT_MAX + 2];
+        object_names(p, names);
+        names[p->tl->object_count] = "camera";
+        names[p->tl->object_count + 1] = NULL;
         tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names),
-                      "paths are for 'boat' or 'camera', not '%s'", tok[1].s);
+                      "paths are for 'camera', 'boat' or a floating object declared before "
+                      "them with 'boat NAME', not '%s'",
+                      tok[1].s);
         return;
     }
     if (n == 3) {
@@ -555,6 +656,8 @@ static void directive(parser *p, token *tok, int n)
         tl_parse_dir_look(p, tok, n);
     else if (strcmp(d, "follow") == 0)
         tl_parse_dir_follow(p, tok, n);
+    else if (strcmp(d, "boat") == 0)
+        dir_boat(p, tok, n);
     else
         tl_parse_diag(p, tok[0].col, tok[0].len, tl_suggest(d, directives),
                       "unknown directive '%s'", d);

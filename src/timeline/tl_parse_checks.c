@@ -46,14 +46,38 @@ void tl_parse_check_links(parser *p)
             }
     }
     const tl_link *needs_boat[3] = {&tl->camera_look, &tl->camera_follow, &tl->giant_follow};
-    for (int i = 0; i < 3; i++)
-        if (needs_boat[i]->target == TL_TARGET_BOAT && !tl->boat_path.present)
-            tl_parse_diag_at_line(p, needs_boat[i]->line, NULL, "%s",
-                                  "this refers to the boat, but the timeline has no 'path boat'");
-    if (tl->boat_model_line && !tl->boat_path.present)
-        tl_parse_diag_at_line(
-            p, tl->boat_model_line, NULL, "%s",
-            "boat.model names the boat's mesh, but the timeline has no 'path boat'");
+    for (int i = 0; i < 3; i++) {
+        const tl_link *l = needs_boat[i];
+        if (l->target != TL_TARGET_BOAT || tl->objects[l->object].path.present)
+            continue;
+        if (l->object == 0)
+            snprintf(msg, sizeof msg,
+                     "this refers to the boat, but the timeline has no 'path boat'");
+        else
+            snprintf(msg, sizeof msg, "this refers to '%s', but the timeline has no 'path %s'",
+                     tl->objects[l->object].name, tl->objects[l->object].name);
+        tl_parse_diag_at_line(p, l->line, NULL, "%s", msg);
+    }
+    for (int k = 0; k < tl->object_count; k++) {
+        const tl_object *o = &tl->objects[k];
+        if (o->model_line && !o->path.present) {
+            if (k == 0)
+                snprintf(msg, sizeof msg,
+                         "boat.model names the boat's mesh, but the timeline has no 'path boat'");
+            else
+                snprintf(msg, sizeof msg,
+                         "%s.model names its mesh, but the timeline has no 'path %s'", o->name,
+                         o->name);
+            tl_parse_diag_at_line(p, o->model_line, NULL, "%s", msg);
+        } else if (k > 0 && !o->path.present) {
+            snprintf(msg, sizeof msg,
+                     "'%s' is declared, but the timeline has no 'path %s': it is not drawn",
+                     o->name, o->name);
+            p->warning = 1;
+            tl_parse_diag_at_line(p, o->line, NULL, "%s", msg);
+            p->warning = 0;
+        }
+    }
 }
 
 /* Warnings for keys and path points past the end of the timeline (or all
@@ -64,10 +88,19 @@ void tl_parse_check_times(parser *p)
     const double end = tl->duration * (1.0 + 1e-12);
     char msg[256];
     p->warning = 1;
-    for (int i = 0; i < tl_channel_count(); i++) {
-        const tl_track *tr = &tl->tracks[i];
+    for (int j = 0; j < tl_channel_count() * tl->object_count; j++) {
+        int i = j % tl_channel_count(), object = j / tl_channel_count();
+        if (object > 0 && !tl_channel_is_object(tl_channel_at(i)))
+            continue;
+        const tl_track *tr = tl_timeline_track(tl, i, object);
         if (tr->state != TL_TRACK_KEYED)
             continue;
+        char label[96];
+        if (object > 0)
+            snprintf(label, sizeof label, "%s%s", tl->objects[object].name,
+                     tl_channel_at(i)->name + 4);
+        else
+            snprintf(label, sizeof label, "%s", tl_channel_at(i)->name);
         double lo = INFINITY, hi = -INFINITY;
         for (int c = 0; c < tl_channel_at(i)->components; c++)
             if (tr->curve[c].count) {
@@ -78,21 +111,24 @@ void tl_parse_check_times(parser *p)
             snprintf(msg, sizeof msg,
                      "all keys of %s lie after the end of the timeline (%.6g s), from %.6g s: "
                      "frames written without 'f'?",
-                     tl_channel_at(i)->name, tl->duration, lo);
+                     label, tl->duration, lo);
         else if (hi < 0.0)
-            snprintf(msg, sizeof msg, "all keys of %s lie before the timeline's start",
-                     tl_channel_at(i)->name);
+            snprintf(msg, sizeof msg, "all keys of %s lie before the timeline's start", label);
         else if (hi > end)
             snprintf(msg, sizeof msg,
-                     "%s has keys past the end of the timeline (%.6g s), the last at %.6g s",
-                     tl_channel_at(i)->name, tl->duration, hi);
+                     "%s has keys past the end of the timeline (%.6g s), the last at %.6g s", label,
+                     tl->duration, hi);
         else
             continue;
         tl_parse_diag_at_line(p, tr->line, NULL, "%s", msg);
     }
-    const tl_path_track *paths[2] = {&tl->boat_path, &tl->camera_path};
-    const char *names[2] = {"boat", "camera"};
-    for (int i = 0; i < 2; i++) {
+    const tl_path_track *paths[TL_OBJECT_MAX + 1] = {&tl->camera_path};
+    const char *names[TL_OBJECT_MAX + 1] = {"camera"};
+    for (int k = 0; k < tl->object_count; k++) {
+        paths[k + 1] = &tl->objects[k].path;
+        names[k + 1] = tl->objects[k].name;
+    }
+    for (int i = 0; i < tl->object_count + 1; i++) {
         const tl_path *path = &paths[i]->path;
         if (!paths[i]->present || path->count == 0 || path->points[path->count - 1].t <= end)
             continue;

@@ -2,10 +2,12 @@
  * wave's centre to the boat or a point. Split from tl_parse.c. */
 #include "tl_parse_internal.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <string.h>
 
-/* Parses `boat [+ X Y Z]` or `X Y Z` (dims values) into a link. */
+/* Parses `NAME [+ X Y Z]` (the boat, or a floating object the timeline
+ * declared) or `X Y Z` (dims values) into a link. */
 static int parse_target(parser *p, token *tok, int n, int first, int dims, int allow_point,
                         tl_link *link)
 {
@@ -16,23 +18,39 @@ static int parse_target(parser *p, token *tok, int n, int first, int dims, int a
     }
     double *dst;
     int i = first;
-    if (strcmp(tok[i].s, "boat") == 0) {
+    int object = tl_timeline_object(p->tl, tok[i].s);
+    const char *names[TL_OBJECT_MAX + 1];
+    for (int k = 0; k < p->tl->object_count; k++)
+        names[k] = p->tl->objects[k].name;
+    names[p->tl->object_count] = NULL;
+    if (object >= 0) {
         link->target = TL_TARGET_BOAT;
+        link->object = object;
         dst = link->offset;
         i++;
         if (i == n)
             return 0;
         if (strcmp(tok[i].s, "+") != 0) {
-            ERR_AT(&tok[i], "expected '+' and an offset after 'boat', got '%s'", tok[i].s);
+            ERR_AT(&tok[i], "expected '+' and an offset after '%s', got '%s'", tok[i - 1].s,
+                   tok[i].s);
             return 1;
         }
         i++;
+    } else if (allow_point && (isdigit((unsigned char)tok[i].s[0]) || tok[i].s[0] == '-' ||
+                               tok[i].s[0] == '+' || tok[i].s[0] == '.')) {
+        link->target = TL_TARGET_POINT;
+        dst = link->point;
+    } else if (p->tl->object_count > 1) {
+        tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, names),
+                      "no floating object is named '%s' (the boat, or one declared with 'boat "
+                      "NAME' before this line)",
+                      tok[i].s);
+        return 1;
     } else if (allow_point) {
         link->target = TL_TARGET_POINT;
         dst = link->point;
     } else {
-        tl_parse_diag(p, tok[i].col, tok[i].len,
-                      tl_suggest(tok[i].s, (const char *const[]){"boat", NULL}),
+        tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, names),
                       "only the boat can be followed, not '%s'", tok[i].s);
         return 1;
     }
@@ -94,7 +112,8 @@ void tl_parse_dir_follow(parser *p, token *tok, int n)
         return;
     }
     if (link->target != TL_TARGET_NONE) {
-        ERR_AT(&tok[1], "%s already follows the boat (line %d)", tok[1].s, link->line);
+        ERR_AT(&tok[1], "%s already follows %s (line %d)", tok[1].s,
+               link->object ? p->tl->objects[link->object].name : "the boat", link->line);
         return;
     }
     tl_link l = {0};

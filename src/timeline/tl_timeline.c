@@ -1,6 +1,7 @@
 #include "tl_timeline.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,20 +20,71 @@ int tl_timeline_init(tl_timeline *tl, tl_error *err)
     for (int i = 0; i < tl_channel_count(); i++)
         for (int c = 0; c < 3; c++)
             tl_curve_init(&tl->tracks[i].curve[c]);
-    tl_path_init(&tl->boat_path.path);
     tl_path_init(&tl->camera_path.path);
+    snprintf(tl->objects[0].name, sizeof tl->objects[0].name, "boat");
+    tl_path_init(&tl->objects[0].path.path);
+    tl->object_count = 1;
     return TL_OK;
+}
+
+static tl_track *new_tracks(void)
+{
+    tl_track *tracks = calloc((size_t)tl_channel_count(), sizeof *tracks);
+    if (tracks)
+        for (int i = 0; i < tl_channel_count(); i++)
+            for (int c = 0; c < 3; c++)
+                tl_curve_init(&tracks[i].curve[c]);
+    return tracks;
+}
+
+static void free_tracks(tl_track *tracks)
+{
+    if (!tracks)
+        return;
+    for (int i = 0; i < tl_channel_count(); i++)
+        for (int c = 0; c < 3; c++)
+            tl_curve_free(&tracks[i].curve[c]);
+    free(tracks);
+}
+
+int tl_timeline_add_object(tl_timeline *tl, const char *name, int line, int column)
+{
+    if (tl->object_count >= TL_OBJECT_MAX)
+        return -1;
+    tl_object *o = &tl->objects[tl->object_count];
+    memset(o, 0, sizeof *o);
+    o->tracks = new_tracks();
+    if (!o->tracks)
+        return -1;
+    snprintf(o->name, sizeof o->name, "%s", name);
+    o->line = line;
+    o->column = column;
+    tl_path_init(&o->path.path);
+    return tl->object_count++;
+}
+
+int tl_timeline_object(const tl_timeline *tl, const char *name)
+{
+    for (int k = 0; k < tl->object_count; k++)
+        if (strcmp(tl->objects[k].name, name) == 0)
+            return k;
+    return -1;
+}
+
+tl_track *tl_timeline_track(const tl_timeline *tl, int channel, int object)
+{
+    if (object > 0 && tl_channel_is_object(tl_channel_at(channel)))
+        return &tl->objects[object].tracks[channel];
+    return &tl->tracks[channel];
 }
 
 void tl_timeline_free(tl_timeline *tl)
 {
-    if (tl->tracks) {
-        for (int i = 0; i < tl_channel_count(); i++)
-            for (int c = 0; c < 3; c++)
-                tl_curve_free(&tl->tracks[i].curve[c]);
-        free(tl->tracks);
+    free_tracks(tl->tracks);
+    for (int k = 0; k < tl->object_count; k++) {
+        free_tracks(tl->objects[k].tracks);
+        tl_path_free(&tl->objects[k].path.path);
     }
-    tl_path_free(&tl->boat_path.path);
     tl_path_free(&tl->camera_path.path);
     memset(tl, 0, sizeof *tl);
 }
@@ -53,10 +105,10 @@ static double clampd(double v, double lo, double hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
-static const tl_track *track_of(const tl_timeline *tl, const char *name)
+static const tl_track *track_of(const tl_timeline *tl, const char *name, int object)
 {
     const tl_channel *ch = tl_channel_find(name);
-    return ch ? &tl->tracks[tl_channel_index(ch)] : NULL;
+    return ch ? tl_timeline_track(tl, tl_channel_index(ch), object) : NULL;
 }
 
 static void add3(double out[3], const double a[3], const double b[3])
@@ -111,16 +163,40 @@ static void boat_wake(const tl_path *path, double t, tl_boat *b)
 static void aim_giant(const tl_timeline *tl, tl_scene *s)
 {
     const double *off = tl->giant_follow.offset;
-    double then[3] = {s->boat.position[0], 0.0, s->boat.position[2]};
-    if (tl->boat_path.present)
-        tl_path_eval(&tl->boat_path.path, s->giant.arrival, then, NULL);
+    const int k = tl->giant_follow.object;
+    const tl_boat *b = tl_scene_object(s, k);
+    double then[3] = {b->position[0], 0.0, b->position[2]};
+    if (tl->objects[k].path.present)
+        tl_path_eval(&tl->objects[k].path.path, s->giant.arrival, then, NULL);
     double dir[2] = {sin(s->giant.angle), cos(s->giant.angle)};
-    double now[2] = {s->boat.position[0] + off[0], s->boat.position[2] + off[2]};
+    double now[2] = {b->position[0] + off[0], b->position[2] + off[2]};
     double at[2] = {then[0] + off[0], then[2] + off[2]};
     double along = dir[0] * at[0] + dir[1] * at[1];
     double across = dir[1] * now[0] - dir[0] * now[1];
     s->giant.center[0] = along * dir[0] + across * dir[1];
     s->giant.center[1] = along * dir[1] - across * dir[0];
+}
+
+/* Object k's size from its model's bounds (the built-in boat's until a
+ * loader says otherwise), in metres. */
+static void object_size(const tl_object *o, tl_boat *b)
+{
+    if (o->bounds_known)
+        for (int i = 0; i < 3; i++) {
+            b->model_min[i] = o->model_min[i];
+            b->model_max[i] = o->model_max[i];
+        }
+    b->model = o->mesh;
+    b->scale = o->model[0] ? b->model_scale : b->size;
+    double ex = b->model_max[0] - b->model_min[0], ez = b->model_max[2] - b->model_min[2];
+    double c = fabs(cos(b->model_yaw)), sn = fabs(sin(b->model_yaw));
+    b->length = (c * ez + sn * ex) * b->scale; /* model_yaw turns the model */
+    b->beam = (c * ex + sn * ez) * b->scale;
+}
+
+static bool heading_from_path(const tl_timeline *tl, int k)
+{
+    return track_of(tl, "boat.heading", k)->state == TL_TRACK_DEFAULT;
 }
 
 /* The scene at t; floating (the costly part) only when asked, and the
@@ -132,86 +208,96 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
     s->width = tl->width;
     s->height = tl->height;
     s->quality = tl->quality;
+    s->objects = tl->object_count;
 
     for (int i = 0; i < tl_channel_count(); i++) {
         const tl_channel *ch = tl_channel_at(i);
-        const tl_track *tr = &tl->tracks[i];
-        if (tr->state == TL_TRACK_DEFAULT)
-            continue;
-        double v[3] = {0, 0, 0};
-        for (int c = 0; c < ch->components; c++) {
-            double x = tr->state == TL_TRACK_SET ? tr->value[c] : tl_curve_eval(&tr->curve[c], t);
-            /* Clamp: overshooting eases (back, elastic) and Bezier handles
-             * may leave the range the keys respect. */
-            v[c] = clampd(x, ch->min, ch->max);
+        int objects = tl_channel_is_object(ch) ? tl->object_count : 1;
+        for (int k = 0; k < objects; k++) {
+            const tl_track *tr = tl_timeline_track(tl, i, k);
+            if (tr->state == TL_TRACK_DEFAULT)
+                continue;
+            double v[3] = {0, 0, 0};
+            for (int c = 0; c < ch->components; c++) {
+                double x =
+                    tr->state == TL_TRACK_SET ? tr->value[c] : tl_curve_eval(&tr->curve[c], t);
+                /* Clamp: overshooting eases (back, elastic) and Bezier
+                 * handles may leave the range the keys respect. */
+                v[c] = clampd(x, ch->min, ch->max);
+            }
+            tl_channel_set_object(ch, s, k, v);
         }
-        tl_channel_set(ch, s, v);
     }
 
-    /* The hull's size: the model's bounds (the built-in boat's until a
-     * loader says otherwise), in metres. */
-    tl_boat *b = &s->boat;
-    if (tl->boat_bounds_known)
-        for (int i = 0; i < 3; i++) {
-            b->model_min[i] = tl->boat_model_min[i];
-            b->model_max[i] = tl->boat_model_max[i];
-        }
-    b->scale = tl->boat_model[0] ? b->model_scale : b->size;
-    double ex = b->model_max[0] - b->model_min[0], ez = b->model_max[2] - b->model_min[2];
-    double c = fabs(cos(b->model_yaw)), sn = fabs(sin(b->model_yaw));
-    b->length = (c * ez + sn * ex) * b->scale; /* model_yaw turns the model */
-    b->beam = (c * ex + sn * ez) * b->scale;
-
-    /* The boat rides the path; the giant wave may follow it. */
-    bool heading_from_path = track_of(tl, "boat.heading")->state == TL_TRACK_DEFAULT;
-    if (tl->boat_path.present) {
+    /* Each object rides its path; the giant wave may follow one. */
+    for (int k = 0; k < tl->object_count; k++) {
+        const tl_object *o = &tl->objects[k];
+        tl_boat *b = tl_scene_object(s, k);
+        object_size(o, b);
+        if (!o->path.present)
+            continue;
         double p[3], tangent[3];
-        tl_path_eval(&tl->boat_path.path, t, p, tangent);
-        s->boat.enabled = true;
-        s->boat.position[0] = p[0];
-        s->boat.position[2] = p[2];
-        if (heading_from_path && (tangent[0] != 0.0 || tangent[2] != 0.0))
-            s->boat.heading = atan2(tangent[0], tangent[2]);
+        tl_path_eval(&o->path.path, t, p, tangent);
+        b->enabled = true;
+        b->position[0] = p[0];
+        b->position[2] = p[2];
+        if (heading_from_path(tl, k) && (tangent[0] != 0.0 || tangent[2] != 0.0))
+            b->heading = atan2(tangent[0], tangent[2]);
     }
 
     if (tl->camera_path.present)
         tl_path_eval(&tl->camera_path.path, t, s->camera.position, NULL);
     if (tl->giant_follow.target == TL_TARGET_BOAT)
         aim_giant(tl, s);
-    /* Where it was, for its wake: twice the fade time back. */
-    if (s->boat.enabled)
-        boat_wake(&tl->boat_path.path, t, &s->boat);
-    /* ... and floats on the waves, the giant one included. How fast the
-     * water rises against its bow (its spray) is the change of the bow's
-     * gap to the water over TL_BOW_IMPACT_DT: the pose a moment before,
-     * floated alike (the pose depends on the time alone, so this does). */
-    if (s->boat.enabled && float_boat) {
-        tl_timeline_float_boat(tl, t, heading_from_path, s);
-        if (impact) {
-            tl_scene before;
-            eval_scene(tl, t - TL_BOW_IMPACT_DT, &before, true, false);
-            s->boat.impact =
-                (tl_timeline_bow_gap(s) - tl_timeline_bow_gap(&before)) / TL_BOW_IMPACT_DT;
-        }
+    for (int k = 0; k < tl->object_count; k++) {
+        tl_boat *b = tl_scene_object(s, k);
+        if (!b->enabled)
+            continue;
+        /* Where it was, for its wake: twice the fade time back. */
+        boat_wake(&tl->objects[k].path.path, t, b);
+        /* ... and floats on the waves, the giant one included. */
+        if (float_boat)
+            tl_timeline_float_boat(tl, k, t, heading_from_path(tl, k), s);
+    }
+    /* How fast the water rises against each bow (its spray) is the change
+     * of the bow's gap to the water over TL_BOW_IMPACT_DT: the poses a
+     * moment before, floated alike (a pose depends on the time alone, so
+     * this does). */
+    bool any = false;
+    for (int k = 0; k < tl->object_count; k++)
+        any |= tl_scene_object(s, k)->enabled;
+    if (float_boat && impact && any) {
+        tl_scene before;
+        eval_scene(tl, t - TL_BOW_IMPACT_DT, &before, true, false);
+        for (int k = 0; k < tl->object_count; k++)
+            if (tl_scene_object(s, k)->enabled)
+                tl_scene_object(s, k)->impact =
+                    (tl_timeline_bow_gap(s, k) - tl_timeline_bow_gap(&before, k)) /
+                    TL_BOW_IMPACT_DT;
     }
     if (tl->camera_follow.target == TL_TARGET_BOAT)
-        add3(s->camera.position, s->boat.position, tl->camera_follow.offset);
+        add3(s->camera.position, tl_scene_object(s, tl->camera_follow.object)->position,
+             tl->camera_follow.offset);
     /* Paths (a Catmull-Rom curve may overshoot its points) and links (boat +
      * offset) can leave a channel's range: hold every channel inside it. */
     for (int i = 0; i < tl_channel_count(); i++) {
         const tl_channel *ch = tl_channel_at(i);
         if (ch->kind != TL_CH_REAL)
             continue;
-        double v[3];
-        tl_channel_get(ch, s, v);
-        for (int c = 0; c < ch->components; c++)
-            v[c] = clampd(v[c], ch->min, ch->max);
-        tl_channel_set(ch, s, v);
+        int objects = tl_channel_is_object(ch) ? tl->object_count : 1;
+        for (int k = 0; k < objects; k++) {
+            double v[3];
+            tl_channel_get_object(ch, s, k, v);
+            for (int c = 0; c < ch->components; c++)
+                v[c] = clampd(v[c], ch->min, ch->max);
+            tl_channel_set_object(ch, s, k, v);
+        }
     }
     if (tl->camera_look.target != TL_TARGET_NONE) {
         double target[3];
         if (tl->camera_look.target == TL_TARGET_BOAT)
-            add3(target, s->boat.position, tl->camera_look.offset);
+            add3(target, tl_scene_object(s, tl->camera_look.object)->position,
+                 tl->camera_look.offset);
         else
             memcpy(target, tl->camera_look.point, sizeof target);
         /* A target on the camera keeps the previous orientation (no flip). */
@@ -227,12 +313,15 @@ void tl_timeline_eval(const tl_timeline *tl, double t, tl_scene *s)
 bool tl_timeline_has_cut_between(const tl_timeline *tl, double t0, double t1)
 {
     for (int i = 0; i < tl_channel_count(); i++) {
-        const tl_track *tr = &tl->tracks[i];
-        if (tr->state != TL_TRACK_KEYED)
-            continue;
-        for (int c = 0; c < tl_channel_at(i)->components; c++)
-            if (tl_curve_has_cut_between(&tr->curve[c], t0, t1))
-                return true;
+        int objects = tl_channel_is_object(tl_channel_at(i)) ? tl->object_count : 1;
+        for (int k = 0; k < objects; k++) {
+            const tl_track *tr = tl_timeline_track(tl, i, k);
+            if (tr->state != TL_TRACK_KEYED)
+                continue;
+            for (int c = 0; c < tl_channel_at(i)->components; c++)
+                if (tl_curve_has_cut_between(&tr->curve[c], t0, t1))
+                    return true;
+        }
     }
     return false;
 }
@@ -251,7 +340,11 @@ void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *f)
                                      : tl->duration * (double)i / (double)(samples - 1);
         tl_scene s;
         eval_scene(tl, t, &s, false, false); /* the features do not depend on the boat's pose */
-        f->boat |= s.boat.enabled;
+        int objects = 0;
+        for (int k = 0; k < s.objects; k++)
+            objects += tl_scene_object(&s, k)->enabled;
+        f->boat |= objects > 0;
+        f->objects = objects > f->objects ? objects : f->objects;
         f->giant_wave |= s.giant.enabled && s.giant.fade > 0.0 && s.giant.height > 0.0;
         f->fog |= s.fog.density > 0.0;
         /* Auto: the camera may be under water once it is below the highest

@@ -26,11 +26,12 @@ typedef struct tl_track {
 
 typedef enum tl_target { TL_TARGET_NONE, TL_TARGET_POINT, TL_TARGET_BOAT } tl_target;
 
-/* `look camera at ...`, `follow camera boat`, `follow giant.center boat`. */
+/* `look camera at ...`, `follow camera boat`, `follow giant.center NAME`. */
 typedef struct tl_link {
     tl_target target;
+    int object;       /* TL_TARGET_BOAT: which floating object (0: the boat) */
     double point[3];  /* TL_TARGET_POINT */
-    double offset[3]; /* added to the boat's position */
+    double offset[3]; /* added to the object's position */
     int line;
 } tl_link;
 
@@ -40,6 +41,31 @@ typedef struct tl_path_track {
     int line;
 } tl_path_track;
 
+/* A floating object's name: letters, digits and '_', starting with a
+ * letter, shorter than this. */
+#define TL_OBJECT_NAME_MAX 32
+
+/* A floating object: the boat (object 0, always there, drawn once it has
+ * a path) or one a timeline declares with `boat NAME`. */
+typedef struct tl_object {
+    char name[TL_OBJECT_NAME_MAX]; /* "boat" for object 0 */
+    int line, column;              /* where `boat NAME` declared it (0 for the boat) */
+    tl_path_track path;            /* `path NAME`: points x 0 z */
+    /* `set NAME.model PATH`: the file, resolved against the timeline's
+     * folder ("" = the built-in boat), and where it was named. */
+    char model[1024];
+    int model_line, model_column;
+    /* The loaded model's bounds in model units, and which of the loaded
+     * models it is (tl_timeline_set_object_model); until then the built-in
+     * boat's. */
+    bool bounds_known;
+    double model_min[3], model_max[3];
+    int mesh;
+    /* Its `boat.*` channels' tracks, one per channel as tl->tracks: the
+     * boat's are tl->tracks themselves (NULL here). */
+    tl_track *tracks;
+} tl_object;
+
 typedef struct tl_timeline {
     char file[512];
     int version;
@@ -48,20 +74,26 @@ typedef struct tl_timeline {
     int width, height;
     tl_quality quality;
     tl_track *tracks;          /* tl_channel_count() entries */
-    tl_path_track boat_path;   /* points x 0 z */
     tl_path_track camera_path; /* points x y z */
     tl_link camera_look;
     tl_link camera_follow;
     tl_link giant_follow;
-    /* `set boat.model PATH`: the file, resolved against the timeline's
-     * folder ("" = the built-in boat), and where it was named. */
-    char boat_model[1024];
-    int boat_model_line, boat_model_column;
-    /* The loaded model's bounds in model units, set by whoever loads it
-     * (tl_timeline_set_boat_bounds); until then the built-in boat's. */
-    bool boat_bounds_known;
-    double boat_model_min[3], boat_model_max[3];
+    /* The floating objects: objects[0] is the boat, the others are
+     * declared with `boat NAME`, in order. */
+    tl_object objects[TL_OBJECT_MAX];
+    int object_count;
 } tl_timeline;
+
+/* Object k's track of channel `channel` (a tl_channel_index): its own for
+ * a `boat.*` channel, the timeline's for any other. */
+tl_track *tl_timeline_track(const tl_timeline *tl, int channel, int object);
+
+/* The object named `name` (0 for "boat"), or -1. */
+int tl_timeline_object(const tl_timeline *tl, const char *name);
+
+/* Declares floating object `name` (checked by the parser: a new, valid
+ * name, room for one more); its index, or -1 when out of memory. */
+int tl_timeline_add_object(tl_timeline *tl, const char *name, int line, int column);
 
 /* Floating (tl_float.c): sets s->boat's height, pitch and roll at time t
  * from the scene's boat position, heading, length and beam. The waterline
@@ -75,22 +107,23 @@ typedef struct tl_timeline {
  * where a hull's weight and inertia carry it over. */
 #define TL_FLOAT_MAX_TILT  (35.0 * 3.14159265358979323846 / 180.0)
 #define TL_FLOAT_TILT_KNEE (20.0 * 3.14159265358979323846 / 180.0)
-void tl_timeline_float_boat(const tl_timeline *tl, double t, int heading_from_path, tl_scene *s);
+void tl_timeline_float_boat(const tl_timeline *tl, int object, double t, int heading_from_path,
+                            tl_scene *s);
 
 /* The water's height at the boat's stem (half its length ahead of its
  * centre) less the stem's at its waterline, metres, for the scene's
  * floated pose: its change over time is how fast the water rises against
  * the bow (tl_boat.impact). */
-double tl_timeline_bow_gap(const tl_scene *s);
+double tl_timeline_bow_gap(const tl_scene *s, int object);
 /* The interval over which tl_boat.impact is taken: long enough that a
  * ripple's quick rise and fall at the stem does not flicker the spray
  * from frame to frame, short against a wave that the bow slams into. */
 #define TL_BOW_IMPACT_DT 0.25
 
-/* Records the loaded boat model's bounds: its hull length and beam (which
- * floating samples) and its extent on screen. */
-void tl_timeline_set_boat_bounds(tl_timeline *tl, const float bounds_min[3],
-                                 const float bounds_max[3]);
+/* Records which loaded model object k is drawn with and its bounds: its
+ * hull length and beam (which floating samples) and its extent on screen. */
+void tl_timeline_set_object_model(tl_timeline *tl, int object, int mesh, const float bounds_min[3],
+                                  const float bounds_max[3]);
 
 /* A timeline with no keys: render defaults (24 fps, 10 s, 1280x720, final). */
 int tl_timeline_init(tl_timeline *tl, tl_error *err);
@@ -125,6 +158,7 @@ int tl_timeline_shutter_times(const tl_timeline *tl, long frame, double shutter_
 /* Features the timeline needs over its whole duration (for `check`). */
 typedef struct tl_timeline_features {
     bool giant_wave, boat, underwater, fog;
+    int objects; /* floating objects with a path */
 } tl_timeline_features;
 void tl_timeline_features_of(const tl_timeline *tl, tl_timeline_features *out);
 
