@@ -167,13 +167,21 @@ vec3 boat_reflect(vec3 sky, vec3 n, vec3 hit)
     vec2 shift = n.xz * 0.15;
     shift *= min(1.0, TL_MIRROR_SHIFT / max(length(shift), 1.0e-6));
     vec2 at = gl_FragCoord.xy + shift * size.y;
-    // Four taps 3 px apart: ripples break a reflection's edges up softly.
+    // Ripples finer than a pixel smear the image up and down, as they
+    // draw a lamp's reflection on a choppy sea out into a column of glints
+    // (a single look-up drew isolated specks): eight taps, two 3 px apart
+    // across, four rows over TL_MIRROR_STREAK of the height either side,
+    // weighted toward the middle.
     vec4 hull = vec4(0.0);
-    for (int i = 0; i < 4; i++) {
-        vec2 tap = at + vec2(i & 1, i >> 1) * 3.0 - 1.5;
-        hull += texelFetch(u_boat_reflection, ivec2(clamp(tap, vec2(0.0), size - 1.0)), 0);
+    float streak = TL_MIRROR_STREAK * size.y, weights = 0.0;
+    for (int i = 0; i < 8; i++) {
+        float row = (float(i >> 1) + 0.5) / 2.0 - 1.0; // -0.75 .. 0.75
+        float w = 1.0 - 0.5 * abs(row);
+        vec2 tap = at + vec2(float(i & 1) * 3.0 - 1.5, row * streak);
+        hull += w * texelFetch(u_boat_reflection, ivec2(clamp(tap, vec2(0.0), size - 1.0)), 0);
+        weights += w;
     }
-    hull *= 0.25;
+    hull /= weights;
     // The taps' colours are weighted by their coverage: unpremultiply.
     vec3 color = hull.a > 0.0 ? hull.rgb / hull.a : vec3(0.0);
     // The nearest of the objects' planes (each is mirrored in its own).

@@ -349,6 +349,38 @@ static void test_usage(void)
     unlink(file);
 }
 
+/* Several floating objects (timelines/rescue.tl): `eval --json` lists each
+ * with its name, channels and pose, the text output each one's position,
+ * and `check` lists them. */
+static void test_objects(void)
+{
+    char file[512];
+    snprintf(file, sizeof file, "%s/rescue.tl", timelines);
+    CHECK(eval_json(file, 12.0, NULL, 0) == 0);
+    const char *boat = strstr(out_text, "\"objects\": [{\"name\": \"boat\"");
+    const char *rescue = strstr(out_text, "{\"name\": \"rescue\"");
+    CHECK(boat != NULL && rescue != NULL && rescue > boat);
+    if (rescue) {
+        /* At 12 s the rescue boat is at its path's last point, -4.8 5. */
+        CHECK_NEAR(json_num(rescue, "position", 0), -4.8, 1e-9);
+        CHECK_NEAR(json_num(rescue, "position", 2), 5.0, 1e-9);
+        CHECK_NEAR(json_num(rescue, "cabin_paint", 0), 0.85, 1e-12);
+        CHECK_NEAR(json_num(rescue, "size", 0), 11.0, 1e-12);
+        CHECK_NEAR(json_num(rescue, "lights", 0), 1.0, 1e-12);
+        CHECK_NEAR(json_num(rescue, "length", 0), 11.0, 1e-9);
+    }
+    if (boat)
+        CHECK_NEAR(json_num(boat, "position", 2), 6.0, 1e-9);
+    const char *text[] = {tl_run_binary, "eval", file, "--at", "12", NULL};
+    CHECK(tl_run_argv(NULL, text) == 0);
+    CHECK(strstr(out_text, "rescue.size                11 m") != NULL);
+    CHECK(strstr(out_text, "rescue.position            -4.8 ") != NULL);
+    CHECK(strstr(out_text, "rescue pose") != NULL);
+    CHECK(run("check", file, NULL) == 0);
+    CHECK(strstr(out_text, "objects   2 floating: boat (built-in boat), rescue (built-in boat)") !=
+          NULL);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3 || !mkdtemp(dir))
@@ -358,6 +390,7 @@ int main(int argc, char **argv)
     test_speed_over_water();
     test_probes();
     test_usage();
+    test_objects();
     rmdir(dir);
     TEST_END();
 }

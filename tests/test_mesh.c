@@ -384,6 +384,55 @@ static void test_normal_map(void)
     CHECK_NEAR(out[2], 1.0, 1e-12);
 }
 
+/* boat.paint and boat.cabin_paint: the built-in boat in its own paint is
+ * the default boat, vertex for vertex (TL_BOAT_PAINT and
+ * TL_BOAT_CABIN_PAINT are its colours); in an orange and a blue, its
+ * topsides and wheelhouse take them, its roof the blue a shade darker, and
+ * nothing else changes. */
+static void test_paint(void)
+{
+    tl_mesh plain, own, painted;
+    tl_error err;
+    tl_error_clear(&err);
+    const double paint[3] = TL_BOAT_PAINT, cabin[3] = TL_BOAT_CABIN_PAINT;
+    const double orange[3] = {0.8, 0.15, 0.02}, blue[3] = {0.02, 0.05, 0.3};
+    CHECK(tl_mesh_default_boat(&plain, &err) == TL_OK);
+    CHECK(tl_mesh_builtin_boat(&own, paint, cabin, &err) == TL_OK);
+    CHECK(tl_mesh_builtin_boat(&painted, orange, blue, &err) == TL_OK);
+    CHECK(own.vertex_count == plain.vertex_count && painted.vertex_count == plain.vertex_count);
+    if (own.vertex_count != plain.vertex_count || painted.vertex_count != plain.vertex_count)
+        goto done;
+    CHECK(memcmp(own.colors, plain.colors, 3 * sizeof(float) * plain.vertex_count) == 0);
+    size_t topsides = 0, wheelhouse = 0, roof = 0, other = 0;
+    for (size_t v = 0; v < plain.vertex_count; v++) {
+        const float *a = plain.colors + 3 * v, *b = painted.colors + 3 * v;
+        int was_topsides =
+            a[0] == (float)paint[0] && a[1] == (float)paint[1] && a[2] == (float)paint[2];
+        int was_cabin =
+            a[0] == (float)cabin[0] && a[1] == (float)cabin[1] && a[2] == (float)cabin[2];
+        if (was_topsides) {
+            topsides++;
+            CHECK(b[0] == (float)orange[0] && b[1] == (float)orange[1] && b[2] == (float)orange[2]);
+        } else if (was_cabin) {
+            wheelhouse++;
+            CHECK(b[0] == (float)blue[0] && b[1] == (float)blue[1] && b[2] == (float)blue[2]);
+        } else if (memcmp(a, b, 3 * sizeof(float)) != 0) {
+            roof++;
+            CHECK(b[0] == (float)(0.8 * blue[0]) && b[1] == (float)(0.8 * blue[1]) &&
+                  b[2] == (float)(0.8 * blue[2]));
+        } else {
+            other++;
+        }
+    }
+    printf("paint: %zu topsides vertices, %zu wheelhouse, %zu roof, %zu unchanged\n", topsides,
+           wheelhouse, roof, other);
+    CHECK(topsides > 100 && wheelhouse >= 8 && roof >= 4 && other > 100);
+done:
+    tl_mesh_free(&plain);
+    tl_mesh_free(&own);
+    tl_mesh_free(&painted);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
@@ -393,6 +442,7 @@ int main(int argc, char **argv)
     test_obj();
     test_errors();
     test_default_boat();
+    test_paint();
     test_normal_map();
     if (!mkdtemp(tmp))
         return 1;

@@ -530,33 +530,22 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame,
         printf("frame %ld, time %s s\n", frame, num(t));
     else
         printf("time %s s\n", num(t));
-    for (int i = 0; i < tl_channel_count(); i++) {
-        const tl_channel *ch = tl_channel_at(i);
-        double v[3];
-        tl_channel_get(ch, &s, v);
-        printf("  %-26s", ch->name);
-        if (ch->kind == TL_CH_BOOL)
-            printf(" %s", v[0] >= 0.5 ? "on" : "off");
-        else if (ch->kind == TL_CH_ENUM)
-            printf(" %s", ch->names[(int)v[0]]);
-        else
-            for (int c = 0; c < ch->components; c++)
-                printf(" %s", value_text(ch, v[c]));
-        printf("%s\n", unit_suffix(ch->unit));
-    }
-    /* The other floating objects' channels, NAME.field. */
-    for (int k = 1; k < tl->object_count; k++)
+    /* Every channel, then the other floating objects' as NAME.field. */
+    for (int k = 0; k < tl->object_count; k++)
         for (int i = 0; i < tl_channel_count(); i++) {
             const tl_channel *ch = tl_channel_at(i);
-            if (!tl_channel_is_object(ch))
+            if (k > 0 && !tl_channel_is_object(ch))
                 continue;
             double v[3];
             tl_channel_get_object(ch, &s, k, v);
             char name[64];
-            snprintf(name, sizeof name, "%s%s", tl->objects[k].name, ch->name + 4);
+            snprintf(name, sizeof name, "%s%s", k ? tl->objects[k].name : "",
+                     k ? ch->name + 4 : ch->name);
             printf("  %-26s", name);
             if (ch->kind == TL_CH_BOOL)
                 printf(" %s", v[0] >= 0.5 ? "on" : "off");
+            else if (ch->kind == TL_CH_ENUM)
+                printf(" %s", ch->names[(int)v[0]]);
             else
                 for (int c = 0; c < ch->components; c++)
                     printf(" %s", value_text(ch, v[c]));
@@ -583,6 +572,23 @@ static void print_sample_text(const tl_timeline *tl, double t, long frame,
     }
     print_report_text(tl, &s);
     print_probes_text(&s, probes);
+}
+
+/* A channel's value in JSON: a boolean, a name, a number or an array. */
+static void print_value_json(const tl_channel *ch, const double v[3])
+{
+    if (ch->kind == TL_CH_BOOL) {
+        printf("%s", v[0] >= 0.5 ? "true" : "false");
+    } else if (ch->kind == TL_CH_ENUM) {
+        printf("\"%s\"", ch->names[(int)v[0]]);
+    } else if (ch->components == 1) {
+        printf("%s", value_text(ch, v[0]));
+    } else {
+        printf("[");
+        for (int c = 0; c < ch->components; c++)
+            printf("%s%s", c ? ", " : "", value_text(ch, v[c]));
+        printf("]");
+    }
 }
 
 /* A floating object's pose in JSON, or null when it is not on the water. */
@@ -613,18 +619,7 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
         double v[3];
         tl_channel_get(ch, &s, v);
         printf("%s\"%s\": ", i ? ", " : "", ch->name);
-        if (ch->kind == TL_CH_BOOL) {
-            printf("%s", v[0] >= 0.5 ? "true" : "false");
-        } else if (ch->kind == TL_CH_ENUM) {
-            printf("\"%s\"", ch->names[(int)v[0]]);
-        } else if (ch->components == 1) {
-            printf("%s", value_text(ch, v[0]));
-        } else {
-            printf("[");
-            for (int c = 0; c < ch->components; c++)
-                printf("%s%s", c ? ", " : "", value_text(ch, v[c]));
-            printf("]");
-        }
+        print_value_json(ch, v);
     }
     printf("}, \"boat\": ");
     print_pose_json(&s.boat);
@@ -642,10 +637,7 @@ static void print_sample_json(const tl_timeline *tl, double t, long frame, int f
             tl_channel_get_object(ch, &s, k, v);
             printf("%s\"%s\": ", first ? "" : ", ", ch->name + 5);
             first = 0;
-            if (ch->kind == TL_CH_BOOL)
-                printf("%s", v[0] >= 0.5 ? "true" : "false");
-            else
-                printf("%s", value_text(ch, v[0]));
+            print_value_json(ch, v);
         }
         printf("}, \"pose\": ");
         print_pose_json(tl_scene_object_const(&s, k));

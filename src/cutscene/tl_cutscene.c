@@ -3,19 +3,44 @@
 #include <stdio.h>
 #include <string.h>
 
+/* Object k's built-in boat's paint (boat.paint, boat.cabin_paint: set
+ * only, so their tracks hold them), or the scene's defaults. */
+static void paint_of(const tl_timeline *tl, int k, double paint[6])
+{
+    tl_scene defaults;
+    tl_scene_defaults(&defaults);
+    const char *names[2] = {"boat.paint", "boat.cabin_paint"};
+    for (int c = 0; c < 2; c++) {
+        const tl_channel *ch = tl_channel_find(names[c]);
+        const tl_track *tr = tl_timeline_track(tl, tl_channel_index(ch), k);
+        double v[3];
+        tl_channel_get(ch, &defaults, v);
+        for (int i = 0; i < 3; i++)
+            paint[3 * c + i] = tr->state == TL_TRACK_SET ? tr->value[i] : v[i];
+    }
+}
+
 /* Loads the mesh object k is drawn with into the models, unless an
- * earlier object named the same file (or the built-in boat). */
+ * earlier object named the same file (or the built-in boat in the same
+ * paint). */
 static int load_model(const char *path, tl_timeline *tl, int k, tl_models *models, tl_error *err)
 {
     const tl_object *o = &tl->objects[k];
-    for (int j = 0; j < k; j++)
-        if (tl->objects[j].path.present && strcmp(tl->objects[j].model, o->model) == 0) {
-            const tl_mesh *m = &models->mesh[tl->objects[j].mesh];
-            tl_timeline_set_object_model(tl, k, tl->objects[j].mesh, m->bounds_min, m->bounds_max);
-            return TL_OK;
-        }
+    double paint[6], other[6];
+    paint_of(tl, k, paint);
+    for (int j = 0; j < k; j++) {
+        if (!tl->objects[j].path.present || strcmp(tl->objects[j].model, o->model) != 0)
+            continue;
+        paint_of(tl, j, other);
+        if (!o->model[0] && memcmp(paint, other, sizeof paint) != 0)
+            continue;
+        const tl_mesh *m = &models->mesh[tl->objects[j].mesh];
+        tl_timeline_set_object_model(tl, k, tl->objects[j].mesh, m->bounds_min, m->bounds_max);
+        return TL_OK;
+    }
     tl_mesh *mesh = &models->mesh[models->count];
-    int rc = o->model[0] ? tl_mesh_load(o->model, mesh, err) : tl_mesh_default_boat(mesh, err);
+    int rc = o->model[0] ? tl_mesh_load(o->model, mesh, err)
+                         : tl_mesh_builtin_boat(mesh, paint, paint + 3, err);
     if (rc && o->model_line) {
         /* At the line that named the model; the message names the file. */
         char message[sizeof err->message];

@@ -129,6 +129,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_MARCH_RELAX %g\n"
         "#define TL_BOX_STEP_COST %g\n"
         "#define TL_MIRROR_SHIFT %g\n"
+        "#define TL_MIRROR_STREAK %g\n"
         "#define TL_BOAT_SHADOW_SIZE %d\n"
         "#define TL_BOAT_SHADOW_SCATTER %.17g\n"
         "#define TL_BOAT_CONTACT_LINE %.17g\n"
@@ -150,10 +151,10 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_AHEAD, TL_SPRAY_SPLASH_GROW, TL_SPRAY_BOW_GAIN,
         TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS, TL_WAKE_GROUP,
         TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX,
-        TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
-        TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT,
-        TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN,
-        TL_OBJECT_MAX);
+        TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_MIRROR_STREAK, TL_BOAT_SHADOW_SIZE,
+        TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS,
+        TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH,
+        TL_MESH_WET_DARKEN, TL_OBJECT_MAX);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
@@ -568,7 +569,8 @@ static int draw_area(tl_renderer *r, const tl_frame_uniforms *u, unsigned featur
 {
     if (area[0] >= area[2] || area[1] >= area[3])
         return TL_OK;
-    const int *m = u->plan.boat_mirror_rect, reach = (int)ceil(TL_MIRROR_SHIFT * u->height) + 3;
+    const int *m = u->plan.boat_mirror_rect,
+              reach = (int)ceil((TL_MIRROR_SHIFT + TL_MIRROR_STREAK) * u->height) + 3;
     const int wide[4] = {m[0] - reach, m[1] - reach, m[2] + reach, m[3] + reach};
     int in[4], around[4][4], n = -1;
     if ((features & TL_FEATURE_BOAT) && !(features & TL_PASS_SKY) && m[0] < m[2] && m[1] < m[3])

@@ -23,6 +23,9 @@
  * frame's height: boat.glsl holds its look-ups to it, and the program
  * with the image runs that far around the image's rectangle. */
 #define TL_MIRROR_SHIFT 0.05
+/* How far up and down, as a share of the frame's height, ripples finer
+ * than a pixel smear the mirror image (boat.glsl's taps). */
+#define TL_MIRROR_STREAK 0.012
 
 /* Texture units, one name for each sampler's. The ocean's programs take
  * 1 to 5 (unit 0 is where the other passes bind their input, and where

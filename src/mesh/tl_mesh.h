@@ -101,6 +101,11 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err);
  * and rails; painted topsides, a boot stripe, antifouling, stainless,
  * glass; creased normals and baked occlusion. */
 int tl_mesh_default_boat(tl_mesh *out, tl_error *err);
+/* The same with its topsides (the hull above the boot stripe) and its
+ * wheelhouse painted in other linear RGB colours (NULL: its own off-white
+ * and light grey, tl_scene.h's TL_BOAT_PAINT and TL_BOAT_CABIN_PAINT). */
+int tl_mesh_builtin_boat(tl_mesh *out, const double topsides[3], const double cabin[3],
+                         tl_error *err);
 
 /* Bakes ambient occlusion into m->surface: from each vertex, rays over the
  * hemisphere of its normal, out to `reach` model units, find how much of

@@ -63,7 +63,7 @@ static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
     /* Glass over the wheelhouse's dim interior: its diffuse is what shows
      * through (by day a fraction of the light outside, a warm lamp inside
      * with boat.lights), the gloss the sky's reflection. */
-    [GLASS] = {{0.036f, 0.030f, 0.021f}, 0.05f, 0.0f, 0.4f},
+    [GLASS] = {{0.036f, 0.030f, 0.021f}, 0.05f, 0.0f, 0.1f},
     [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
     [LAMP_PORT] = {{0.80f, 0.03f, 0.02f}, 0.1f, 0.0f, 60.0f},
     [LAMP_STARBOARD] = {{0.02f, 0.80f, 0.15f}, 0.1f, 0.0f, 60.0f},
@@ -503,11 +503,32 @@ static void mast(tl_mesh_soup *s, double deck_y)
 
 int tl_mesh_default_boat(tl_mesh *out, tl_error *err)
 {
+    return tl_mesh_builtin_boat(out, NULL, NULL, err);
+}
+
+int tl_mesh_builtin_boat(tl_mesh *out, const double topsides[3], const double cabin[3],
+                         tl_error *err)
+{
     double crease[PART_COUNT];
     for (int p = 0; p < PART_COUNT; p++)
         crease[p] = cos(CREASE_DEG[p] * M_PI / 180.0);
+    tl_mesh_material materials[MATERIAL_COUNT];
+    memcpy(materials, MATERIALS, sizeof materials);
+    /* A wheelhouse in a paint of its own has its roof in it too, a shade
+     * darker; in the boat's own paint the roof keeps its grey. */
+    int own_cabin = 1;
+    for (int i = 0; cabin && i < 3; i++)
+        own_cabin &= (float)cabin[i] == MATERIALS[CABIN].color[i];
+    for (int i = 0; i < 3; i++) {
+        if (topsides)
+            materials[TOPSIDES].color[i] = (float)topsides[i];
+        if (cabin)
+            materials[CABIN].color[i] = (float)cabin[i];
+        if (cabin && !own_cabin)
+            materials[ROOF].color[i] = (float)(0.8 * cabin[i]);
+    }
     tl_mesh_soup s = {0};
-    s.materials = MATERIALS;
+    s.materials = materials;
     s.crease_cos = crease;
     hull(&s);
     /* The boot stripe's edges cut the hull: paint by height. */

@@ -128,6 +128,11 @@ void tl_scene_defaults(tl_scene *s)
     }
     s->boat.length = 8.0;
     s->boat.beam = 8.0 * TL_BOAT_BEAM_RATIO;
+    const double paint[3] = TL_BOAT_PAINT, cabin[3] = TL_BOAT_CABIN_PAINT;
+    for (int i = 0; i < 3; i++) {
+        s->boat.paint[i] = paint[i];
+        s->boat.cabin_paint[i] = cabin[i];
+    }
     for (int k = 0; k < TL_OBJECT_MAX - 1; k++)
         s->fleet[k] = s->boat;
     s->objects = 1;

@@ -140,6 +140,16 @@ typedef struct tl_giant_wave {
         0.17, 0.5012, 0.5                                                                          \
     }
 #define TL_BOAT_BEAM_RATIO 0.34
+/* The built-in boat's own paint, linear RGB: its topsides and its
+ * wheelhouse (src/mesh/tl_mesh_boat.c; test_mesh checks them). */
+#define TL_BOAT_PAINT                                                                              \
+    {                                                                                              \
+        0.60, 0.58, 0.53                                                                           \
+    }
+#define TL_BOAT_CABIN_PAINT                                                                        \
+    {                                                                                              \
+        0.66, 0.66, 0.62                                                                           \
+    }
 
 /* Past positions of the boat kept for its wake. */
 #define TL_WAKE_POINTS 24
@@ -187,7 +197,10 @@ typedef struct tl_boat {
      * a timeline): it throws the bow's spray. */
     double impact;
     double spray; /* boat.spray: the bow spray's strength, 0 = none */
-    int model;    /* which of the loaded models it is drawn with (tl_cutscene.models) */
+    /* boat.paint, boat.cabin_paint: the built-in boat's topsides and
+     * wheelhouse colours, linear RGB (set only: its mesh is built once). */
+    double paint[3], cabin_paint[3];
+    int model; /* which of the loaded models it is drawn with (tl_cutscene.models) */
     /* The wake: where the boat was, every wake_step seconds back from now
      * (wake_path[0] is the boat itself), world x z. */
     double wake_path[TL_WAKE_POINTS][2];

@@ -197,6 +197,12 @@ static const tl_channel channels[] = {
          "strength of the spray the bow throws where it meets rising water"),
     {"boat.shadows", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.shadows),
      NULL, "the sun casts the boat's shadows, on itself and on the water"},
+    {"boat.paint", TL_CH_REAL, 3, TL_UNIT_NONE, 0.0, 1.0, false, offsetof(tl_scene, boat.paint),
+     NULL,
+     "the built-in boat's topsides colour, linear RGB (a rescue boat's orange: 0.8 0.15 0.02)"},
+    {"boat.cabin_paint", TL_CH_REAL, 3, TL_UNIT_NONE, 0.0, 1.0, false,
+     offsetof(tl_scene, boat.cabin_paint), NULL,
+     "the built-in boat's wheelhouse colour, linear RGB"},
 
     {"quality.march_octaves", TL_CH_INT, 1, TL_UNIT_NONE, 1, TL_MAX_OCTAVES, false,
      offsetof(tl_scene, quality.march_octaves), NULL, "wave octaves while marching"},
