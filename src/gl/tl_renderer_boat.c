@@ -187,9 +187,12 @@ int tl_renderer_upload_objects(tl_renderer *r, const tl_frame_uniforms *u, tl_er
                                 "the GPU's uniform blocks hold %d bytes; the floating objects' "
                                 "need %zu",
                                 (int)most, sizeof u->objects);
+        /* Zeroed whole: a frame uploads only its slots, and the driver
+         * may read the rest. */
+        static const tl_object_uniforms zero[TL_OBJECT_MAX];
         glGenBuffers(1, &r->objects_ubo);
         glBindBuffer(GL_UNIFORM_BUFFER, r->objects_ubo);
-        glBufferData(GL_UNIFORM_BUFFER, (GLsizeiptr)sizeof u->objects, NULL, GL_DYNAMIC_DRAW);
+        glBufferData(GL_UNIFORM_BUFFER, (GLsizeiptr)sizeof zero, zero, GL_DYNAMIC_DRAW);
     }
     tl_object_uniforms objects[TL_OBJECT_MAX];
     memcpy(objects, u->objects, (size_t)u->object_count * sizeof *objects);
