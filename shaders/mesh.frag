@@ -14,6 +14,13 @@
 #ifdef TL_FEATURE_BOAT_SHADOW
 #include "boat_shadow.glsl"
 #endif
+#ifdef TL_FEATURE_UNDERWATER
+#include "water_light.glsl"
+#endif
+#ifdef TL_FEATURE_CAUSTICS
+#include "waves.glsl"
+#include "caustics.glsl"
+#endif
 
 in vec3 v_world;
 in vec3 v_normal;
@@ -81,15 +88,17 @@ void main()
     float depth = u_objects[u_object].hull.y - v_world.y;
     if (depth > 0.0) {
         // Under the water: the sun refracted and dimmed along its path
-        // down, the sky's light from above and the water's own from below
-        // (its albedo's share of what comes down); the surface above is the
-        // environment looking up, the depths looking down.
-        vec3 down = exp(-u_water_sigma * depth);
-        vec3 albedo = min(vec3(u_water_scattering) / u_water_sigma, vec3(1.0));
-        vec3 sun = sky_sun_light() * (u_sunlit * u_sun_water_trans) *
-                   exp(-u_water_sigma * depth / max(-u_sun_water.y, 0.1));
-        vec3 from_above = (sky_ambient() + sky_sun_light() * max(u_sun_dir.y, 0.0) / TL_PI) * down;
-        vec3 from_below = 0.5 * albedo * from_above;
+        // down, focused by the waves (caustics), the sky's light from above
+        // and the water's own from below (its albedo's share of what comes
+        // down); the surface above is the environment looking up, the
+        // depths looking down.
+        vec3 sun = water_sun_at(depth) * u_sunlit;
+#ifdef TL_FEATURE_CAUSTICS
+        float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / u_resolution.y;
+        sun *= caustic_light(v_world.xz, depth, footprint);
+#endif
+        vec3 from_above = water_sky_at(depth) + water_sun_at(depth) * (-u_sun_water.y / TL_PI);
+        vec3 from_below = 0.5 * water_albedo() * from_above;
         vec3 ambient = mix(from_below, from_above, 0.5 + 0.5 * n.y);
         vec3 env = r.y > 0.0 ? from_above : from_below;
         color = material_brdf(n, v, -u_sun_water, base, roughness, metallic) * sun +

@@ -38,6 +38,13 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #include "spray.glsl"
 #endif
 #ifdef TL_FEATURE_UNDERWATER
+#include "water_light.glsl"
+#ifdef TL_FEATURE_CAUSTICS
+#include "caustics.glsl"
+#endif
+#ifdef TL_FEATURE_SEA_FLOOR
+#include "sea_floor.glsl"
+#endif
 #include "underwater.glsl"
 #endif
 
@@ -135,7 +142,7 @@ vec3 trace(vec3 ray, out float dist)
         vec3 seen = boat_composite(below, ray, dist);
         if (dist < water_dist) {
             vec3 trans = optics_water_transmittance(dist);
-            below = seen * trans + underwater_inscatter(ray) * (1.0 - trans);
+            below = seen * trans + water_inscatter(max(-u_cam_height, 0.0), ray, dist);
         }
 #endif
         // A thin dark meniscus where the lens meets the surface.

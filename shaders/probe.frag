@@ -42,6 +42,9 @@
 //           (tl_mesh_normal_map)
 //   mode 18: the bow's spray density at camera-relative (x, z) and height
 //           y, the input's third float       (tl_bow_spray_density)
+//   mode 19: the caustics' focus at camera-relative (x, z), the input's
+//           third float metres down, its fourth the footprint
+//                                            (tl_caustic_focus)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -66,6 +69,9 @@
 #endif
 #ifdef TL_FEATURE_WAKE
 #include "wake.glsl"
+#endif
+#ifdef TL_FEATURE_CAUSTICS
+#include "caustics.glsl"
 #endif
 
 uniform int u_probe_mode;
@@ -108,6 +114,10 @@ void main()
         result.xyz = material_env_brdf(vec3(0.04, 0.5, 0.9), p.y, p.x);
     else if (u_probe_mode == 15)
         result.x = material_wetness(p.x, p.y);
+#ifdef TL_FEATURE_CAUSTICS
+    else if (u_probe_mode == 19)
+        result.x = caustic_focus(p, input4.z, input4.w);
+#endif
 #ifdef TL_FEATURE_BOW_SPRAY
     else if (u_probe_mode == 18)
         result.x = bow_spray_density(0, vec3(p.x, input4.z, p.y));

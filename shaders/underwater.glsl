@@ -2,8 +2,9 @@
 // from above, marched from below; Snell's window through it (the sky
 // refracted, with the exact Fresnel split, total internal reflection
 // beyond 48.6 deg for water); and the water body between: Beer-Lambert
-// extinction and in-scattered light. With TL_FEATURE_WATERLINE each pixel
-// decides its side from its point on the lens plane.
+// extinction and in-scattered light (water_light.glsl), down to the sea
+// floor where there is one. With TL_FEATURE_WATERLINE each pixel decides
+// its side from its point on the lens plane.
 
 // Distance along an upward ray from below to the surface, or -1 (rays that
 // look down never meet it). Steps by the depth under the surface, divided
@@ -36,32 +37,34 @@ float underwater_march(vec3 ray, float t)
     return t;
 }
 
-// The light a view ray meets in deep water: sunlight and skylight scattered
-// toward the eye, dimmed by the water above the camera; the sun's forward
-// lobe (Henyey-Greenstein, g = 0.75) brightens the view toward it.
-vec3 underwater_inscatter(vec3 ray)
+// What a ray from `origin` (camera-relative, y absolute) meets below:
+// the sea floor where the scene has one (TL_FEATURE_SEA_FLOOR; its
+// caustics when `direct`), else the depths; with the water between, which
+// dims the floor and scatters the light it holds toward the eye. *dist: the
+// distance to the floor, or TL_SKY_DEPTH.
+vec3 underwater_below(vec3 origin, vec3 ray, bool direct, out float dist)
 {
-    vec3 sigma = u_water_sigma;
-    vec3 albedo = min(vec3(u_water_scattering) / sigma, vec3(1.0));
-    float mu = dot(u_sun_water, -ray);
-    const float g = 0.75;
-    float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
-    vec3 sun = sky_sun_light() * (u_sun_water_trans * phase) *
-               exp(-sigma * u_cam_depth / max(-u_sun_water.y, 0.1));
-    vec3 sky = sky_ambient() * 0.25 * exp(-sigma * u_cam_depth);
-    return albedo * (sun + sky);
+    float depth = max(-origin.y, 0.0);
+    dist = TL_SKY_DEPTH;
+#ifdef TL_FEATURE_SEA_FLOOR
+    float down = origin.y + u_floor_depth; // the camera may be under the floor: none
+    if (ray.y < 0.0 && down > 0.0) {
+        dist = down / -ray.y;
+        vec3 sand = floor_color(origin + ray * dist, ray, dist, direct);
+        return sand * optics_water_transmittance(dist) + water_inscatter(depth, ray, dist);
+    }
+#endif
+    return water_inscatter(depth, ray, TL_SKY_DEPTH);
 }
 
 // Radiance along a ray seen from under the water; *dist is the distance to
 // the surface, or TL_SKY_DEPTH for the depths.
 vec3 trace_underwater(vec3 ray, out float dist)
 {
-    vec3 deep = underwater_inscatter(ray);
+    vec3 eye = vec3(0.0, u_cam_height, 0.0);
     float t = underwater_march(ray, underwater_start(ray));
-    if (t < 0.0) {
-        dist = TL_SKY_DEPTH;
-        return deep;
-    }
+    if (t < 0.0)
+        return underwater_below(eye, ray, true, dist);
 #ifdef TL_FEATURE_POLISH
     t = surface_polish(ray, t);
 #endif
@@ -89,7 +92,8 @@ vec3 trace_underwater(vec3 ray, out float dist)
         through = sky_color(normalize(out_dir)) * (u_water_ior * u_water_ior);
     }
     vec3 down = reflect(ray, -n);
-    vec3 surface = (1.0 - fresnel) * through + fresnel * underwater_inscatter(down);
+    float mirrored;
+    vec3 surface = (1.0 - fresnel) * through + fresnel * underwater_below(hit, down, false, mirrored);
 #if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_FEATURE_WAKE)
     // Foam on the surface seen from below (the giant wave's and the
     // wake's): it hides Snell's window and glows with the daylight it lets
@@ -120,6 +124,5 @@ vec3 trace_underwater(vec3 ray, out float dist)
     surface = mix(surface, (0.5 - 0.3 * thickness) * foam_daylight(sunlit), foam) +
               foam_bubbles(aerated, u_scatter_color, sunlit);
 #endif
-    vec3 trans = optics_water_transmittance(t);
-    return surface * trans + deep * (1.0 - trans);
+    return surface * optics_water_transmittance(t) + water_inscatter(max(-u_cam_height, 0.0), ray, t);
 }

@@ -120,7 +120,9 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad, out 
         vec4 w = u_wave[i];
         float weight = u_wave_weight[i];
         float detail = 1.0;
-#ifdef TL_FEATURE_LOD
+// Caustics fade the octaves finer than their step whatever the preset
+// (where LOD is off, every other caller's footprint is 0).
+#if defined(TL_FEATURE_LOD) || defined(TL_FEATURE_CAUSTICS)
         if (footprint > 0.0) {
             detail = waves_detail(w.z, footprint);
             if (detail <= 0.0) {

@@ -49,6 +49,7 @@ tl_add_test(test_wake SOURCES test_wake.c LIBS tideline_gl LABELS gl)
 # Several floating objects: each floats, wakes and casts alone.
 tl_add_test(test_objects SOURCES test_objects.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_underwater SOURCES test_underwater.c LIBS tideline_gl LABELS gl)
+tl_add_test(test_caustics SOURCES test_caustics.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_polish SOURCES test_polish.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_glare SOURCES test_glare.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_sky SOURCES test_sky.c LIBS tideline_gl ARGS ${PROJECT_SOURCE_DIR}/tests/references LABELS gl)

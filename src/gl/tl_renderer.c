@@ -10,6 +10,8 @@
 #include "gl/tl_renderer_internal.h"
 #include "mesh/tl_mesh.h"
 #include "prepare/tl_uniform_list.h"
+#include "optics/tl_optics.h"
+#include "waves/tl_caustics.h"
 #include "waves/tl_giant_spray.h"
 #include "waves/tl_kelvin.h"
 
@@ -141,7 +143,16 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_MESH_WET_LOW %.17g\n"
         "#define TL_MESH_WET_HIGH %.17g\n"
         "#define TL_MESH_WET_DARKEN %.17g\n"
-        "#define TL_OBJECT_MAX %d\n",
+        "#define TL_OBJECT_MAX %d\n"
+        "#define TL_CAUSTIC_STEP %.17g\n"
+        "#define TL_CAUSTIC_BLUR %.17g\n"
+        "#define TL_CAUSTIC_PEAK %.17g\n"
+        "#define TL_CAUSTIC_MIN_DOWN %.17g\n"
+        "#define TL_FLOOR_PERIOD %d\n"
+        "#define TL_WATER_PHASE_G %.17g\n"
+        "#define TL_WATER_SKY_SCATTER %.17g\n"
+        "#define TL_WATER_MIN_SUN_DOWN %.17g\n"
+        "#define TL_WATER_MAX_OPTICAL %.17g\n",
         TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
         TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
         TL_GIANT_TROUGH_LIFT, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP,
@@ -154,7 +165,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_MIRROR_STREAK, TL_BOAT_SHADOW_SIZE,
         TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS,
         TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH,
-        TL_MESH_WET_DARKEN, TL_OBJECT_MAX);
+        TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
+        TL_CAUSTIC_MIN_DOWN, TL_FLOOR_PERIOD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER,
+        TL_WATER_MIN_SUN_DOWN, TL_WATER_MAX_OPTICAL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

@@ -381,9 +381,11 @@ static void bind_shadow(const tl_renderer *r, GLuint program)
 }
 
 /* The features that change how the hull is lit: the sun, the sky, the
- * water around it from below, its shadows. */
-static const unsigned MESH_FEATURES[4] = {TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL,
-                                          TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW};
+ * water around it from below, its shadows, the caustics on it. Each
+ * combination, with or without maps, is a program (TL_MESH_PROGRAMS). */
+static const unsigned MESH_FEATURES[TL_MESH_LIGHT_FEATURES] = {
+    TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL, TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW,
+    TL_FEATURE_CAUSTICS};
 
 int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err)
 {
@@ -399,7 +401,7 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     glDisable(GL_BLEND);
     unsigned features = 0;
     int variant = 0;
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < TL_MESH_LIGHT_FEATURES; i++)
         if (u->features & MESH_FEATURES[i]) {
             features |= MESH_FEATURES[i];
             variant |= 1 << i;
@@ -409,7 +411,7 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     for (int i = 0; i < u->object_count; i++) {
         const gpu_mesh *g = mesh_of(r, &u->object_pass[i]);
         if (u->object_pass[i].drawn && g && g->maps)
-            variant |= 1 << 4;
+            variant |= 1 << TL_MESH_LIGHT_FEATURES;
     }
     /* The sun's view does not move with a sample's offset: one map a frame. */
     if ((features & TL_FEATURE_BOAT_SHADOW) && !(reuse && r->shadow_fbo)) {
@@ -423,7 +425,7 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     if (!*program) {
         char defines[TL_DEFINES_SIZE];
         tl_renderer_defines(features | TL_FEATURE_BOAT, defines, sizeof defines);
-        if (variant & (1 << 4))
+        if (variant & (1 << TL_MESH_LIGHT_FEATURES))
             strncat(defines, "#define TL_MESH_MAPS\n", sizeof defines - strlen(defines) - 1);
         *program = tl_renderer_build_program(r, "mesh.vert", "mesh.frag", defines, err);
         if (!*program) {

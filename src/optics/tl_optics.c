@@ -45,3 +45,45 @@ double tl_optics_fog_depth(double density, double height, double y0, double ray_
     /* Clamp: beyond e^80 the fog is opaque anyway. */
     return at_start * dist * -expm1(-fmax(fmin(rise, 80.0), -80.0)) / rise;
 }
+
+void tl_optics_sun_in_water(const double sun[3], double n, double dir[3])
+{
+    double cos_i = fmax(sun[1], 0.0);
+    double sin_t = sqrt(fmax(0.0, 1.0 - cos_i * cos_i)) / n;
+    double horizontal = hypot(sun[0], sun[2]);
+    dir[0] = 0.0;
+    dir[1] = -1.0;
+    dir[2] = 0.0;
+    if (horizontal > 0.0) { /* light travels away from the sun, bent down */
+        dir[0] = -sun[0] / horizontal * sin_t;
+        dir[2] = -sun[2] / horizontal * sin_t;
+        dir[1] = -sqrt(1.0 - sin_t * sin_t);
+    }
+}
+
+/* The integral over [0, t] of exp(-c s) ds. */
+static double path_integral(double c, double t)
+{
+    double ct = fmin(c * t, TL_WATER_MAX_OPTICAL);
+    if (fabs(ct) < 1e-3)
+        return t * (1.0 - 0.5 * ct);
+    return (1.0 - exp(-ct)) / c;
+}
+
+void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3],
+                               double t, double out[3])
+{
+    const double g = TL_WATER_PHASE_G;
+    double mu = -(l->sun_water[0] * ray[0] + l->sun_water[1] * ray[1] + l->sun_water[2] * ray[2]);
+    double phase = (1.0 - g * g) / (4.0 * M_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
+    double sun_down = fmax(-l->sun_water[1], TL_WATER_MIN_SUN_DOWN);
+    double z = fmax(depth, 0.0);
+    for (int c = 0; c < 3; c++) {
+        double sigma = l->sigma[c];
+        double sun = l->sun_light[c] * l->sun_water_trans * exp(-sigma * z / sun_down);
+        double sky = l->sky_ambient[c] * exp(-sigma * z);
+        out[c] = l->scattering * (phase * sun * path_integral(sigma * (1.0 - ray[1] / sun_down), t) +
+                                  TL_WATER_SKY_SCATTER * sky *
+                                      path_integral(sigma * (1.0 - ray[1]), t));
+    }
+}

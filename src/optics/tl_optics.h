@@ -14,6 +14,11 @@
  * reflection. */
 double tl_optics_fresnel(double cos_i, double n1, double n2);
 
+/* The way sunlight travels under a flat surface of index n, from `sun`
+ * (unit, toward the sun): refracted, bent toward straight down; a sun
+ * below the horizon is taken at it. */
+void tl_optics_sun_in_water(const double sun[3], double n, double dir[3]);
+
 /* Half-angle of Snell's window seen from a medium of index n into air:
  * asin(1 / n) radians (48.6° for water). */
 double tl_optics_snell_window(double n);
@@ -24,6 +29,36 @@ double tl_optics_snell_window(double n);
  * distance"), else water.absorption + water.scattering. Never zero (the
  * shader holds the scattering albedo at 1 at most). */
 void tl_optics_water_extinction(const tl_water *w, double sigma[3]);
+
+/* The water body's light (shaders/water_light.glsl has the same). */
+/* The phase function's asymmetry: ocean particles scatter mostly forward. */
+#define TL_WATER_PHASE_G 0.75
+/* The sky's light from above scattered into a view: its hemisphere's
+ * share of the phase function, about a quarter. */
+#define TL_WATER_SKY_SCATTER 0.25
+/* The least |y| of the sun's way in the water the slant path is taken at
+ * (a sun at the horizon): the path stays finite. */
+#define TL_WATER_MIN_SUN_DOWN 0.1
+/* Optical depths past this are taken as this: e^-80 is nil in float. */
+#define TL_WATER_MAX_OPTICAL 80.0
+
+/* What lights the water body, as a frame's uniforms carry it. */
+typedef struct tl_water_light {
+    double sigma[3];        /* extinction per metre (tl_optics_water_extinction) */
+    double scattering;      /* per metre, grey */
+    double sun_water[3];    /* the sun's way in the water (tl_optics_sun_in_water) */
+    double sun_water_trans; /* the share of the sun that crossed the surface */
+    double sun_light[3];    /* the sun's irradiance across its beam above the water */
+    double sky_ambient[3];  /* the sky's light on a white surface facing up */
+} tl_water_light;
+
+/* The light scattered toward the eye along `ray` (unit, from the eye) from
+ * `depth` metres under the mean surface over its first `t` metres: single
+ * scattering of the sun's beam (Henyey-Greenstein) and of the sky's light,
+ * both dimmed by Beer-Lambert on their way down to where the ray is and
+ * on the way back along it. RGB radiance. */
+void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3],
+                               double t, double out[3]);
 
 /* Optical depth of the fog along a ray from height y0 (metres above the
  * mean water) with vertical direction component ray_y, over `dist` metres:

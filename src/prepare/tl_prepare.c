@@ -26,7 +26,8 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
     "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
     "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW",
-    "TL_FEATURE_BOAT_SHADOW", "TL_FEATURE_BOW_SPRAY"};
+    "TL_FEATURE_BOAT_SHADOW", "TL_FEATURE_BOW_SPRAY",
+    "TL_FEATURE_CAUSTICS",    "TL_FEATURE_SEA_FLOOR"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "giant wave",
                                                              "boat",
@@ -46,7 +47,9 @@ static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "spray",
                                                              "crest glow",
                                                              "boat shadow",
-                                                             "bow spray"};
+                                                             "bow spray",
+                                                             "caustics",
+                                                             "sea floor"};
 
 const char *tl_feature_define(int index)
 {
@@ -87,9 +90,14 @@ static void to_float3(const double in[3], float out[3])
 
 /* v reduced to [0, 65536): world texture coordinates that stay precise as
  * floats (8 mm steps) however far the scene is from the origin. */
+static double wrap_period(double v, double period)
+{
+    return v - period * floor(v / period);
+}
+
 static double wrap65536(double v)
 {
-    return v - 65536.0 * floor(v / 65536.0);
+    return wrap_period(v, 65536.0);
 }
 
 /* How much the crest breaks, for the foam trail: 0 while the surface is
@@ -613,16 +621,20 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     double sun[3];
     tl_scene_sun_direction(&s->sun, sun);
     double n = s->water.ior, cos_i = fmax(sun[1], 0.0);
-    double sin_t = sqrt(fmax(0.0, 1.0 - cos_i * cos_i)) / n;
-    double horizontal = hypot(sun[0], sun[2]);
-    double dir[3] = {0.0, -1.0, 0.0};
-    if (horizontal > 0.0) { /* light travels away from the sun, bent down */
-        dir[0] = -sun[0] / horizontal * sin_t;
-        dir[2] = -sun[2] / horizontal * sin_t;
-        dir[1] = -sqrt(1.0 - sin_t * sin_t);
-    }
+    double dir[3];
+    tl_optics_sun_in_water(sun, n, dir);
     to_float3(dir, u->sun_water);
     u->sun_water_trans = sun[1] > 0.0 ? (float)(1.0 - tl_optics_fresnel(cos_i, 1.0, n)) : 0.0f;
+    if (sun[1] > 0.0 && s->underwater.caustics > 0.0) {
+        u->features |= TL_FEATURE_CAUSTICS;
+        u->caustics = (float)s->underwater.caustics;
+    }
+    if (s->ocean.floor_depth > 0.0) {
+        u->features |= TL_FEATURE_SEA_FLOOR;
+        u->floor_depth = (float)s->ocean.floor_depth;
+        u->floor_offset[0] = (float)wrap_period(s->camera.position[0], TL_FLOOR_PERIOD);
+        u->floor_offset[1] = (float)wrap_period(s->camera.position[2], TL_FLOOR_PERIOD);
+    }
 }
 
 double tl_prepare_sky_altitude(const tl_scene *s)

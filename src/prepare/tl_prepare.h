@@ -46,14 +46,21 @@ typedef enum tl_feature {
         1u << 17, /* giant.scatter > 0 with the sun up: light through the crest */
     TL_FEATURE_BOAT_SHADOW = 1u << 18, /* boat.shadows with the sun up: its shadow map */
     TL_FEATURE_BOW_SPRAY = 1u << 19,   /* the bow meets rising water: its spray (not the giant's) */
+    TL_FEATURE_CAUSTICS = 1u << 20,    /* under water, the sun up, underwater.caustics > 0 */
+    TL_FEATURE_SEA_FLOOR = 1u << 21,   /* under water with ocean.floor_depth > 0 */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 20
+#define TL_FEATURE_COUNT 22
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
  * camera is at the surface (TL_FEATURE_WATERLINE), metres. */
 #define TL_LENS_DISTANCE 0.25
+
+/* The sea floor's sand repeats every this many metres (a power of two:
+ * each of its noises' cells divides it), so that its coordinates, the
+ * camera's position wrapped by it, keep float's precision far out. */
+#define TL_FLOOR_PERIOD 1024
 
 /* The #define name of feature bit `index` ("TL_FEATURE_SUN_DISC"), and the
  * words `still -v` and `render -v` print for it ("sun disc"). */
@@ -246,6 +253,9 @@ typedef struct tl_frame_uniforms {
     float lens;            /* TL_LENS_DISTANCE */
     float sun_water[3];    /* the direction sunlight travels in the water */
     float sun_water_trans; /* the share of it that crosses a flat surface */
+    float caustics;        /* underwater.caustics (TL_FEATURE_CAUSTICS) */
+    float floor_depth;     /* ocean.floor_depth (TL_FEATURE_SEA_FLOOR) */
+    float floor_offset[2]; /* the camera's x z wrapped every TL_FLOOR_PERIOD */
 
     /* Fog (TL_FEATURE_FOG): density per metre at the water, height scale. */
     float fog[2];

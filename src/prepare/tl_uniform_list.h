@@ -110,6 +110,9 @@
     X(FLOAT, lens, 0, TL_FEATURE_UNDERWATER, "the lens plane's distance ahead of the camera") \
     X(VEC3, sun_water, 0, TL_FEATURE_UNDERWATER, "the direction sunlight travels in the water") \
     X(FLOAT, sun_water_trans, 0, TL_FEATURE_UNDERWATER, "the share of it that crossed the surface") \
+    X(FLOAT, caustics, 0, TL_FEATURE_CAUSTICS, "underwater.caustics: their strength") \
+    X(FLOAT, floor_depth, 0, TL_FEATURE_SEA_FLOOR, "metres from the mean surface down to the sea floor") \
+    X(VEC2, floor_offset, 0, TL_FEATURE_SEA_FLOOR, "camera x z wrapped every TL_FLOOR_PERIOD m: the sand's coordinates") \
     X(FLOAT, sky_scale, 0, TL_FEATURE_SKY_PHYSICAL, "the sun's illuminance above the air") \
     X(VEC3, sun_light, 0, TL_FEATURE_SKY_PHYSICAL, "its light at the camera: illuminance x transmittance") \
     X(FLOAT, sun_cos_radius, 0, TL_FEATURE_SKY_PHYSICAL, "cos of the disc's angular radius") \

@@ -75,6 +75,8 @@ void tl_scene_defaults(tl_scene *s)
     s->fog.color[2] = 0.75;
     s->fog.height = 100.0;
     s->underwater.mode = TL_UNDERWATER_AUTO;
+    s->underwater.caustics = 1.0;
+    s->ocean.floor_depth = 0.0;
 
     s->giant.enabled = false;
     s->giant.height = 12.0;

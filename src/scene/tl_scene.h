@@ -38,6 +38,7 @@ typedef struct tl_ocean {
     double weight_ratio;     /* per octave amplitude weight ratio (0.8) */
     double direction_step;   /* radians between octave directions (1232.399963) */
     double radial_phase;     /* phase per metre from the origin (0.1) */
+    double floor_depth;      /* metres to a sandy sea floor; 0: none, the deep sea (0) */
 } tl_ocean;
 
 typedef struct tl_water {
@@ -88,6 +89,7 @@ typedef enum tl_underwater_mode {
 
 typedef struct tl_underwater {
     tl_underwater_mode mode;
+    double caustics; /* the caustics' strength: 0 off, 1 physical (1) */
 } tl_underwater;
 
 /* The scripted giant wave (seed 003, "North Star"): one Gerstner crest

@@ -81,6 +81,8 @@ static const tl_channel channels[] = {
          "radians between octave directions"),
     REAL("ocean.radial_phase", 1, TL_UNIT_NONE, -1e3, 1e3, ocean.radial_phase,
          "phase per metre of distance from the origin"),
+    REAL("ocean.floor_depth", 1, TL_UNIT_LENGTH, 0.0, 1e4, ocean.floor_depth,
+         "depth of a sandy sea floor under the mean surface; 0 = none (deep sea)"),
 
     REAL("water.scatter_color", 3, TL_UNIT_NONE, 0.0, 1e3, water.scatter_color,
          "linear RGB of light scattered in the water"),
@@ -116,6 +118,9 @@ static const tl_channel channels[] = {
     {"underwater.mode", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, 2, true,
      offsetof(tl_scene, underwater.mode), underwater_names,
      "auto: under water when the camera is below the surface; on; off"},
+    REAL("underwater.caustics", 1, TL_UNIT_NONE, 0.0, 10.0, underwater.caustics,
+         "strength of the light the waves focus under water; 0 = off"),
+
 
     {"giant.enabled", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, giant.enabled),
      NULL, "the giant wave exists"},

@@ -28,6 +28,19 @@ void tl_waves_init(tl_waves *w, const tl_ocean *ocean)
 
 double tl_waves_value(const tl_waves *w, double x, double z, double t, int octaves)
 {
+    return tl_waves_value_lod(w, x, z, t, octaves, 0.0);
+}
+
+double tl_waves_detail(double frequency, double footprint)
+{
+    double x = (2.0 * M_PI / (frequency * footprint) - 2.0) / 2.0;
+    x = fmin(fmax(x, 0.0), 1.0);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+double tl_waves_value_lod(const tl_waves *w, double x, double z, double t, int octaves,
+                          double footprint)
+{
     if (octaves > w->count)
         octaves = w->count;
     /* The radial term uses the unwarped position, as in the reference. */
@@ -35,13 +48,21 @@ double tl_waves_value(const tl_waves *w, double x, double z, double t, int octav
     double sum = 0.0, weights = 0.0;
     for (int i = 0; i < octaves; i++) {
         const tl_wave_octave *o = &w->octave[i];
+        double detail = footprint > 0.0 ? tl_waves_detail(o->frequency, footprint) : 1.0;
+        if (detail <= 0.0) { /* this octave and every finer one: their mean */
+            for (int k = i; k < octaves; k++) {
+                sum += TL_WAVE_MEAN * w->octave[k].weight;
+                weights += w->octave[k].weight;
+            }
+            break;
+        }
         double phase = o->frequency * (o->dir_x * x + o->dir_z * z) + o->speed * t + radial;
         double wave = exp(sin(phase) - 1.0);
         double slope = wave * cos(phase);
         /* Derivative drag: later octaves ride on the crests of earlier ones. */
-        x -= o->dir_x * slope * o->weight * w->drag;
-        z -= o->dir_z * slope * o->weight * w->drag;
-        sum += wave * o->weight;
+        x -= o->dir_x * slope * o->weight * w->drag * detail;
+        z -= o->dir_z * slope * o->weight * w->drag * detail;
+        sum += (detail < 1.0 ? TL_WAVE_MEAN + (wave - TL_WAVE_MEAN) * detail : wave) * o->weight;
         weights += o->weight;
     }
     return weights > 0.0 ? sum / weights : 1.0;

@@ -37,6 +37,22 @@ void tl_waves_init(tl_waves *w, const tl_ocean *ocean);
  * first `octaves` octaves: sum(weight * exp(sin(phase) - 1)) / sum(weight). */
 double tl_waves_value(const tl_waves *w, double x, double z, double t, int octaves);
 
+/* The mean of one octave, exp(sin x - 1) over a period (I0(1) / e): what
+ * an octave too fine for a footprint averages to (shaders/waves.glsl has
+ * the same). */
+#define TL_WAVE_MEAN 0.4657596
+
+/* How much of an octave of `frequency` (rad/m) a footprint of `footprint`
+ * metres resolves: 1 while its wavelength spans four footprints, 0 at two
+ * (waves_detail). */
+double tl_waves_detail(double frequency, double footprint);
+
+/* tl_waves_value with the shaders' level of detail (waves_value under
+ * TL_FEATURE_LOD): octaves finer than `footprint` fade to their mean and
+ * their drag to nothing; 0 is tl_waves_value. */
+double tl_waves_value_lod(const tl_waves *w, double x, double z, double t, int octaves,
+                          double footprint);
+
 /* World height of the surface: (value - 1) * depth, in [-depth, 0]. */
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves);
 

@@ -1,0 +1,47 @@
+// Caustics (TL_FEATURE_CAUSTICS): the sunlight the moving surface focuses
+// under the water, from the surface's own normals and the refracted sun.
+// src/waves/tl_caustics.h derives the estimate; tl_caustics.c is its
+// mirror in double (test_caustics). Needs waves.glsl.
+
+// The refracted sun's horizontal run per metre down, leaving the surface
+// at camera-relative x; the waves at the level of detail of `footprint`.
+vec2 caustic_slant(vec2 x, float footprint)
+{
+    vec2 grad;
+    float slope_var;
+    waves_value_grad(x, TL_NORMAL_OCTAVES, footprint, grad, slope_var);
+    vec3 n = normalize(vec3(-grad.x * u_depth, 1.0, -grad.y * u_depth));
+    vec3 r = refract(-u_sun_dir, n, 1.0 / u_water_ior);
+    if (r == vec3(0.0))
+        r = vec3(0.0, -1.0, 0.0);
+    return r.xz / -min(r.y, -TL_CAUSTIC_MIN_DOWN);
+}
+
+// The irradiance at camera-relative p, `depth` metres under the mean
+// surface, in units of a flat sea's: 1 / |det J| of the map from the
+// surface to that depth, rounded off at TL_CAUSTIC_PEAK. `footprint`: the
+// pixel's width there (metres).
+float caustic_focus(vec2 p, float depth, float footprint)
+{
+    if (depth <= 0.0 || u_sun_dir.y <= 0.0)
+        return 1.0;
+    float e = max(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_BLUR, footprint);
+    vec2 x0 = p - (depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN)) * u_sun_water.xz;
+    // One fixed-point step toward the surface point whose bent ray lands
+    // here (tl_caustics.c says why).
+    x0 = p - depth * caustic_slant(x0, e);
+    vec2 a = caustic_slant(x0, e);
+    float s = depth / e;
+    vec2 ax = (caustic_slant(x0 + vec2(e, 0.0), e) - a) * s;
+    vec2 az = (caustic_slant(x0 + vec2(0.0, e), e) - a) * s;
+    float det = (1.0 + ax.x) * (1.0 + az.y) - az.x * ax.y;
+    const float k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK);
+    return sqrt((1.0 + k) / (det * det + k));
+}
+
+// The caustics' share of the sun at that point: the focus, by
+// underwater.caustics (0: the flat sea's 1).
+float caustic_light(vec2 p, float depth, float footprint)
+{
+    return max(mix(1.0, caustic_focus(p, depth, footprint), u_caustics), 0.0);
+}

@@ -1,0 +1,68 @@
+// The sea floor (TL_FEATURE_SEA_FLOOR): a plane of sand u_floor_depth
+// metres under the mean surface, with a procedural relief (low dunes and
+// the ripples the waves comb into it) and a mottled colour, lit by the
+// sun's beam (through the caustics, with TL_FEATURE_CAUSTICS) and the
+// sky's light as they reach its depth. Needs foam.glsl (its hash) and
+// water_light.glsl.
+
+// Wet sand's reflectance (linear), and the wavelength of its ripples.
+const vec3 TL_FLOOR_SAND = vec3(0.42, 0.37, 0.28);
+const float TL_FLOOR_RIPPLE = 0.16;
+
+// Value noise with cells of `cell` metres that repeats every
+// TL_FLOOR_PERIOD metres (each cell size divides it), at world p wrapped
+// by the same period.
+float floor_noise(vec2 p, float cell)
+{
+    vec2 q = p / cell;
+    vec2 i = floor(q), f = q - i;
+    f = f * f * (3.0 - 2.0 * f);
+    int n = int(float(TL_FLOOR_PERIOD) / cell);
+    ivec2 c = ((ivec2(i) % n) + n) % n;
+    ivec2 c1 = (c + 1) % n;
+    float a = foam_hash(c), b = foam_hash(ivec2(c1.x, c.y));
+    float d = foam_hash(ivec2(c.x, c1.y)), e = foam_hash(c1);
+    return mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
+}
+
+// The sand's height (metres) at world p, its ripples faded where a pixel
+// covers `footprint` metres (they would only alias).
+float floor_relief(vec2 p, float footprint)
+{
+    float dunes = 0.25 * floor_noise(p, 8.0) + 0.08 * floor_noise(p + 3.7, 2.0);
+    // Ripples across the swell's way, their crests bent, forked and
+    // broken by noise.
+    float bend = 0.6 * floor_noise(p, 2.0) + 0.3 * floor_noise(p, 0.5);
+    float phase = 2.0 * TL_PI * (p.y + 0.3 * p.x) / TL_FLOOR_RIPPLE + 9.0 * bend;
+    float ripples = 0.006 * smoothstep(0.25, 0.7, floor_noise(p + 11.0, 1.0)) *
+                    (sin(phase) + 0.3 * sin(2.0 * phase));
+    float resolved = 1.0 - smoothstep(0.15, 0.5, footprint / TL_FLOOR_RIPPLE);
+    return dunes + ripples * resolved;
+}
+
+// The sand's radiance at camera-relative p seen along `ray` from `dist`
+// metres; `lit_by_caustics`: false where the floor is only seen mirrored
+// in the surface (its caustics would cost more than they show there).
+vec3 floor_color(vec3 p, vec3 ray, float dist, bool lit_by_caustics)
+{
+    vec2 world = p.xz + u_floor_offset;
+    float footprint = dist * 2.0 * u_tan_half_vfov / u_resolution.y;
+    float e = max(footprint, 0.01);
+    float h = floor_relief(world, footprint);
+    vec2 slope = vec2(floor_relief(world + vec2(e, 0.0), footprint) - h,
+                      floor_relief(world + vec2(0.0, e), footprint) - h) /
+                 e;
+    vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
+    // Pale sand, mottled, with darker patches of weed and shell.
+    float mottle = floor_noise(world, 0.5) * 0.6 + floor_noise(world, 0.125) * 0.4;
+    float patches = smoothstep(0.62, 0.8, floor_noise(world + 40.0, 6.0));
+    vec3 albedo = TL_FLOOR_SAND * (0.75 + 0.5 * mottle) * (1.0 - 0.55 * patches);
+    float depth = u_floor_depth;
+    float sun = max(dot(n, -u_sun_water), 0.0);
+#ifdef TL_FEATURE_CAUSTICS
+    if (lit_by_caustics)
+        sun *= caustic_light(p.xz, depth, footprint);
+#endif
+    vec3 light = water_sun_at(depth) * sun / TL_PI + water_sky_at(depth) * (0.5 + 0.5 * n.y);
+    return albedo * light;
+}

@@ -1,0 +1,62 @@
+// The light in the water body (TL_FEATURE_UNDERWATER): the sun's beam and
+// the sky's light from above, each dimmed by Beer-Lambert on its way down
+// (so the sea darkens and blues with depth), and what the water scatters
+// toward the eye along a ray. tl_optics_water_inscatter (src/optics) is
+// the same in double; test_underwater probes the two (mode 20). Needs
+// sky.glsl.
+
+// The share of a collision that scatters rather than absorbs (grey).
+vec3 water_albedo()
+{
+    return min(vec3(u_water_scattering) / u_water_sigma, vec3(1.0));
+}
+
+// The sun's irradiance across its beam `depth` metres under the mean
+// surface: what crossed a flat surface, dimmed along its slant path.
+vec3 water_sun_at(float depth)
+{
+    return sky_sun_light() * u_sun_water_trans *
+           exp(-u_water_sigma * (max(depth, 0.0) / max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN)));
+}
+
+// The sky's light from above at that depth, as the radiance of an even
+// sky: the diffuse light taken straight down (its mean cosine 1).
+vec3 water_sky_at(float depth)
+{
+    return sky_ambient() * exp(-u_water_sigma * max(depth, 0.0));
+}
+
+// The water's phase function toward the eye: Henyey-Greenstein, g = 0.75
+// (the strong forward lobe of ocean particles).
+float water_phase(float mu)
+{
+    const float g = TL_WATER_PHASE_G;
+    return (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
+}
+
+// The integral over [0, t] of exp(-c s) ds, per channel: (1 - e^-ct) / c,
+// t where c t is small (looking up as steeply as the light comes down).
+vec3 water_path_integral(vec3 c, float t)
+{
+    vec3 ct = min(c * t, vec3(TL_WATER_MAX_OPTICAL));
+    vec3 exact = (1.0 - exp(-ct)) / max(abs(c), vec3(1e-12)) * sign(c);
+    vec3 series = t * (1.0 - 0.5 * ct);
+    return mix(exact, series, lessThan(abs(ct), vec3(1e-3)));
+}
+
+// The light scattered toward the eye along a ray (unit, from the eye)
+// starting `depth` metres under the mean surface, over its first t metres
+// (TL_SKY_DEPTH or more for the depths): single scattering of the sun's
+// beam (phase function) and of the sky's light (evenly), each at the depth
+// the ray has reached, and dimmed on the way back to the eye.
+vec3 water_inscatter(float depth, vec3 ray, float t)
+{
+    vec3 sigma = u_water_sigma;
+    float sun_down = max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN);
+    // The light falls by exp(-sigma z / cos) as the ray climbs z = -ray.y s.
+    vec3 sun = u_water_scattering * water_phase(dot(u_sun_water, -ray)) * water_sun_at(depth) *
+               water_path_integral(sigma * (1.0 - ray.y / sun_down), t);
+    vec3 sky = u_water_scattering * TL_WATER_SKY_SCATTER * water_sky_at(depth) *
+               water_path_integral(sigma * (1.0 - ray.y), t);
+    return sun + sky;
+}

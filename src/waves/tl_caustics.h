@@ -1,0 +1,55 @@
+/* tl_caustics: the sunlight the moving surface focuses under the water, on
+ * the CPU in double; shaders/caustics.glsl is the same estimate, and
+ * test_caustics compares the two.
+ *
+ * Sunlight reaching a point at `depth` under the mean surface crossed the
+ * surface near x0, where the straight refracted ray from the sun starts.
+ * Each surface point x sends its refracted ray to X(x) = x + depth · a(x),
+ * a(x) the ray's horizontal run per metre down. Light that crossed an
+ * area dA of surface lands on |det J| dA of the plane at that depth,
+ * J = dX/dx = I + depth · da/dx, so the irradiance there is the flat
+ * surface's over |det J|: bright where the waves focus (det near 0),
+ * dim where they spread the light. da/dx is a finite difference over a
+ * step that grows with depth (TL_CAUSTIC_BLUR), and never under the
+ * pixel's footprint; the
+ * waves themselves are taken at that footprint's level of detail, so
+ * nothing finer than the step aliases into the pattern. */
+#ifndef TL_CAUSTICS_H
+#define TL_CAUSTICS_H
+
+#include "waves/tl_waves.h"
+
+/* The finite difference's step at the surface, metres: fine enough for
+ * the ripples that make the brightest lines near the surface. */
+#define TL_CAUSTIC_STEP 0.03
+/* Its growth per metre of depth. The sun's disc alone would blur by its
+ * angular diameter in the water (0.007 per metre); the estimate follows
+ * one ray back to the surface, and below the ripples' focal depths each
+ * point is lit through several, so the step takes out the waves that
+ * focus above the point: with this growth the light is conserved on
+ * average at every depth from 0.5 to 40 m (test_caustics). */
+#define TL_CAUSTIC_BLUR 0.06
+/* The brightest focus, in flat surface irradiances: where det J passes
+ * through 0 the estimate would be infinite; focus = sqrt((1 + k) /
+ * (det² + k)), k = 1 / PEAK², rounds it off and keeps a flat sea at
+ * exactly 1. */
+#define TL_CAUSTIC_PEAK 6.0
+/* The steepest a refracted ray's run is taken (its |y| at least this):
+ * a sun at the horizon through a tilted facet. */
+#define TL_CAUSTIC_MIN_DOWN 0.2
+
+typedef struct tl_caustic_light {
+    double sun_dir[3];   /* unit, toward the sun */
+    double sun_water[3]; /* unit, the way sunlight travels under a flat surface */
+    double ior;          /* the water's refractive index */
+} tl_caustic_light;
+
+/* The focus at world (x, z), `depth` metres under the mean surface (y = 0),
+ * at time t, from the ocean's first `octaves` octaves: the irradiance in
+ * units of a flat sea's, in [0, sqrt(1 + PEAK²)]; 1 at depth 0 or with
+ * the sun down.
+ * `footprint`: the pixel's width there (metres, 0 for none). */
+double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, double z,
+                        double depth, double t, int octaves, double footprint);
+
+#endif
