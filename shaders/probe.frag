@@ -42,6 +42,9 @@
 //           (tl_mesh_normal_map)
 //   mode 18: the bow's spray density at camera-relative (x, z) and height
 //           y, the input's third float       (tl_bow_spray_density)
+//   mode 20: the light the water scatters toward the eye along a ray from
+//           x metres down, its y component the input's y, its azimuth z
+//           radians from +x toward +z, over w metres (tl_optics_water_inscatter)
 //   mode 19: the caustics' focus at camera-relative (x, z), the input's
 //           third float metres down, its fourth the footprint
 //                                            (tl_caustic_focus)
@@ -66,6 +69,7 @@
 #include "surface.glsl"
 #ifdef TL_FEATURE_UNDERWATER
 #include "lens.glsl"
+#include "water_light.glsl"
 #endif
 #ifdef TL_FEATURE_WAKE
 #include "wake.glsl"
@@ -98,6 +102,10 @@ void main()
                                              u_tan_half_vfov) * u_cam_right +
                              (p.y * u_tan_half_vfov) * u_cam_up);
         result.x = underwater_lens_gap(ray);
+    } else if (u_probe_mode == 20) {
+        float level = sqrt(max(1.0 - input4.y * input4.y, 0.0));
+        vec3 ray = vec3(level * cos(input4.z), input4.y, level * sin(input4.z));
+        result.xyz = water_inscatter(input4.x, ray, input4.w);
     }
 #endif
 #ifdef TL_FEATURE_WAKE

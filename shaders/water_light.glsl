@@ -53,6 +53,10 @@ vec3 water_inscatter(float depth, vec3 ray, float t)
 {
     vec3 sigma = u_water_sigma;
     float sun_down = max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN);
+    // A ray looking up leaves the water by the mean surface: the light
+    // grows toward it, and past it there is no water to scatter.
+    if (ray.y > 0.0)
+        t = min(t, max(depth, 0.0) / ray.y);
     // The light falls by exp(-sigma z / cos) as the ray climbs z = -ray.y s.
     vec3 sun = u_water_scattering * water_phase(dot(u_sun_water, -ray)) * water_sun_at(depth) *
                water_path_integral(sigma * (1.0 - ray.y / sun_down), t);

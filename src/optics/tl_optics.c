@@ -78,6 +78,8 @@ void tl_optics_water_inscatter(const tl_water_light *l, double depth, const doub
     double phase = (1.0 - g * g) / (4.0 * M_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
     double sun_down = fmax(-l->sun_water[1], TL_WATER_MIN_SUN_DOWN);
     double z = fmax(depth, 0.0);
+    if (ray[1] > 0.0) /* it leaves the water by the mean surface */
+        t = fmin(t, z / ray[1]);
     for (int c = 0; c < 3; c++) {
         double sigma = l->sigma[c];
         double sun = l->sun_light[c] * l->sun_water_trans * exp(-sigma * z / sun_down);

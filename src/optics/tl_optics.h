@@ -56,7 +56,8 @@ typedef struct tl_water_light {
  * `depth` metres under the mean surface over its first `t` metres: single
  * scattering of the sun's beam (Henyey-Greenstein) and of the sky's light,
  * both dimmed by Beer-Lambert on their way down to where the ray is and
- * on the way back along it. RGB radiance. */
+ * on the way back along it; a ray that looks up ends at the mean surface.
+ * RGB radiance. */
 void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3],
                                double t, double out[3]);
 
