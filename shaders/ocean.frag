@@ -39,8 +39,11 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #endif
 #ifdef TL_FEATURE_UNDERWATER
 #include "water_light.glsl"
-#ifdef TL_FEATURE_CAUSTICS
+#if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_SHAFTS)
 #include "caustics.glsl"
+#endif
+#ifdef TL_FEATURE_SHAFTS
+#include "shafts.glsl"
 #endif
 #ifdef TL_FEATURE_SEA_FLOOR
 #include "sea_floor.glsl"

@@ -63,8 +63,13 @@ vec3 trace_underwater(vec3 ray, out float dist)
 {
     vec3 eye = vec3(0.0, u_cam_height, 0.0);
     float t = underwater_march(ray, underwater_start(ray));
-    if (t < 0.0)
-        return underwater_below(eye, ray, true, dist);
+    if (t < 0.0) {
+        vec3 below = underwater_below(eye, ray, true, dist);
+#ifdef TL_FEATURE_SHAFTS
+        below = max(below + water_shafts(ray, dist), vec3(0.0));
+#endif
+        return below;
+    }
 #ifdef TL_FEATURE_POLISH
     t = surface_polish(ray, t);
 #endif
@@ -124,5 +129,11 @@ vec3 trace_underwater(vec3 ray, out float dist)
     surface = mix(surface, (0.5 - 0.3 * thickness) * foam_daylight(sunlit), foam) +
               foam_bubbles(aerated, u_scatter_color, sunlit);
 #endif
-    return surface * optics_water_transmittance(t) + water_inscatter(max(-u_cam_height, 0.0), ray, t);
+    vec3 color = surface * optics_water_transmittance(t) + water_inscatter(max(-u_cam_height, 0.0), ray, t);
+#ifdef TL_FEATURE_SHAFTS
+    // The shafts take light from some samples (focus < 1) and give it to
+    // others: a dim pixel's share cannot go below nothing.
+    color = max(color + water_shafts(ray, t), vec3(0.0));
+#endif
+    return color;
 }

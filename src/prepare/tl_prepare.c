@@ -27,7 +27,8 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
     "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW",
     "TL_FEATURE_BOAT_SHADOW", "TL_FEATURE_BOW_SPRAY",
-    "TL_FEATURE_CAUSTICS",    "TL_FEATURE_SEA_FLOOR"};
+    "TL_FEATURE_CAUSTICS",    "TL_FEATURE_SEA_FLOOR",
+    "TL_FEATURE_SHAFTS"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "giant wave",
                                                              "boat",
@@ -49,7 +50,8 @@ static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "boat shadow",
                                                              "bow spray",
                                                              "caustics",
-                                                             "sea floor"};
+                                                             "sea floor",
+                                                             "light shafts"};
 
 const char *tl_feature_define(int index)
 {
@@ -628,6 +630,11 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     if (sun[1] > 0.0 && s->underwater.caustics > 0.0) {
         u->features |= TL_FEATURE_CAUSTICS;
         u->caustics = (float)s->underwater.caustics;
+    }
+    if (sun[1] > 0.0 && s->underwater.shafts > 0.0 && s->quality.shaft_steps > 0) {
+        u->features |= TL_FEATURE_SHAFTS;
+        u->shafts = (float)s->underwater.shafts;
+        u->shaft_steps = s->quality.shaft_steps;
     }
     if (s->ocean.floor_depth > 0.0) {
         u->features |= TL_FEATURE_SEA_FLOOR;

@@ -48,9 +48,10 @@ typedef enum tl_feature {
     TL_FEATURE_BOW_SPRAY = 1u << 19,   /* the bow meets rising water: its spray (not the giant's) */
     TL_FEATURE_CAUSTICS = 1u << 20,    /* under water, the sun up, underwater.caustics > 0 */
     TL_FEATURE_SEA_FLOOR = 1u << 21,   /* under water with ocean.floor_depth > 0 */
+    TL_FEATURE_SHAFTS = 1u << 22, /* under water, the sun up, underwater.shafts, shaft steps > 0 */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 22
+#define TL_FEATURE_COUNT 23
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -254,6 +255,8 @@ typedef struct tl_frame_uniforms {
     float sun_water[3];    /* the direction sunlight travels in the water */
     float sun_water_trans; /* the share of it that crosses a flat surface */
     float caustics;        /* underwater.caustics (TL_FEATURE_CAUSTICS) */
+    float shafts;          /* underwater.shafts (TL_FEATURE_SHAFTS) */
+    int shaft_steps;       /* quality.shaft_steps (TL_FEATURE_SHAFTS) */
     float floor_depth;     /* ocean.floor_depth (TL_FEATURE_SEA_FLOOR) */
     float floor_offset[2]; /* the camera's x z wrapped every TL_FLOOR_PERIOD */
 

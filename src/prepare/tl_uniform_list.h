@@ -111,6 +111,8 @@
     X(VEC3, sun_water, 0, TL_FEATURE_UNDERWATER, "the direction sunlight travels in the water") \
     X(FLOAT, sun_water_trans, 0, TL_FEATURE_UNDERWATER, "the share of it that crossed the surface") \
     X(FLOAT, caustics, 0, TL_FEATURE_CAUSTICS, "underwater.caustics: their strength") \
+    X(FLOAT, shafts, 0, TL_FEATURE_SHAFTS, "underwater.shafts: their strength") \
+    X(INT, shaft_steps, 0, TL_FEATURE_SHAFTS, "quality.shaft_steps: their samples along a ray") \
     X(FLOAT, floor_depth, 0, TL_FEATURE_SEA_FLOOR, "metres from the mean surface down to the sea floor") \
     X(VEC2, floor_offset, 0, TL_FEATURE_SEA_FLOOR, "camera x z wrapped every TL_FLOOR_PERIOD m: the sand's coordinates") \
     X(FLOAT, sky_scale, 0, TL_FEATURE_SKY_PHYSICAL, "the sun's illuminance above the air") \

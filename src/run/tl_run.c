@@ -21,6 +21,7 @@ int tl_run_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
         {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
         {"tideline/spray_step", TL_META_DOUBLE, NULL, q->spray_step, 0},
+        {"tideline/shaft_steps", TL_META_INT, NULL, 0, q->shaft_steps},
         {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
         {"tideline/polish", TL_META_INT, NULL, 0, q->polish},
         {"tideline/lod", TL_META_INT, NULL, 0, q->lod},

@@ -76,6 +76,7 @@ void tl_scene_defaults(tl_scene *s)
     s->fog.height = 100.0;
     s->underwater.mode = TL_UNDERWATER_AUTO;
     s->underwater.caustics = 1.0;
+    s->underwater.shafts = 1.0;
     s->ocean.floor_depth = 0.0;
 
     s->giant.enabled = false;

@@ -90,6 +90,7 @@ typedef enum tl_underwater_mode {
 typedef struct tl_underwater {
     tl_underwater_mode mode;
     double caustics; /* the caustics' strength: 0 off, 1 physical (1) */
+    double shafts;   /* the light shafts' strength: 0 off, 1 physical (1) */
 } tl_underwater;
 
 /* The scripted giant wave (seed 003, "North Star"): one Gerstner crest

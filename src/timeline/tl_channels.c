@@ -120,6 +120,8 @@ static const tl_channel channels[] = {
      "auto: under water when the camera is below the surface; on; off"},
     REAL("underwater.caustics", 1, TL_UNIT_NONE, 0.0, 10.0, underwater.caustics,
          "strength of the light the waves focus under water; 0 = off"),
+    REAL("underwater.shafts", 1, TL_UNIT_NONE, 0.0, 10.0, underwater.shafts,
+         "strength of the light shafts the waves cast in the water; 0 = off"),
 
 
     {"giant.enabled", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, giant.enabled),
@@ -223,6 +225,9 @@ static const tl_channel channels[] = {
     {"quality.spray_step", TL_CH_REAL, 1, TL_UNIT_LENGTH, 0.1, 10.0, false,
      offsetof(tl_scene, quality.spray_step), NULL,
      "metres of a ray in the giant wave's spray per step of its march (16 to 64 steps)"},
+    {"quality.shaft_steps", TL_CH_INT, 1, TL_UNIT_NONE, 0, 256, false,
+     offsetof(tl_scene, quality.shaft_steps), NULL,
+     "samples of the light shafts along a ray under water (0: none)"},
     {"quality.hit_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,
      offsetof(tl_scene, quality.hit_epsilon), NULL, "distance that counts as a hit"},
     {"quality.normal_epsilon", TL_CH_REAL, 1, TL_UNIT_LENGTH, 1e-6, 1.0, false,

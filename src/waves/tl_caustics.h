@@ -38,6 +38,16 @@
  * a sun at the horizon through a tilted facet. */
 #define TL_CAUSTIC_MIN_DOWN 0.2
 
+/* The light shafts (shaders/shafts.glsl): how far along a view ray they
+ * are sampled, metres (beyond, at the steps a frame can afford, they
+ * came out as noise), and the least footprint their focus is
+ * taken at (a shaft shows only the waves' coarse bundles). */
+#define TL_SHAFT_RANGE     20.0
+#define TL_SHAFT_FOOTPRINT 0.3
+/* ... and at least this share of the width a sample's length of ray
+ * sweeps across them. */
+#define TL_SHAFT_SMOOTH 0.35
+
 typedef struct tl_caustic_light {
     double sun_dir[3];   /* unit, toward the sun */
     double sun_water[3]; /* unit, the way sunlight travels under a flat surface */

@@ -1,0 +1,48 @@
+// Light shafts (TL_FEATURE_SHAFTS): the sun's beam under the moving
+// surface is not even but bundled by the waves (caustics.glsl), and the
+// water scatters those bundles toward the eye as rays that fan out from
+// the sun. Single scattering with the water's phase function, marched
+// along the view ray in u_shaft_steps jittered samples over at most
+// TL_SHAFT_RANGE metres. It adds only the bundles' departure from the
+// even beam (focus - 1): water_inscatter has the even beam's light
+// exactly, so with the shafts off the frame is as without them, and they
+// leave the mean brightness as it was.
+
+// Where in its ds a pixel's samples sit: a 4 x 4 ordered dither (Bayer),
+// so that any 4 x 4 block of pixels holds every offset once and the
+// display's pixel filter averages neighbours into a finer march; a hash
+// (white noise) left a grain no filter takes out.
+float shaft_offset()
+{
+    const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
+    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
+    return (float(bayer[p.y * 4 + p.x]) + 0.5) / 16.0;
+}
+
+// The light the shafts add along `ray` (unit, from the eye) over its
+// first `dist` metres.
+vec3 water_shafts(vec3 ray, float dist)
+{
+    float range = min(dist, TL_SHAFT_RANGE);
+    float ds = range / float(u_shaft_steps);
+    float offset = shaft_offset();
+    vec3 eye = vec3(0.0, u_cam_height, 0.0);
+    float pixel = 2.0 * u_tan_half_vfov / u_resolution.y;
+    // A sample stands for ds of the ray, which sweeps ds sin(angle) across
+    // the bundles (they run along the sun's way): they are taken no finer
+    // than that (finer ones would come out as noise). The wide footprint
+    // also fades the finer octaves out of the work.
+    float across = TL_SHAFT_SMOOTH * ds * length(cross(ray, u_sun_water));
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < u_shaft_steps; i++) {
+        float s = (float(i) + offset) * ds;
+        vec3 p = eye + ray * s;
+        float depth = -p.y;
+        if (depth <= 0.0)
+            continue;
+        float footprint = max(max(s * pixel, TL_SHAFT_FOOTPRINT), across);
+        float focus = caustic_focus(p.xz, depth, footprint);
+        sum += (focus - 1.0) * water_sun_at(depth) * exp(-u_water_sigma * s);
+    }
+    return (u_shafts * u_water_scattering * water_phase(dot(u_sun_water, -ray)) * ds) * sum;
+}
