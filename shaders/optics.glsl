@@ -26,6 +26,20 @@ float optics_fresnel(float cos_i, float n1, float n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
+// optics_fresnel averaged over a rough surface: facets whose tilt in the
+// plane of incidence spreads by `spread` radians (standard deviation)
+// about the mean normal's, by three-point Gauss-Hermite quadrature. From
+// the water side it softens the edge of Snell's window, where the
+// reflectance leaps to 1, over the facets' spread.
+float optics_fresnel_rough(float cos_i, float n1, float n2, float spread)
+{
+    float theta = acos(min(abs(cos_i), 1.0));
+    float d = TL_FRESNEL_TAP * spread;
+    return (2.0 / 3.0) * optics_fresnel(cos_i, n1, n2) +
+           (1.0 / 6.0) * (optics_fresnel(cos(min(theta + d, 0.5 * TL_PI)), n1, n2) +
+                          optics_fresnel(cos(abs(theta - d)), n1, n2));
+}
+
 #ifdef TL_FEATURE_UNDERWATER
 // Beer-Lambert: the share of light left after `dist` metres of water.
 vec3 optics_water_transmittance(float dist)

@@ -76,7 +76,7 @@ vec3 trace_underwater(vec3 ray, out float dist)
     dist = t;
     vec3 hit = vec3(0.0, u_cam_height, 0.0) + ray * t;
     float value;
-    float slope_var; // the underside is shaded with the mean normal
+    float slope_var; // the facets finer than the normal: they spread the window
 #ifdef TL_FEATURE_GIANT_WAVE
     GiantSample giant = giant_sample(hit.xz);
     vec3 n = water_ridden_normal(hit.xz, giant, t * u_lod_angle, value, slope_var);
@@ -87,14 +87,20 @@ vec3 trace_underwater(vec3 ray, out float dist)
 #endif
     // Light from above crosses into the water (radiance grows by n²: the
     // sky's hemisphere is squeezed into the window); what does not cross
-    // comes back down from the depths.
+    // comes back down from the depths. The facets finer than the normal
+    // (filtered shading's slope variance, and a pixel's own least share)
+    // spread the window's edge: where the mean facet reflects it all, some
+    // still let the horizon's light through.
     float cos_i = max(dot(ray, n), 0.0);
-    float fresnel = optics_fresnel(cos_i, u_water_ior, 1.0);
+    float spread = sqrt(slope_var + TL_WINDOW_MIN_SPREAD * TL_WINDOW_MIN_SPREAD);
+    float fresnel = optics_fresnel_rough(cos_i, u_water_ior, 1.0, spread);
     vec3 through = vec3(0.0);
     if (fresnel < 1.0) {
         vec3 out_dir = refract(ray, -n, u_water_ior);
+        if (out_dir == vec3(0.0)) // past the mean facet's edge: grazing out
+            out_dir = ray - dot(ray, n) * n;
         out_dir.y = max(out_dir.y, 0.0);
-        through = sky_color(normalize(out_dir)) * (u_water_ior * u_water_ior);
+        through = sky_color(normalize(out_dir + vec3(0.0, 1e-4, 0.0))) * (u_water_ior * u_water_ior);
     }
     vec3 down = reflect(ray, -n);
     float mirrored;

@@ -2,10 +2,12 @@
  * focus estimate against the CPU's in double, near the origin and far out
  * at a late time; and the estimate's physics: a flat sea and a set sun
  * focus nothing, the light is conserved on average, the pattern has
- * contrast that softens with depth, and it moves with the waves. */
+ * contrast that softens with depth, and it moves with the waves; on the
+ * sea floor in a frame, where the CPU says; and on the boat's hull. */
 #include <string.h>
 
 #include "core/tl_math.h"
+#include "mesh/tl_mesh.h"
 #include "optics/tl_optics.h"
 #include "tl_gl_test.h"
 #include "waves/tl_caustics.h"
@@ -244,6 +246,97 @@ static void test_floor(tl_renderer *r)
     CHECK(worst_faint < 1e-4);
 }
 
+/* The boat's starboard side in the sun from the east, seen from 2.5 m
+ * under water 6 m off it: its hull pixels (nearer than the frame without
+ * the boat), their luminance with the caustics at `caustics`. */
+static int hull_luminance(tl_renderer *r, double caustics, double t, double *lum, int *mask)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = 160;
+    s.height = 90;
+    s.time = t;
+    s.boat.enabled = true;
+    s.boat.size = s.boat.scale = s.boat.length = 9.0;
+    s.boat.beam = 9.0 * TL_BOAT_BEAM_RATIO;
+    s.boat.wake = 0.0;
+    s.boat.heading = 0.0;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    s.boat.position[1] = tl_waves_height(&w, 0.0, 0.0, s.time, TL_MAX_OCTAVES);
+    s.sun.elevation = 45.0 * TL_DEG;
+    s.sun.azimuth = 90.0 * TL_DEG;
+    s.camera.position[0] = 6.0;
+    s.camera.position[1] = -2.5;
+    s.camera.yaw = -90.0 * TL_DEG;
+    s.camera.pitch = 12.0 * TL_DEG;
+    s.camera.vfov = 60.0 * TL_DEG;
+    s.underwater.caustics = caustics;
+    s.underwater.shafts = 0.0;
+    tl_scene none = s;
+    none.boat.enabled = false;
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return -1;
+    if (render(r, &none, &without)) {
+        tl_frame_free(&with);
+        return -1;
+    }
+    int count = 0;
+    for (int i = 0; i < s.width * s.height; i++) {
+        mask[i] = with.depth[i] < 0.99f * without.depth[i];
+        lum[i] = luminance(with.color + 4 * (size_t)i);
+        count += mask[i];
+    }
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+    return count;
+}
+
+/* Caustics on the hull: where the sun reaches it under water its light
+ * has the waves' pattern (the ratio with caustics to without spreads),
+ * about the same on average; a strength of nearly 0 is the frame without. */
+static void test_hull(tl_renderer *r, const tl_mesh *boat)
+{
+    enum { P = 160 * 90 };
+    static double on[P], off[P], faint[P], ratio[P];
+    static int mask[P], mask_off[P], mask_faint[P];
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, boat, &err) == 0);
+    int count = hull_luminance(r, 1.0, 10.0, on, mask);
+    if (count < 0 || hull_luminance(r, 0.0, 10.0, off, mask_off) < 0 ||
+        hull_luminance(r, 1e-6, 10.0, faint, mask_faint) < 0)
+        return;
+    /* The sunlit part: the hull pixels brighter than their mean without
+     * caustics (the keel's flat and the shadowed side are lit by the water
+     * alone, and caustics do not reach them). */
+    double lit = 0.0;
+    int hull = 0;
+    for (int i = 0; i < P; i++)
+        if (mask[i] && mask_off[i]) {
+            lit += off[i];
+            hull++;
+        }
+    lit /= hull > 0 ? hull : 1;
+    int n = 0;
+    double worst_faint = 0.0;
+    for (int i = 0; i < P; i++)
+        if (mask[i] && mask_off[i] && off[i] > lit) {
+            ratio[n++] = on[i] / off[i];
+            worst_faint = fmax(worst_faint, fabs(faint[i] - off[i]) / off[i]);
+        }
+    double std, mean = mean_std(ratio, n, &std);
+    printf("caustics on the hull: %d sunlit of %d hull pixels; with against without mean %.3f, "
+           "std %.3f; "
+           "strength 1e-6 against off %.2g\n",
+           n, count, mean, std, worst_faint);
+    CHECK(n > 300);
+    CHECK(std > 0.08);
+    CHECK(mean > 0.8 && mean < 1.3);
+    CHECK(worst_faint < 1e-4);
+}
+
 int main(void)
 {
     test_physics();
@@ -254,6 +347,12 @@ int main(void)
     test_gpu_matches_cpu(r, 0.0, 0.0, 10.0);
     test_gpu_matches_cpu(r, 1e4, -7e3, 1e5);
     test_floor(r);
+    tl_error err;
+    tl_error_clear(&err);
+    tl_mesh boat;
+    CHECK(tl_mesh_default_boat(&boat, &err) == 0);
+    test_hull(r, &boat);
+    tl_mesh_free(&boat);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

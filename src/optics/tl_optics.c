@@ -14,6 +14,16 @@ double tl_optics_fresnel(double cos_i, double n1, double n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
+double tl_optics_fresnel_rough(double cos_i, double n1, double n2, double spread)
+{
+    double theta = acos(fmin(fabs(cos_i), 1.0));
+    double d = TL_FRESNEL_TAP * spread;
+    return 2.0 / 3.0 * tl_optics_fresnel(cos_i, n1, n2) +
+           1.0 / 6.0 *
+               (tl_optics_fresnel(cos(fmin(theta + d, 0.5 * M_PI)), n1, n2) +
+                tl_optics_fresnel(cos(fabs(theta - d)), n1, n2));
+}
+
 double tl_optics_snell_window(double n)
 {
     return asin(1.0 / n);

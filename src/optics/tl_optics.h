@@ -19,6 +19,17 @@ double tl_optics_fresnel(double cos_i, double n1, double n2);
  * below the horizon is taken at it. */
 void tl_optics_sun_in_water(const double sun[3], double n, double dir[3]);
 
+/* The quadrature's taps sit this many spreads either side: three-point
+ * Gauss-Hermite (sqrt 3), weights 1/6, 2/3, 1/6. */
+#define TL_FRESNEL_TAP 1.7320508075688772
+
+/* tl_optics_fresnel averaged over a rough surface whose facets' tilt in
+ * the plane of incidence spreads by `spread` radians (standard deviation)
+ * about the mean (shaders/optics.glsl has the same). Under water it
+ * softens the edge of Snell's window. A tap past grazing is taken at
+ * grazing. */
+double tl_optics_fresnel_rough(double cos_i, double n1, double n2, double spread);
+
 /* Half-angle of Snell's window seen from a medium of index n into air:
  * asin(1 / n) radians (48.6° for water). */
 double tl_optics_snell_window(double n);
@@ -29,6 +40,11 @@ double tl_optics_snell_window(double n);
  * distance"), else water.absorption + water.scattering. Never zero (the
  * shader holds the scattering albedo at 1 at most). */
 void tl_optics_water_extinction(const tl_water *w, double sigma[3]);
+
+/* The least spread of the surface's facets Snell's window is seen
+ * through from below, radians: a pixel's own share, so a calm sea's edge
+ * is not a one-pixel step that crawls as the waves move. */
+#define TL_WINDOW_MIN_SPREAD 0.015
 
 /* The water body's light (shaders/water_light.glsl has the same). */
 /* The phase function's asymmetry: ocean particles scatter mostly forward. */
