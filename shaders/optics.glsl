@@ -40,7 +40,16 @@ float optics_fresnel_rough(float cos_i, float n1, float n2, float spread)
                           optics_fresnel(cos(abs(theta - d)), n1, n2));
 }
 
-#ifdef TL_FEATURE_UNDERWATER
+// The spread of the facets a view through the surface meets: the slope
+// variance the normal leaves out, and at least a share of `pixel` (the
+// angle a pixel spans, radians).
+float optics_facet_spread(float slope_var, float pixel)
+{
+    float least = TL_WINDOW_PIXEL_SPREAD * pixel;
+    return sqrt(slope_var + least * least);
+}
+
+#if defined(TL_FEATURE_UNDERWATER) || defined(TL_FEATURE_SEA_FLOOR)
 // Beer-Lambert: the share of light left after `dist` metres of water.
 vec3 optics_water_transmittance(float dist)
 {

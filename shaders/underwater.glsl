@@ -50,7 +50,7 @@ vec3 underwater_below(vec3 origin, vec3 ray, bool direct, out float dist)
     float down = origin.y + u_floor_depth; // the camera may be under the floor: none
     if (ray.y < 0.0 && down > 0.0) {
         dist = down / -ray.y;
-        vec3 sand = floor_color(origin + ray * dist, ray, dist, direct);
+        vec3 sand = floor_color(origin + ray * dist, ray, dist, 0.0, direct);
         return sand * optics_water_transmittance(dist) + water_inscatter(depth, ray, dist);
     }
 #endif
@@ -92,7 +92,7 @@ vec3 trace_underwater(vec3 ray, out float dist)
     // spread the window's edge: where the mean facet reflects it all, some
     // still let the horizon's light through.
     float cos_i = max(dot(ray, n), 0.0);
-    float spread = sqrt(slope_var + TL_WINDOW_MIN_SPREAD * TL_WINDOW_MIN_SPREAD);
+    float spread = optics_facet_spread(slope_var, 2.0 * u_tan_half_vfov / u_resolution.y);
     float fresnel = optics_fresnel_rough(cos_i, u_water_ior, 1.0, spread);
     vec3 through = vec3(0.0);
     if (fresnel < 1.0) {

@@ -118,8 +118,9 @@ static void test_snell_window(tl_renderer *r)
         CHECK(outside < 0.2 * inside);
     }
     CHECK(worst <= 1.0);
-    /* Outside the window (beyond 49.6 deg) no pixel holds sky light (the
-     * reflectance there is exactly 1, test_fresnel): all are the water
+    /* Outside the window (beyond 49.6 deg, past the taps of a pixel's own
+     * facet spread) no pixel holds sky light (the reflectance there is
+     * exactly 1, test_fresnel): all are the water
      * body's in-scattered light, dimmer than the window, bluer than red. */
     double brightest = 0.0;
     int blue = 1;

@@ -9,8 +9,8 @@
 
 #include "gl/tl_renderer_internal.h"
 #include "mesh/tl_mesh.h"
-#include "prepare/tl_uniform_list.h"
 #include "optics/tl_optics.h"
+#include "prepare/tl_uniform_list.h"
 #include "waves/tl_caustics.h"
 #include "waves/tl_giant_spray.h"
 #include "waves/tl_kelvin.h"
@@ -153,7 +153,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_SHAFT_SMOOTH %.17g\n"
         "#define TL_FLOOR_PERIOD %d\n"
         "#define TL_FRESNEL_TAP %.17g\n"
-        "#define TL_WINDOW_MIN_SPREAD %.17g\n"
+        "#define TL_WINDOW_PIXEL_SPREAD %.17g\n"
         "#define TL_WATER_PHASE_G %.17g\n"
         "#define TL_WATER_SKY_SCATTER %.17g\n"
         "#define TL_WATER_MIN_SUN_DOWN %.17g\n"
@@ -171,8 +171,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS,
         TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH,
         TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
-        TL_CAUSTIC_MIN_DOWN, TL_SHAFT_RANGE, TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH,
-        TL_FLOOR_PERIOD, TL_FRESNEL_TAP, TL_WINDOW_MIN_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER,
+        TL_CAUSTIC_MIN_DOWN, TL_SHAFT_RANGE, TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD,
+        TL_FRESNEL_TAP, TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER,
         TL_WATER_MIN_SUN_DOWN, TL_WATER_MAX_OPTICAL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))

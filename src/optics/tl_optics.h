@@ -42,9 +42,12 @@ double tl_optics_snell_window(double n);
 void tl_optics_water_extinction(const tl_water *w, double sigma[3]);
 
 /* The least spread of the surface's facets Snell's window is seen
- * through from below, radians: a pixel's own share, so a calm sea's edge
- * is not a one-pixel step that crawls as the waves move. */
-#define TL_WINDOW_MIN_SPREAD 0.015
+ * through from below, as a share of a pixel's angle: a pixel spans that
+ * range of incidence itself, so a calm sea's edge is anti-aliased rather
+ * than a one-pixel step that crawls as the waves move (a box a pixel
+ * wide has a standard deviation of 0.29 of it; the three taps need a
+ * little more to merge). */
+#define TL_WINDOW_PIXEL_SPREAD 0.5
 
 /* The water body's light (shaders/water_light.glsl has the same). */
 /* The phase function's asymmetry: ocean particles scatter mostly forward. */
@@ -74,8 +77,8 @@ typedef struct tl_water_light {
  * both dimmed by Beer-Lambert on their way down to where the ray is and
  * on the way back along it; a ray that looks up ends at the mean surface.
  * RGB radiance. */
-void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3],
-                               double t, double out[3]);
+void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3], double t,
+                               double out[3]);
 
 /* Optical depth of the fog along a ray from height y0 (metres above the
  * mean water) with vertical direction component ray_y, over `dist` metres:
