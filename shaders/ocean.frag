@@ -26,6 +26,17 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #ifdef TL_FEATURE_BOAT_SHADOW
 #include "boat_shadow.glsl"
 #endif
+// The water body's light, caustics and the sea floor before water.glsl:
+// the floor shows through the surface from above too.
+#if defined(TL_FEATURE_UNDERWATER) || defined(TL_FEATURE_SEA_FLOOR)
+#include "water_light.glsl"
+#endif
+#if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_SHAFTS)
+#include "caustics.glsl"
+#endif
+#ifdef TL_FEATURE_SEA_FLOOR
+#include "sea_floor.glsl"
+#endif
 #include "water.glsl"
 #ifdef TL_FEATURE_GIANT_LIP
 #include "lip.glsl"
@@ -38,15 +49,8 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #include "spray.glsl"
 #endif
 #ifdef TL_FEATURE_UNDERWATER
-#include "water_light.glsl"
-#if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_SHAFTS)
-#include "caustics.glsl"
-#endif
 #ifdef TL_FEATURE_SHAFTS
 #include "shafts.glsl"
-#endif
-#ifdef TL_FEATURE_SEA_FLOOR
-#include "sea_floor.glsl"
 #endif
 #include "underwater.glsl"
 #endif

@@ -41,12 +41,13 @@ float floor_relief(vec2 p, float footprint)
 }
 
 // The sand's radiance at camera-relative p seen along `ray` from `dist`
-// metres; `lit_by_caustics`: false where the floor is only seen mirrored
+// metres, blurred over `blur` metres more than a pixel's footprint there;
+// `lit_by_caustics`: false where the floor is only seen mirrored
 // in the surface (its caustics would cost more than they show there).
-vec3 floor_color(vec3 p, vec3 ray, float dist, bool lit_by_caustics)
+vec3 floor_color(vec3 p, vec3 ray, float dist, float blur, bool lit_by_caustics)
 {
     vec2 world = p.xz + u_floor_offset;
-    float footprint = dist * 2.0 * u_tan_half_vfov / u_resolution.y;
+    float footprint = dist * 2.0 * u_tan_half_vfov / u_resolution.y + blur;
     float e = max(footprint, 0.01);
     float h = floor_relief(world, footprint);
     vec2 slope = vec2(floor_relief(world + vec2(e, 0.0), footprint) - h,
@@ -65,4 +66,22 @@ vec3 floor_color(vec3 p, vec3 ray, float dist, bool lit_by_caustics)
 #endif
     vec3 light = water_sun_at(depth) * sun / TL_PI + water_sky_at(depth) * (0.5 + 0.5 * n.y);
     return albedo * light;
+}
+
+// The sand seen from above through the surface at `hit` (normal n) along
+// `ray`, `dist` metres from the eye: the view refracted down to it, dimmed
+// by the water on the way up, its radiance divided by n² as it leaves
+// the water (the window's squeeze undone). The facets finer than the
+// normal (their slope variance) scatter a pixel's view over the sand,
+// more the deeper it lies: that blurs it as the footprint.
+vec3 floor_through_surface(vec3 ray, vec3 n, vec3 hit, float dist, float slope_var)
+{
+    vec3 down = refract(ray, n, 1.0 / u_water_ior);
+    float depth = hit.y + u_floor_depth;
+    if (down.y >= 0.0 || depth <= 0.0)
+        return vec3(0.0);
+    float t = depth / -down.y;
+    float spread = optics_facet_spread(slope_var, 2.0 * u_tan_half_vfov / u_resolution.y);
+    vec3 sand = floor_color(hit + down * t, down, dist + t, t * spread * (1.0 - 1.0 / u_water_ior), true);
+    return sand * optics_water_transmittance(t) / (u_water_ior * u_water_ior);
 }

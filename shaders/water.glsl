@@ -184,6 +184,9 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
         (sky_sun_light() * scatter_sunlit * max(u_sun_dir.y, 0.0) + TL_PI * sky_ambient()) / 0.94;
 #endif
     vec3 color = fresnel * reflection + scattering;
+#ifdef TL_FEATURE_SEA_FLOOR
+    color += (1.0 - fresnel) * floor_through_surface(ray, n, hit, dist, slope_var);
+#endif
     // The water a pixel covers (0 without level of detail), more as the
     // view grazes the surface: foam's detail and veins stay a pixel wide.
     float footprint = dist * u_lod_angle / max(abs(dot(ray, n)), 0.2);

@@ -599,7 +599,8 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
 }
 
 /* Under water: which pixels (feature bits), and the water body's
- * extinction, scattering and the sun's light in it. */
+ * extinction, scattering and the sun's light in it; those too when the
+ * sea floor shows through the surface from above. */
 static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
                                tl_frame_uniforms *u)
 {
@@ -607,9 +608,11 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     u->water_ior = (float)s->water.ior;
     double gap;
     tl_water_side side = tl_prepare_water_side(s, w, giant, &gap);
-    if (side == TL_WATER_ABOVE)
+    int floor = s->ocean.floor_depth > 0.0, under = side != TL_WATER_ABOVE;
+    if (!under && !floor)
         return;
-    u->features |= TL_FEATURE_UNDERWATER;
+    if (under)
+        u->features |= TL_FEATURE_UNDERWATER;
     if (side == TL_WATER_STRADDLES)
         u->features |= TL_FEATURE_WATERLINE;
     double sigma[3];
@@ -631,12 +634,12 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
         u->features |= TL_FEATURE_CAUSTICS;
         u->caustics = (float)s->underwater.caustics;
     }
-    if (sun[1] > 0.0 && s->underwater.shafts > 0.0 && s->quality.shaft_steps > 0) {
+    if (under && sun[1] > 0.0 && s->underwater.shafts > 0.0 && s->quality.shaft_steps > 0) {
         u->features |= TL_FEATURE_SHAFTS;
         u->shafts = (float)s->underwater.shafts;
         u->shaft_steps = s->quality.shaft_steps;
     }
-    if (s->ocean.floor_depth > 0.0) {
+    if (floor) {
         u->features |= TL_FEATURE_SEA_FLOOR;
         u->floor_depth = (float)s->ocean.floor_depth;
         u->floor_offset[0] = (float)wrap_period(s->camera.position[0], TL_FLOOR_PERIOD);

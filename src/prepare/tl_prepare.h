@@ -46,8 +46,9 @@ typedef enum tl_feature {
         1u << 17, /* giant.scatter > 0 with the sun up: light through the crest */
     TL_FEATURE_BOAT_SHADOW = 1u << 18, /* boat.shadows with the sun up: its shadow map */
     TL_FEATURE_BOW_SPRAY = 1u << 19,   /* the bow meets rising water: its spray (not the giant's) */
-    TL_FEATURE_CAUSTICS = 1u << 20,    /* under water, the sun up, underwater.caustics > 0 */
-    TL_FEATURE_SEA_FLOOR = 1u << 21,   /* under water with ocean.floor_depth > 0 */
+    TL_FEATURE_CAUSTICS = 1u << 20,    /* under water or a floor, the sun up, underwater.caustics */
+    TL_FEATURE_SEA_FLOOR =
+        1u << 21, /* ocean.floor_depth > 0: seen from below or through the surface */
     TL_FEATURE_SHAFTS = 1u << 22, /* under water, the sun up, underwater.shafts, shaft steps > 0 */
 } tl_feature;
 

@@ -104,12 +104,12 @@
     X(FLOAT, giant_slope, TL_GIANT_SLOPE_BINS, TL_FEATURE_GIANT_WAVE, "slope bound per bin of s") \
     X(VEC2, giant_world, 0, TL_FEATURE_GIANT_WAVE, "the crest's world (s, w), wrapped every 65536 m") \
     X(VEC2, giant_rise, 0, TL_FEATURE_GIANT_WAVE, "s where the wave reaches the camera's height (empty: none)") \
-    X(VEC3, water_sigma, 0, TL_FEATURE_UNDERWATER, "extinction per metre, R G B") \
-    X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER, "per metre, grey") \
+    X(VEC3, water_sigma, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "extinction per metre, R G B") \
+    X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "per metre, grey") \
     X(FLOAT, cam_depth, 0, TL_FEATURE_UNDERWATER, "metres below the surface at the camera") \
     X(FLOAT, lens, 0, TL_FEATURE_UNDERWATER, "the lens plane's distance ahead of the camera") \
-    X(VEC3, sun_water, 0, TL_FEATURE_UNDERWATER, "the direction sunlight travels in the water") \
-    X(FLOAT, sun_water_trans, 0, TL_FEATURE_UNDERWATER, "the share of it that crossed the surface") \
+    X(VEC3, sun_water, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the direction sunlight travels in the water") \
+    X(FLOAT, sun_water_trans, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the share of it that crossed the surface") \
     X(FLOAT, caustics, 0, TL_FEATURE_CAUSTICS, "underwater.caustics: their strength") \
     X(FLOAT, shafts, 0, TL_FEATURE_SHAFTS, "underwater.shafts: their strength") \
     X(INT, shaft_steps, 0, TL_FEATURE_SHAFTS, "quality.shaft_steps: their samples along a ray") \
