@@ -228,12 +228,13 @@ static void test_floor(tl_renderer *r)
             pixel_ray(&s, x, y, ray);
             double t = (s.camera.position[1] + s.ocean.floor_depth) / -ray[1];
             double footprint = t * 2.0 * tan(0.5 * s.camera.vfov) / s.height;
-            focus[i] = tl_caustic_focus(&w, &l, t * ray[0], t * ray[2], s.ocean.floor_depth,
-                                        s.time, s.quality.normal_octaves, footprint);
+            focus[i] = tl_caustic_focus(&w, &l, t * ray[0], t * ray[2], s.ocean.floor_depth, s.time,
+                                        s.quality.normal_octaves, footprint);
             ratio[i] = on[i] / off[i];
             worst_faint = fmax(worst_faint, fabs(faint[i] - off[i]) / off[i]);
         }
-    double std_on, std_off, mean_on = mean_std(on, P, &std_on), mean_off = mean_std(off, P, &std_off);
+    double std_on, std_off, mean_on = mean_std(on, P, &std_on),
+                            mean_off = mean_std(off, P, &std_off);
     double moved = correlation(on, later, P), placed = correlation(ratio, focus, P);
     printf("sea floor 5 m down: std/mean %.3f with caustics, %.3f without; mean %.4f against "
            "%.4f; correlation with 0.5 s later %.3f, of on/off with the CPU's focus %.3f; "

@@ -113,10 +113,11 @@ static void test_shafts(tl_renderer *r)
         shafts_over_time(r, 200.0, 1e4, 1e5, &far, &c_far, &change_far, &faint[2]))
         return;
     double weakest = fmax(faint[0], fmax(faint[1], faint[2]));
-    printf("light shafts: std %.3g toward the sun (contrast %.4f), %.3g with the sun behind (%.4f), "
-           "%.3g at 1e4 m and 1e5 s (%.4f); mean change %+.4f %+.4f %+.4f; strength 1e-6 against "
-           "off %.2g\n",
-           toward, c_toward, away, c_away, far, c_far, change, change_away, change_far, weakest);
+    printf(
+        "light shafts: std %.3g toward the sun (contrast %.4f), %.3g with the sun behind (%.4f), "
+        "%.3g at 1e4 m and 1e5 s (%.4f); mean change %+.4f %+.4f %+.4f; strength 1e-6 against "
+        "off %.2g\n",
+        toward, c_toward, away, c_away, far, c_far, change, change_away, change_far, weakest);
     CHECK(c_toward > 0.03);
     CHECK(toward > 3.0 * away);
     CHECK(fabs(far / toward - 1.0) < 0.3);

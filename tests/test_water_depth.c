@@ -115,8 +115,8 @@ static void test_depth(tl_renderer *r)
         want[k] = luminance((const float[3]){(float)rgb[0], (float)rgb[1], (float)rgb[2]});
     }
     double ratio = got[1] / got[0], predicted = want[1] / want[0];
-    printf("a level view at 40 m against 3 m: %.4f (%.4g against %.4g), Beer-Lambert %.4f\n",
-           ratio, got[1], got[0], predicted);
+    printf("a level view at 40 m against 3 m: %.4f (%.4g against %.4g), Beer-Lambert %.4f\n", ratio,
+           got[1], got[0], predicted);
     CHECK(fabs(ratio / predicted - 1.0) <= 0.2);
     CHECK(ratio < 0.5);
 }

@@ -80,8 +80,8 @@ static double path_integral(double c, double t)
     return (1.0 - exp(-ct)) / c;
 }
 
-void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3],
-                               double t, double out[3])
+void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3], double t,
+                               double out[3])
 {
     const double g = TL_WATER_PHASE_G;
     double mu = -(l->sun_water[0] * ray[0] + l->sun_water[1] * ray[1] + l->sun_water[2] * ray[2]);
@@ -94,8 +94,8 @@ void tl_optics_water_inscatter(const tl_water_light *l, double depth, const doub
         double sigma = l->sigma[c];
         double sun = l->sun_light[c] * l->sun_water_trans * exp(-sigma * z / sun_down);
         double sky = l->sky_ambient[c] * exp(-sigma * z);
-        out[c] = l->scattering * (phase * sun * path_integral(sigma * (1.0 - ray[1] / sun_down), t) +
-                                  TL_WATER_SKY_SCATTER * sky *
-                                      path_integral(sigma * (1.0 - ray[1]), t));
+        out[c] =
+            l->scattering * (phase * sun * path_integral(sigma * (1.0 - ray[1] / sun_down), t) +
+                             TL_WATER_SKY_SCATTER * sky * path_integral(sigma * (1.0 - ray[1]), t));
     }
 }

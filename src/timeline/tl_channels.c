@@ -123,7 +123,6 @@ static const tl_channel channels[] = {
     REAL("underwater.shafts", 1, TL_UNIT_NONE, 0.0, 10.0, underwater.shafts,
          "strength of the light shafts the waves cast in the water; 0 = off"),
 
-
     {"giant.enabled", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, giant.enabled),
      NULL, "the giant wave exists"},
     REAL("giant.height", 1, TL_UNIT_LENGTH, 0.0, 1e3, giant.height, "crest height"),
