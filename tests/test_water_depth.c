@@ -1,8 +1,9 @@
 /* The water body's light with depth (shaders/water_light.glsl): the GPU's
  * in-scattered light along a ray against tl_optics_water_inscatter in
  * double; a horizontal view darkens from 3 m to 40 m as Beer-Lambert of
- * the downwelling light predicts; and after sunset the water under the
- * surface is as dark as its sky. */
+ * the downwelling light predicts; after sunset the water under the
+ * surface is as dark as its sky; and from above, shallow water shows its
+ * floor. */
 #include <string.h>
 
 #include "core/tl_math.h"
@@ -134,6 +135,53 @@ static void test_dusk(tl_renderer *r)
     CHECK(b > 0.0);
 }
 
+/* From above, shallow water shows its floor: a view straight down over a
+ * gently rippled sea brightens with a sand floor under it, less the deeper
+ * it lies, and bluer (the water takes more red on the longer way down and
+ * back). The frame stays above the water: no under-water code. */
+static void test_floor_from_above(tl_renderer *r)
+{
+    const double floors[3] = {0.0, 2.0, 8.0};
+    double rgb[3][3];
+    for (int k = 0; k < 3; k++) {
+        tl_scene s;
+        tl_scene_defaults(&s);
+        s.width = 64;
+        s.height = 36;
+        s.ocean.depth = 0.3;
+        s.camera.position[1] = 3.0;
+        s.camera.pitch = -80.0 * TL_DEG;
+        s.camera.vfov = 30.0 * TL_DEG;
+        s.sun.elevation = 50.0 * TL_DEG;
+        s.ocean.floor_depth = floors[k];
+        tl_frame_uniforms u;
+        gl_test_prepare(r, &s, &u);
+        CHECK(!(u.features & TL_FEATURE_UNDERWATER));
+        CHECK(!(u.features & TL_FEATURE_SEA_FLOOR) == (floors[k] == 0.0));
+        tl_frame f;
+        if (render_prepared(r, &u, s.width, s.height, &f))
+            return;
+        for (int c = 0; c < 3; c++) {
+            double sum = 0.0;
+            for (int i = 0; i < s.width * s.height; i++)
+                sum += f.color[4 * (size_t)i + c];
+            rgb[k][c] = sum / (s.width * s.height);
+        }
+        tl_frame_free(&f);
+    }
+    double lum[3], blue[3];
+    for (int k = 0; k < 3; k++) {
+        lum[k] = luminance((const float[3]){(float)rgb[k][0], (float)rgb[k][1], (float)rgb[k][2]});
+        blue[k] = rgb[k][2] / rgb[k][0];
+    }
+    printf("looking down from 3 m: luminance %.4g without a floor, %.4g over 2 m, %.4g over 8 m; "
+           "blue/red %.2f, %.2f, %.2f\n",
+           lum[0], lum[1], lum[2], blue[0], blue[1], blue[2]);
+    CHECK(lum[1] > 1.5 * lum[0]);
+    CHECK(lum[2] > lum[0] && lum[2] < lum[1]);
+    CHECK(blue[2] > blue[1]);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -143,6 +191,7 @@ int main(void)
     test_inscatter_probe(r);
     test_depth(r);
     test_dusk(r);
+    test_floor_from_above(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();
