@@ -8,15 +8,16 @@
 // exactly, so with the shafts off the frame is as without them, and they
 // leave the mean brightness as it was.
 
-// Where in its ds a pixel's samples sit: a 4 x 4 ordered dither (Bayer),
-// so that any 4 x 4 block of pixels holds every offset once and the
-// display's pixel filter averages neighbours into a finer march; a hash
-// (white noise) left a grain no filter takes out.
+// Where in its ds a pixel's samples sit: interleaved gradient noise
+// (Jimenez 2014), whose every 3 x 3 block of pixels spreads its offsets
+// over nearly the whole step, so the display's pixel filter averages
+// neighbours into a finer march. A hash (white noise) left a grain no
+// filter takes out; a 4 x 4 ordered dither a grid it does not (its
+// period is wider than the filter).
 float shaft_offset()
 {
-    const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
-    return (float(bayer[p.y * 4 + p.x]) + 0.5) / 16.0;
+    vec2 p = floor(gl_FragCoord.xy);
+    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
 }
 
 // The light the shafts add along `ray` (unit, from the eye) over its
