@@ -35,7 +35,14 @@ float caustic_focus(vec2 p, float depth, float footprint)
     vec2 ax = (caustic_slant(x0 + vec2(e, 0.0), e) - a) * s;
     vec2 az = (caustic_slant(x0 + vec2(0.0, e), e) - a) * s;
     float det = (1.0 + ax.x) * (1.0 + az.y) - az.x * ax.y;
-    const float k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK);
+    // The finer octaves' tilt and the sun's disc spread each bundle over
+    // a band that widens with depth: the lines widen and dim; inside a
+    // fold three sheets light the point (tl_caustics.c says why).
+    float tilt = (1.0 - 1.0 / u_water_ior) * sqrt(waves_unresolved_slope_variance(TL_NORMAL_OCTAVES, e));
+    float spread =  depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
+    float k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
+    if (det < 0.0)
+        det *= TL_CAUSTIC_FOLD;
     return sqrt((1.0 + k) / (det * det + k));
 }
 

@@ -7,7 +7,7 @@
 
 // Wet sand's reflectance (linear), and the wavelength of its ripples.
 const vec3 TL_FLOOR_SAND = vec3(0.42, 0.37, 0.28);
-const float TL_FLOOR_RIPPLE = 0.16;
+const float TL_FLOOR_RIPPLE = 0.3;
 
 // Value noise with cells of `cell` metres that repeats every
 // TL_FLOOR_PERIOD metres (each cell size divides it), at world p wrapped
@@ -34,7 +34,7 @@ float floor_relief(vec2 p, float footprint)
     // broken by noise.
     float bend = 0.6 * floor_noise(p, 2.0) + 0.3 * floor_noise(p, 0.5);
     float phase = 2.0 * TL_PI * (p.y + 0.3 * p.x) / TL_FLOOR_RIPPLE + 9.0 * bend;
-    float ripples = 0.006 * smoothstep(0.25, 0.7, floor_noise(p + 11.0, 1.0)) *
+    float ripples = 0.02 * smoothstep(0.25, 0.7, floor_noise(p + 11.0, 1.0)) *
                     (sin(phase) + 0.3 * sin(2.0 * phase));
     float resolved = 1.0 - smoothstep(0.15, 0.5, footprint / TL_FLOOR_RIPPLE);
     return dunes + ripples * resolved;

@@ -80,25 +80,33 @@ float waves_slope_variance(float raw, float weights)
     return 0.5 * raw * slope_scale * slope_scale;
 }
 
-// The same for waves_value's octaves at this footprint, without the waves
-// (the finite-difference normals' path).
-float waves_faded_slope_variance(int octaves, float footprint)
+// The slope variance of the octaves finer than `footprint` resolves (the
+// share each fades by, and every octave past the first `octaves`):
+// filtered shading's roughness, and what blurs the caustics deep down.
+float waves_unresolved_slope_variance(int octaves, float footprint)
 {
     float raw = 0.0;
-#ifdef TL_FEATURE_FILTERED_SHADING
-    if (footprint > 0.0) {
-        int i = 0;
-        for (; i < octaves; i++) {
-            float detail = waves_detail(u_wave[i].z, footprint);
-            if (detail <= 0.0)
-                break;
-            float wk = u_wave_weight[i] * u_wave[i].z;
-            raw += (1.0 - detail * detail) * TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
-        }
-        raw += u_wave_slope_tail[i];
+    int i = 0;
+    for (; i < octaves; i++) {
+        float detail = waves_detail(u_wave[i].z, footprint);
+        if (detail <= 0.0)
+            break;
+        float wk = u_wave_weight[i] * u_wave[i].z;
+        raw += (1.0 - detail * detail) * TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
     }
-#endif
+    raw += u_wave_slope_tail[i];
     return waves_slope_variance(raw, u_wave_weight_tail[0] - u_wave_weight_tail[octaves]);
+}
+
+// The same for waves_value's octaves at this footprint, without the waves
+// (the finite-difference normals' path); 0 without filtered shading.
+float waves_faded_slope_variance(int octaves, float footprint)
+{
+#ifdef TL_FEATURE_FILTERED_SHADING
+    if (footprint > 0.0)
+        return waves_unresolved_slope_variance(octaves, footprint);
+#endif
+    return 0.0;
 }
 
 // waves_value with its gradient (per metre of p) carried through the drag:

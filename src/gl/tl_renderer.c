@@ -148,6 +148,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_CAUSTIC_BLUR %.17g\n"
         "#define TL_CAUSTIC_PEAK %.17g\n"
         "#define TL_CAUSTIC_MIN_DOWN %.17g\n"
+        "#define TL_CAUSTIC_SUN_SPREAD %.17g\n"
+        "#define TL_CAUSTIC_FOLD %.17g\n"
         "#define TL_SHAFT_RANGE %.17g\n"
         "#define TL_SHAFT_FOOTPRINT %.17g\n"
         "#define TL_SHAFT_SMOOTH %.17g\n"
@@ -171,9 +173,10 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS,
         TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH,
         TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
-        TL_CAUSTIC_MIN_DOWN, TL_SHAFT_RANGE, TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD,
-        TL_FRESNEL_TAP, TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER,
-        TL_WATER_MIN_SUN_DOWN, TL_WATER_MAX_OPTICAL);
+        TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_SUN_SPREAD, TL_CAUSTIC_FOLD, TL_SHAFT_RANGE,
+        TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
+        TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN,
+        TL_WATER_MAX_OPTICAL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

@@ -56,6 +56,19 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
     double jxx = 1.0 + (ax[0] - a[0]) * s, jzx = (ax[1] - a[1]) * s;
     double jxz = (az[0] - a[0]) * s, jzz = 1.0 + (az[1] - a[1]) * s;
     double det = jxx * jzz - jxz * jzx;
-    double k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK);
+    /* The octaves the step leaves out still tilt the rays, by their RMS
+     * slope times (1 - 1/ior), and the sun's disc is no point: each
+     * bundle lands spread over a band that widens with depth. Near a
+     * focus det changes by about 1 across a step, so a line that wide
+     * cannot fall below its width / e in det: the rounding widens and
+     * dims the lines deep down, as the light shows there. */
+    double tilt = (1.0 - 1.0 / l->ior) * sqrt(tl_waves_unresolved_slope_variance(w, octaves, e));
+    double spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
+    double k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
+    /* Past a fold (det < 0) three sheets of the surface light the point
+     * and the one followed here is the dimmest: the band between a fold's
+     * two lines is lit as brightly as the lines' sides, not left dark. */
+    if (det < 0.0)
+        det *= TL_CAUSTIC_FOLD;
     return sqrt((1.0 + k) / (det * det + k));
 }

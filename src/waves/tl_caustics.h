@@ -34,6 +34,12 @@
  * (det² + k)), k = 1 / PEAK², rounds it off and keeps a flat sea at
  * exactly 1. */
 #define TL_CAUSTIC_PEAK 6.0
+/* The sun's disc seen from under the water: its angular diameter
+ * (0.53 deg) over the water's refractive index, radians. */
+#define TL_CAUSTIC_SUN_SPREAD 0.007
+/* Inside a fold, the share of |det| the followed sheet's estimate keeps
+ * (the other two sheets' light taken as its own twice over). */
+#define TL_CAUSTIC_FOLD (1.0 / 3.0)
 /* The steepest a refracted ray's run is taken (its |y| at least this):
  * a sun at the horizon through a tilted facet. */
 #define TL_CAUSTIC_MIN_DOWN 0.2

@@ -46,8 +46,7 @@ void tl_kelvin_slope(double behind, double across, double speed, double length, 
         double secant = sqrt(1.0 + t * t);
         double k = k0 * secant * secant; /* the wave's number: k0 / cos^2 theta */
         /* Shorter than four footprints: faded before a pixel aliases them. */
-        double resolved =
-            footprint > 0.0 ? 1.0 - smoothstep(0.25, 0.5, k * footprint / M_PI) : 1.0;
+        double resolved = footprint > 0.0 ? 1.0 - smoothstep(0.25, 0.5, k * footprint / M_PI) : 1.0;
         if (resolved <= 0.0)
             continue;
         double phase = k0 * (behind + across * t) * secant;

@@ -68,6 +68,29 @@ double tl_waves_value_lod(const tl_waves *w, double x, double z, double t, int o
     return weights > 0.0 ? sum / weights : 1.0;
 }
 
+double tl_waves_unresolved_slope_variance(const tl_waves *w, int octaves, double footprint)
+{
+    if (octaves > w->count)
+        octaves = w->count;
+    double raw = 0.0, weights = 0.0;
+    int i = 0;
+    for (; i < octaves; i++) {
+        double detail = tl_waves_detail(w->octave[i].frequency, footprint);
+        if (detail <= 0.0)
+            break;
+        double wk = w->octave[i].weight * w->octave[i].frequency;
+        raw += (1.0 - detail * detail) * TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
+    }
+    for (; i < w->count; i++) {
+        double wk = w->octave[i].weight * w->octave[i].frequency;
+        raw += TL_WAVE_SLOPE_MEAN_SQ * wk * wk;
+    }
+    for (int k = 0; k < octaves; k++)
+        weights += w->octave[k].weight;
+    double scale = weights > 0.0 ? w->depth / weights : 0.0;
+    return 0.5 * raw * scale * scale;
+}
+
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves)
 {
     return (tl_waves_value(w, x, z, t, octaves) - 1.0) * w->depth;

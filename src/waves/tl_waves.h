@@ -53,6 +53,12 @@ double tl_waves_detail(double frequency, double footprint);
 double tl_waves_value_lod(const tl_waves *w, double x, double z, double t, int octaves,
                           double footprint);
 
+/* The slope variance (per axis, as the shaders' filtered shading counts
+ * it) of the octaves a footprint of `footprint` metres does not resolve:
+ * each of the first `octaves` by the share it fades, and every octave past
+ * them whole (waves_unresolved_slope_variance). */
+double tl_waves_unresolved_slope_variance(const tl_waves *w, int octaves, double footprint);
+
 /* World height of the surface: (value - 1) * depth, in [-depth, 0]. */
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves);
 
