@@ -52,6 +52,9 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #ifdef TL_FEATURE_SHAFTS
 #include "shafts.glsl"
 #endif
+#ifdef TL_FEATURE_PARTICLES
+#include "particles.glsl"
+#endif
 #include "underwater.glsl"
 #endif
 
@@ -151,6 +154,9 @@ vec3 trace(vec3 ray, out float dist)
             vec3 trans = optics_water_transmittance(dist);
             below = seen * trans + water_inscatter(max(-u_cam_height, 0.0), ray, dist);
         }
+#endif
+#ifdef TL_FEATURE_PARTICLES
+        below += water_particles(ray, dist);
 #endif
         // A thin dark meniscus where the lens meets the surface.
         return below * mix(0.35, 1.0, smoothstep(0.0, 0.015, -gap));

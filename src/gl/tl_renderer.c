@@ -151,6 +151,15 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_CAUSTIC_SUN_SPREAD %.17g\n"
         "#define TL_CAUSTIC_FOLD %.17g\n"
         "#define TL_SHAFT_RANGE %.17g\n"
+        "#define TL_PARTICLE_CELL %.17g\n"
+        "#define TL_PARTICLE_RANGE %.17g\n"
+        "#define TL_PARTICLE_NEAR %.17g\n"
+        "#define TL_PARTICLE_PERIOD %d\n"
+        "#define TL_PARTICLE_RADIUS_MIN %.17g\n"
+        "#define TL_PARTICLE_RADIUS_MAX %.17g\n"
+        "#define TL_PARTICLE_EFFICIENCY %.17g\n"
+        "#define TL_PARTICLE_PIXEL_SPREAD %.17g\n"
+        "#define TL_PARTICLE_MAX_CELLS %d\n"
         "#define TL_SHAFT_FOOTPRINT %.17g\n"
         "#define TL_SHAFT_SMOOTH %.17g\n"
         "#define TL_FLOOR_PERIOD %d\n"
@@ -174,9 +183,11 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH,
         TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
         TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_SUN_SPREAD, TL_CAUSTIC_FOLD, TL_SHAFT_RANGE,
-        TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
-        TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN,
-        TL_WATER_MAX_OPTICAL);
+        TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD,
+        TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY,
+        TL_PARTICLE_PIXEL_SPREAD, TL_PARTICLE_MAX_CELLS, TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH,
+        TL_FLOOR_PERIOD, TL_FRESNEL_TAP, TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G,
+        TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN, TL_WATER_MAX_OPTICAL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

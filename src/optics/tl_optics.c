@@ -80,6 +80,13 @@ static double path_integral(double c, double t)
     return (1.0 - exp(-ct)) / c;
 }
 
+double tl_optics_particle_scattering(double density)
+{
+    const double a = TL_PARTICLE_RADIUS_MIN, b = TL_PARTICLE_RADIUS_MAX;
+    double mean_square = (a * a + a * b + b * b) / 3.0; /* of a radius even in [a, b] */
+    return density * TL_PARTICLE_EFFICIENCY * M_PI * mean_square;
+}
+
 void tl_optics_water_inscatter(const tl_water_light *l, double depth, const double ray[3], double t,
                                double out[3])
 {

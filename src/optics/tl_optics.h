@@ -49,6 +49,28 @@ void tl_optics_water_extinction(const tl_water *w, double sigma[3]);
  * little more to merge). */
 #define TL_WINDOW_PIXEL_SPREAD 0.5
 
+/* Suspended particles (shaders/particles.glsl): the grid's cell (at most
+ * one mote in each: TL_PARTICLE_MAX_DENSITY is 1 / CELL³), how far from the
+ * eye they are drawn and how near, metres; the period their grid repeats
+ * over (a multiple of the cell); their radii, metres (even between the
+ * two); the share of their cross-section they scatter (large particles:
+ * twice, half of it by diffraction into the forward lobe); a spot's least
+ * width in pixels (its light spread over a pixel's footprint, not
+ * aliased); the cells a ray walks at most (the range's diagonal). */
+#define TL_PARTICLE_CELL         0.25
+#define TL_PARTICLE_RANGE        5.0
+#define TL_PARTICLE_NEAR         0.05
+#define TL_PARTICLE_PERIOD       64
+#define TL_PARTICLE_RADIUS_MIN   0.0003
+#define TL_PARTICLE_RADIUS_MAX   0.0015
+#define TL_PARTICLE_EFFICIENCY   2.0
+#define TL_PARTICLE_PIXEL_SPREAD 0.6
+#define TL_PARTICLE_MAX_CELLS    64
+
+/* The scattering per metre of `density` motes per cubic metre: what they
+ * add to a frame on average, as water that scatters that much more. */
+double tl_optics_particle_scattering(double density);
+
 /* The water body's light (shaders/water_light.glsl has the same). */
 /* The phase function's asymmetry: ocean particles scatter mostly forward. */
 #define TL_WATER_PHASE_G 0.75

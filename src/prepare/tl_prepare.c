@@ -28,7 +28,7 @@ static const char *const feature_defines[TL_FEATURE_COUNT] = {
     "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW",
     "TL_FEATURE_BOAT_SHADOW", "TL_FEATURE_BOW_SPRAY",
     "TL_FEATURE_CAUSTICS",    "TL_FEATURE_SEA_FLOOR",
-    "TL_FEATURE_SHAFTS"};
+    "TL_FEATURE_SHAFTS",      "TL_FEATURE_PARTICLES"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "giant wave",
                                                              "boat",
@@ -51,7 +51,8 @@ static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "bow spray",
                                                              "caustics",
                                                              "sea floor",
-                                                             "light shafts"};
+                                                             "light shafts",
+                                                             "particles"};
 
 const char *tl_feature_define(int index)
 {
@@ -638,6 +639,12 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
         u->features |= TL_FEATURE_SHAFTS;
         u->shafts = (float)s->underwater.shafts;
         u->shaft_steps = s->quality.shaft_steps;
+    }
+    if (under && s->underwater.particles > 0.0) {
+        u->features |= TL_FEATURE_PARTICLES;
+        u->particles = (float)s->underwater.particles;
+        for (int i = 0; i < 3; i++)
+            u->particle_offset[i] = (float)wrap_period(s->camera.position[i], TL_PARTICLE_PERIOD);
     }
     if (floor) {
         u->features |= TL_FEATURE_SEA_FLOOR;

@@ -50,9 +50,10 @@ typedef enum tl_feature {
     TL_FEATURE_SEA_FLOOR =
         1u << 21, /* ocean.floor_depth > 0: seen from below or through the surface */
     TL_FEATURE_SHAFTS = 1u << 22, /* under water, the sun up, underwater.shafts, shaft steps > 0 */
+    TL_FEATURE_PARTICLES = 1u << 23, /* under water, underwater.particles > 0 */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 23
+#define TL_FEATURE_COUNT 24
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
@@ -251,15 +252,17 @@ typedef struct tl_frame_uniforms {
     float water_sigma[3];   /* extinction per metre, R G B */
     float water_scattering; /* per metre, grey */
     float water_ior;
-    float cam_depth;       /* metres below the surface at the camera (0 above) */
-    float lens;            /* TL_LENS_DISTANCE */
-    float sun_water[3];    /* the direction sunlight travels in the water */
-    float sun_water_trans; /* the share of it that crosses a flat surface */
-    float caustics;        /* underwater.caustics (TL_FEATURE_CAUSTICS) */
-    float shafts;          /* underwater.shafts (TL_FEATURE_SHAFTS) */
-    int shaft_steps;       /* quality.shaft_steps (TL_FEATURE_SHAFTS) */
-    float floor_depth;     /* ocean.floor_depth (TL_FEATURE_SEA_FLOOR) */
-    float floor_offset[2]; /* the camera's x z wrapped every TL_FLOOR_PERIOD */
+    float cam_depth;          /* metres below the surface at the camera (0 above) */
+    float lens;               /* TL_LENS_DISTANCE */
+    float sun_water[3];       /* the direction sunlight travels in the water */
+    float sun_water_trans;    /* the share of it that crosses a flat surface */
+    float caustics;           /* underwater.caustics (TL_FEATURE_CAUSTICS) */
+    float shafts;             /* underwater.shafts (TL_FEATURE_SHAFTS) */
+    int shaft_steps;          /* quality.shaft_steps (TL_FEATURE_SHAFTS) */
+    float particles;          /* underwater.particles (TL_FEATURE_PARTICLES) */
+    float particle_offset[3]; /* the camera wrapped every TL_PARTICLE_PERIOD m */
+    float floor_depth;        /* ocean.floor_depth (TL_FEATURE_SEA_FLOOR) */
+    float floor_offset[2];    /* the camera's x z wrapped every TL_FLOOR_PERIOD */
 
     /* Fog (TL_FEATURE_FOG): density per metre at the water, height scale. */
     float fog[2];

@@ -113,6 +113,8 @@
     X(FLOAT, caustics, 0, TL_FEATURE_CAUSTICS, "underwater.caustics: their strength") \
     X(FLOAT, shafts, 0, TL_FEATURE_SHAFTS, "underwater.shafts: their strength") \
     X(INT, shaft_steps, 0, TL_FEATURE_SHAFTS, "quality.shaft_steps: their samples along a ray") \
+    X(FLOAT, particles, 0, TL_FEATURE_PARTICLES, "underwater.particles: motes per cubic metre") \
+    X(VEC3, particle_offset, 0, TL_FEATURE_PARTICLES, "camera x y z wrapped every TL_PARTICLE_PERIOD m: the motes' grid") \
     X(FLOAT, floor_depth, 0, TL_FEATURE_SEA_FLOOR, "metres from the mean surface down to the sea floor") \
     X(VEC2, floor_offset, 0, TL_FEATURE_SEA_FLOOR, "camera x z wrapped every TL_FLOOR_PERIOD m: the sand's coordinates") \
     X(FLOAT, sky_scale, 0, TL_FEATURE_SKY_PHYSICAL, "the sun's illuminance above the air") \

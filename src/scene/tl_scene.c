@@ -77,6 +77,7 @@ void tl_scene_defaults(tl_scene *s)
     s->underwater.mode = TL_UNDERWATER_AUTO;
     s->underwater.caustics = 1.0;
     s->underwater.shafts = 1.0;
+    s->underwater.particles = 0.0;
     s->ocean.floor_depth = 0.0;
 
     s->giant.enabled = false;

@@ -87,10 +87,15 @@ typedef enum tl_underwater_mode {
     TL_UNDERWATER_OFF,
 } tl_underwater_mode;
 
+/* The most suspended motes per cubic metre: one in each cell of their grid
+ * (TL_PARTICLE_CELL, src/optics/tl_optics.h). */
+#define TL_PARTICLE_MAX_DENSITY 64.0
+
 typedef struct tl_underwater {
     tl_underwater_mode mode;
-    double caustics; /* the caustics' strength: 0 off, 1 physical (1) */
-    double shafts;   /* the light shafts' strength: 0 off, 1 physical (1) */
+    double caustics;  /* the caustics' strength: 0 off, 1 physical (1) */
+    double shafts;    /* the light shafts' strength: 0 off, 1 physical (1) */
+    double particles; /* suspended motes per cubic metre near the camera (0: none) */
 } tl_underwater;
 
 /* The scripted giant wave (seed 003, "North Star"): one Gerstner crest

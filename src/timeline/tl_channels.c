@@ -122,6 +122,9 @@ static const tl_channel channels[] = {
          "strength of the light the waves focus under water; 0 = off"),
     REAL("underwater.shafts", 1, TL_UNIT_NONE, 0.0, 10.0, underwater.shafts,
          "strength of the light shafts the waves cast in the water; 0 = off"),
+    REAL("underwater.particles", 1, TL_UNIT_NONE, 0.0, TL_PARTICLE_MAX_DENSITY,
+         underwater.particles,
+         "motes per cubic metre that catch the light near the camera; 0 = none"),
 
     {"giant.enabled", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, giant.enabled),
      NULL, "the giant wave exists"},
