@@ -5,8 +5,9 @@
 // sky's light as they reach its depth. Needs foam.glsl (its hash) and
 // water_light.glsl.
 
-// Wet sand's reflectance (linear), and the wavelength of its ripples.
-const vec3 TL_FLOOR_SAND = vec3(0.42, 0.37, 0.28);
+// Pale wet sand's reflectance (linear: a bay's shell and coral sand), and
+// the wavelength of its ripples.
+const vec3 TL_FLOOR_SAND = vec3(0.62, 0.58, 0.48);
 const float TL_FLOOR_RIPPLE = 0.3;
 
 // Value noise with cells of `cell` metres that repeats every

@@ -183,6 +183,12 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     scattering *=
         (sky_sun_light() * scatter_sunlit * max(u_sun_dir.y, 0.0) + TL_PI * sky_ambient()) / 0.94;
 #endif
+#ifdef TL_FEATURE_SEA_FLOOR
+    // Over a floor the water column is finite: it sends up only the share
+    // of the deep sea's light its depth holds (down and back up), and the
+    // sand seen through it stands for the rest.
+    scattering *= 1.0 - exp(-2.0 * u_water_fall * max(hit.y + u_floor_depth, 0.0));
+#endif
     vec3 color = fresnel * reflection + scattering;
 #ifdef TL_FEATURE_SEA_FLOOR
     color += (1.0 - fresnel) * floor_through_surface(ray, n, hit, dist, slope_var);

@@ -12,18 +12,20 @@ vec3 water_albedo()
 }
 
 // The sun's irradiance across its beam `depth` metres under the mean
-// surface: what crossed a flat surface, dimmed along its slant path.
+// surface: what crossed a flat surface, dimmed along its slant path by
+// u_water_fall (the light the water scatters forward stays in the beam:
+// tl_optics_water_fall).
 vec3 water_sun_at(float depth)
 {
     return sky_sun_light() * u_sun_water_trans *
-           exp(-u_water_sigma * (max(depth, 0.0) / max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN)));
+           exp(-u_water_fall * (max(depth, 0.0) / max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN)));
 }
 
 // The sky's light from above at that depth, as the radiance of an even
 // sky: the diffuse light taken straight down (its mean cosine 1).
 vec3 water_sky_at(float depth)
 {
-    return sky_ambient() * exp(-u_water_sigma * max(depth, 0.0));
+    return sky_ambient() * exp(-u_water_fall * max(depth, 0.0));
 }
 
 // The water's phase function toward the eye: Henyey-Greenstein, g = 0.75
@@ -57,10 +59,12 @@ vec3 water_inscatter(float depth, vec3 ray, float t)
     // grows toward it, and past it there is no water to scatter.
     if (ray.y > 0.0)
         t = min(t, max(depth, 0.0) / ray.y);
-    // The light falls by exp(-sigma z / cos) as the ray climbs z = -ray.y s.
+    // The light it meets changes by exp(fall rise / cos) as the ray climbs
+    // rise = ray.y s, and what it scatters is dimmed by exp(-sigma s).
+    vec3 fall = u_water_fall;
     vec3 sun = u_water_scattering * water_phase(dot(u_sun_water, -ray)) * water_sun_at(depth) *
-               water_path_integral(sigma * (1.0 - ray.y / sun_down), t);
+               water_path_integral(sigma - fall * (ray.y / sun_down), t);
     vec3 sky = u_water_scattering * TL_WATER_SKY_SCATTER * water_sky_at(depth) *
-               water_path_integral(sigma * (1.0 - ray.y), t);
+               water_path_integral(sigma - fall * ray.y, t);
     return sun + sky;
 }

@@ -77,6 +77,7 @@ static int motes_of(tl_renderer *r, double yaw_deg, double x, double t, double v
     tl_water_light l;
     for (int c = 0; c < 3; c++) {
         l.sigma[c] = u.water_sigma[c];
+        l.fall[c] = u.water_fall[c];
         l.sun_water[c] = u.sun_water[c];
         l.sun_light[c] = u.sun_light[c];
         l.sky_ambient[c] = u.sky_ambient[c];

@@ -14,6 +14,7 @@ static void light_of(const tl_frame_uniforms *u, tl_water_light *l)
 {
     for (int c = 0; c < 3; c++) {
         l->sigma[c] = u->water_sigma[c];
+        l->fall[c] = u->water_fall[c];
         l->sun_water[c] = u->sun_water[c];
         l->sun_light[c] = (u->features & TL_FEATURE_SUN_DISC) ? u->sun_light[c] : 0.0;
         l->sky_ambient[c] = u->sky_ambient[c];

@@ -42,6 +42,12 @@ void tl_optics_water_extinction(const tl_water *w, double sigma[3])
     }
 }
 
+void tl_optics_water_fall(const tl_water *w, const double sigma[3], double fall[3])
+{
+    for (int c = 0; c < 3; c++)
+        fall[c] = fmax(sigma[c] - TL_WATER_PHASE_G * w->scattering, 0.1 * sigma[c]);
+}
+
 double tl_optics_fog_depth(double density, double height, double y0, double ray_y, double dist)
 {
     if (!(density > 0.0) || !(dist > 0.0))
@@ -98,11 +104,13 @@ void tl_optics_water_inscatter(const tl_water_light *l, double depth, const doub
     if (ray[1] > 0.0) /* it leaves the water by the mean surface */
         t = fmin(t, z / ray[1]);
     for (int c = 0; c < 3; c++) {
-        double sigma = l->sigma[c];
-        double sun = l->sun_light[c] * l->sun_water_trans * exp(-sigma * z / sun_down);
-        double sky = l->sky_ambient[c] * exp(-sigma * z);
+        double sigma = l->sigma[c], fall = l->fall[c];
+        double sun = l->sun_light[c] * l->sun_water_trans * exp(-fall * z / sun_down);
+        double sky = l->sky_ambient[c] * exp(-fall * z);
+        /* Along the ray the light it meets changes by exp(fall · rise / down)
+         * and what it scatters is dimmed by exp(-sigma s) on the way back. */
         out[c] =
-            l->scattering * (phase * sun * path_integral(sigma * (1.0 - ray[1] / sun_down), t) +
-                             TL_WATER_SKY_SCATTER * sky * path_integral(sigma * (1.0 - ray[1]), t));
+            l->scattering * (phase * sun * path_integral(sigma - fall * ray[1] / sun_down, t) +
+                             TL_WATER_SKY_SCATTER * sky * path_integral(sigma - fall * ray[1], t));
     }
 }

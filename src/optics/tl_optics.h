@@ -41,6 +41,13 @@ double tl_optics_snell_window(double n);
  * shader holds the scattering albedo at 1 at most). */
 void tl_optics_water_extinction(const tl_water *w, double sigma[3]);
 
+/* How fast the light from above (the sun's beam, the sky's) falls per
+ * metre down, from the extinction `sigma`: the share of the scattering the
+ * phase function sends forward (TL_WATER_PHASE_G) stays in the beam, so
+ * the light falls by the absorption and the scattering sent aside (the
+ * similarity relation: sigma - g b); at least a tenth of sigma. */
+void tl_optics_water_fall(const tl_water *w, const double sigma[3], double fall[3]);
+
 /* The least spread of the surface's facets Snell's window is seen
  * through from below, as a share of a pixel's angle: a pixel spans that
  * range of incidence itself, so a calm sea's edge is anti-aliased rather
@@ -85,9 +92,10 @@ double tl_optics_particle_scattering(double density);
 
 /* What lights the water body, as a frame's uniforms carry it. */
 typedef struct tl_water_light {
-    double sigma[3];        /* extinction per metre (tl_optics_water_extinction) */
-    double scattering;      /* per metre, grey */
-    double sun_water[3];    /* the sun's way in the water (tl_optics_sun_in_water) */
+    double sigma[3];     /* extinction per metre (tl_optics_water_extinction) */
+    double fall[3];      /* the light from above: its fall per metre down (tl_optics_water_fall) */
+    double scattering;   /* per metre, grey */
+    double sun_water[3]; /* the sun's way in the water (tl_optics_sun_in_water) */
     double sun_water_trans; /* the share of the sun that crossed the surface */
     double sun_light[3];    /* the sun's irradiance across its beam above the water */
     double sky_ambient[3];  /* the sky's light on a white surface facing up */

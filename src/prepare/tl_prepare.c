@@ -616,9 +616,11 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
         u->features |= TL_FEATURE_UNDERWATER;
     if (side == TL_WATER_STRADDLES)
         u->features |= TL_FEATURE_WATERLINE;
-    double sigma[3];
+    double sigma[3], fall[3];
     tl_optics_water_extinction(&s->water, sigma);
+    tl_optics_water_fall(&s->water, sigma, fall);
     to_float3(sigma, u->water_sigma);
+    to_float3(fall, u->water_fall);
     u->water_scattering = (float)s->water.scattering;
     u->cam_depth = (float)fmax(-gap, 0.0);
     u->lens = (float)TL_LENS_DISTANCE;

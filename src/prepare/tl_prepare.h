@@ -250,6 +250,7 @@ typedef struct tl_frame_uniforms {
     /* Under water (TL_FEATURE_UNDERWATER); water_ior in every frame, the
      * giant wave's crest refracts the sun with it too. */
     float water_sigma[3];   /* extinction per metre, R G B */
+    float water_fall[3];    /* the light from above: its fall per metre down */
     float water_scattering; /* per metre, grey */
     float water_ior;
     float cam_depth;          /* metres below the surface at the camera (0 above) */

@@ -105,6 +105,7 @@
     X(VEC2, giant_world, 0, TL_FEATURE_GIANT_WAVE, "the crest's world (s, w), wrapped every 65536 m") \
     X(VEC2, giant_rise, 0, TL_FEATURE_GIANT_WAVE, "s where the wave reaches the camera's height (empty: none)") \
     X(VEC3, water_sigma, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "extinction per metre, R G B") \
+    X(VEC3, water_fall, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the light from above: its fall per metre down, R G B") \
     X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "per metre, grey") \
     X(FLOAT, cam_depth, 0, TL_FEATURE_UNDERWATER, "metres below the surface at the camera") \
     X(FLOAT, lens, 0, TL_FEATURE_UNDERWATER, "the lens plane's distance ahead of the camera") \
