@@ -97,8 +97,16 @@ void main()
         float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / u_resolution.y;
         sun *= caustic_light(v_world.xz, depth, footprint);
 #endif
-        vec3 from_above = water_sky_at(depth) + water_sun_at(depth) * (-u_sun_water.y / TL_PI);
-        vec3 from_below = 0.5 * water_albedo() * from_above;
+        // From above: the sky's light and the share of the sun the water
+        // has turned diffuse (the rest is the beam above, caustics and
+        // all); from below, the water's own back-scatter of all of it, and
+        // a sandy floor's light where there is one.
+        vec3 sun_even = water_sun_at(depth) * (-u_sun_water.y / TL_PI);
+        vec3 from_above = water_sky_at(depth) + sun_even * water_sun_diffuse(depth);
+        vec3 from_below = 0.5 * water_albedo() * (water_sky_at(depth) + sun_even);
+#ifdef TL_FEATURE_SEA_FLOOR
+        from_below += water_floor_up(depth);
+#endif
         vec3 ambient = mix(from_below, from_above, 0.5 + 0.5 * n.y);
         vec3 env = r.y > 0.0 ? from_above : from_below;
         color = material_brdf(n, v, -u_sun_water, base, roughness, metallic) * sun +

@@ -5,9 +5,8 @@
 // sky's light as they reach its depth. Needs foam.glsl (its hash) and
 // water_light.glsl.
 
-// Pale wet sand's reflectance (linear: a bay's shell and coral sand), and
-// the wavelength of its ripples.
-const vec3 TL_FLOOR_SAND = vec3(0.62, 0.58, 0.48);
+// The wavelength of the sand's ripples (its reflectance, TL_FLOOR_SAND, is
+// in water_light.glsl: the hulls above take its light too).
 const float TL_FLOOR_RIPPLE = 0.3;
 
 // Value noise with cells of `cell` metres that repeats every

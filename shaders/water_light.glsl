@@ -5,6 +5,9 @@
 // the same in double; test_underwater probes the two (mode 20). Needs
 // sky.glsl.
 
+// Pale wet sand's reflectance (linear: a bay's shell and coral sand).
+const vec3 TL_FLOOR_SAND = vec3(0.62, 0.58, 0.48);
+
 // The share of a collision that scatters rather than absorbs (grey).
 vec3 water_albedo()
 {
@@ -27,6 +30,27 @@ vec3 water_sky_at(float depth)
 {
     return sky_ambient() * exp(-u_water_fall * max(depth, 0.0));
 }
+
+// The sun's share in the even light from above at that depth: what the
+// water has scattered on the way down. Near the surface the sun is all
+// beam (its caustics sharp on what it lights), deeper it turns diffuse.
+float water_sun_diffuse(float depth)
+{
+    float sun_down = max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN);
+    return 1.0 - exp(-u_water_scattering * max(depth, 0.0) / sun_down);
+}
+
+#ifdef TL_FEATURE_SEA_FLOOR
+// The light the sand sends up, as radiance, `depth` metres under the mean
+// surface (the floor's mean: its caustics average out): the sun and the sky
+// on it by the sand's reflectance, dimmed on the way up.
+vec3 water_floor_up(float depth)
+{
+    float floor_depth = u_floor_depth, sun_down = max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN);
+    vec3 sand = TL_FLOOR_SAND * (water_sun_at(floor_depth) * sun_down / TL_PI + water_sky_at(floor_depth));
+    return sand * exp(-u_water_fall * max(floor_depth - max(depth, 0.0), 0.0));
+}
+#endif
 
 // The water's phase function toward the eye: Henyey-Greenstein, g = 0.75
 // (the strong forward lobe of ocean particles).

@@ -381,11 +381,12 @@ static void bind_shadow(const tl_renderer *r, GLuint program)
 }
 
 /* The features that change how the hull is lit: the sun, the sky, the
- * water around it from below, its shadows, the caustics on it. Each
- * combination, with or without maps, is a program (TL_MESH_PROGRAMS). */
+ * water around it from below, its shadows, the caustics on it, the sand
+ * under it (seen from below only). Each combination, with or without
+ * maps, is a program (TL_MESH_PROGRAMS). */
 static const unsigned MESH_FEATURES[TL_MESH_LIGHT_FEATURES] = {
-    TL_FEATURE_SUN_DISC, TL_FEATURE_SKY_PHYSICAL, TL_FEATURE_UNDERWATER, TL_FEATURE_BOAT_SHADOW,
-    TL_FEATURE_CAUSTICS};
+    TL_FEATURE_SUN_DISC,    TL_FEATURE_SKY_PHYSICAL, TL_FEATURE_UNDERWATER,
+    TL_FEATURE_BOAT_SHADOW, TL_FEATURE_CAUSTICS,     TL_FEATURE_SEA_FLOOR};
 
 int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err)
 {
@@ -401,8 +402,11 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     glDisable(GL_BLEND);
     unsigned features = 0;
     int variant = 0;
+    unsigned lit_by = u->features;
+    if (!(lit_by & TL_FEATURE_UNDERWATER)) /* the hull takes the sand's light under water alone */
+        lit_by &= ~(unsigned)TL_FEATURE_SEA_FLOOR;
     for (int i = 0; i < TL_MESH_LIGHT_FEATURES; i++)
-        if (u->features & MESH_FEATURES[i]) {
+        if (lit_by & MESH_FEATURES[i]) {
             features |= MESH_FEATURES[i];
             variant |= 1 << i;
         }

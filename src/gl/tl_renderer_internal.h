@@ -16,7 +16,7 @@
 #define MAX_PROGRAMS 24
 /* Mesh programs: one per set of the four features that light the hull,
  * with and without the model's texture maps. */
-#define TL_MESH_LIGHT_FEATURES 5
+#define TL_MESH_LIGHT_FEATURES 6
 #define TL_MESH_PROGRAMS       (2 << TL_MESH_LIGHT_FEATURES)
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
 #define TL_PREPASS_LEVELS 2

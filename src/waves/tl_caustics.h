@@ -21,7 +21,7 @@
 
 /* The finite difference's step at the surface, metres: fine enough for
  * the ripples that make the brightest lines near the surface. */
-#define TL_CAUSTIC_STEP 0.03
+#define TL_CAUSTIC_STEP 0.01
 /* Its growth per metre of depth. The sun's disc alone would blur by its
  * angular diameter in the water (0.007 per metre); the estimate follows
  * one ray back to the surface, and below the ripples' focal depths each
