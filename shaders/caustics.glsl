@@ -17,11 +17,40 @@ vec2 caustic_slant(vec2 x, float footprint)
     return r.xz / -min(r.y, -TL_CAUSTIC_MIN_DOWN);
 }
 
+// The focus of a map whose Jacobian has determinant det, taken over a step
+// e at `depth`: the finer octaves' tilt and the sun's disc spread each
+// bundle over a band that widens with depth, so the lines widen and dim;
+// inside a fold three sheets light the point (tl_caustics.c says why).
+float caustic_rounded(float det, float depth, float e)
+{
+    float tilt = (1.0 - 1.0 / u_water_ior) * sqrt(waves_unresolved_slope_variance(TL_NORMAL_OCTAVES, e));
+    float spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
+    float k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
+    if (det < 0.0)
+        det *= TL_CAUSTIC_FOLD;
+    return sqrt((1.0 + k) / (det * det + k));
+}
+
+// (J - I) of the map to `depth` at surface point x0 by a forward difference
+// over e of the slant a there: columns d/dx and d/dz of the run.
+mat2 caustic_map_gradient(vec2 x0, vec2 a, float e, float depth)
+{
+    float s = depth / e;
+    return mat2((caustic_slant(x0 + vec2(e, 0.0), e) - a) * s,
+                (caustic_slant(x0 + vec2(0.0, e), e) - a) * s);
+}
+
+float caustic_det(mat2 g)
+{
+    return (1.0 + g[0].x) * (1.0 + g[1].y) - g[1].x * g[0].y;
+}
+
 // The irradiance at camera-relative p, `depth` metres under the mean
 // surface, in units of a flat sea's: 1 / |det J| of the map from the
-// surface to that depth, rounded off at TL_CAUSTIC_PEAK. `footprint`: the
-// pixel's width there (metres).
-float caustic_focus(vec2 p, float depth, float footprint)
+// surface to that depth, rounded off at TL_CAUSTIC_PEAK, times the finer
+// waves' own (tl_caustics.h) when `fine`. `footprint`: the pixel's width
+// there (metres).
+float caustic_focus(vec2 p, float depth, float footprint, bool fine)
 {
     if (depth <= 0.0 || u_sun_dir.y <= 0.0)
         return 1.0;
@@ -30,25 +59,21 @@ float caustic_focus(vec2 p, float depth, float footprint)
     // One fixed-point step toward the surface point whose bent ray lands
     // here (tl_caustics.c says why).
     x0 = p - depth * caustic_slant(x0, e);
-    vec2 a = caustic_slant(x0, e);
-    float s = depth / e;
-    vec2 ax = (caustic_slant(x0 + vec2(e, 0.0), e) - a) * s;
-    vec2 az = (caustic_slant(x0 + vec2(0.0, e), e) - a) * s;
-    float det = (1.0 + ax.x) * (1.0 + az.y) - az.x * ax.y;
-    // The finer octaves' tilt and the sun's disc spread each bundle over
-    // a band that widens with depth: the lines widen and dim; inside a
-    // fold three sheets light the point (tl_caustics.c says why).
-    float tilt = (1.0 - 1.0 / u_water_ior) * sqrt(waves_unresolved_slope_variance(TL_NORMAL_OCTAVES, e));
-    float spread =  depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
-    float k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
-    if (det < 0.0)
-        det *= TL_CAUSTIC_FOLD;
-    return sqrt((1.0 + k) / (det * det + k));
+    mat2 coarse = caustic_map_gradient(x0, caustic_slant(x0, e), e, depth);
+    float focus = caustic_rounded(caustic_det(coarse), depth, e);
+    float ef = max(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_FINE_BLUR, footprint);
+    if (fine && ef < TL_CAUSTIC_FINE_GAP * e) {
+        mat2 fine = caustic_map_gradient(x0, caustic_slant(x0, ef), ef, depth) - coarse;
+        float unscattered = exp(-u_water_scattering * depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN));
+        float share = TL_CAUSTIC_FINE_SHARE * unscattered;
+        focus *= 1.0 + share * (caustic_rounded(caustic_det(fine), depth, ef) - 1.0);
+    }
+    return focus;
 }
 
 // The caustics' share of the sun at that point: the focus, by
 // underwater.caustics (0: the flat sea's 1).
 float caustic_light(vec2 p, float depth, float footprint)
 {
-    return max(mix(1.0, caustic_focus(p, depth, footprint), u_caustics), 0.0);
+    return max(mix(1.0, caustic_focus(p, depth, footprint, true), u_caustics), 0.0);
 }

@@ -124,7 +124,7 @@ void main()
         result.x = material_wetness(p.x, p.y);
 #ifdef TL_FEATURE_CAUSTICS
     else if (u_probe_mode == 19)
-        result.x = caustic_focus(p, input4.z, input4.w);
+        result.x = caustic_focus(p, input4.z, input4.w, true);
 #endif
 #ifdef TL_FEATURE_BOW_SPRAY
     else if (u_probe_mode == 18)

@@ -37,6 +37,7 @@ static void light_of(const tl_scene *s, tl_caustic_light *l)
 {
     tl_scene_sun_direction(&s->sun, l->sun_dir);
     l->ior = s->water.ior;
+    l->scattering = s->water.scattering;
     tl_optics_sun_in_water(l->sun_dir, l->ior, l->sun_water);
 }
 
@@ -64,6 +65,41 @@ static void points(float *in)
         in[4 * i + 2] = depths[i % 6];
         in[4 * i + 3] = i % 12 < 6 ? 0.0f : 0.08f;
     }
+}
+
+/* The finer waves' web (TL_CAUSTIC_FINE_*): 9 m down, along a line of
+ * points 2 cm apart, the focus changes from point to point more with it
+ * than with the coarse web alone (water that scatters so much that none
+ * of the beam is left unscattered turns it off), and about the same
+ * light falls there. */
+static void test_fine_web(void)
+{
+    enum { M = 1024 };
+    tl_scene s;
+    underwater_scene(&s, 0.0, 0.0, 10.0);
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_caustic_light fine, coarse;
+    light_of(&s, &fine);
+    coarse = fine;
+    coarse.scattering = 1e3;
+    double step[2] = {0.0, 0.0}, mean[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; k++) {
+        const tl_caustic_light *l = k ? &coarse : &fine;
+        double last = 0.0;
+        for (int i = 0; i < M; i++) {
+            double f = tl_caustic_focus(&w, l, 0.02 * i, 0.37 * 0.02 * i, 9.0, 10.0, 36, 0.0);
+            mean[k] += f / M;
+            if (i > 0)
+                step[k] += fabs(f - last) / (M - 1);
+            last = f;
+        }
+    }
+    printf("caustics 9 m down, 2 cm apart: mean step %.4f with the finer web, %.4f without; "
+           "mean %.3f against %.3f\n",
+           step[0], step[1], mean[0], mean[1]);
+    CHECK(step[0] > 1.2 * step[1]);
+    CHECK(fabs(mean[0] / mean[1] - 1.0) < 0.15);
 }
 
 /* GPU (float, analytic gradients) against CPU (double, differences). */
@@ -340,6 +376,7 @@ static void test_hull(tl_renderer *r, const tl_mesh *boat)
 int main(void)
 {
     test_physics();
+    test_fine_web();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)

@@ -32,6 +32,48 @@ static void slant(const tl_waves *w, const tl_caustic_light *l, double x, double
     out[1] = r[2] / -down;
 }
 
+/* The focus of a map whose Jacobian has determinant `det`, taken over a
+ * step e at `depth`, rounded off. The octaves the step leaves out still
+ * tilt the rays, by their RMS slope times (1 - 1/ior), and the sun's disc
+ * is no point: each bundle lands spread over a band that widens with
+ * depth. Near a focus det changes by about 1 across a step, so a line
+ * that wide cannot fall below its width / e in det: the rounding widens
+ * and dims the lines deep down, as the light shows there. */
+static double rounded_focus(const tl_waves *w, const tl_caustic_light *l, double det, double depth,
+                            double e, int octaves)
+{
+    double tilt = (1.0 - 1.0 / l->ior) * sqrt(tl_waves_unresolved_slope_variance(w, octaves, e));
+    double spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
+    double k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
+    /* Past a fold (det < 0) three sheets of the surface light the point
+     * and the one followed here is the dimmest: the band between a fold's
+     * two lines is lit as brightly as the lines' sides, not left dark. */
+    if (det < 0.0)
+        det *= TL_CAUSTIC_FOLD;
+    return sqrt((1.0 + k) / (det * det + k));
+}
+
+/* (J - I) of the map to `depth` at surface point (x0, z0), by a forward
+ * difference over e of the slant `a` there. */
+static void map_gradient(const tl_waves *w, const tl_caustic_light *l, double x0, double z0,
+                         double t, int octaves, double e, double depth, const double a[2],
+                         double out[4])
+{
+    double ax[2], az[2];
+    slant(w, l, x0 + e, z0, t, octaves, e, ax);
+    slant(w, l, x0, z0 + e, t, octaves, e, az);
+    double s = depth / e;
+    out[0] = (ax[0] - a[0]) * s; /* d(run x)/dx */
+    out[1] = (ax[1] - a[1]) * s; /* d(run z)/dx */
+    out[2] = (az[0] - a[0]) * s; /* d(run x)/dz */
+    out[3] = (az[1] - a[1]) * s; /* d(run z)/dz */
+}
+
+static double det_of(const double g[4])
+{
+    return (1.0 + g[0]) * (1.0 + g[3]) - g[2] * g[1];
+}
+
 double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, double z,
                         double depth, double t, int octaves, double footprint)
 {
@@ -45,30 +87,26 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
      * here: without it the estimate is taken where the light would have
      * crossed a flat sea, and it no longer conserves the light on
      * average. */
-    double a[2], ax[2], az[2];
+    double a[2], coarse[4];
     slant(w, l, x0, z0, t, octaves, e, a);
     x0 = x - depth * a[0];
     z0 = z - depth * a[1];
     slant(w, l, x0, z0, t, octaves, e, a);
-    slant(w, l, x0 + e, z0, t, octaves, e, ax);
-    slant(w, l, x0, z0 + e, t, octaves, e, az);
-    double s = depth / e;
-    double jxx = 1.0 + (ax[0] - a[0]) * s, jzx = (ax[1] - a[1]) * s;
-    double jxz = (az[0] - a[0]) * s, jzz = 1.0 + (az[1] - a[1]) * s;
-    double det = jxx * jzz - jxz * jzx;
-    /* The octaves the step leaves out still tilt the rays, by their RMS
-     * slope times (1 - 1/ior), and the sun's disc is no point: each
-     * bundle lands spread over a band that widens with depth. Near a
-     * focus det changes by about 1 across a step, so a line that wide
-     * cannot fall below its width / e in det: the rounding widens and
-     * dims the lines deep down, as the light shows there. */
-    double tilt = (1.0 - 1.0 / l->ior) * sqrt(tl_waves_unresolved_slope_variance(w, octaves, e));
-    double spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
-    double k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
-    /* Past a fold (det < 0) three sheets of the surface light the point
-     * and the one followed here is the dimmest: the band between a fold's
-     * two lines is lit as brightly as the lines' sides, not left dark. */
-    if (det < 0.0)
-        det *= TL_CAUSTIC_FOLD;
-    return sqrt((1.0 + k) / (det * det + k));
+    map_gradient(w, l, x0, z0, t, octaves, e, depth, a, coarse);
+    double focus = rounded_focus(w, l, det_of(coarse), depth, e, octaves);
+    /* The finer waves' own map: their Jacobian is the finer step's less
+     * the coarse waves' (tl_caustics.h). */
+    double ef = fmax(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_FINE_BLUR, footprint);
+    if (ef < TL_CAUSTIC_FINE_GAP * e) {
+        double af[2], fine[4];
+        slant(w, l, x0, z0, t, octaves, ef, af);
+        map_gradient(w, l, x0, z0, t, octaves, ef, depth, af, fine);
+        for (int i = 0; i < 4; i++)
+            fine[i] -= coarse[i];
+        double f = rounded_focus(w, l, det_of(fine), depth, ef, octaves);
+        double unscattered =
+            exp(-l->scattering * depth / fmax(-l->sun_water[1], TL_CAUSTIC_MIN_DOWN));
+        focus *= 1.0 + TL_CAUSTIC_FINE_SHARE * unscattered * (f - 1.0);
+    }
+    return focus;
 }

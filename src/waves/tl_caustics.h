@@ -29,6 +29,23 @@
  * focus above the point: with this growth the light is conserved on
  * average at every depth from 0.5 to 40 m (test_caustics). */
 #define TL_CAUSTIC_BLUR 0.06
+/* The finer waves' pattern: a second estimate from the octaves between
+ * this growth's step and TL_CAUSTIC_BLUR's, their Jacobian less the
+ * coarser waves' (the two scales' maps compose, so their determinants,
+ * and their foci, multiply). It nets the coarse web's cells with finer,
+ * dimmer lines. */
+#define TL_CAUSTIC_FINE_BLUR 0.02
+/* The share of the finer waves' contrast kept near the surface: they are
+ * far past their focal depths, where several sheets overlap and one
+ * followed sheet overstates the pattern. Deeper it falls with the share
+ * of the sun's beam the water has not yet scattered (the scattered light
+ * comes in at angles that wash fine lines out first); with it the light
+ * stays within 15% of a flat sea's on average at 1, 5 and 40 m
+ * (test_caustics). */
+#define TL_CAUSTIC_FINE_SHARE 0.5
+/* Skipped where the finer step is over this share of the coarse one:
+ * there is no band between them. */
+#define TL_CAUSTIC_FINE_GAP 0.8
 /* The brightest focus, in flat surface irradiances: where det J passes
  * through 0 the estimate would be infinite; focus = sqrt((1 + k) /
  * (det² + k)), k = 1 / PEAK², rounds it off and keeps a flat sea at
@@ -58,6 +75,7 @@ typedef struct tl_caustic_light {
     double sun_dir[3];   /* unit, toward the sun */
     double sun_water[3]; /* unit, the way sunlight travels under a flat surface */
     double ior;          /* the water's refractive index */
+    double scattering;   /* the water's scattering per metre (water.scattering) */
 } tl_caustic_light;
 
 /* The focus at world (x, z), `depth` metres under the mean surface (y = 0),
