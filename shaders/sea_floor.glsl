@@ -71,7 +71,11 @@ vec3 floor_color(vec3 p, vec3 ray, float dist, float blur, bool lit_by_caustics)
 // The sand seen from above through the surface at `hit` (normal n) along
 // `ray`, `dist` metres from the eye: the view refracted down to it, dimmed
 // by the water on the way up, its radiance divided by n² as it leaves
-// the water (the window's squeeze undone). The facets finer than the
+// the water (the window's squeeze undone). Dimmed by the downwelling
+// light's fall, not the whole extinction: what the water scatters forward
+// off the view comes from the sand around, as bright on average (the
+// image blurs, which the facets' spread stands for; no in-scatter is
+// added from above, the water's colour stands for the column). The facets finer than the
 // normal (their slope variance) scatter a pixel's view over the sand,
 // more the deeper it lies: that blurs it as the footprint.
 vec3 floor_through_surface(vec3 ray, vec3 n, vec3 hit, float dist, float slope_var)
@@ -83,5 +87,5 @@ vec3 floor_through_surface(vec3 ray, vec3 n, vec3 hit, float dist, float slope_v
     float t = depth / -down.y;
     float spread = optics_facet_spread(slope_var, 2.0 * u_tan_half_vfov / u_resolution.y);
     vec3 sand = floor_color(hit + down * t, down, dist + t, t * spread * (1.0 - 1.0 / u_water_ior), true);
-    return sand * optics_water_transmittance(t) / (u_water_ior * u_water_ior);
+    return sand * exp(-u_water_fall * t) / (u_water_ior * u_water_ior);
 }
