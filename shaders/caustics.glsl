@@ -31,15 +31,6 @@ float caustic_rounded(float det, float depth, float e)
     return sqrt((1.0 + k) / (det * det + k));
 }
 
-// (J - I) of the map to `depth` at surface point x0 by a forward difference
-// over e of the slant a there: columns d/dx and d/dz of the run.
-mat2 caustic_map_gradient(vec2 x0, vec2 a, float e, float depth)
-{
-    float s = depth / e;
-    return mat2((caustic_slant(x0 + vec2(e, 0.0), e) - a) * s,
-                (caustic_slant(x0 + vec2(0.0, e), e) - a) * s);
-}
-
 float caustic_det(mat2 g)
 {
     return (1.0 + g[0].x) * (1.0 + g[1].y) - g[1].x * g[0].y;
@@ -55,18 +46,29 @@ float caustic_focus(vec2 p, float depth, float footprint, bool fine)
     if (depth <= 0.0 || u_sun_dir.y <= 0.0)
         return 1.0;
     float e = max(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_BLUR, footprint);
+    float ef = max(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_FINE_BLUR, footprint);
     vec2 x0 = p - (depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN)) * u_sun_water.xz;
     // One fixed-point step toward the surface point whose bent ray lands
     // here (tl_caustics.c says why).
     x0 = p - depth * caustic_slant(x0, e);
-    mat2 coarse = caustic_map_gradient(x0, caustic_slant(x0, e), e, depth);
+    // The slant at x0 and a step along x and z, at the coarse step and,
+    // for the finer web, at the fine one: in one loop, so that the waves'
+    // own loop is compiled once (six inlined copies of it took llvmpipe's
+    // compiler minutes).
+    int count = fine && ef < TL_CAUSTIC_FINE_GAP * e ? 6 : 3;
+    vec2 slant[6];
+    for (int i = 0; i < count; i++) {
+        float step = i < 3 ? e : ef;
+        int k = i % 3;
+        slant[i] = caustic_slant(x0 + step * vec2(k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0), step);
+    }
+    mat2 coarse = mat2(slant[1] - slant[0], slant[2] - slant[0]) * (depth / e);
     float focus = caustic_rounded(caustic_det(coarse), depth, e);
-    float ef = max(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_FINE_BLUR, footprint);
-    if (fine && ef < TL_CAUSTIC_FINE_GAP * e) {
-        mat2 fine = caustic_map_gradient(x0, caustic_slant(x0, ef), ef, depth) - coarse;
+    if (count == 6) {
+        mat2 fine_map = mat2(slant[4] - slant[3], slant[5] - slant[3]) * (depth / ef) - coarse;
         float unscattered = exp(-u_water_scattering * depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN));
         float share = TL_CAUSTIC_FINE_SHARE * unscattered;
-        focus *= 1.0 + share * (caustic_rounded(caustic_det(fine), depth, ef) - 1.0);
+        focus *= 1.0 + share * (caustic_rounded(caustic_det(fine_map), depth, ef) - 1.0);
     }
     return focus;
 }

@@ -102,7 +102,13 @@ vec3 trace_underwater(vec3 ray, out float dist)
         out_dir.y = max(out_dir.y, 0.0);
         through = sky_color(normalize(out_dir + vec3(0.0, 1e-4, 0.0))) * (u_water_ior * u_water_ior);
     }
+    // A facet tilted past the ray mirrors it upward, into the surface
+    // again, which mirrors it back down (or lets it out): taken as the
+    // depths seen along the ray turned down. Left looking up, it ended at
+    // once on the mean surface with no water to light it, and drew black
+    // stippled lines along the waves' backs at grazing angles.
     vec3 down = reflect(ray, -n);
+    down.y = -abs(down.y);
     float mirrored;
     vec3 surface = (1.0 - fresnel) * through + fresnel * underwater_below(hit, down, false, mirrored);
 #if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_FEATURE_WAKE)
