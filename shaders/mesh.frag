@@ -103,12 +103,16 @@ void main()
         // a sandy floor's light where there is one.
         vec3 sun_even = water_sun_at(depth) * (-u_sun_water.y / TL_PI);
         vec3 from_above = water_sky_at(depth) + sun_even * water_sun_diffuse(depth);
-        vec3 from_below = 0.5 * water_albedo() * (water_sky_at(depth) + sun_even);
+        vec3 water_below = 0.5 * water_albedo() * (water_sky_at(depth) + sun_even);
+        vec3 from_below = water_below, mirrored_below = water_below;
 #ifdef TL_FEATURE_SEA_FLOOR
-        from_below += water_floor_up(depth);
+        // The sand fills the lower hemisphere's even light; a reflection
+        // sees it along r, far off and faded toward the horizon.
+        from_below += water_floor_up(depth, -1.0);
+        mirrored_below += water_floor_up(depth, min(r.y, 0.0));
 #endif
         vec3 ambient = mix(from_below, from_above, 0.5 + 0.5 * n.y);
-        vec3 env = r.y > 0.0 ? from_above : from_below;
+        vec3 env = r.y > 0.0 ? from_above : mirrored_below;
         color = material_brdf(n, v, -u_sun_water, base, roughness, metallic) * sun +
                 (diffuse_color * ambient + env * material_env_brdf(f0, roughness, nv)) * occlusion;
     } else

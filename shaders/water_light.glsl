@@ -42,13 +42,16 @@ float water_sun_diffuse(float depth)
 
 #ifdef TL_FEATURE_SEA_FLOOR
 // The light the sand sends up, as radiance, `depth` metres under the mean
-// surface (the floor's mean: its caustics average out): the sun and the sky
-// on it by the sand's reflectance, dimmed on the way up.
-vec3 water_floor_up(float depth)
+// surface, seen looking down along a direction whose y is `down_y` (< 0;
+// -1 straight down): the floor's mean (its caustics average out), the sun
+// and the sky on it by the sand's reflectance, dimmed along the slant way
+// up. Toward the horizon the sand lies far off and fades out.
+vec3 water_floor_up(float depth, float down_y)
 {
     float floor_depth = u_floor_depth, sun_down = max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN);
     vec3 sand = TL_FLOOR_SAND * (water_sun_at(floor_depth) * sun_down / TL_PI + water_sky_at(floor_depth));
-    return sand * exp(-u_water_fall * max(floor_depth - max(depth, 0.0), 0.0));
+    float way = max(floor_depth - max(depth, 0.0), 0.0) / max(-down_y, TL_WATER_MIN_SUN_DOWN);
+    return sand * exp(-u_water_fall * min(way, TL_WATER_MAX_OPTICAL / max(u_water_fall.b, 1e-6)));
 }
 #endif
 
