@@ -50,8 +50,10 @@ vec3 water_floor_up(float depth, float down_y)
 {
     float floor_depth = u_floor_depth, sun_down = max(-u_sun_water.y, TL_WATER_MIN_SUN_DOWN);
     vec3 sand = TL_FLOOR_SAND * (water_sun_at(floor_depth) * sun_down / TL_PI + water_sky_at(floor_depth));
+    // Clamp: a way within a tenth of level is taken at a tenth (the
+    // sand there is faded out anyway).
     float way = max(floor_depth - max(depth, 0.0), 0.0) / max(-down_y, TL_WATER_MIN_SUN_DOWN);
-    return sand * exp(-u_water_fall * min(way, TL_WATER_MAX_OPTICAL / max(u_water_fall.b, 1e-6)));
+    return sand * exp(-u_water_fall * way);
 }
 #endif
 

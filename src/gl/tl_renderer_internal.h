@@ -14,8 +14,9 @@
 #include "sky/tl_sky.h"
 
 #define MAX_PROGRAMS 24
-/* Mesh programs: one per set of the four features that light the hull,
- * with and without the model's texture maps. */
+/* Mesh programs: one per set of the features that light the hull
+ * (MESH_FEATURES in tl_renderer_boat.c), with and without the model's
+ * texture maps. */
 #define TL_MESH_LIGHT_FEATURES 6
 #define TL_MESH_PROGRAMS       (2 << TL_MESH_LIGHT_FEATURES)
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
