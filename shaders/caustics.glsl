@@ -79,3 +79,21 @@ float caustic_light(vec2 p, float depth, float footprint)
 {
     return max(mix(1.0, caustic_focus(p, depth, footprint, true), u_caustics), 0.0);
 }
+
+#ifdef TL_FEATURE_GIANT_CAUSTICS
+// The caustics in the light through the giant wave's crest
+// (tl_caustic_crest): the light that reaches camera-relative `hit` crossed
+// `path` metres of water from where it entered the crest's far side,
+// toward the sun, and the ripples there focused it as they focus the sun
+// under a level sea; the focus that far along the refracted beam below the
+// entry point. The view ray gathers the glow over a range of depths, which
+// averages the web: giant.caustics of its contrast is kept.
+float caustic_crest(vec2 hit, float path, float footprint)
+{
+    if (path <= 0.0)
+        return 1.0;
+    float depth = path * max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN);
+    vec2 at = hit + path * (u_sun_dir.xz + u_sun_water.xz);
+    return mix(1.0, caustic_focus(at, depth, footprint, true), u_giant_scatter.w);
+}
+#endif

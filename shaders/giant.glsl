@@ -488,7 +488,7 @@ float giant_water_toward_sun(vec3 from)
 // the sun's colour shows through, turquoise; where the wave is thick it
 // fades to deep blue and then to nothing. giant.scatter_color tints what
 // the water scatters (its suspended matter's colour).
-vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n)
+vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint)
 {
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     if (daylight <= 0.0)
@@ -508,6 +508,10 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n)
     float through = smoothstep(0.0, 0.5, giant_top(g)) *
                     smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
+#ifdef TL_FEATURE_GIANT_CAUSTICS
+    // The ripples where the light came in focus it into a web.
+    crossed *= caustic_crest(hit.xz, path.x, footprint);
+#endif
     // Times a noise of the crest's thinness (cells 7 m along the crest by
     // 16 m down the face, 0.6 to 1.4): the lip is not equally thin all
     // along, and the light falls in broad shafts.
@@ -530,7 +534,7 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
     float foam = giant_foam(g, ocean_value, footprint, thickness, aerated);
     vec3 glow = vec3(0.0);
 #ifdef TL_FEATURE_GIANT_GLOW
-    glow = giant_scatter(g, hit, ray, n);
+    glow = giant_scatter(g, hit, ray, n, footprint);
 #endif
     color += glow * (1.0 - foam);
     // The bubbles behind the crest, tinted by the water above them, under

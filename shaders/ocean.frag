@@ -6,6 +6,11 @@
 #include "sky.glsl"
 #include "optics.glsl"
 #include "foam.glsl"
+// Caustics before giant.glsl: the light through the crest has them too.
+#if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_SHAFTS) ||                                  \
+    defined(TL_FEATURE_GIANT_CAUSTICS)
+#include "caustics.glsl"
+#endif
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif
@@ -26,13 +31,10 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #ifdef TL_FEATURE_BOAT_SHADOW
 #include "boat_shadow.glsl"
 #endif
-// The water body's light, caustics and the sea floor before water.glsl:
+// The water body's light and the sea floor before water.glsl:
 // the floor shows through the surface from above too.
 #if defined(TL_FEATURE_UNDERWATER) || defined(TL_FEATURE_SEA_FLOOR)
 #include "water_light.glsl"
-#endif
-#if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_SHAFTS)
-#include "caustics.glsl"
 #endif
 #ifdef TL_FEATURE_SEA_FLOOR
 #include "sea_floor.glsl"

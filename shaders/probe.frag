@@ -48,12 +48,18 @@
 //   mode 19: the caustics' focus at camera-relative (x, z), the input's
 //           third float metres down, its fourth the footprint
 //                                            (tl_caustic_focus)
+//   mode 21: the crest's caustics at camera-relative (x, z) for light that
+//           crossed the input's third float metres of the crest, its
+//           fourth the footprint                   (tl_caustic_crest)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
 #include "optics.glsl"
 #include "foam.glsl"
 #include "material.glsl"
+#if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_GIANT_CAUSTICS)
+#include "caustics.glsl"
+#endif
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif
@@ -73,9 +79,6 @@
 #endif
 #ifdef TL_FEATURE_WAKE
 #include "wake.glsl"
-#endif
-#ifdef TL_FEATURE_CAUSTICS
-#include "caustics.glsl"
 #endif
 
 uniform int u_probe_mode;
@@ -125,6 +128,10 @@ void main()
 #ifdef TL_FEATURE_CAUSTICS
     else if (u_probe_mode == 19)
         result.x = caustic_focus(p, input4.z, input4.w, true);
+#endif
+#ifdef TL_FEATURE_GIANT_CAUSTICS
+    else if (u_probe_mode == 21)
+        result.x = caustic_crest(p, input4.z, input4.w);
 #endif
 #ifdef TL_FEATURE_BOW_SPRAY
     else if (u_probe_mode == 18)

@@ -130,7 +130,7 @@ float waves_value_grad(vec2 p, int octaves, float footprint, out vec2 grad, out 
         float detail = 1.0;
 // Caustics fade the octaves finer than their step whatever the preset
 // (where LOD is off, every other caller's footprint is 0).
-#if defined(TL_FEATURE_LOD) || defined(TL_FEATURE_CAUSTICS)
+#if defined(TL_FEATURE_LOD) || defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_GIANT_CAUSTICS)
         if (footprint > 0.0) {
             detail = waves_detail(w.z, footprint);
             if (detail <= 0.0) {

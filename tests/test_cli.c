@@ -209,11 +209,11 @@ static void test_success(void)
     CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, physical sky, level of detail, "
                                  "analytic normals, filtered shading, hit polish\n");
     CHECK(run(NULL, "still", tl, "-v", "--time", "0.5", "--size", "16x16", "-o", png, NULL) == 0);
-    /* The wave's spindrift and glow come with it (a 6 m crest at half fade
-     * is tall enough to shed spray; the sun is up). */
+    /* The wave's spindrift, glow and the glow's caustics come with it (a
+     * 6 m crest at half fade is tall enough to shed spray; the sun is up). */
     CHECK_STR_CONTAINS(out_text, "features: ocean, sun disc, giant wave, physical sky, level of "
                                  "detail, analytic normals, filtered shading, hit polish, spray, "
-                                 "crest glow\n");
+                                 "crest glow, crest caustics\n");
     /* eval reports the wave and the water under the camera and the crest. */
     CHECK(run(NULL, "eval", tl, "--at", "1s", NULL) == 0);
     /* The crest reaches the centre at giant.arrival, at the deep-water

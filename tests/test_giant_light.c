@@ -1,12 +1,14 @@
 /* The light on the giant wave, on the GPU (llvmpipe on CI): the light
  * through its crest (fading with the wave, coloured by the water it
- * crossed), the lip against the sky with normals met from behind, and the
- * crest's shadow against its double CPU mirror, and the bubbles the broken
- * crest leaves behind it. */
+ * crossed, netted by the far side's caustics), the lip against the sky with normals met from
+ * behind, and the crest's shadow against its double CPU mirror, and the bubbles the broken crest
+ * leaves behind it. */
 #include <math.h>
 #include <stdlib.h>
 
+#include "optics/tl_optics.h"
 #include "tl_giant_test.h"
+#include "waves/tl_caustics.h"
 
 /* facing_scene backlit by a low sun at `fade`, rendered with the light
  * through the crest (`lit`) and without it (`dark`); non-zero if a render
@@ -161,6 +163,127 @@ static void test_glow_uneven(tl_renderer *r)
     CHECK(sd > 0.18 * mean);
     tl_frame_free(&a);
     tl_frame_free(&b);
+}
+
+/* The crest's caustics (giant.caustics, feature `crest caustics`): the
+ * ripples on the crest's far side focus the light through it into a web.
+ * Over the glow's pixels, the glow with them over the glow without them
+ * varies from pixel to pixel (its standard deviation above 0.1) and keeps
+ * the light on average (the mean ratio within 15% of 1); at 0 the feature
+ * is not compiled in. */
+static void test_glow_caustics(tl_renderer *r)
+{
+    tl_scene s;
+    tl_frame a, b, flat;
+    if (glow_frames(r, 1.0, &s, &a, &b)) {
+        CHECK(0);
+        return;
+    }
+    tl_scene off = s;
+    off.giant.caustics = 0.0;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(&s, &w, &u);
+    CHECK(u.features & TL_FEATURE_GIANT_CAUSTICS);
+    tl_prepare_frame(&off, &w, &u);
+    CHECK(!(u.features & TL_FEATURE_GIANT_CAUSTICS));
+    CHECK(u.features & TL_FEATURE_GIANT_GLOW);
+    if (render(r, &off, &flat)) {
+        CHECK(0);
+        tl_frame_free(&a);
+        tl_frame_free(&b);
+        return;
+    }
+    double rgb[3], peak = 0.0;
+    size_t count = (size_t)s.width * s.height;
+    for (size_t i = 0; i < count; i++) {
+        glow_at(&flat, &b, i, rgb);
+        peak = fmax(peak, glow_luminance(rgb));
+    }
+    double sum = 0.0, sum2 = 0.0;
+    int n = 0;
+    for (size_t i = 0; i < count; i++) {
+        glow_at(&flat, &b, i, rgb);
+        double without = glow_luminance(rgb);
+        if (without < 0.1 * peak)
+            continue;
+        glow_at(&a, &b, i, rgb);
+        double ratio = glow_luminance(rgb) / without;
+        sum += ratio;
+        sum2 += ratio * ratio;
+        n++;
+    }
+    double mean = n ? sum / n : 0.0, sd = n ? sqrt(fmax(sum2 / n - mean * mean, 0.0)) : 0.0;
+    printf("crest caustics over %d glowing pixels: glow with them over without, mean %.3f, sd "
+           "%.3f\n",
+           n, mean, sd);
+    CHECK(n > 100);
+    CHECK(fabs(mean - 1.0) < 0.15);
+    CHECK(sd > 0.1);
+    tl_frame_free(&a);
+    tl_frame_free(&b);
+    tl_frame_free(&flat);
+}
+
+/* The crest's caustics on the GPU (caustic_crest) against the CPU's
+ * double (tl_caustic_crest), near the origin and far out at a late time;
+ * and giant.caustics 0 leaves the light as it is. */
+static void test_crest_caustics_probe(tl_renderer *r, double x, double z, double t)
+{
+    enum { N = 512 };
+    tl_scene s;
+    facing_scene(&s);
+    s.sun.azimuth = 0.0;
+    s.sun.elevation = 0.2;
+    s.camera.position[0] = x;
+    s.camera.position[2] = z;
+    s.time = t;
+    s.giant.arrival = t;
+    s.giant.caustics = 0.4;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(&s, &w, &u);
+    CHECK(u.features & TL_FEATURE_GIANT_CAUSTICS);
+    static float in[4 * N], out[4 * N];
+    const float paths[] = {0.3f, 1.0f, 3.0f, 8.0f, 20.0f};
+    srand(11);
+    for (int i = 0; i < N; i++) {
+        in[4 * i] = (float)(-15.0 + 30.0 * rand() / RAND_MAX);
+        in[4 * i + 1] = (float)(-15.0 + 30.0 * rand() / RAND_MAX);
+        in[4 * i + 2] = paths[i % 5];
+        in[4 * i + 3] = i % 10 < 5 ? 0.0f : 0.05f;
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe4(r, &u, 21, in, N, s.quality.normal_octaves, out, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    tl_caustic_light l;
+    tl_scene_sun_direction(&s.sun, l.sun_dir);
+    l.ior = s.water.ior;
+    l.scattering = s.water.scattering;
+    tl_optics_sun_in_water(l.sun_dir, l.ior, l.sun_water);
+    int close = 0;
+    double worst = 0.0, spread = 0.0;
+    for (int i = 0; i < N; i++) {
+        double want = tl_caustic_crest(&w, &l, x + in[4 * i], z + in[4 * i + 1], in[4 * i + 2], t,
+                                       s.quality.normal_octaves, in[4 * i + 3], s.giant.caustics);
+        double d = fabs(out[4 * i] - want) / fmax(want, 1.0);
+        worst = fmax(worst, d);
+        close += d <= 0.01;
+        spread = fmax(spread, fabs(want - 1.0));
+    }
+    printf("crest caustics at (%g, %g) t = %g s: GPU within 1%% of CPU at %d of %d points, worst "
+           "%.3g; largest departure from 1: %.2f\n",
+           x, z, t, close, N, worst, spread);
+    CHECK(close >= N * 98 / 100);
+    CHECK(worst <= 0.25);
+    CHECK(spread > 0.3);
+    CHECK(tl_caustic_crest(&w, &l, x, z, 3.0, t, s.quality.normal_octaves, 0.0, 0.0) == 1.0);
 }
 
 /* The crest's inner light fades with the wave: a wave fading into a low
@@ -471,6 +594,9 @@ int main(void)
     test_glow_fades(r);
     test_glow_graded(r);
     test_glow_uneven(r);
+    test_glow_caustics(r);
+    test_crest_caustics_probe(r, 0.0, 0.0, 10.0);
+    test_crest_caustics_probe(r, 1e4, -7e3, 1e5);
     test_lip_facing(r);
     test_sun_shadow(r);
     test_trail_aerated(r);

@@ -28,7 +28,7 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
 int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *in4,
                        int count, int octaves, float *out4, tl_error *err)
 {
-    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 20)
+    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 21)
         return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad mode, point or octave count");
     /* The features that change what the probe computes. */
     unsigned features =
@@ -36,7 +36,7 @@ int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, con
         (TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK | TL_FEATURE_GIANT_LIP |
          TL_FEATURE_GIANT_SPRAY | TL_FEATURE_UNDERWATER | TL_FEATURE_WATERLINE | TL_FEATURE_FOG |
          TL_FEATURE_SKY_PHYSICAL | TL_FEATURE_SUN_DISC | TL_FEATURE_WAKE | TL_FEATURE_BOW_SPRAY |
-         TL_FEATURE_CAUSTICS | TL_FEATURE_SEA_FLOOR);
+         TL_FEATURE_CAUSTICS | TL_FEATURE_SEA_FLOOR | TL_FEATURE_GIANT_CAUSTICS);
     GLuint program = 0;
     for (int i = 0; i < r->probe_count; i++)
         if (r->probes[i].features == features)

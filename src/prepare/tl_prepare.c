@@ -17,18 +17,19 @@
 #include "waves/tl_giant_spray.h"
 
 static const char *const feature_defines[TL_FEATURE_COUNT] = {
-    "TL_FEATURE_SUN_DISC",    "TL_FEATURE_GIANT_WAVE",
-    "TL_FEATURE_BOAT",        "TL_FEATURE_WAKE",
-    "TL_FEATURE_UNDERWATER",  "TL_FEATURE_WATERLINE",
-    "TL_FEATURE_FOG",         "TL_FEATURE_SKY_PHYSICAL",
-    "TL_FEATURE_LOD",         "TL_FEATURE_ANALYTIC_NORMALS",
-    "TL_FEATURE_SUPERSAMPLE", "TL_FEATURE_FILTERED_SHADING",
-    "TL_FEATURE_REFINE",      "TL_FEATURE_POLISH",
-    "TL_FEATURE_GIANT_BREAK", "TL_FEATURE_GIANT_LIP",
-    "TL_FEATURE_GIANT_SPRAY", "TL_FEATURE_GIANT_GLOW",
-    "TL_FEATURE_BOAT_SHADOW", "TL_FEATURE_BOW_SPRAY",
-    "TL_FEATURE_CAUSTICS",    "TL_FEATURE_SEA_FLOOR",
-    "TL_FEATURE_SHAFTS",      "TL_FEATURE_PARTICLES"};
+    "TL_FEATURE_SUN_DISC",      "TL_FEATURE_GIANT_WAVE",
+    "TL_FEATURE_BOAT",          "TL_FEATURE_WAKE",
+    "TL_FEATURE_UNDERWATER",    "TL_FEATURE_WATERLINE",
+    "TL_FEATURE_FOG",           "TL_FEATURE_SKY_PHYSICAL",
+    "TL_FEATURE_LOD",           "TL_FEATURE_ANALYTIC_NORMALS",
+    "TL_FEATURE_SUPERSAMPLE",   "TL_FEATURE_FILTERED_SHADING",
+    "TL_FEATURE_REFINE",        "TL_FEATURE_POLISH",
+    "TL_FEATURE_GIANT_BREAK",   "TL_FEATURE_GIANT_LIP",
+    "TL_FEATURE_GIANT_SPRAY",   "TL_FEATURE_GIANT_GLOW",
+    "TL_FEATURE_BOAT_SHADOW",   "TL_FEATURE_BOW_SPRAY",
+    "TL_FEATURE_CAUSTICS",      "TL_FEATURE_SEA_FLOOR",
+    "TL_FEATURE_SHAFTS",        "TL_FEATURE_PARTICLES",
+    "TL_FEATURE_GIANT_CAUSTICS"};
 static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "giant wave",
                                                              "boat",
@@ -52,7 +53,8 @@ static const char *const feature_labels[TL_FEATURE_COUNT] = {"sun disc",
                                                              "caustics",
                                                              "sea floor",
                                                              "light shafts",
-                                                             "particles"};
+                                                             "particles",
+                                                             "crest caustics"};
 
 const char *tl_feature_define(int index)
 {
@@ -143,8 +145,17 @@ static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniform
     u->giant_spray_heading[1] = (float)sp.heading[1];
 }
 
-/* The giant wave relative to the camera: only the camera's offset from the
- * crest (small when the wave is in view) reaches the GPU. */
+/* The sun's light below a flat surface (the way it travels, refracted)
+ * and the water's scattering: for the caustics under water and through
+ * the giant wave's crest. */
+static void sun_in_water(const tl_scene *s, const double sun[3], tl_frame_uniforms *u)
+{
+    double dir[3];
+    tl_optics_sun_in_water(sun, s->water.ior, dir);
+    to_float3(dir, u->sun_water);
+    u->water_scattering = (float)s->water.scattering;
+}
+
 /* The ocean's RMS slope over its first `octaves` octaves (per axis, as
  * waves_faded_slope_variance counts it). */
 static double ride_slope(const tl_waves *w, int octaves)
@@ -158,6 +169,8 @@ static double ride_slope(const tl_waves *w, int octaves)
     return weights > 0.0 ? w->depth * sqrt(variance) / weights : 0.0;
 }
 
+/* The giant wave relative to the camera: only the camera's offset from the
+ * crest (small when the wave is in view) reaches the GPU. */
 static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *wave,
                           tl_frame_uniforms *u)
 {
@@ -193,6 +206,12 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     tl_scene_sun_direction(&s->sun, sun);
     if (s->giant.scatter > 0.0 && sun[1] > -0.05) /* giant_scatter's daylight */
         u->features |= TL_FEATURE_GIANT_GLOW;
+    /* The far side's ripples focus the light through the crest only while
+     * the sun is up (caustic_focus is 1 below the horizon). */
+    if ((u->features & TL_FEATURE_GIANT_GLOW) && sun[1] > 0.0 && s->giant.caustics > 0.0) {
+        u->features |= TL_FEATURE_GIANT_CAUSTICS;
+        sun_in_water(s, sun, u);
+    }
     double sigma[3];
     tl_optics_water_extinction(&s->water, sigma);
     to_float3(sigma, u->giant_sigma);
@@ -223,6 +242,7 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     u->giant_scatter[0] = (float)s->giant.scatter;
     u->giant_scatter[1] = (float)s->giant.scatter_forward;
     u->giant_scatter[2] = (float)s->giant.scatter_back;
+    u->giant_scatter[3] = (float)s->giant.caustics;
     to_float3(s->giant.scatter_color, u->giant_scatter_color);
     u->giant_iterations = s->quality.giant_iterations;
     u->spray_step = (float)s->quality.spray_step;
@@ -621,18 +641,16 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     tl_optics_water_fall(&s->water, sigma, fall);
     to_float3(sigma, u->water_sigma);
     to_float3(fall, u->water_fall);
-    u->water_scattering = (float)s->water.scattering;
     u->cam_depth = (float)fmax(-gap, 0.0);
     u->lens = (float)TL_LENS_DISTANCE;
-    /* The sun's light below the surface: refracted at a flat surface (a
-     * sun below the horizon sends none). */
     double sun[3];
     tl_scene_sun_direction(&s->sun, sun);
-    double n = s->water.ior, cos_i = fmax(sun[1], 0.0);
-    double dir[3];
-    tl_optics_sun_in_water(sun, n, dir);
-    to_float3(dir, u->sun_water);
-    u->sun_water_trans = sun[1] > 0.0 ? (float)(1.0 - tl_optics_fresnel(cos_i, 1.0, n)) : 0.0f;
+    sun_in_water(s, sun, u);
+    /* The share of the sun that crossed a flat surface (none below the
+     * horizon). */
+    u->sun_water_trans =
+        sun[1] > 0.0 ? (float)(1.0 - tl_optics_fresnel(fmax(sun[1], 0.0), 1.0, s->water.ior))
+                     : 0.0f;
     if (sun[1] > 0.0 && s->underwater.caustics > 0.0) {
         u->features |= TL_FEATURE_CAUSTICS;
         u->caustics = (float)s->underwater.caustics;

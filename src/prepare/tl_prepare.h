@@ -50,10 +50,11 @@ typedef enum tl_feature {
     TL_FEATURE_SEA_FLOOR =
         1u << 21, /* ocean.floor_depth > 0: seen from below or through the surface */
     TL_FEATURE_SHAFTS = 1u << 22, /* under water, the sun up, underwater.shafts, shaft steps > 0 */
-    TL_FEATURE_PARTICLES = 1u << 23, /* under water, underwater.particles > 0 */
+    TL_FEATURE_PARTICLES = 1u << 23,      /* under water, underwater.particles > 0 */
+    TL_FEATURE_GIANT_CAUSTICS = 1u << 24, /* crest glow, the sun up, giant.caustics > 0 */
 } tl_feature;
 
-#define TL_FEATURE_COUNT 24
+#define TL_FEATURE_COUNT 25
 
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the

@@ -96,7 +96,7 @@
     X(VEC2, giant_spray_heading, 0, TL_FEATURE_GIANT_SPRAY, "the boat's heading, unit (x, z)") \
     X(FLOAT, spray_step, 0, 0, "quality.spray_step: metres a step of the spray's march") \
     X(VEC4, giant_foam, 0, TL_FEATURE_GIANT_WAVE, "(Jacobian where foam starts, trail metres, amount, breaking)") \
-    X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, unused)") \
+    X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, giant.caustics)") \
     X(VEC3, giant_scatter_color, 0, TL_FEATURE_GIANT_WAVE, "") \
     X(INT, giant_iterations, 0, TL_FEATURE_GIANT_WAVE, "") \
     X(FLOAT, giant_ride, 0, TL_FEATURE_GIANT_WAVE, "giant.ride: the share of the push the small waves ride") \
@@ -106,10 +106,10 @@
     X(VEC2, giant_rise, 0, TL_FEATURE_GIANT_WAVE, "s where the wave reaches the camera's height (empty: none)") \
     X(VEC3, water_sigma, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "extinction per metre, R G B") \
     X(VEC3, water_fall, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the light from above: its fall per metre down, R G B") \
-    X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "per metre, grey") \
+    X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR | TL_FEATURE_GIANT_CAUSTICS, "per metre, grey") \
     X(FLOAT, cam_depth, 0, TL_FEATURE_UNDERWATER, "metres below the surface at the camera") \
     X(FLOAT, lens, 0, TL_FEATURE_UNDERWATER, "the lens plane's distance ahead of the camera") \
-    X(VEC3, sun_water, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the direction sunlight travels in the water") \
+    X(VEC3, sun_water, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR | TL_FEATURE_GIANT_CAUSTICS, "the direction sunlight travels in the water") \
     X(FLOAT, sun_water_trans, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the share of it that crossed the surface") \
     X(FLOAT, caustics, 0, TL_FEATURE_CAUSTICS, "underwater.caustics: their strength") \
     X(FLOAT, shafts, 0, TL_FEATURE_SHAFTS, "underwater.shafts: their strength") \

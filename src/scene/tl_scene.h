@@ -133,6 +133,7 @@ typedef struct tl_giant_wave {
     double scatter;          /* strength of the light through the crest */
     double scatter_forward;  /* forward lobe g of the two-lobe phase function */
     double scatter_back;     /* backward lobe g (the lobe is mirrored) */
+    double caustics;         /* share of the far side's caustic web in that light, [0, 1] */
     double scatter_color[3]; /* that light's colour: the water's transmittance (linear RGB)
                                 a quarter of the way down the crest */
 } tl_giant_wave;

@@ -182,6 +182,8 @@ static const tl_channel channels[] = {
          "forward lobe (Henyey-Greenstein g) of that light"),
     REAL("giant.scatter_back", 1, TL_UNIT_NONE, 0.0, 0.99, giant.scatter_back,
          "backward lobe (Henyey-Greenstein g, mirrored)"),
+    REAL("giant.caustics", 1, TL_UNIT_NONE, 0.0, 1.0, giant.caustics,
+         "share of the caustic web the far side's ripples cast in that light; 0 = none"),
     REAL("giant.scatter_color", 3, TL_UNIT_NONE, 0.0, 1e3, giant.scatter_color,
          "colour of what the water scatters in the crest (its suspended matter), over the water's "
          "own extinction"),

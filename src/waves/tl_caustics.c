@@ -110,3 +110,17 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
     }
     return focus;
 }
+
+double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, double z,
+                        double path, double t, int octaves, double footprint, double share)
+{
+    if (!(share > 0.0) || !(path > 0.0))
+        return 1.0;
+    /* The entry point is (x, z) + path·sun; the point `depth` under a level
+     * surface there along the refracted beam lies path·sun_water beyond it. */
+    double depth = path * fmax(-l->sun_water[1], TL_CAUSTIC_MIN_DOWN);
+    double ax = x + path * (l->sun_dir[0] + l->sun_water[0]);
+    double az = z + path * (l->sun_dir[2] + l->sun_water[2]);
+    double focus = tl_caustic_focus(w, l, ax, az, depth, t, octaves, footprint);
+    return 1.0 + share * (focus - 1.0);
+}

@@ -86,4 +86,16 @@ typedef struct tl_caustic_light {
 double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, double z,
                         double depth, double t, int octaves, double footprint);
 
+/* The caustics in the light through the giant wave's crest (feature
+ * `crest caustics`, caustic_crest in shaders/caustics.glsl): the sunlight
+ * that reaches world point (x, z) under the face crossed `path` metres of
+ * water from where it entered the crest's far side, toward the sun, and
+ * the ripples there focused it as they focus the sun under a level sea:
+ * the focus `path` metres along the refracted beam below that entry
+ * point. The view ray gathers the glow over a range of depths, which
+ * averages the web: `share` of its contrast is kept (giant.caustics; 0
+ * gives 1). */
+double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, double z,
+                        double path, double t, int octaves, double footprint, double share);
+
 #endif
