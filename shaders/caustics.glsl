@@ -82,7 +82,8 @@ float caustic_light(vec2 p, float depth, float footprint)
 
 #ifdef TL_FEATURE_GIANT_CAUSTICS
 // The caustics in the light through the giant wave's crest
-// (tl_caustic_crest): the light that reaches camera-relative `hit` crossed
+// (tl_caustic_crest): the light that reaches camera-relative `hit` (where
+// the ocean's waves see it: the caller rides it with the wave) crossed
 // `path` metres of water from where it entered the crest's far side,
 // toward the sun, and the ripples there focused it as they focus the sun
 // under a level sea; the focus that far along the refracted beam below the

@@ -509,8 +509,12 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint)
                     smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
 #ifdef TL_FEATURE_GIANT_CAUSTICS
-    // The ripples where the light came in focus it into a web.
-    crossed *= caustic_crest(hit.xz, path.x, footprint);
+    // The ripples where the light came in focus it into a web. They ride
+    // the wave's water as the face's own waves do (giant_ride: the push
+    // at the lit point), so the web is drawn out along the flow with them;
+    // taken in the still sea's coordinates it lay on the face as even
+    // blobs, like marbled paper.
+    crossed *= caustic_crest(giant_ride(hit.xz, g), path.x, footprint);
 #endif
     // Times a noise of the crest's thinness (cells 7 m along the crest by
     // 16 m down the face, 0.6 to 1.4): the lip is not equally thin all

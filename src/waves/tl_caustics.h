@@ -88,7 +88,9 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
 
 /* The caustics in the light through the giant wave's crest (feature
  * `crest caustics`, caustic_crest in shaders/caustics.glsl): the sunlight
- * that reaches world point (x, z) under the face crossed `path` metres of
+ * that reaches world point (x, z) under the face (where the ocean's waves
+ * see it: the giant wave's push taken off, tl_giant_ride_point) crossed
+ * `path` metres of
  * water from where it entered the crest's far side, toward the sun, and
  * the ripples there focused it as they focus the sun under a level sea:
  * the focus `path` metres along the refracted beam below that entry
