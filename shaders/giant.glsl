@@ -367,9 +367,11 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     // The whitewater of a scripted break: it tumbles from the crest down
     // the front as the lip throws and lands (down to the foot once it has),
     // and the trail behind is there only where the crest had already broken
-    // when it passed (the break's age there, less the time since).
+    // when it passed (the break's age there, less the time since). The
+    // tumbling whitewater is nearly solid, the streaks breaking only its
+    // last 0.15: at 0.55 the broken face read as streaks on dark water.
     float tumble = smoothstep(1.0 - 1.1 * breaking, 1.1 - 1.1 * breaking, top) * front * breaking;
-    face = max(face, tumble * (0.55 + 0.45 * smoothstep(0.3, 0.7, streaks)));
+    face = max(face, tumble * (0.85 + 0.15 * smoothstep(0.3, 0.7, streaks)));
     float passed = behind / max(u_giant_speed, 1.0e-3);
     trail = fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind) *
             smoothstep(0.0, 0.5 * u_giant_break.z, giant_break_age(g.w) - passed);
