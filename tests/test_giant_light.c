@@ -10,15 +10,20 @@
 #include "tl_giant_test.h"
 #include "waves/tl_caustics.h"
 
-/* facing_scene backlit by a low sun at `fade`, rendered with the light
- * through the crest (`lit`) and without it (`dark`); non-zero if a render
- * failed (then neither frame holds anything). */
-static int glow_frames(tl_renderer *r, double fade, tl_scene *s, tl_frame *lit, tl_frame *dark)
+/* facing_scene backlit by a low sun at `fade`. */
+static void glow_scene(tl_scene *s, double fade)
 {
     facing_scene(s);
     s->sun.azimuth = 0.0; /* behind the wave */
     s->sun.elevation = 0.15;
     s->giant.fade = fade;
+}
+
+/* `s` rendered with the light through the crest (`lit`) and without it
+ * (`dark`); non-zero if a render failed (then neither frame holds
+ * anything). */
+static int glow_render(tl_renderer *r, const tl_scene *s, tl_frame *lit, tl_frame *dark)
+{
     tl_scene off = *s;
     off.giant.scatter = 0.0;
     if (render(r, s, lit))
@@ -28,6 +33,13 @@ static int glow_frames(tl_renderer *r, double fade, tl_scene *s, tl_frame *lit, 
         return 1;
     }
     return 0;
+}
+
+/* glow_scene at `fade` (into `s`), rendered by glow_render. */
+static int glow_frames(tl_renderer *r, double fade, tl_scene *s, tl_frame *lit, tl_frame *dark)
+{
+    glow_scene(s, fade);
+    return glow_render(r, s, lit, dark);
 }
 
 /* The linear colour pixel i gains from giant.scatter, and its luminance. */
@@ -178,7 +190,9 @@ static void test_glow_caustics(tl_renderer *r)
 {
     tl_scene s;
     tl_frame a, b, flat;
-    if (glow_frames(r, 1.0, &s, &a, &b)) {
+    glow_scene(&s, 1.0);
+    s.giant.caustics = 0.3;
+    if (glow_render(r, &s, &a, &b)) {
         CHECK(0);
         return;
     }
