@@ -404,7 +404,24 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
     // Even full coverage leaves holes where the lace is thinnest.
     float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
-    return max(foam, texture_trail * trail * g.lambda * u_giant_foam.z);
+    // Stringers: the steepening crest spills foam before it breaks, which
+    // runs down the upper face in thin lines along the streak field's
+    // middle contour: its distance in metres from the field's value and
+    // gradient, drawn at least a pixel wide and as much fainter.
+    float stringer = 0.0;
+    float spill = smoothstep(0.35, 0.9, top) * front * smoothstep(0.55, 0.85, g.lambda) *
+                  (1.0 - breaking);
+    if (spill > 0.0) {
+        const float h = 0.25;
+        vec2 grad = vec2(giant_streaks(g.s0 + h, g.w) - streaks,
+                         giant_streaks(g.s0, g.w + h) - streaks) / h;
+        float metres = abs(streaks - 0.5) / max(length(grad), 0.02);
+        float half_width = 0.12;
+        float drawn = max(half_width, 0.5 * footprint);
+        stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / drawn;
+        stringer *= spill * u_giant_foam.z * smoothstep(0.3, 0.7, foam_lace(at * vec2(0.5, 1.5)));
+    }
+    return max(max(foam, 0.8 * stringer), texture_trail * trail * g.lambda * u_giant_foam.z);
 }
 
 float giant_hg(float mu, float g)

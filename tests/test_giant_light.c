@@ -558,6 +558,61 @@ static void test_trail_aerated(tl_renderer *r)
     CHECK(gain[1] > 1.5 * fmax(gain[0], 0.0));
 }
 
+/* Stringers: a scripted crest that has not broken yet spills foam that
+ * runs down its upper face in thin lines. Looking at the face from 50 m,
+ * foam whitens some pixels of the face's upper half and none of its
+ * lower half; once the crest is breaking there, the tumbling whitewater
+ * takes their place (they fade with the break). */
+static void test_stringers(tl_renderer *r)
+{
+    tl_scene s;
+    facing_scene(&s);
+    s.camera.position[2] = -50.0;
+    s.camera.position[1] = 6.0;
+    s.camera.pitch = 0.15;
+    s.giant.breaking = true;
+    s.giant.break_time = s.time + 5.0; /* not yet */
+    tl_frame f[2];
+    for (int on = 0; on < 2; on++) {
+        s.water.foam = on;
+        if (render(r, &s, &f[on])) {
+            CHECK(0);
+            if (on)
+                tl_frame_free(&f[0]);
+            return;
+        }
+    }
+    /* The face's rows: where the frame without foam is water nearer than
+     * the crest's far side (its depth under 80 m), split at their middle. */
+    int top = -1, bottom = -1;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++)
+            if (f[0].depth[(size_t)y * s.width + x] < 80.0f) {
+                if (top < 0)
+                    top = y;
+                bottom = y;
+            }
+    int upper = 0, lower = 0, middle = (top + bottom) / 2;
+    for (int y = top; top >= 0 && y <= bottom; y++)
+        for (int x = 0; x < s.width; x++) {
+            size_t i = (size_t)y * s.width + x;
+            if (f[0].depth[i] >= 80.0f)
+                continue;
+            double gain = 0.0;
+            for (int c = 0; c < 3; c++)
+                gain += (f[1].color[4 * i + c] - f[0].color[4 * i + c]) / 3.0;
+            if (gain > 0.002)
+                *(y < middle ? &upper : &lower) += 1;
+        }
+    printf("stringers before the break: %d foam pixels on the face's upper half (rows %d-%d), %d "
+           "on its lower half\n",
+           upper, top, middle, lower);
+    CHECK(upper > 10);
+    CHECK(lower == 0);
+    tl_frame_free(&f[0]);
+    tl_frame_free(&f[1]);
+}
+
 /* Mean and standard deviation of foam_detail (probe mode 8) over n points
  * along a 200 m line, for a pixel footprint of `footprint` metres; the
  * largest |value| in *peak. Non-zero if the probe failed. */
@@ -634,6 +689,7 @@ int main(void)
     test_lip_facing(r);
     test_sun_shadow(r);
     test_trail_aerated(r);
+    test_stringers(r);
     test_foam_detail(r);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
