@@ -38,13 +38,13 @@
  * 0.3 of that as it lands to all of it once spent: centred on the tip,
  * half of it lay under the face and the rest behind the curtain, and from
  * in front of the wave nothing of it showed. */
-#define TL_SPRAY_LANDING_RADIUS 0.55
-#define TL_SPRAY_SPLASH_RISE    0.6
-#define TL_SPRAY_SPLASH_GROW    1.0
+#define TL_SPRAY_LANDING_RADIUS 0.7
+#define TL_SPRAY_SPLASH_RISE    0.8
+#define TL_SPRAY_SPLASH_GROW    1.2
 #define TL_SPRAY_SPLASH_AHEAD   0.6
 /* The landing's whitewater is this much denser than the spindrift: an
  * opaque, churning cloud, not a veil. */
-#define TL_SPRAY_LANDING_GAIN 6.0
+#define TL_SPRAY_LANDING_GAIN 10.0
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  5.0
