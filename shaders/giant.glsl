@@ -566,9 +566,11 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
     // The lip is thin: whitewater on the top fifth of the crest still sees
     // the sun through it when the face below is in the crest's shadow.
     float top = giant_top(g);
-    // Foam over the glow scatters part of it (0.6) toward the eye: lit from
-    // behind, whitewater on a backlit crest shines. Without this its
-    // shadowed side read as grey-blue blobs on the bright band.
+    // Foam over the glow scatters it on toward the eye: lit from behind,
+    // whitewater on a backlit crest shines. Without this its shadowed side
+    // read as grey-blue blobs on the bright band; passing 0.6 of it, thin
+    // foam (the stringers, faint where narrower than a pixel) drew dark
+    // veins down the glowing face.
     color = foam_shade(color, n, foam, thickness, max(sunlit, smoothstep(0.8, 1.0, top)));
-    return color + 0.6 * foam * glow;
+    return color + foam * glow;
 }
