@@ -6,7 +6,8 @@
 // times its cross-section of the sun's beam (by the water's phase
 // function: bright looking toward the sun) and of the sky's light at its
 // depth, dimmed on the way back to the eye. A mote is drawn as a Gaussian
-// spot no narrower than TL_PARTICLE_PIXEL_SPREAD pixels, of the same
+// spot no narrower than TL_PARTICLE_PIXEL_SPREAD pixels, widened out of
+// the lens's focus (TL_PARTICLE_FOCUS, TL_PARTICLE_PUPIL), of the same
 // total light, so a frame's mean is what a cloud of them scatters
 // (tl_optics_water_inscatter with their scattering: test_particles).
 // They hang still in the water: the camera moves past them. Needs
@@ -58,7 +59,10 @@ vec3 water_particles(vec3 ray, float dist)
             if (along > TL_PARTICLE_NEAR && along < range) {
                 // h.w / presence is even in [0, 1) for the cells that hold one.
                 float radius = mix(TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, h.w / presence);
-                float spot = max(radius / along, least);
+                // Its angular spread: its size, and out of focus a blur
+                // disc (a disc D across has a standard deviation of D / 4).
+                float blur = 0.25 * TL_PARTICLE_PUPIL * abs(1.0 / along - 1.0 / TL_PARTICLE_FOCUS);
+                float spot = max(length(vec2(radius / along, blur)), least);
                 float off2 = max(dot(rel, rel) - along * along, 0.0) / (along * along);
                 float depth = -(u_cam_height + rel.y);
                 float cross_section = TL_PARTICLE_EFFICIENCY * TL_PI * radius * radius;

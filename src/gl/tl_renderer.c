@@ -163,6 +163,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_PARTICLE_EFFICIENCY %.17g\n"
         "#define TL_PARTICLE_PIXEL_SPREAD %.17g\n"
         "#define TL_PARTICLE_MAX_CELLS %d\n"
+        "#define TL_PARTICLE_FOCUS %.17g\n"
+        "#define TL_PARTICLE_PUPIL %.17g\n"
         "#define TL_SHAFT_FOOTPRINT %.17g\n"
         "#define TL_SHAFT_SMOOTH %.17g\n"
         "#define TL_FLOOR_PERIOD %d\n"
@@ -189,9 +191,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_CAUSTIC_FINE_SHARE, TL_CAUSTIC_FINE_GAP, TL_SHAFT_RANGE, TL_PARTICLE_CELL,
         TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD, TL_PARTICLE_RADIUS_MIN,
         TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY, TL_PARTICLE_PIXEL_SPREAD,
-        TL_PARTICLE_MAX_CELLS, TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
-        TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN,
-        TL_WATER_MAX_OPTICAL);
+        TL_PARTICLE_MAX_CELLS, TL_PARTICLE_FOCUS, TL_PARTICLE_PUPIL, TL_SHAFT_FOOTPRINT,
+        TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP, TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G,
+        TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN, TL_WATER_MAX_OPTICAL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

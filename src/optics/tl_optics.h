@@ -73,6 +73,15 @@ void tl_optics_water_fall(const tl_water *w, const double sigma[3], double fall[
 #define TL_PARTICLE_EFFICIENCY   2.0
 #define TL_PARTICLE_PIXEL_SPREAD 0.6
 #define TL_PARTICLE_MAX_CELLS    64
+/* The lens the motes are seen through: focused this far off, metres,
+ * through an entrance pupil this wide, metres (a wide lens at f/4). A mote
+ * nearer or farther than the focus is spread over a blur disc of
+ * PUPIL·|1/d − 1/FOCUS| radians across (its light kept): drawn sharp, a
+ * mote a few centimetres from the port, toward the sun, was a bright
+ * second sun; out of focus it is the soft, dim disc an underwater camera
+ * shows. */
+#define TL_PARTICLE_FOCUS 2.0
+#define TL_PARTICLE_PUPIL 0.005
 
 /* The scattering per metre of `density` motes per cubic metre: what they
  * add to a frame on average, as water that scatters that much more. */
