@@ -338,6 +338,15 @@ float giant_streaks(float s0, float w)
     return sum / 0.9625;
 }
 
+// The field whose middle contour draws the stringers: a noise across the
+// crest (cells 2.2 m) whose phase wavers slowly down the face, so its
+// contours run down the face nearly straight.
+float giant_stringer_field(float s0, float w)
+{
+    float waver = 1.2 * foam_noise(vec2(s0 / 16.0, w / 11.0));
+    return foam_noise(vec2(w / 2.2 + waver, 0.37 + s0 / 60.0));
+}
+
 // Foam of a breaking crest, a function of this frame's wave only. Where
 // foam can be (its coverage): whitewater capping the crest and where the
 // surface compresses, streaks running down the face, and a trail behind
@@ -405,20 +414,23 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     // Even full coverage leaves holes where the lace is thinnest.
     float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
     // Stringers: the steepening crest spills foam before it breaks, which
-    // runs down the upper face in thin lines along the streak field's
-    // middle contour: its distance in metres from the field's value and
-    // gradient, drawn at least a pixel wide and as much fainter.
+    // runs straight down the upper face in thin lines: the middle contour
+    // of a noise across the crest that wavers slowly down the face (its
+    // distance in metres from the field's value over its gradient), drawn
+    // at least a pixel wide and as much fainter, in dashes.
     float stringer = 0.0;
     float spill = smoothstep(0.35, 0.9, top) * front * smoothstep(0.55, 0.85, g.lambda) *
                   (1.0 - breaking);
     if (spill > 0.0) {
         const float h = 0.25;
-        vec2 grad = vec2(giant_streaks(g.s0 + h, g.w) - streaks,
-                         giant_streaks(g.s0, g.w + h) - streaks) / h;
-        float metres = abs(streaks - 0.5) / max(length(grad), 0.02);
-        float half_width = 0.12;
+        float lines = giant_stringer_field(g.s0, g.w);
+        vec2 grad = vec2(giant_stringer_field(g.s0 + h, g.w) - lines,
+                         giant_stringer_field(g.s0, g.w + h) - lines) / h;
+        float metres = abs(lines - 0.5) / max(length(grad), 0.02);
+        // Widest where it spills off the crest, thinning as it runs down.
+        float half_width = 0.14 * smoothstep(0.2, 1.0, top);
         float drawn = max(half_width, 0.5 * footprint);
-        stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / drawn;
+        stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / max(drawn, 1e-4);
         stringer *= spill * u_giant_foam.z * smoothstep(0.3, 0.7, foam_lace(at * vec2(0.5, 1.5)));
     }
     return max(max(foam, 0.8 * stringer), texture_trail * trail * g.lambda * u_giant_foam.z);
