@@ -103,7 +103,7 @@ float giant_spray_density(vec3 p, float span)
 // landing's tall box, against wisps under a metre: each pixel's few
 // samples found other wisps, a grain like asphalt over the back of the
 // wave.
-#define TL_SPRAY_SHADE_WATER 10.0
+#define TL_SPRAY_SHADE_WATER 4.0
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
     // The crest's box in the wave's frame, and the bow's sphere.
@@ -151,7 +151,8 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         // the landing's whitewater under a backlit lip, lit by the sky
         // alone, was a faint grey puff. The water crossed is taken as
         // TL_SPRAY_SHADE_WATER metres: marched toward the sun once a ray it
-        // looked alike and cost a third more over the lip's frames.
+        // looked alike and cost a third more over the lip's frames; over
+        // 10 m the whitewater was tinted into cyan smoke.
         float sunlit = density > 0.0 ? giant_sunlit(p.xz, p.y) : 1.0;
         vec3 through = max(vec3(sunlit), dense * exp(-u_giant_sigma * TL_SPRAY_SHADE_WATER));
         vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) * through + ambient);
