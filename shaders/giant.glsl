@@ -28,7 +28,8 @@ float giant_smooth(float x, out float dx)
 }
 
 // (Y, Y', D, D') at full strength: Y = A·m·cos θ·(1 − q·l²) with
-// l = (1 − cos θ)/2 and q the trough's lift, D = (-S·m·sin θ + C·m·u⁴)/k
+// l = (1 − cos θ)/2 and q the trough's lift (behind the crest, times
+// 1 − TL_GIANT_BACK_FILL·t·(2 − t), t = −cos θ > 0), D = (-S·m·sin θ + C·m·u⁴)/k
 // with θ = k·s0, u = (1 + cos θ)/2 and m the single-crest mask.
 vec4 giant_profile(float s0)
 {
@@ -41,6 +42,12 @@ vec4 giant_profile(float s0)
     const float q = TL_GIANT_TROUGH_LIFT;
     float low = 0.5 * (1.0 - c);
     float shape = c * (1.0 - q * low * low), dshape = 1.0 - q * low * low + q * c * low;
+    if (s0 < 0.0 && c < 0.0) { // the trough behind, filled
+        const float b = TL_GIANT_BACK_FILL;
+        float t = -c, fill = 1.0 - b * t * (2.0 - t); // d fill/dc = 2b(1 - t)
+        dshape = dshape * fill + shape * 2.0 * b * (1.0 - t);
+        shape *= fill;
+    }
     float y = A * m * shape;
     float dy = A * (dm * shape - k * m * sn * dshape);
     float d = (-S * m * sn + C * m * u3 * u) / k;

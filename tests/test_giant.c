@@ -135,14 +135,19 @@ static void test_geometry(void)
         double ox = g.origin[0], oz = g.origin[1];
         CHECK_NEAR(tl_giant_height(&g, ox, oz, 8), 10.0, 1e-9);
         /* The troughs half a wavelength off, where the crest mask (1 out to
-         * half_length) has begun to fade, lifted by TL_GIANT_TROUGH_LIFT;
-         * a flat sea beyond the mask. */
+         * half_length) has begun to fade, lifted by TL_GIANT_TROUGH_LIFT
+         * (the one behind by TL_GIANT_BACK_FILL more); a flat sea beyond
+         * the mask. */
         double half = g.half_length, beyond = g.half_length + g.falloff_along + 0.01;
         double trough = M_PI / g.k, x = (trough - half) / g.falloff_along;
         double mask = 1.0 - x * x * (3.0 - 2.0 * x);
         CHECK(half < trough && x < 1.0);
         CHECK_NEAR(tl_giant_height(&g, ox + g.dir[0] * trough, oz + g.dir[1] * trough, 8),
                    -10.0 * mask * (1.0 - TL_GIANT_TROUGH_LIFT), 1e-9);
+        /* The trough behind is filled by TL_GIANT_BACK_FILL more. */
+        CHECK_NEAR(tl_giant_height(&g, ox - g.dir[0] * trough, oz - g.dir[1] * trough, 8),
+                   -10.0 * mask * (1.0 - TL_GIANT_TROUGH_LIFT) * (1.0 - TL_GIANT_BACK_FILL),
+                   1e-9);
         CHECK_NEAR(tl_giant_height(&g, ox + g.dir[0] * half, oz + g.dir[1] * half, 8),
                    10.0 * cos(g.k * half), 1e-9);
         CHECK_NEAR(tl_giant_height(&g, ox - g.dir[0] * beyond, oz - g.dir[1] * beyond, 8), 0.0,

@@ -121,7 +121,8 @@ double tl_giant_lambda(const tl_giant *g, double w, double *dl)
  * unit values). Y = A·m·cos θ·(1 − q·l²) with l = (1 − cos θ)/2 and q the
  * trough's lift (TL_GIANT_TROUGH_LIFT): the crest keeps its height A and
  * nearly its slope (l² is flat there), the trough keeps 1 − q of its depth
- * and a broad bottom.
+ * and a broad bottom; the trough behind the crest keeps 1 − TL_GIANT_BACK_FILL
+ * of that.
  * D = -(S/k)·m·sin θ (Gerstner pinch toward the crest) + (C/k)·m·u⁴ with
  * u = (1 + cos θ)/2 (a push forward that is strongest at the crest: the
  * curl). Both displacements scale with the wavelength, not the height, so
@@ -136,6 +137,12 @@ static void profile(const tl_giant *g, double s0, double steep, double curl, dou
     const double q = TL_GIANT_TROUGH_LIFT;
     double low = 0.5 * (1.0 - c); /* 0 at the crest, 1 at the trough */
     double shape = c * (1.0 - q * low * low), dshape = 1.0 - q * low * low + q * c * low; /* d/dc */
+    if (s0 < 0.0 && c < 0.0) { /* the trough behind, filled (TL_GIANT_BACK_FILL) */
+        const double b = TL_GIANT_BACK_FILL;
+        double t = -c, fill = 1.0 - b * t * (2.0 - t); /* d fill/dc = 2b(1 - t) */
+        dshape = dshape * fill + shape * 2.0 * b * (1.0 - t);
+        shape *= fill;
+    }
     *y = A * m * shape;
     *dy = A * (dm * shape - k * m * sn * dshape);
     *d = (-steep * m * sn + curl * m * u3 * u) / k;

@@ -42,6 +42,15 @@
  * high; beside a short-crested peak they ended in a round, dark pit. At
  * 1/2 the trough's bottom is flat; above it the trough would have two. */
 #define TL_GIANT_TROUGH_LIFT 0.5
+/* The trough behind the crest is filled by this share more (its depth
+ * times 1 − FILL·t·(2 − t), t = −cos θ where the profile is below the
+ * sea's level behind the crest; the profile is 0 where t = 0, so it stays
+ * smooth there, and its deepest point stays mid-trough). The wave
+ * draws its water up its face, from the trough ahead; behind it the back
+ * runs long and gentle. As deep as the trough ahead, the trough behind
+ * faced a camera over the crest and mirrored the sky at a few per cent: a
+ * dark trench along the whole wave. */
+#define TL_GIANT_BACK_FILL 0.6
 /* Along the travel the mask fades over at least three quarters of a
  * wavelength: the troughs rise back to the sea as gently as a swell, not
  * up a ramp whose far side grazes the view. */
