@@ -351,7 +351,9 @@ float giant_streaks(float s0, float w)
 float giant_stringer_field(float s0, float w)
 {
     float waver = 1.2 * foam_noise(vec2(s0 / 16.0, w / 11.0));
-    return foam_noise(vec2(w / 2.2 + waver, 0.37 + s0 / 60.0));
+    // A finer, weaker octave that wavers faster: lines fork and merge.
+    float fine = foam_noise(vec2(w / 0.9 + 2.0 * waver, 5.1 + s0 / 7.0));
+    return 0.72 * foam_noise(vec2(w / 2.2 + waver, 0.37 + s0 / 60.0)) + 0.28 * fine;
 }
 
 // Foam of a breaking crest, a function of this frame's wave only. Where
@@ -435,10 +437,15 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
                          giant_stringer_field(g.s0, g.w + h) - lines) / h;
         float metres = abs(lines - 0.5) / max(length(grad), 0.02);
         // Widest where it spills off the crest, thinning as it runs down.
-        float half_width = 0.14 * smoothstep(0.2, 1.0, top);
+        float half_width = 0.14 * smoothstep(0.2, 1.0, top) *
+                           (0.5 + foam_noise(vec2(g.w / 3.0, g.s0 / 5.0)));
         float drawn = max(half_width, 0.5 * footprint);
         stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / max(drawn, 1e-4);
-        stringer *= spill * u_giant_foam.z * smoothstep(0.3, 0.7, foam_lace(at * vec2(0.5, 1.5)));
+        // Lines come and go along the crest (some stretches spill none),
+        // and each thins out in gaps and dashes down the face.
+        float presence = smoothstep(0.3, 0.6, foam_noise(vec2(g.w / 7.0, 2.3 + g.s0 / 40.0)));
+        stringer *= spill * u_giant_foam.z * presence *
+                    smoothstep(0.2, 0.8, foam_lace(at * vec2(0.5, 1.5)));
     }
     return max(max(foam, 0.8 * stringer), texture_trail * trail * g.lambda * u_giant_foam.z);
 }
