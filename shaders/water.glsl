@@ -196,9 +196,6 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // The water a pixel covers (0 without level of detail), more as the
     // view grazes the surface: foam's detail and veins stay a pixel wide.
     float footprint = dist * u_lod_angle / max(abs(dot(ray, n)), 0.2);
-#ifdef TL_FEATURE_GIANT_WAVE
-    color = giant_shade(color, hit, ray, n, giant, value, footprint, sunlit);
-#endif
 #ifdef TL_FEATURE_WAKE
     color += foam_aerated(ray, n, aerated, u_scatter_color, sunlit);
     color = foam_shade(color, n, wake, thickness, sunlit);
@@ -208,6 +205,12 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     float contact =
         boat_contact_foam(hit, -n.xz / max(n.y, 0.1), value, footprint, contact_thickness);
     color = foam_shade(color, n, contact, contact_thickness, sunlit);
+#endif
+#ifdef TL_FEATURE_GIANT_WAVE
+    // After the boat's foam: the light through the crest passes through it
+    // as through the wave's own (under a hull riding a backlit face, the
+    // contact foam lit by the sky alone was a lavender stain on the glow).
+    color = giant_shade(color, hit, ray, n, giant, value, footprint, sunlit);
 #endif
     return color;
 }
