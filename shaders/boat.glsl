@@ -119,12 +119,15 @@ float boat_contact_foam_one(int o, vec3 p, vec2 slope, float value, float footpr
     if (cover < 0.02)
         return 0.0;
     float lace = 0.55 * foam_lace(model * vec2(3.0, 1.5)) + 0.25 * value +
-                 0.9 * foam_detail(model * 2.0, footprint);
+                 0.5 * foam_detail(model * 2.0, footprint);
     // A lower threshold than the wake's: churned against the hull, the
-    // water is white wherever the cover is full, seen near or far.
+    // water is white wherever the cover is full, seen near or far. Soft
+    // edges and a fainter close-up detail: where the cover thins out (the
+    // bow wave tripled up a giant wave's face) hard-edged specks read as
+    // confetti.
     float threshold = 0.7 - 0.55 * cover;
     thickness = clamp(smoothstep(threshold, threshold + 0.25, lace), 0.0, 1.0);
-    return smoothstep(threshold, threshold + 0.06, lace);
+    return smoothstep(threshold, threshold + 0.2, lace);
 }
 
 // The contact foam of every hull in view: the most of any.
