@@ -183,8 +183,8 @@ static void test_glow_uneven(tl_renderer *r)
  * varies from pixel to pixel (its standard deviation above 0.1) and keeps
  * the light on average (the mean ratio within 15% of 1); the web rides
  * the wave's water, drawn out down the face, so it changes less from row
- * to row than from column to column (measured 0.079 against 0.088; in the
- * still sea's coordinates, with giant.ride 0, 0.112 against 0.076: the
+ * to row than from column to column (measured 0.078 against 0.085; in the
+ * still sea's coordinates, with giant.ride 0, 0.115 against 0.075: the
  * face's foreshortening); at 0 the feature is not compiled in. */
 static void test_glow_caustics(tl_renderer *r)
 {

@@ -212,9 +212,10 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
         u->features |= TL_FEATURE_GIANT_CAUSTICS;
         sun_in_water(s, sun, u);
     }
-    double sigma[3];
+    double sigma[3], fall[3];
     tl_optics_water_extinction(&s->water, sigma);
-    to_float3(sigma, u->giant_sigma);
+    tl_optics_water_fall(&s->water, sigma, fall);
+    to_float3(fall, u->giant_sigma);
     if (g.breaks) {
         u->features |= TL_FEATURE_GIANT_BREAK;
         u->giant_break[0] = (float)g.break_age;

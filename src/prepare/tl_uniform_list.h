@@ -85,7 +85,7 @@
     X(VEC3, giant_vary_k, 0, TL_FEATURE_GIANT_WAVE, "wavenumbers of the variation's sines") \
     X(VEC3, giant_vary_phase, 0, TL_FEATURE_GIANT_WAVE, "their phases (giant.seed)") \
     X(FLOAT, giant_fade, 0, TL_FEATURE_GIANT_WAVE, "giant.fade") \
-    X(VEC3, giant_sigma, 0, TL_FEATURE_GIANT_WAVE, "the water's extinction per metre: light through the crest") \
+    X(VEC3, giant_sigma, 0, TL_FEATURE_GIANT_WAVE, "the water's diffuse attenuation per metre (tl_optics_water_fall): light through the crest") \
     X(VEC4, giant_break, 0, TL_FEATURE_GIANT_BREAK, "(age at the peak, peel speed, throw time, drop)") \
     X(FLOAT, giant_speed, 0, TL_FEATURE_GIANT_BREAK, "the crest's speed over the water, m/s") \
     X(VEC4, giant_lip_box, 0, TL_FEATURE_GIANT_LIP, "the lip's box: (s low, s high, y low, y high)") \
