@@ -352,7 +352,7 @@ float giant_stringer_field(float s0, float w)
 {
     float waver = 1.2 * foam_noise(vec2(s0 / 16.0, w / 11.0));
     // A finer, weaker octave that wavers faster: lines fork and merge.
-    float fine = foam_noise(vec2(w / 0.9 + 2.0 * waver, 5.1 + s0 / 7.0));
+    float fine = foam_noise(vec2(w / 0.9 + 2.0 * waver, 5.1 + s0 / 30.0));
     return 0.72 * foam_noise(vec2(w / 2.2 + waver, 0.37 + s0 / 60.0)) + 0.28 * fine;
 }
 
@@ -436,6 +436,10 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
         vec2 grad = vec2(giant_stringer_field(g.s0 + h, g.w) - lines,
                          giant_stringer_field(g.s0, g.w + h) - lines) / h;
         float metres = abs(lines - 0.5) / max(length(grad), 0.02);
+        // Only where the contour runs down the face (the field changes
+        // across the crest): where it turns across, round a bump of the
+        // field near its middle, it closed into white rings.
+        float down_face = smoothstep(0.6, 0.9, abs(grad.y) / max(length(grad), 1.0e-6));
         // Widest where it spills off the crest, thinning as it runs down.
         float half_width = 0.14 * smoothstep(0.2, 1.0, top) *
                            (0.5 + foam_noise(vec2(g.w / 3.0, g.s0 / 5.0)));
@@ -444,7 +448,7 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
         // Lines come and go along the crest (some stretches spill none),
         // and each thins out in gaps and dashes down the face.
         float presence = smoothstep(0.3, 0.6, foam_noise(vec2(g.w / 7.0, 2.3 + g.s0 / 40.0)));
-        stringer *= spill * u_giant_foam.z * presence *
+        stringer *= spill * u_giant_foam.z * presence * down_face *
                     smoothstep(0.2, 0.8, foam_lace(at * vec2(0.5, 1.5)));
     }
     return max(max(foam, 0.8 * stringer), texture_trail * trail * g.lambda * u_giant_foam.z);
