@@ -199,11 +199,10 @@ static void test_glow_caustics(tl_renderer *r)
     tl_scene off = s;
     off.giant.caustics = 0.0;
     tl_waves w;
-    tl_waves_init(&w, &s.ocean);
     tl_frame_uniforms u;
-    tl_prepare_frame(&s, &w, &u);
+    gl_test_uniforms(&s, &w, &u);
     CHECK(u.features & TL_FEATURE_GIANT_CAUSTICS);
-    tl_prepare_frame(&off, &w, &u);
+    gl_test_uniforms(&off, &w, &u);
     CHECK(!(u.features & TL_FEATURE_GIANT_CAUSTICS));
     CHECK(u.features & TL_FEATURE_GIANT_GLOW);
     if (render(r, &off, &flat)) {
@@ -276,9 +275,8 @@ static void test_crest_caustics_probe(tl_renderer *r, double x, double z, double
     s.giant.arrival = t;
     s.giant.caustics = 0.4;
     tl_waves w;
-    tl_waves_init(&w, &s.ocean);
     tl_frame_uniforms u;
-    tl_prepare_frame(&s, &w, &u);
+    gl_test_uniforms(&s, &w, &u);
     CHECK(u.features & TL_FEATURE_GIANT_CAUSTICS);
     static float in[4 * N], out[4 * N];
     const float paths[] = {0.3f, 1.0f, 3.0f, 8.0f, 20.0f};

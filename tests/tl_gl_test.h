@@ -185,14 +185,20 @@ static inline double luminance(const float *rgb)
     return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
 }
 
+/* The ocean of `scene` (into w) and its frame's uniforms. */
+static inline void gl_test_uniforms(const tl_scene *scene, tl_waves *w, tl_frame_uniforms *u)
+{
+    tl_waves_init(w, &scene->ocean);
+    tl_prepare_frame(scene, w, u);
+}
+
 /* Prepares `scene` as tl_render does: uniforms, and the physical sky's
  * tables brought up to date. */
 static inline void gl_test_prepare(tl_renderer *r, const tl_scene *scene, tl_frame_uniforms *u)
 {
     static tl_sky_luts luts; /* ~0.5 MB: kept between calls like tl_render's */
     tl_waves w;
-    tl_waves_init(&w, &scene->ocean);
-    tl_prepare_frame(scene, &w, u);
+    gl_test_uniforms(scene, &w, u);
     tl_error err;
     tl_error_clear(&err);
     if (tl_render_prepare_sky(r, scene, &luts, u, &err))
