@@ -88,13 +88,15 @@ float caustic_light(vec2 p, float depth, float footprint)
 // toward the sun, and the ripples there focused it as they focus the sun
 // under a level sea; the focus that far along the refracted beam below the
 // entry point. The view ray gathers the glow over a range of depths, which
-// averages the web: giant.caustics of its contrast is kept.
+// averages the web: giant.caustics of its contrast is kept, less with the
+// path (TL_CAUSTIC_CREST_REACH says why).
 float caustic_crest(vec2 hit, float path, float footprint)
 {
     if (path <= 0.0)
         return 1.0;
     float depth = path * max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN);
     vec2 at = hit + path * (u_sun_dir.xz + u_sun_water.xz);
-    return mix(1.0, caustic_focus(at, depth, footprint, true), u_giant_scatter.w);
+    return mix(1.0, caustic_focus(at, depth, footprint, true),
+               u_giant_scatter.w * exp(-path / TL_CAUSTIC_CREST_REACH));
 }
 #endif

@@ -109,7 +109,7 @@ void tl_scene_defaults(tl_scene *s)
     s->giant.scatter = 1.0;
     s->giant.scatter_forward = 0.6;
     s->giant.scatter_back = 0.3;
-    s->giant.caustics = 0.12;
+    s->giant.caustics = 0.4;
     s->giant.scatter_color[0] = 0.1; /* sea green: red is absorbed in the crest */
     s->giant.scatter_color[1] = 0.5;
     s->giant.scatter_color[2] = 0.45;

@@ -122,5 +122,5 @@ double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, 
     double ax = x + path * (l->sun_dir[0] + l->sun_water[0]);
     double az = z + path * (l->sun_dir[2] + l->sun_water[2]);
     double focus = tl_caustic_focus(w, l, ax, az, depth, t, octaves, footprint);
-    return 1.0 + share * (focus - 1.0);
+    return 1.0 + share * exp(-path / TL_CAUSTIC_CREST_REACH) * (focus - 1.0);
 }

@@ -60,6 +60,12 @@
 /* The steepest a refracted ray's run is taken (its |y| at least this):
  * a sun at the horizon through a tilted facet. */
 #define TL_CAUSTIC_MIN_DOWN 0.2
+/* The crest caustics' reach, metres: their contrast falls by
+ * exp(-path / reach) with the water the light crossed. Beyond a few metres
+ * the view ray gathers the glow over a range of depths where the web has
+ * spread into broad, smooth cells, and kept whole those read as marble on
+ * the face; under the thin lip the web is sharp and is seen as such. */
+#define TL_CAUSTIC_CREST_REACH 3.0
 
 /* The light shafts (shaders/shafts.glsl): how far along a view ray they
  * are sampled, metres (beyond, at the steps a frame can afford, they
@@ -96,7 +102,7 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
  * the focus `path` metres along the refracted beam below that entry
  * point. The view ray gathers the glow over a range of depths, which
  * averages the web: `share` of its contrast is kept (giant.caustics; 0
- * gives 1). */
+ * gives 1), less with the path (TL_CAUSTIC_CREST_REACH). */
 double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, double z,
                         double path, double t, int octaves, double footprint, double share);
 
