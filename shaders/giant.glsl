@@ -441,15 +441,18 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
         // field near its middle, it closed into white rings.
         float down_face = smoothstep(0.6, 0.9, abs(grad.y) / max(length(grad), 1.0e-6));
         // Widest where it spills off the crest, thinning as it runs down.
-        float half_width = 0.14 * smoothstep(0.2, 1.0, top) *
+        float half_width = 0.07 * smoothstep(0.2, 1.0, top) *
                            (0.5 + foam_noise(vec2(g.w / 3.0, g.s0 / 5.0)));
         float drawn = max(half_width, 0.5 * footprint);
         stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / max(drawn, 1e-4);
         // Lines come and go along the crest (some stretches spill none),
         // and each thins out in gaps and dashes down the face.
         float presence = smoothstep(0.3, 0.6, foam_noise(vec2(g.w / 7.0, 2.3 + g.s0 / 40.0)));
+        // Close up a line is bubbles, not a painted ribbon: the foam's
+        // fine detail, drawn out down the face, breaks it up.
         stringer *= spill * u_giant_foam.z * presence * down_face *
-                    smoothstep(0.2, 0.8, foam_lace(at * vec2(0.5, 1.5)));
+                    smoothstep(0.2, 0.8, foam_lace(at * vec2(0.5, 1.5))) *
+                    clamp(0.55 + 1.5 * foam_detail(at * vec2(1.0, 3.0), footprint), 0.0, 1.0);
     }
     return max(max(foam, 0.8 * stringer), texture_trail * trail * g.lambda * u_giant_foam.z);
 }
