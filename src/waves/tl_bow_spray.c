@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "waves/tl_giant_spray.h"
+#include "waves/tl_noise.h"
 
 static double smoothstep(double a, double b, double x)
 {
@@ -40,8 +41,8 @@ double tl_bow_spray_sheet(const double d[3], const double heading[2], double rad
     if (r2 >= 9.0)
         return 0.0;
     /* Torn into sheets and clots of droplets: two scales of noise. */
-    double torn = 0.65 * tl_giant_spray_noise(side * 2.6 + 17.0, up * 3.1 - along) +
-                  0.35 * tl_giant_spray_noise(side * 7.3 - 4.0, up * 8.9 + along * 2.0);
+    double torn = 0.65 * tl_noise_value(side * 2.6 + 17.0, up * 3.1 - along) +
+                  0.35 * tl_noise_value(side * 7.3 - 4.0, up * 8.9 + along * 2.0);
     return exp(-r2) * smoothstep(0.4, 0.75, torn);
 }
 

@@ -1,9 +1,9 @@
 #include "tl_giant_spray.h"
 
 #include "tl_bow_spray.h"
+#include "tl_noise.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 static double smoothstep(double e0, double e1, double x)
@@ -11,26 +11,6 @@ static double smoothstep(double e0, double e1, double x)
     x = (x - e0) / (e1 - e0);
     x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
     return x * x * (3.0 - 2.0 * x);
-}
-
-/* shaders/foam.glsl's foam_hash: the same integers, so the same noise. */
-static double hash(int32_t x, int32_t y)
-{
-    uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u;
-    h ^= h >> 15;
-    h *= 0x2c1b3c6du;
-    h ^= h >> 12;
-    return (double)(h & 0xffffu) / 65535.0;
-}
-
-double tl_giant_spray_noise(double x, double y)
-{
-    double ix = floor(x), iy = floor(y), fx = x - ix, fy = y - iy;
-    fx = fx * fx * (3.0 - 2.0 * fx);
-    fy = fy * fy * (3.0 - 2.0 * fy);
-    int32_t cx = (int32_t)ix, cy = (int32_t)iy;
-    double a = hash(cx, cy), b = hash(cx + 1, cy), d = hash(cx, cy + 1), e = hash(cx + 1, cy + 1);
-    return (a + (b - a) * fx) + ((d + (e - d) * fx) - (a + (b - a) * fx)) * fy;
 }
 
 /* The plume's thickness (metres, its Gaussian's scale) over a crest
@@ -164,8 +144,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double drifted = back + sp->drift;
         double wisps =
             smoothstep(0.3, 0.75,
-                       0.65 * tl_giant_spray_noise(w / 0.9, drifted / 6.0 + up / 2.0) +
-                           0.35 * tl_giant_spray_noise(w / 0.4, drifted / 2.5 - up / 0.8));
+                       0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
+                           0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
         density += sp->amount * source * plume * wisps;
         /* The lip's landing. */
         tl_giant_lip lip;
@@ -181,8 +161,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                 TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
                 (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
                 smoothstep(0.3, 0.8,
-                           0.6 * tl_giant_spray_noise(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
-                               0.4 * tl_giant_spray_noise(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
+                           0.6 * tl_noise_value(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
+                               0.4 * tl_noise_value(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
         }
     }
     if (sp->bow_amount > 0.0) {

@@ -86,7 +86,4 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
  * profile in height, x the height over its middle and r its rise. */
 double tl_giant_spray_layer(double x, double r, double span);
 
-/* The value noise of shaders/foam.glsl's foam_noise, in [0, 1]. */
-double tl_giant_spray_noise(double x, double y);
-
 #endif
