@@ -89,10 +89,17 @@ vec3 foam_aerated(vec3 ray, vec3 n, float aerated, vec3 hue, float sunlit)
 // Thin foam (thickness near 0) is half transparent and greyer: opaque
 // everywhere, a close wake read as flat paint.
 // `sunlit`: the share of the sun that reaches it (0 in the giant wave's
-// shadow, where the wrapped term lit foam on a dark face).
-vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness, float sunlit)
+// shadow, where the wrapped term lit foam on a dark face); `sky`: the
+// share of the sky's light (foam_shade: 1; less in a lump's hollows and
+// on its underside).
+vec3 foam_shade_sky(vec3 color, vec3 n, float foam, float thickness, float sunlit, float sky)
 {
     vec3 sun = sky_sun_light() * sunlit * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / TL_PI;
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
-    return mix(color, albedo * (sky_ambient() + sun), foam * (0.5 + 0.5 * thickness));
+    return mix(color, albedo * (sky * sky_ambient() + sun), foam * (0.5 + 0.5 * thickness));
+}
+
+vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness, float sunlit)
+{
+    return foam_shade_sky(color, n, foam, thickness, sunlit, 1.0);
 }

@@ -19,6 +19,8 @@ struct GiantLip {
     float progress;  // the throw, 0 .. 1
     float spent;     // 0 .. 1 once it has landed: it collapses, whitens and thins away
     float rate;      // how fast the cross-section moves along w, m/m (marching)
+    float slope;     // how fast the lumps change the half thickness along the arc, m/m
+    float w;         // where across the crest (the lumps' noise is taken there)
 };
 
 // How far `angle` lies along the whole sweep, from the root (0) to where
@@ -28,18 +30,41 @@ float giant_lip_along(float angle)
     return clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
 }
 
-// The tube's half thickness at `angle` along its arc: it thins from the
-// root to TL_GIANT_LIP_TIP of that at the end of the whole sweep, and
-// evens out as it collapses into whitewater.
-float giant_lip_half(GiantLip lip, float angle)
+// The tube's half thickness at `angle` along its arc before its lumps:
+// it thins from the root to TL_GIANT_LIP_TIP of that at the end of the
+// whole sweep, and evens out as it collapses into whitewater.
+float giant_lip_half_smooth(GiantLip lip, float angle)
 {
     float along = giant_lip_along(angle);
     return lip.thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along * (1.0 - lip.spent));
 }
 
+// How much the lumps roughen the tube at `angle` (tl_giant_lip_roughness:
+// its free edge tears as it throws, all of it once landed), 0 .. 1.
+float giant_lip_roughness(GiantLip lip, float angle)
+{
+    return max(smoothstep(0.0, TL_GIANT_LIP_ROUGHEN, lip.spent),
+               TL_GIANT_LIP_TEAR * smoothstep(0.7, 1.0, giant_lip_along(angle)));
+}
+
+// The lumps' factor on the half thickness at `angle`, taken at w across
+// the crest (tl_giant_lip_lump).
+float giant_lip_lump(GiantLip lip, float angle, float w)
+{
+    float n = foam_noise(
+        vec2(w / TL_GIANT_LIP_LUMP_CELL, 17.3 + angle * lip.radius / TL_GIANT_LIP_LUMP_CELL));
+    return 1.0 + TL_GIANT_LIP_LUMP * giant_lip_roughness(lip, angle) * (2.0 * n - 1.0);
+}
+
+// The tube's half thickness at `angle` along its arc, lumped.
+float giant_lip_half(GiantLip lip, float angle)
+{
+    return giant_lip_half_smooth(lip, angle) * giant_lip_lump(lip, angle, lip.w);
+}
+
 GiantLip giant_lip_at(float w)
 {
-    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, w);
     float age = giant_break_age(w), T = u_giant_break.z;
     if (abs(w) >= u_giant_mask.z || !(age > 0.0) || age >= T * (1.0 + TL_GIANT_LIP_FADE))
         return lip;
@@ -60,7 +85,7 @@ GiantLip giant_lip_at(float w)
     // The tube's outer surface passes through the crest's top at the
     // anchor: the lip is the crest's top thrown on, not a tube laid on it.
     lip.center = vec2(top_s, top_y) -
-                 (lip.radius + giant_lip_half(lip, anchor)) * vec2(sin(anchor), cos(anchor));
+                 (lip.radius + giant_lip_half_smooth(lip, anchor)) * vec2(sin(anchor), cos(anchor));
     float sweep = lip.progress * tall * radians(TL_GIANT_LIP_SWEEP);
     lip.to = radians(TL_GIANT_LIP_ROOT) + sweep;
     lip.from = radians(TL_GIANT_LIP_ROOT) +
@@ -89,7 +114,17 @@ GiantLip giant_lip_at(float w)
         2.0 * root_thickness *
             ((lip.progress < TL_GIANT_LIP_GROW ? 1.5 * throw_rate / TL_GIANT_LIP_GROW : 0.0) +
              gate_rate + 2.0 * TL_GIANT_LIP_SWELL * spent_rate);
-    lip.rate = tip + abs(db) +
+    // The lumps: a value noise changes by at most 1.5 of its range per
+    // cell (its smoothstep's steepest), so their factor by 3 LUMP per
+    // cell, along w and along the arc (on the arc's inner side, whose
+    // radius is at least half the centre line's for these thicknesses,
+    // twice that per metre); and the roughness grows with the collapse
+    // along w.
+    float lumped = lip.thickness * (1.0 + TL_GIANT_LIP_LUMP);
+    float lump_rate = lumped * 3.0 * TL_GIANT_LIP_LUMP / TL_GIANT_LIP_LUMP_CELL;
+    lip.slope = 2.0 * lump_rate;
+    lip.rate = tip + abs(db) + lump_rate +
+               lumped * TL_GIANT_LIP_LUMP * 1.5 / TL_GIANT_LIP_ROUGHEN * spent_rate +
                abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +
                           2.0 * TL_GIANT_LIP_RADIUS * u_giant_shape.y);
     return lip;
@@ -134,7 +169,9 @@ vec2 giant_lip_interval(vec3 ray)
 // not the 3D one: the lip changes along w, fastest at the peel's front,
 // where its free end sweeps metres per metre of crest. A step of h along
 // the ray changes the cross-section's distance by at most
-// h·(|ray in the (s, y) plane| + rate·|ray along w|), so the step is the
+// h·(|ray in the (s, y) plane|·(1 + slope) + rate·|ray along w|) (the
+// slope: the lumps make it change faster than the distance along the
+// arc), so the step is the
 // distance over that (locally: the rate is the lip's here), times
 // TL_GIANT_LIP_RELAX, and at least TL_GIANT_LIP_MIN_STEP of the tube's
 // root thickness (a ray grazing the long tube crept along it and ran out
@@ -186,7 +223,8 @@ float giant_lip_march(vec3 ray, float t_min, float t_max)
         // metres of w: the lip begins (the peel's front), ends (its life)
         // and stops (the tall-crest gate) as a vanishing tube, so nothing
         // visible lies within that of its edges.
-        t += lip.present ? max(TL_GIANT_LIP_RELAX * min(dist, 1.0e3) / (ray_sy + lip.rate * ray_w),
+        t += lip.present ? max(TL_GIANT_LIP_RELAX * min(dist, 1.0e3) /
+                                   (ray_sy * (1.0 + lip.slope) + lip.rate * ray_w),
                                TL_GIANT_LIP_MIN_STEP * lip.thickness)
                          : min(TL_GIANT_LIP_GAP / max(ray_w, 1.0e-6), 1.0e3);
         if (t > t_end)

@@ -10,6 +10,12 @@
 // The foam the sheet carries up from the face everywhere, in streaks along
 // the flow (the lace's whiteness there).
 #define TL_GIANT_LIP_STREAKS 0.2
+// Per metre of the wave's water between the lip's foam and the sun: the
+// sun's beam is gone within a metre or so (what gets through is the glow,
+// added over the foam). The foam under the lip and on the collapsing
+// curtain is in shade, lit by the sky: floored at 0.6 of the sun, it read
+// as salmon-pink shells.
+#define TL_GIANT_LIP_BEAM 2.0
 
 // The lip at camera-relative `hit`, seen along `ray`: water thrown off
 // the crest that mirrors the sky, lit through (it is thin: the sun's light
@@ -29,6 +35,23 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // Metres along the arc from its root, and the share of the whole sweep.
     float flow = (angle - radians(TL_GIANT_LIP_ROOT)) * lip.radius;
     float thrown = giant_lip_along(angle);
+    // The lumps tilt the surface: the gradient of |r - R| - half(angle, w)
+    // is the radial direction less the half thickness's slope along the
+    // arc and along the crest (by differences over a few centimetres; the
+    // lumps' cells are metres).
+    if (giant_lip_roughness(lip, angle) > 0.0 && angle >= lip.from && angle <= lip.to) {
+        const float e = 0.05;
+        float r = max(length(q), 1.0e-3), de = e / max(lip.radius, 1.0e-3);
+        float h0 = giant_lip_half(lip, angle);
+        float dh_arc =
+            (giant_lip_half_smooth(lip, angle + de) * giant_lip_lump(lip, angle + de, lip.w) - h0) /
+            (de * r);
+        float dh_w = giant_lip_half_smooth(lip, angle) *
+                     (giant_lip_lump(lip, angle, lip.w + e) - giant_lip_lump(lip, angle, lip.w)) /
+                     e;
+        vec3 tangent = cos(angle) * vec3(d.x, 0.0, d.y) - vec3(0.0, sin(angle), 0.0);
+        n = normalize(n - dh_arc * tangent - dh_w * across);
+    }
     // The water is pulled up the face and over in sheets that do not stay
     // level: the surface is combed along the flow (ridges a metre or so
     // apart across the crest, metres long), which tilts the normal across
@@ -56,7 +79,9 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
                        max(abs(dot(u_sun_dir, n)), 0.25);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
-    across_sun += giant_water_toward_sun(hit);
+    float behind = giant_water_toward_sun(hit);
+    across_sun += behind;
+    float foam_sun = sunlit * exp(-TL_GIANT_LIP_BEAM * behind);
     vec3 lit = u_giant_scatter_color * exp(-u_giant_sigma * across_sun) * sky_sun_light() *
                (u_giant_scatter.x * daylight);
     vec3 body = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
@@ -75,7 +100,8 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float edge = smoothstep(0.65, 1.0, thrown) * (0.25 + 0.75 * lip.progress);
     // As it collapses the whitewater climbs from where it landed up what
     // is left of the curtain.
-    float landed = 0.85 * smoothstep(0.0, 0.4, lip.spent + thrown - 0.75);
+    float landed = 0.85 * max(smoothstep(0.0, 0.4, lip.spent + thrown - 0.75),
+                              smoothstep(0.0, TL_GIANT_LIP_ROUGHEN, lip.spent));
     // Where its top falls in (the arc's root end once it collapses) the
     // water is broken and white: a clean green cut read as a sawn pipe.
     float falling = 0.75 * smoothstep(0.0, 0.3, lip.spent) *
@@ -87,6 +113,13 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float streak = foam_lace(vec2(sw.y * 6.0, flow * 0.8));
     lace = mix(streak, lace, smoothstep(0.0, 0.5, max(max(landed, falling), edge)));
     float foam = smoothstep(1.05 - white, 1.2 - white, lace + 0.25 * white);
-    color += foam_aerated(ray, n, white, u_scatter_color, max(sunlit, 0.6));
-    return foam_shade(color, n, foam, lace, max(sunlit, 0.6));
+    // Whitewater (landed, falling) is thick: opaque, and its lumps' hollows
+    // and undersides see less of the sky (the lace and the foam's fine
+    // detail; the normal's height), or in shade it is one even blue-grey,
+    // a frosted shell.
+    float thick = mix(lace, 1.0, max(landed, falling));
+    float fine = foam_detail(vec2(sw.y, flow), length(hit) * u_lod_angle);
+    float sky = mix(0.35, 1.25, 0.5 + 0.5 * n.y) * clamp(0.3 + 0.8 * lace + 1.4 * fine, 0.15, 1.3);
+    color += foam_aerated(ray, n, white, u_scatter_color, foam_sun);
+    return foam_shade_sky(color, n, foam, thick, foam_sun, sky) + foam * lit * phase;
 }

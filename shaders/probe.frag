@@ -51,6 +51,10 @@
 //   mode 21: the crest's caustics at camera-relative (x, z) for light that
 //           crossed the input's third float metres of the crest, its
 //           fourth the footprint                   (tl_caustic_crest)
+//   mode 22: the giant wave's lip at camera-relative (x, z) and height y,
+//           the input's third float: its signed distance in the
+//           cross-section, the lumps' factor and roughness at that angle
+//                  (tl_giant_lip_distance, tl_giant_lip_lump)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -171,6 +175,14 @@ void main()
         GiantLip lip = giant_lip_at(giant_coords(p).y);
         result = u_probe_mode == 10 ? vec4(lip.center, lip.radius, lip.thickness)
                                     : vec4(lip.from, lip.to, lip.progress, lip.present ? 1.0 : 0.0);
+    }
+    else if (u_probe_mode == 22) {
+        vec2 sw = giant_coords(p), n2;
+        GiantLip lip = giant_lip_at(sw.y);
+        vec2 q = vec2(sw.x, input4.z) - lip.center;
+        float angle = atan(q.x, q.y);
+        result.xyz = vec3(giant_lip_distance(lip, vec2(sw.x, input4.z), n2),
+                          giant_lip_lump(lip, angle, lip.w), giant_lip_roughness(lip, angle));
     }
 #endif
 #ifdef TL_FEATURE_GIANT_SPRAY

@@ -269,6 +269,52 @@ static void test_spray_layer(void)
     CHECK(worst < 1e-6);
 }
 
+/* The lumps (TL_GIANT_LIP_LUMP): a fresh sheet is smooth away from its
+ * free edge (factor 1), torn at it; once landed, the whole tube is
+ * lumped, within 1 -+ TL_GIANT_LIP_LUMP and spanning most of that. */
+static void test_lip_lumps(void)
+{
+    const double ages[2] = {2.5, 4.5};
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        breaking_scene(&s, 10.0, ages[k], 0.0, 0.0);
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        double lo = 2.0, hi = 0.0, smooth = 0.0, edge = 0.0;
+        int samples = 0;
+        for (int iw = 0; iw <= 40; iw++) {
+            tl_giant_lip lip;
+            tl_giant_lip_at(&g, s.giant.peak - 10.0 + 0.5 * iw, base_of(&s), &lip);
+            if (!lip.present)
+                continue;
+            for (int ia = 0; ia <= 20; ia++) {
+                double angle = lip.from + (lip.to - lip.from) * ia / 20.0;
+                double along = (angle - TL_GIANT_LIP_ROOT * M_PI / 180.0) /
+                               (TL_GIANT_LIP_SWEEP * M_PI / 180.0);
+                double f = tl_giant_lip_lump(&lip, angle);
+                lo = fmin(lo, f);
+                hi = fmax(hi, f);
+                if (along < 0.7)
+                    smooth = fmax(smooth, fabs(f - 1.0) * (lip.spent == 0.0));
+                else
+                    edge = fmax(edge, fabs(f - 1.0));
+                samples++;
+            }
+        }
+        printf("lip lumps, age %g s: %d samples, factor %.3f .. %.3f; fresh away from the edge "
+               "within %.3g of 1, at the edge %.3f\n",
+               ages[k], samples, lo, hi, smooth, edge);
+        CHECK(samples > 100);
+        CHECK(lo >= 1.0 - TL_GIANT_LIP_LUMP - 1e-12 && hi <= 1.0 + TL_GIANT_LIP_LUMP + 1e-12);
+        if (k == 0) {
+            CHECK(smooth == 0.0);
+            CHECK(edge > 0.05);
+        } else {
+            CHECK(hi - lo > TL_GIANT_LIP_LUMP);
+        }
+    }
+}
+
 /* Only a tall stretch of the crest throws a lip: none where the envelope
  * is below TL_GIANT_LIP_LOW, though the break has passed there, and the
  * whole tube where it is above TL_GIANT_LIP_HIGH. */
@@ -304,15 +350,19 @@ static void test_lip_low_crest(void)
     CHECK(low > 0 && high > 0);
 }
 
-/* GPU against CPU: the lip's cross-section (probe modes 10, 11) and the
- * spray's density (mode 12) at points across the crest, for a wave at the
- * origin at t = 10 s and for one 1e4 m out at t = 1e5 s. */
+/* GPU against CPU: the lip's cross-section (probe modes 10, 11), the
+ * spray's density (mode 12) and the tube's lumped distance (mode 22) at
+ * points across the crest, for a wave at the origin at t = 10 s and for
+ * one 1e4 m out at t = 1e5 s, and for the first once it has landed. */
 static void test_gpu_mirror(tl_renderer *r)
 {
-    const double where[2][3] = {{10.0, 0.0, 0.0}, {1e5, 1e4, -7e3}};
-    for (int k = 0; k < 2; k++) {
+    /* t, x, z and the break's age at the peak: thrown, and landed there
+     * (its whitewater lumped all along the tube). */
+    const double where[3][4] = {
+        {10.0, 0.0, 0.0, 2.0}, {1e5, 1e4, -7e3, 2.0}, {10.0, 0.0, 0.0, 4.5}};
+    for (int k = 0; k < 3; k++) {
         tl_scene s;
-        breaking_scene(&s, where[k][0], 2.0, where[k][1], where[k][2]);
+        breaking_scene(&s, where[k][0], where[k][3], where[k][1], where[k][2]);
         tl_giant g;
         tl_giant_prepare(&g, &s.giant, s.time);
         /* The camera 60 m in front of the crest, looking at it. */
@@ -326,7 +376,7 @@ static void test_gpu_mirror(tl_renderer *r)
         CHECK(u.features & TL_FEATURE_GIANT_LIP);
         CHECK(u.features & TL_FEATURE_GIANT_SPRAY);
         enum { N = 48 };
-        float in4[4 * N], lip4[4 * N], ang4[4 * N], spray4[4 * N];
+        float in4[4 * N], lip4[4 * N], ang4[4 * N], spray4[4 * N], dist4[4 * N];
         tl_giant_lip cpu[N];
         double density[N];
         tl_giant_spray sp;
@@ -358,7 +408,8 @@ static void test_gpu_mirror(tl_renderer *r)
         tl_error_clear(&err);
         int rc = tl_renderer_probe4(r, &u, 10, in4, N, u.octaves, lip4, &err) ||
                  tl_renderer_probe4(r, &u, 11, in4, N, u.octaves, ang4, &err) ||
-                 tl_renderer_probe4(r, &u, 12, in4, N, u.octaves, spray4, &err);
+                 tl_renderer_probe4(r, &u, 12, in4, N, u.octaves, spray4, &err) ||
+                 tl_renderer_probe4(r, &u, 22, in4, N, u.octaves, dist4, &err);
         if (rc) {
             fprintf(stderr, "probe: %s\n", err.message);
             CHECK(0);
@@ -367,7 +418,8 @@ static void test_gpu_mirror(tl_renderer *r)
         /* The lip's centre s is the wave's (relative to the crest on the
          * centre line), as the CPU's. */
         double worst = 0.0, worst_angle = 0.0, worst_density = 0.0, landing = 0.0;
-        int present = 0;
+        double worst_distance = 0.0, worst_lump = 0.0;
+        int present = 0, rough = 0;
         for (int i = 0; i < N; i++) {
             CHECK((ang4[4 * i + 3] > 0.5) == cpu[i].present);
             if (!cpu[i].present)
@@ -379,16 +431,33 @@ static void test_gpu_mirror(tl_renderer *r)
             worst = fmax(worst, fabs(lip4[4 * i + 3] - cpu[i].thickness));
             worst_angle = fmax(worst_angle, fabs(ang4[4 * i + 1] - cpu[i].to));
             worst_density = fmax(worst_density, fabs(spray4[4 * i] - density[i]));
+            /* The tube's signed distance there and its lumps (the point's
+             * (s, y) back from its world position, as the GPU has it). */
+            double x = in4[4 * i + 0] + s.camera.position[0],
+                   z = in4[4 * i + 1] + s.camera.position[2];
+            double rx = x - g.origin[0], rz = z - g.origin[1];
+            double sv = g.dir[0] * rx + g.dir[1] * rz, y = in4[4 * i + 2];
+            double angle = atan2(sv - cpu[i].center[0], y - cpu[i].center[1]);
+            double d = tl_giant_lip_distance(&cpu[i], sv, y);
+            if (fabs(d) < 50.0)
+                worst_distance = fmax(worst_distance, fabs(dist4[4 * i] - d));
+            worst_lump =
+                fmax(worst_lump, fabs(dist4[4 * i + 1] - tl_giant_lip_lump(&cpu[i], angle)));
+            worst_lump =
+                fmax(worst_lump, fabs(dist4[4 * i + 2] - tl_giant_lip_roughness(&cpu[i], angle)));
+            rough += tl_giant_lip_roughness(&cpu[i], angle) > 0.1;
             if (i % 4 == 3)
                 landing = fmax(landing, density[i]);
         }
-        printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g\n",
+        printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g; "
+               "distance %.3g m, lumps %.3g (%d points rough)\n",
                s.time, hypot(where[k][1], where[k][2]), present, N, worst, worst_angle,
-               worst_density);
+               worst_density, worst_distance, worst_lump, rough);
         CHECK(present > N / 2);
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
         CHECK(worst_density <= 2e-3 * s.giant.spray);
+        CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
         CHECK(landing > 0.1); /* the landing's cloud is among the points compared */
     }
 }
@@ -508,6 +577,7 @@ int main(void)
     test_spray_density();
     test_spray_layer();
     test_lip_low_crest();
+    test_lip_lumps();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);

@@ -111,6 +111,10 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_GIANT_LIP_FADE %.17g\n"
         "#define TL_GIANT_LIP_COLLAPSE %.17g\n"
         "#define TL_GIANT_LIP_SWELL %.17g\n"
+        "#define TL_GIANT_LIP_LUMP %.17g\n"
+        "#define TL_GIANT_LIP_LUMP_CELL %.17g\n"
+        "#define TL_GIANT_LIP_TEAR %.17g\n"
+        "#define TL_GIANT_LIP_ROUGHEN %.17g\n"
         "#define TL_GIANT_LIP_LOW %.17g\n"
         "#define TL_GIANT_LIP_HIGH %.17g\n"
         "#define TL_SPRAY_SIGMA %.17g\n"
@@ -181,6 +185,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_GIANT_TROUGH_LIFT, TL_GIANT_BACK_FILL, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS,
         TL_GIANT_LIP_TIP, TL_GIANT_LIP_GROW, TL_GIANT_LIP_ANCHOR, TL_GIANT_LIP_ROOT,
         TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_GIANT_LIP_COLLAPSE, TL_GIANT_LIP_SWELL,
+        TL_GIANT_LIP_LUMP, TL_GIANT_LIP_LUMP_CELL, TL_GIANT_LIP_TEAR, TL_GIANT_LIP_ROUGHEN,
         TL_GIANT_LIP_LOW, TL_GIANT_LIP_HIGH, TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL,
         TL_SPRAY_LANDING_RADIUS, TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_AHEAD, TL_SPRAY_SPLASH_GROW,
         TL_SPRAY_BOW_GAIN, TL_SPRAY_LANDING_GAIN, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_WAKE_POINTS,

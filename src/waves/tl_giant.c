@@ -1,5 +1,7 @@
 #include "tl_giant.h"
 
+#include "tl_noise.h"
+
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -480,6 +482,23 @@ double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, dou
     return clampd(c, 0.0, 1.0);
 }
 
+/* How far `angle` lies along the whole sweep, from the root (0) to where
+ * a full throw ends (1). */
+static double lip_along(double angle)
+{
+    double along =
+        (angle - TL_GIANT_LIP_ROOT * (M_PI / 180.0)) / (TL_GIANT_LIP_SWEEP * (M_PI / 180.0));
+    return along < 0.0 ? 0.0 : along > 1.0 ? 1.0 : along;
+}
+
+/* The tube's half thickness at `angle` before its lumps: it thins along
+ * the arc (TL_GIANT_LIP_TIP) and evens out as it collapses. */
+static double lip_half_smooth(const tl_giant_lip *lip, double angle)
+{
+    return lip->thickness *
+           (1.0 - (1.0 - TL_GIANT_LIP_TIP) * lip_along(angle) * (1.0 - lip->spent));
+}
+
 void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip)
 {
     memset(lip, 0, sizeof *lip);
@@ -500,13 +519,14 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     if (!(lip->thickness > 0.0))
         return;
     lip->present = true;
+    lip->w = w;
     lip->radius = TL_GIANT_LIP_RADIUS * height;
     lip->progress = progress;
     double anchor = TL_GIANT_LIP_ANCHOR * (M_PI / 180.0);
     double top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k, top_y = base + height;
     /* The tube's outer surface passes through the crest's top at the
      * anchor: the lip is the crest's top thrown on, not a tube laid on it. */
-    double outer = lip->radius + tl_giant_lip_half_thickness(lip, anchor);
+    double outer = lip->radius + lip_half_smooth(lip, anchor);
     lip->center[0] = top_s - outer * sin(anchor);
     lip->center[1] = top_y - outer * cos(anchor);
     double sweep = progress * tall * TL_GIANT_LIP_SWEEP * (M_PI / 180.0);
@@ -515,12 +535,22 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
                 TL_GIANT_LIP_COLLAPSE * smoothstep(0.0, 1.0, lip->spent) * sweep;
 }
 
+double tl_giant_lip_roughness(const tl_giant_lip *lip, double angle)
+{
+    return fmax(smoothstep(0.0, TL_GIANT_LIP_ROUGHEN, lip->spent),
+                TL_GIANT_LIP_TEAR * smoothstep(0.7, 1.0, lip_along(angle)));
+}
+
+double tl_giant_lip_lump(const tl_giant_lip *lip, double angle)
+{
+    double n = tl_noise_value(lip->w / TL_GIANT_LIP_LUMP_CELL,
+                              17.3 + angle * lip->radius / TL_GIANT_LIP_LUMP_CELL);
+    return 1.0 + TL_GIANT_LIP_LUMP * tl_giant_lip_roughness(lip, angle) * (2.0 * n - 1.0);
+}
+
 double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle)
 {
-    double along =
-        (angle - TL_GIANT_LIP_ROOT * (M_PI / 180.0)) / (TL_GIANT_LIP_SWEEP * (M_PI / 180.0));
-    along = along < 0.0 ? 0.0 : along > 1.0 ? 1.0 : along;
-    return lip->thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along * (1.0 - lip->spent));
+    return lip_half_smooth(lip, angle) * tl_giant_lip_lump(lip, angle);
 }
 
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
@@ -560,8 +590,8 @@ bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double a
         if (!lip.present)
             continue;
         any = true;
-        double reach = lip.radius + lip.thickness + spacing * (1.0 + g->max_dbow) +
-                       spacing * g->max_dlambda * g->amplitude;
+        double reach = lip.radius + lip.thickness * (1.0 + TL_GIANT_LIP_LUMP) +
+                       spacing * (1.0 + g->max_dbow) + spacing * g->max_dlambda * g->amplitude;
         box[0] = fmin(box[0], lip.center[0] - reach);
         box[1] = fmax(box[1], lip.center[0] + reach);
         box[2] = fmin(box[2], lip.center[1] - reach);
@@ -596,7 +626,7 @@ int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, do
      * intervals thick. */
     double found[8];
     int n = 0;
-    const double reach = lip.radius + lip.thickness;
+    const double reach = lip.radius + lip.thickness * (1.0 + TL_GIANT_LIP_LUMP);
     const double lo = lip.center[1] - reach, hi = lip.center[1] + reach;
     const double tolerance = 1e-9 * (lip.radius + 1.0);
     double y0 = fmax(lo, floor), d0 = tl_giant_lip_distance(&lip, s, y0);

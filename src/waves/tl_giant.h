@@ -122,6 +122,18 @@
  * (of its progress): at the peel's front the lip rises out of the crest
  * instead of starting as a wall of full thickness. */
 #define TL_GIANT_LIP_GROW 0.15
+/* Thrown water tears and landed water is whitewater, not a smooth sheet:
+ * the tube's half thickness is lumped by a value noise (cells
+ * TL_GIANT_LIP_LUMP_CELL metres along the crest and along the arc) by up
+ * to TL_GIANT_LIP_LUMP of itself, at its free edge as it throws (up to
+ * TL_GIANT_LIP_TEAR of that, over the last 0.3 of the sweep) and all
+ * along it once it has landed (growing over the first
+ * TL_GIANT_LIP_ROUGHEN of its collapse). A smooth tube read as a glassy
+ * shell with hard edges. */
+#define TL_GIANT_LIP_LUMP      0.6
+#define TL_GIANT_LIP_LUMP_CELL 0.9
+#define TL_GIANT_LIP_TEAR      0.6
+#define TL_GIANT_LIP_ROUGHEN   0.4
 /* tl_giant_lip_heights scans a vertical line across the tube in this
  * many intervals for its crossings. */
 #define TL_GIANT_LIP_SCAN 512
@@ -266,13 +278,21 @@ typedef struct tl_giant_lip {
     double from, to;  /* the arc's angles, radians from up, clockwise toward +s */
     double progress;  /* the throw, 0 .. 1 (tl_giant_break_progress) */
     double spent;     /* 0 .. 1 once it has landed: it collapses, whitens and thins away */
+    double w;         /* where across the crest (the lumps' noise is taken there) */
 } tl_giant_lip;
 
 /* The lip at w across; `base` is the ocean's mean level (-depth / 2). */
 void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip);
 
-/* The tube's half thickness at `angle` along its arc (TL_GIANT_LIP_TIP). */
+/* The tube's half thickness at `angle` along its arc (TL_GIANT_LIP_TIP),
+ * lumped (TL_GIANT_LIP_LUMP). */
 double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle);
+
+/* How much the lumps roughen the tube at `angle` along its arc, 0 .. 1,
+ * and their factor on the half thickness there
+ * (1 + TL_GIANT_LIP_LUMP * roughness * (2 * noise - 1)). */
+double tl_giant_lip_roughness(const tl_giant_lip *lip, double angle);
+double tl_giant_lip_lump(const tl_giant_lip *lip, double angle);
 
 /* The box that holds the lip: box = (s low, s high, y low, y high) in the
  * wave's coordinates, across = (w low, w high). False when no lip is
