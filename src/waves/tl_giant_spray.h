@@ -26,7 +26,7 @@
  * ahead of and above the bow, from where the wave's slope along the
  * heading (up or down) is TL_SPRAY_BOW_SLOPE_FROM, at full strength where
  * it is TL_SPRAY_BOW_SLOPE or more. */
-#define TL_SPRAY_BOW_RADIUS 0.35
+#define TL_SPRAY_BOW_RADIUS 0.45
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
  * radius (a share of the lip's), from half the throw until it has landed
  * and gone. As the lip collapses the splash rises off the face by up to
@@ -47,7 +47,7 @@
 #define TL_SPRAY_LANDING_GAIN 10.0
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
-#define TL_SPRAY_BOW_GAIN  5.0
+#define TL_SPRAY_BOW_GAIN  12.0
 #define TL_SPRAY_BOW_SLOPE 0.8
 /* No burst below this slope: the wave's long gentle front, far ahead of
  * its face, lifts a hull without throwing water. */
