@@ -116,8 +116,9 @@ float giant_bow(float w, out float db)
 float giant_break_age(float w)
 {
     float x = w - u_giant_crest.x;
-    return u_giant_break.x - (sqrt(x * x + TL_GIANT_PEEL_ROUND * TL_GIANT_PEEL_ROUND) -
-                              TL_GIANT_PEEL_ROUND) / u_giant_break.y;
+    return u_giant_break.x -
+           (sqrt(x * x + TL_GIANT_PEEL_ROUND * TL_GIANT_PEEL_ROUND) - TL_GIANT_PEEL_ROUND) /
+               u_giant_break.y;
 }
 #endif
 
@@ -377,7 +378,8 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float cap = smoothstep(0.9, 1.0, top) * breaking;
     float streaks = giant_streaks(g.s0, g.w);
     float front = smoothstep(-0.35, 0.0, g.s0 / u_giant_mask.x);
-    float face = 0.75 * smoothstep(0.45, 0.85, streaks) * smoothstep(0.0, 0.8, top) * front * breaking;
+    float face =
+        0.75 * smoothstep(0.45, 0.85, streaks) * smoothstep(0.0, 0.8, top) * front * breaking;
     float behind = max(-g.s0, 0.0);
     float fresh = exp(-behind / max(u_giant_foam.y, 1.0e-3));
     float trail = breaking * fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
@@ -417,8 +419,8 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float texture_trail = max(0.8 * veins, smoothstep(0.68, 0.85, trail_lace) * fresh);
     // The bubbles the broken crest drove under stay longer than the foam
     // on top, in clouds larger than the web's cells.
-    aerated = trail * g.lambda * u_giant_foam.z *
-              (0.5 + 0.5 * foam_noise(at / 9.0 + vec2(3.1, 6.4)));
+    aerated =
+        trail * g.lambda * u_giant_foam.z * (0.5 + 0.5 * foam_noise(at / 9.0 + vec2(3.1, 6.4)));
     coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
     // Even full coverage leaves holes where the lace is thinnest.
     float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
@@ -428,21 +430,22 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     // distance in metres from the field's value over its gradient), drawn
     // at least a pixel wide and as much fainter, in dashes.
     float stringer = 0.0;
-    float spill = smoothstep(0.35, 0.9, top) * front * smoothstep(0.55, 0.85, g.lambda) *
-                  (1.0 - breaking);
+    float spill =
+        smoothstep(0.35, 0.9, top) * front * smoothstep(0.55, 0.85, g.lambda) * (1.0 - breaking);
     if (spill > 0.0) {
         const float h = 0.25;
         float lines = giant_stringer_field(g.s0, g.w);
         vec2 grad = vec2(giant_stringer_field(g.s0 + h, g.w) - lines,
-                         giant_stringer_field(g.s0, g.w + h) - lines) / h;
+                         giant_stringer_field(g.s0, g.w + h) - lines) /
+                    h;
         float metres = abs(lines - 0.5) / max(length(grad), 0.02);
         // Only where the contour runs down the face (the field changes
         // across the crest): where it turns across, round a bump of the
         // field near its middle, it closed into white rings.
         float down_face = smoothstep(0.6, 0.9, abs(grad.y) / max(length(grad), 1.0e-6));
         // Widest where it spills off the crest, thinning as it runs down.
-        float half_width = 0.07 * smoothstep(0.2, 1.0, top) *
-                           (0.5 + foam_noise(vec2(g.w / 3.0, g.s0 / 5.0)));
+        float half_width =
+            0.07 * smoothstep(0.2, 1.0, top) * (0.5 + foam_noise(vec2(g.w / 3.0, g.s0 / 5.0)));
         float drawn = max(half_width, 0.5 * footprint);
         stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / max(drawn, 1e-4);
         // Lines come and go along the crest (some stretches spill none),
@@ -473,7 +476,7 @@ float giant_hg(float mu, float g)
 // ocean's height at the hit held: the small waves change the path by
 // centimetres, the crest by metres.
 #define TL_GIANT_GLOW_STEPS 8
-#define TL_GIANT_GLOW_STEP 0.2
+#define TL_GIANT_GLOW_STEP  0.2
 // Returns (metres crossed, the wave's height where the light came in):
 // light that came in through the open sea rather than the crest is the
 // ocean's own scattering (water_shade), not this.
@@ -529,7 +532,6 @@ float giant_water_toward_sun(vec3 from)
     return crossed + max(-above, 0.0) / max(toward.y, 0.1);
 }
 
-
 // Light through the crest (seed 003's subsurface term, with its depth
 // from the wave's shape): sunlight that crossed the water to a point just
 // under the surface, scattered there toward the eye by a two-lobe phase
@@ -540,7 +542,7 @@ float giant_water_toward_sun(vec3 from)
 // the sun's colour shows through, turquoise; where the wave is thick it
 // fades to deep blue and then to nothing. giant.scatter_color tints what
 // the water scatters (its suspended matter's colour).
-vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint)
+vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, float sunlit)
 {
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     if (daylight <= 0.0)
@@ -549,16 +551,25 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint)
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
     vec2 path = giant_thickness(hit, g);
-    // Only on the wave (its upper part, softly: low on the face the path
-    // has dimmed it anyway) and where the wave's own slope turns away from
+    // In the crest's shadow a path that leaves the water within a metre
+    // (at the face's foot, flatter there than the sun is high) meets the
+    // wave again further on: the light crossed the wave, all the water
+    // the sun's ray crosses counts (giant_water_toward_sun). Taken to the
+    // first way out alone, the foot glowed in a green band.
+    if (sunlit < 1.0 && path.x < 1.0)
+        path.x = mix(path.x, max(path.x, giant_water_toward_sun(hit)), 1.0 - sunlit);
+    // Only on the wave (above 0.3 of its height there, softly: lower, the
+    // path has dimmed it to deep blue anyway; gated at half its height the
+    // lower face went black, ungated its foot where the wave runs out into
+    // the swell glowed in a green band) and where the wave's own slope turns away from
     // the sun: a slope that faces it is lit directly, and what it sends
     // back is the ocean's own scattering (the back of the wave glowed as if
     // lit through). With the small waves' normal, every ripple's lee side
     // on the sea in front glowed green. Weighting by where the light came
     // in, high up the crest or not, cut the glow off at one height.
     vec3 wave_normal = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
-    float through = smoothstep(0.0, 0.5, giant_top(g)) *
-                    smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
+    float through =
+        smoothstep(0.0, 0.3, giant_top(g)) * smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
 #ifdef TL_FEATURE_GIANT_CAUSTICS
     // The ripples where the light came in focus it into a web. They ride
@@ -590,7 +601,7 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
     float foam = giant_foam(g, ocean_value, footprint, thickness, aerated);
     vec3 glow = vec3(0.0);
 #ifdef TL_FEATURE_GIANT_GLOW
-    glow = giant_scatter(g, hit, ray, n, footprint);
+    glow = giant_scatter(g, hit, ray, n, footprint, sunlit);
 #endif
     color += glow * (1.0 - foam);
     // The bubbles behind the crest, tinted by the water above them, under
