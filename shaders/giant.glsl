@@ -608,13 +608,16 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
     // the trail's web (which on the dark water alone read as cracks in mud).
     color += foam_aerated(ray, n, aerated, u_giant_scatter_color, sunlit);
     // The lip is thin: whitewater on the top fifth of the crest still sees
-    // the sun through it when the face below is in the crest's shadow.
+    // some of the sun through it when the face below is in the crest's
+    // shadow (0.4 of it: the rest of what comes through is the glow,
+    // passed on below; with all of the sun the stringers under the crest
+    // were tan hairlines on the turquoise).
     float top = giant_top(g);
     // Foam over the glow scatters it on toward the eye: lit from behind,
     // whitewater on a backlit crest shines. Without this its shadowed side
     // read as grey-blue blobs on the bright band; passing 0.6 of it, thin
     // foam (the stringers, faint where narrower than a pixel) drew dark
     // veins down the glowing face.
-    color = foam_shade(color, n, foam, thickness, max(sunlit, smoothstep(0.8, 1.0, top)));
+    color = foam_shade(color, n, foam, thickness, max(sunlit, 0.4 * smoothstep(0.8, 1.0, top)));
     return color + foam * glow;
 }
