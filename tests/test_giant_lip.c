@@ -315,6 +315,46 @@ static void test_lip_lumps(void)
     }
 }
 
+/* The bow's burst starts from the stem where the pitched hull has it: a
+ * boat bow down on the face has its stem half a hull's length times the
+ * pitch's sine below its middle, and the burst's centre drops with it
+ * (taken level, it rose from the crest beside the boat). */
+static void test_bow_burst_pitched(void)
+{
+    double centre_y[2], centre_s[2];
+    const double pitches[2] = {0.0, -0.6};
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        breaking_scene(&s, 10.0, 0.0, 0.0, 0.0);
+        s.giant.breaking = false;
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        /* On the face ahead of the crest, heading down it. */
+        double sv = g.curl / g.k + 6.0;
+        s.boat.enabled = s.boat.visible = true;
+        s.boat.length = 9.0;
+        s.boat.beam = 3.0;
+        s.boat.position[0] = g.origin[0] + g.dir[0] * sv;
+        s.boat.position[1] = 8.0;
+        s.boat.position[2] = g.origin[1] + g.dir[1] * sv;
+        s.boat.heading = atan2(g.dir[0], g.dir[1]);
+        s.boat.pitch = pitches[k];
+        tl_waves waves;
+        tl_waves_init(&waves, &s.ocean);
+        tl_frame_uniforms u;
+        tl_prepare_frame(&s, &waves, &u);
+        CHECK(u.features & TL_FEATURE_GIANT_SPRAY);
+        CHECK(u.giant_spray_bow[3] > 0.0f);
+        centre_y[k] = u.giant_spray_bow[1];
+        centre_s[k] = g.dir[0] * (u.giant_spray_bow[0] + s.camera.position[0] - g.origin[0]) +
+                      g.dir[1] * (u.giant_spray_bow[2] + s.camera.position[2] - g.origin[1]);
+    }
+    printf("bow burst: centre %.3f m up, %.3f m along level; %.3f, %.3f bow down\n", centre_y[0],
+           centre_s[0], centre_y[1], centre_s[1]);
+    CHECK(fabs((centre_y[0] - centre_y[1]) - 4.5 * sin(0.6)) < 1e-3);
+    CHECK(fabs((centre_s[0] - centre_s[1]) - 4.5 * (1.0 - cos(0.6))) < 1e-3);
+}
+
 /* Only a tall stretch of the crest throws a lip: none where the envelope
  * is below TL_GIANT_LIP_LOW, though the break has passed there, and the
  * whole tube where it is above TL_GIANT_LIP_HIGH. */
@@ -578,6 +618,7 @@ int main(void)
     test_spray_layer();
     test_lip_low_crest();
     test_lip_lumps();
+    test_bow_burst_pitched();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);

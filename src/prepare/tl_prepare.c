@@ -121,10 +121,15 @@ static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniform
 {
     const tl_boat *b = &s->boat;
     double heading[2] = {sin(b->heading), cos(b->heading)}, bow[3];
+    /* The stem where the pitched hull has it: bow down on a face it is
+     * metres below the boat's middle (taken level, the burst rose from the
+     * crest beside the boat, not from its bow). */
     for (int i = 0; i < 3; i++)
         bow[i] = b->position[i];
-    bow[0] += heading[0] * 0.5 * b->length;
-    bow[2] += heading[1] * 0.5 * b->length;
+    double reach = 0.5 * b->length * cos(b->pitch);
+    bow[0] += heading[0] * reach;
+    bow[1] += 0.5 * b->length * sin(b->pitch);
+    bow[2] += heading[1] * reach;
     tl_giant_spray sp;
     tl_giant_spray_prepare(&sp, g, s->giant.spray, s->giant.spray_wind, s->time, s->ocean.depth,
                            b->enabled ? bow : NULL, b->length, heading);
