@@ -44,7 +44,7 @@
 #define TL_SPRAY_SPLASH_AHEAD   0.6
 /* The landing's whitewater is this much denser than the spindrift: an
  * opaque, churning cloud, not a veil. */
-#define TL_SPRAY_LANDING_GAIN 10.0
+#define TL_SPRAY_LANDING_GAIN 20.0
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  12.0
