@@ -14,17 +14,20 @@
 #define TL_SPRAY_ALBEDO    0.9
 #define TL_SPRAY_DIFFUSE   0.6
 
-// Where in its segment a spray march's steps sample, in [0, 1): the
-// pixel's interleaved gradient noise (Jimenez 2014), the same every frame
-// (a frame renders alike alone or in a sequence), different between
-// neighbours (no blotches where the same offset everywhere would alias),
-// and spread evenly over every 3x3 block, so the pixel filter averages it
-// away. A hash of the pixel (white noise) left the landing's whitewater
-// and the bow's burst grainy, a stipple.
+// Where in its segment a spray march's steps sample, in [0, 1): a hash
+// of the pixel, the same every frame (a frame renders alike alone or in a
+// sequence), different between neighbours (no blotches where the same
+// offset everywhere would alias). Its grain reads as droplets;
+// interleaved gradient noise left a regular hatch at the whitewater's
+// edges.
 float spray_step_offset()
 {
-    vec2 pixel = floor(gl_FragCoord.xy);
-    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint k = pixel.x * 0x8da6b343u ^ pixel.y * 0xd8163841u;
+    k ^= k >> 15;
+    k *= 0x2c1b3c6du;
+    k ^= k >> 12;
+    return float(k & 0xffffu) / 65536.0;
 }
 
 // The sheet's shape at offset d (metres) from its centre for a boat
