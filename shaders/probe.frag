@@ -175,8 +175,7 @@ void main()
         GiantLip lip = giant_lip_at(giant_coords(p).y);
         result = u_probe_mode == 10 ? vec4(lip.center, lip.radius, lip.thickness)
                                     : vec4(lip.from, lip.to, lip.progress, lip.present ? 1.0 : 0.0);
-    }
-    else if (u_probe_mode == 22) {
+    } else if (u_probe_mode == 22) {
         vec2 sw = giant_coords(p), n2;
         GiantLip lip = giant_lip_at(sw.y);
         vec2 q = vec2(sw.x, input4.z) - lip.center;

@@ -142,10 +142,9 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                        tl_giant_spray_layer(up - lift, rise + 1e-6, span);
         /* Streaks drawn out along the wind, narrow across the crest. */
         double drifted = back + sp->drift;
-        double wisps =
-            smoothstep(0.3, 0.75,
-                       0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
-                           0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
+        double wisps = smoothstep(0.3, 0.75,
+                                  0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
+                                      0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
         density += sp->amount * source * plume * wisps;
         /* The lip's landing. */
         tl_giant_lip lip;
@@ -157,12 +156,11 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                 lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - y;
             double r =
                 TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
-            density +=
-                TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
-                (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
-                smoothstep(0.3, 0.8,
-                           0.6 * tl_noise_value(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
-                               0.4 * tl_noise_value(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
+            density += TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
+                       (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+                       smoothstep(0.3, 0.8,
+                                  0.6 * tl_noise_value(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
+                                      0.4 * tl_noise_value(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
         }
     }
     if (sp->bow_amount > 0.0) {
