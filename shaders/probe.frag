@@ -24,7 +24,8 @@
 //   mode 11: the same lip's angles from and to, throw and presence
 //   mode 12: the spray's density at camera-relative (x, z) and height y,
 //           the input's third float, over the span of height its fourth
-//           (tl_giant_spray_density)
+//           (tl_giant_spray_density), and in .y the landing's optical
+//           depth toward the sun there (tl_giant_spray_landing_shade)
 //   mode 13: a material's BRDF x cos for the normal +y, the view at angle x
 //           from it, the light at angle y, z the azimuth between them; w
 //           the roughness, negative for a metal; base colour 0.8 0.4 0.1
@@ -186,7 +187,7 @@ void main()
 #endif
 #ifdef TL_FEATURE_GIANT_SPRAY
     else if (u_probe_mode == 12)
-        result.x = giant_spray_density(vec3(p.x, input4.z, p.y), input4.w);
+        result.x = giant_spray_sample(vec3(p.x, input4.z, p.y), input4.w, result.y);
 #endif
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 9) {

@@ -29,9 +29,10 @@ float giant_spray_layer(float x, float r, float span)
 
 // Density (0 .. giant.spray) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
-float giant_spray_density(vec3 p, float span)
+float giant_spray_sample(vec3 p, float span, out float shade)
 {
     float density = 0.0;
+    shade = 0.0;
     vec2 sw = giant_coords(p.xz);
     if (abs(sw.y) < u_giant_mask.z && sw.x >= u_giant_spray_box.x && sw.x <= u_giant_spray_box.y &&
         p.y >= u_giant_spray_box.z && p.y <= u_giant_spray_box.w) {
@@ -69,9 +70,16 @@ float giant_spray_density(vec3 p, float span)
                 lip.center.y + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - p.y;
             float r =
                 TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
-            density +=
-                TL_SPRAY_LANDING_GAIN * u_giant_spray.x * smoothstep(0.5, 1.0, lip.progress) *
-                (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+            float landing = TL_SPRAY_LANDING_GAIN * u_giant_spray.x *
+                            smoothstep(0.5, 1.0, lip.progress) * (1.0 - lip.spent * lip.spent);
+            // Its own shade (tl_giant_spray_landing_shade): the envelope
+            // integrated toward the sun in closed form.
+            vec2 v = vec2(dot(u_sun_dir.xz, u_giant_frame.xy), u_sun_dir.y);
+            float len = length(v), a = len > 1.0e-6 ? dot(vec2(ts, ty), v) / len : 0.0;
+            float d2 = max(ts * ts + ty * ty - a * a, 0.0);
+            shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
+                    sqrt(TL_PI) * r * (1.0 + giant_erf(a / r)) / max(len, 0.1);
+            density += landing * exp(-(ts * ts + ty * ty) / (r * r)) *
                 smoothstep(0.3, 0.8,
                            0.6 * foam_noise(vec2(sw.y / 2.0 + 5.0, ty / 1.6 - ts / 2.2)) +
                                0.4 * foam_noise(vec2(sw.y / 0.7 - 3.0, ts / 0.8 + ty / 0.6)));
@@ -82,6 +90,13 @@ float giant_spray_density(vec3 p, float span)
         density += u_giant_spray_bow.w * bow_spray_sheet(p - u_giant_spray_bow.xyz,
                                                          u_giant_spray_heading, u_giant_spray.w);
     return density;
+}
+
+// The spray's density alone (tl_giant_spray_density).
+float giant_spray_density(vec3 p, float span)
+{
+    float shade;
+    return giant_spray_sample(p, span, shade);
 }
 
 // The spray along `ray` from the camera to `dist`, over `color`: single
@@ -135,7 +150,8 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float offset = spray_step_offset();
     for (int i = 0; i < steps; i++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
-        float density = giant_spray_density(p, abs(ray.y) * dt);
+        float shade;
+        float density = giant_spray_sample(p, abs(ray.y) * dt, shade);
         float sigma = TL_SPRAY_SIGMA * density;
         float step_trans = exp(-sigma * dt);
         // A dense cloud (the landing's whitewater, the bow's burst) scatters
@@ -155,7 +171,11 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         // 10 m the whitewater was tinted into cyan smoke.
         float sunlit = density > 0.0 ? giant_sunlit(p.xz, p.y) : 1.0;
         vec3 through = max(vec3(sunlit), dense * exp(-u_giant_sigma * TL_SPRAY_SHADE_WATER));
-        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) * through + ambient);
+        // The landing's own shade dims the sun's single scattering, and its
+        // many scatterings less (they carry light in from the lit side).
+        float shaded = exp(-shade);
+        vec3 light =
+            TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }

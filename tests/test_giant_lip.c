@@ -32,6 +32,13 @@ static void breaking_scene(tl_scene *s, double t, double age, double cx, double 
     s->giant.spray = 1.5;
 }
 
+static double smoothstep_test(double e0, double e1, double x)
+{
+    x = (x - e0) / (e1 - e0);
+    x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
+    return x * x * (3.0 - 2.0 * x);
+}
+
 static double base_of(const tl_scene *s)
 {
     return -0.5 * s->ocean.depth;
@@ -355,6 +362,58 @@ static void test_bow_burst_pitched(void)
     CHECK(fabs((centre_s[0] - centre_s[1]) - 4.5 * (1.0 - cos(0.6))) < 1e-3);
 }
 
+/* The landing's self-shade (tl_giant_spray_landing_shade) is its
+ * envelope's optical depth toward the sun: the closed form matches a
+ * midpoint sum of the envelope's density (noise at its mean) along the
+ * sun's ray, and a point on the cloud's sunward side lies in less shade
+ * than one on its far side. */
+static void test_landing_shade(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 2.5, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_giant_spray sp;
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL, 0.0, NULL);
+    const double el = 0.2, az = 2.8; /* low, behind the wave */
+    const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)};
+    double w = s.giant.peak;
+    tl_giant_lip lip;
+    tl_giant_lip_at(&g, w, base_of(&s), &lip);
+    CHECK(lip.present && lip.progress > 0.5);
+    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
+    double cs = lip.center[0] + lip.radius * (sin(lip.to) + ahead);
+    double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
+    double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
+    double vs = sun[0] * g.dir[0] + sun[2] * g.dir[1];
+    double worst = 0.0, side[2];
+    for (int k = -1; k <= 1; k++) {
+        /* The middle, and a radius toward and away from the sun. */
+        double ps = cs + k * r * vs / hypot(vs, sun[1]),
+               py = cy + k * r * sun[1] / hypot(vs, sun[1]);
+        double x = g.origin[0] + g.dir[0] * ps + g.across[0] * w;
+        double z = g.origin[1] + g.dir[1] * ps + g.across[1] * w;
+        double closed = tl_giant_spray_landing_shade(&sp, &g, x, py, z, sun);
+        /* The sum holds the lip as at w, as the closed form does. */
+        double sum = 0.0, dt = 0.002 * r;
+        for (int i = 0; i < 20000; i++) {
+            double t = (i + 0.5) * dt;
+            double qs = cs - (ps + vs * t), qy = cy - (py + sun[1] * t);
+            sum += exp(-(qs * qs + qy * qy) / (r * r)) * dt;
+        }
+        sum *= TL_SPRAY_SIGMA * TL_SPRAY_LANDING_GAIN * 1.5 * TL_SPRAY_LANDING_MEAN *
+               smoothstep_test(0.5, 1.0, lip.progress) * (1.0 - lip.spent * lip.spent);
+        worst = fmax(worst, fabs(closed - sum) / fmax(sum, 1e-9));
+        if (k != 0)
+            side[k > 0] = closed;
+    }
+    printf(
+        "landing's shade: closed form within %.2g of the sum; sunward side %.3f, far side %.3f\n",
+        worst, side[1], side[0]);
+    CHECK(worst < 1e-3);
+    CHECK(side[1] < 0.5 * side[0]);
+}
+
 /* Only a tall stretch of the crest throws a lip: none where the envelope
  * is below TL_GIANT_LIP_LOW, though the break has passed there, and the
  * whole tube where it is above TL_GIANT_LIP_HIGH. */
@@ -417,6 +476,8 @@ static void test_gpu_mirror(tl_renderer *r)
         CHECK(u.features & TL_FEATURE_GIANT_SPRAY);
         enum { N = 48 };
         float in4[4 * N], lip4[4 * N], ang4[4 * N], spray4[4 * N], dist4[4 * N];
+        double shade[N];
+        const double sun[3] = {u.sun_dir[0], u.sun_dir[1], u.sun_dir[2]};
         tl_giant_lip cpu[N];
         double density[N];
         tl_giant_spray sp;
@@ -439,6 +500,7 @@ static void test_gpu_mirror(tl_renderer *r)
              * march's step through the plume's layer). */
             double span = 0.6 * (i % 5);
             density[i] = tl_giant_spray_density(&sp, &g, x, y, z, span);
+            shade[i] = tl_giant_spray_landing_shade(&sp, &g, x, y, z, sun);
             in4[4 * i + 0] = (float)(x - s.camera.position[0]);
             in4[4 * i + 1] = (float)(z - s.camera.position[2]);
             in4[4 * i + 2] = (float)y;
@@ -458,7 +520,7 @@ static void test_gpu_mirror(tl_renderer *r)
         /* The lip's centre s is the wave's (relative to the crest on the
          * centre line), as the CPU's. */
         double worst = 0.0, worst_angle = 0.0, worst_density = 0.0, landing = 0.0;
-        double worst_distance = 0.0, worst_lump = 0.0;
+        double worst_distance = 0.0, worst_lump = 0.0, worst_shade = 0.0, most_shade = 0.0;
         int present = 0, rough = 0;
         for (int i = 0; i < N; i++) {
             CHECK((ang4[4 * i + 3] > 0.5) == cpu[i].present);
@@ -471,6 +533,9 @@ static void test_gpu_mirror(tl_renderer *r)
             worst = fmax(worst, fabs(lip4[4 * i + 3] - cpu[i].thickness));
             worst_angle = fmax(worst_angle, fabs(ang4[4 * i + 1] - cpu[i].to));
             worst_density = fmax(worst_density, fabs(spray4[4 * i] - density[i]));
+            worst_shade =
+                fmax(worst_shade, fabs(spray4[4 * i + 1] - shade[i]) / fmax(shade[i], 1.0));
+            most_shade = fmax(most_shade, shade[i]);
             /* The tube's signed distance there and its lumps (the point's
              * (s, y) back from its world position, as the GPU has it). */
             double x = in4[4 * i + 0] + s.camera.position[0],
@@ -490,14 +555,15 @@ static void test_gpu_mirror(tl_renderer *r)
                 landing = fmax(landing, density[i]);
         }
         printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g; "
-               "distance %.3g m, lumps %.3g (%d points rough)\n",
+               "distance %.3g m, lumps %.3g (%d points rough); landing's shade %.3g (up to %.3g)\n",
                s.time, hypot(where[k][1], where[k][2]), present, N, worst, worst_angle,
-               worst_density, worst_distance, worst_lump, rough);
+               worst_density, worst_distance, worst_lump, rough, worst_shade, most_shade);
         CHECK(present > N / 2);
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
         CHECK(worst_density <= 2e-3 * s.giant.spray);
         CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
+        CHECK(worst_shade <= 2e-3);
         CHECK(landing > 0.1); /* the landing's cloud is among the points compared */
     }
 }
@@ -619,6 +685,7 @@ int main(void)
     test_lip_low_crest();
     test_lip_lumps();
     test_bow_burst_pitched();
+    test_landing_shade();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);

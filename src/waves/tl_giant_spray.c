@@ -118,6 +118,38 @@ double tl_giant_spray_layer(double x, double r, double span)
     return 0.25 * sqrt(M_PI) * r / h * (erf((x + h) / r) - erf((x - h) / r));
 }
 
+double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                                    double z, const double sun[3])
+{
+    if (!sp->active)
+        return 0.0;
+    double rx = x - g->origin[0], rz = z - g->origin[1];
+    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
+    if (!(fabs(w) < g->half_width && s >= sp->box[0] && s <= sp->box[1] && y >= sp->box[2] &&
+          y <= sp->box[3]))
+        return 0.0;
+    tl_giant_lip lip;
+    tl_giant_lip_at(g, w, sp->base, &lip);
+    if (!lip.present || !(lip.progress > 0.5))
+        return 0.0;
+    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
+    double ts = lip.center[0] + lip.radius * (sin(lip.to) + ahead) - s;
+    double ty = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - y;
+    double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
+    /* Toward the sun the point's (s, y) moves by v per metre, so the
+     * offset to the cloud's middle is q - v t; with u = |v| t, a = q·v/|v|
+     * and d² = |q|² - a², the envelope's integral over t >= 0 is
+     * exp(-d²/r²) (sqrt(pi) r / 2) (1 + erf(a / r)) / |v|. A sun along
+     * the crest (|v| small) is held at 0.1: the tube is long, not endless. */
+    double vs = sun[0] * g->dir[0] + sun[2] * g->dir[1], vy = sun[1];
+    double len = hypot(vs, vy), reach = fmax(len, 0.1);
+    double a = len > 1e-9 ? (ts * vs + ty * vy) / len : 0.0;
+    double d2 = fmax(ts * ts + ty * ty - a * a, 0.0);
+    double integral = exp(-d2 / (r * r)) * 0.5 * sqrt(M_PI) * r * (1.0 + erf(a / r)) / reach;
+    return TL_SPRAY_SIGMA * TL_SPRAY_LANDING_GAIN * sp->amount * TL_SPRAY_LANDING_MEAN *
+           smoothstep(0.5, 1.0, lip.progress) * (1.0 - lip.spent * lip.spent) * integral;
+}
+
 double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
                               double z, double span)
 {

@@ -45,6 +45,9 @@
 /* The landing's whitewater is this much denser than the spindrift: an
  * opaque, churning cloud, not a veil. */
 #define TL_SPRAY_LANDING_GAIN 20.0
+/* The landing's torn noise (its smoothstep of two octaves) averages
+ * about this: what its self-shade takes for the noise. */
+#define TL_SPRAY_LANDING_MEAN 0.4
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  12.0
@@ -81,6 +84,16 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
  * holds wherever the step's sample lands. */
 double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
                               double z, double span);
+
+/* The optical depth toward the sun (unit `sun`, world) from world (x, y,
+ * z) through the lip's landing cloud: its Gaussian envelope integrated in
+ * closed form along the sun's ray in the crest's cross-section (the lip
+ * held as at the point's w, the noise at its mean TL_SPRAY_LANDING_MEAN),
+ * times TL_SPRAY_SIGMA. A dense cloud is bright on its sunward side and
+ * grey in its own shade. 0 outside the spray's box or without a landing
+ * at the point's w. */
+double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                                    double z, const double sun[3]);
 
 /* The mean of exp(-x²/r²) over [x - h, x + h], h = span/2: the plume's
  * profile in height, x the height over its middle and r its rise. */
