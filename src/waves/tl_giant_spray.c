@@ -118,6 +118,23 @@ double tl_giant_spray_layer(double x, double r, double span)
     return 0.25 * sqrt(M_PI) * r / h * (erf((x + h) / r) - erf((x - h) / r));
 }
 
+/* The lip's landing cloud as seen from (s, y) at the lip's w: the offset
+ * (ts, ty) from the point to the cloud's middle, its radius, and its
+ * density at the middle (before the noise); false where there is none. */
+static bool landing_at(const tl_giant_spray *sp, const tl_giant_lip *lip, double s, double y,
+                       double *ts, double *ty, double *r, double *peak)
+{
+    if (!lip->present || !(lip->progress > 0.5))
+        return false;
+    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip->spent);
+    *ts = lip->center[0] + lip->radius * (sin(lip->to) + ahead) - s;
+    *ty = lip->center[1] + lip->radius * (cos(lip->to) + TL_SPRAY_SPLASH_RISE * lip->spent) - y;
+    *r = TL_SPRAY_LANDING_RADIUS * lip->radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip->spent);
+    *peak = TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip->progress) *
+            (1.0 - lip->spent * lip->spent);
+    return true;
+}
+
 double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
                                     double z, const double sun[3])
 {
@@ -130,12 +147,9 @@ double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g,
         return 0.0;
     tl_giant_lip lip;
     tl_giant_lip_at(g, w, sp->base, &lip);
-    if (!lip.present || !(lip.progress > 0.5))
+    double ts, ty, r, peak;
+    if (!landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak))
         return 0.0;
-    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
-    double ts = lip.center[0] + lip.radius * (sin(lip.to) + ahead) - s;
-    double ty = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - y;
-    double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
     /* Toward the sun the point's (s, y) moves by v per metre, so the
      * offset to the cloud's middle is q - v t; with u = |v| t, a = q·v/|v|
      * and d² = |q|² - a², the envelope's integral over t >= 0 is
@@ -146,8 +160,7 @@ double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g,
     double a = len > 1e-9 ? (ts * vs + ty * vy) / len : 0.0;
     double d2 = fmax(ts * ts + ty * ty - a * a, 0.0);
     double integral = exp(-d2 / (r * r)) * 0.5 * sqrt(M_PI) * r * (1.0 + erf(a / r)) / reach;
-    return TL_SPRAY_SIGMA * TL_SPRAY_LANDING_GAIN * sp->amount * TL_SPRAY_LANDING_MEAN *
-           smoothstep(0.5, 1.0, lip.progress) * (1.0 - lip.spent * lip.spent) * integral;
+    return TL_SPRAY_SIGMA * peak * TL_SPRAY_LANDING_MEAN * integral;
 }
 
 double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
@@ -181,15 +194,9 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         /* The lip's landing. */
         tl_giant_lip lip;
         tl_giant_lip_at(g, w, sp->base, &lip);
-        if (lip.present && lip.progress > 0.5) {
-            double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
-            double ts = lip.center[0] + lip.radius * (sin(lip.to) + ahead) - s;
-            double ty =
-                lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - y;
-            double r =
-                TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
-            density += TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip.progress) *
-                       (1.0 - lip.spent * lip.spent) * exp(-(ts * ts + ty * ty) / (r * r)) *
+        double ts, ty, r, peak;
+        if (landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak)) {
+            density += peak * exp(-(ts * ts + ty * ty) / (r * r)) *
                        smoothstep(0.3, 0.8,
                                   0.6 * tl_noise_value(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
                                       0.4 * tl_noise_value(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
