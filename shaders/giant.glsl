@@ -330,6 +330,16 @@ float giant_top(GiantSample g)
     return clamp(g.height / max(u_giant_shape.y * g.lambda, 1.0e-3), 0.0, 1.0);
 }
 
+// How much steeper the small waves are at g than on open water: riding the
+// wave they are heightened toward its crest (TL_GIANT_SHORT_WAVE_GAIN_MAX;
+// mirrored by tl_giant_short_wave_gain). Shading only.
+float giant_short_wave_gain(GiantSample g)
+{
+    float lambda = clamp(g.lambda, 0.0, 1.0);
+    return min(1.0 + u_giant_shape.x * u_giant_shape.y * lambda * giant_top(g),
+               TL_GIANT_SHORT_WAVE_GAIN_MAX);
+}
+
 // Streaks down the face: value noise stretched along the travel direction
 // (down the face) and wavering across it, three octaves so that no cell's
 // straight edge shows.

@@ -170,6 +170,8 @@ void main()
         result.x = giant_sunlit(p, surface_height(p, u_probe_octaves, 0.0));
     else if (u_probe_mode == 8)
         result.x = foam_detail(vec2(p.x, 0.37 * p.x), p.y);
+    else if (u_probe_mode == 23)
+        result.x = giant_short_wave_gain(giant_sample(p));
 #endif
 #ifdef TL_FEATURE_GIANT_LIP
     else if (u_probe_mode == 10 || u_probe_mode == 11) {

@@ -102,16 +102,21 @@ static void test_glow_graded(tl_renderer *r)
         glow_at(&a, &b, i, rgb);
         peak = fmax(peak, glow_luminance(rgb));
     }
-    /* Rows (top first) with any pixel at 1% of the peak or more. */
+    /* The band: rows (top first) with a sixteenth of their pixels at 1%
+     * of the peak or more (a few ripples' facets on the sea in front,
+     * turned toward the sun, are not the band). */
     int first = -1, last = -1;
-    for (int y = 0; y < s.height; y++)
+    for (int y = 0; y < s.height; y++) {
+        int lit = 0;
         for (int x = 0; x < s.width; x++) {
             glow_at(&a, &b, (size_t)y * s.width + x, rgb);
-            if (glow_luminance(rgb) >= 0.01 * peak) {
-                first = first < 0 ? y : first;
-                last = y;
-            }
+            lit += glow_luminance(rgb) >= 0.01 * peak;
         }
+        if (lit * 16 >= s.width) {
+            first = first < 0 ? y : first;
+            last = y;
+        }
+    }
     double sums[2][3] = {{0}};
     int quarter = (last - first + 1) / 4;
     for (int y = first; quarter > 0 && y <= last; y++) {
@@ -528,6 +533,65 @@ static void test_sun_shadow(tl_renderer *r)
     }
 }
 
+/* The small waves' steepening on the wave (probe mode 23) against its
+ * double mirror, along the centre line from 60 m behind the crest to 60 m
+ * in front, at (x, z) and time t: within 1e-4; 1 in the trough ahead and
+ * off the wave; most near the crest, where it reaches its cap for a wave as
+ * steep as this one (k·A = 1.4). */
+static void test_short_wave_gain(tl_renderer *r, double x, double z, double t)
+{
+    const double cam[3] = {x, 6.0, z};
+    enum { N = 64 };
+    tl_scene s;
+    wave_scene(&s, 20.0, t, cam);
+    s.giant.fade = 1.0;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_frame_uniforms u;
+    tl_prepare_frame(&s, &w, &u);
+    double crest = g.fade * g.curl / g.k;
+    float xz[2 * N], gpu[4 * N];
+    double at[N];
+    for (int i = 0; i < N; i++) {
+        at[i] = crest - 60.0 + 120.0 * i / (N - 1);
+        /* the last point is 400 m beside the wave, off it */
+        double beside = i == N - 1 ? 400.0 : 0.0;
+        xz[2 * i] = (float)(g.origin[0] + g.dir[0] * at[i] + g.across[0] * beside - cam[0]);
+        xz[2 * i + 1] = (float)(g.origin[1] + g.dir[1] * at[i] + g.across[1] * beside - cam[2]);
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe(r, &u, 23, xz, N, s.quality.march_octaves, gpu, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    double worst = 0.0, most = 0.0, most_at = 0.0, ahead = 0.0;
+    for (int i = 0; i < N; i++) {
+        tl_giant_sample smp;
+        tl_giant_sample_at(&g, cam[0] + (double)xz[2 * i], cam[2] + (double)xz[2 * i + 1],
+                           s.quality.giant_iterations, &smp);
+        double cpu = tl_giant_short_wave_gain(&g, &smp);
+        worst = fmax(worst, fabs(cpu - gpu[4 * i]));
+        if (i < N - 1 && cpu > most) {
+            most = cpu;
+            most_at = at[i] - crest;
+        }
+        if (at[i] - crest > 40.0 && i < N - 1)
+            ahead = fmax(ahead, fabs(cpu - 1.0));
+    }
+    printf("short-wave gain at (%g, %g), t = %g: |gpu-cpu| <= %.2e; most %.3f at %.1f m from "
+           "the crest; ahead |gain-1| <= %.2e; off the wave %.6f\n",
+           x, z, t, worst, most, most_at, ahead, gpu[4 * (N - 1)]);
+    CHECK(worst <= 1e-4);
+    CHECK(fabs(most - TL_GIANT_SHORT_WAVE_GAIN_MAX) <= 1e-9);
+    CHECK(fabs(most_at) <= 10.0);
+    CHECK(ahead <= 1e-9);
+    CHECK(gpu[4 * (N - 1)] == 1.0f);
+}
+
 static int by_value(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -725,6 +789,8 @@ int main(void)
     test_crest_caustics_probe(r, 1e4, -7e3, 1e5);
     test_lip_facing(r);
     test_sun_shadow(r);
+    test_short_wave_gain(r, 3.0, -4.0, 10.0);
+    test_short_wave_gain(r, 1e4, -7e3, 1e5);
     test_trail_aerated(r);
     test_stringers(r);
     test_foam_detail(r);

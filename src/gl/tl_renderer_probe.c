@@ -28,7 +28,7 @@ int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, cons
 int tl_renderer_probe4(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *in4,
                        int count, int octaves, float *out4, tl_error *err)
 {
-    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > 22)
+    if (count < 1 || octaves < 1 || octaves > u->octaves || mode < 0 || mode > TL_PROBE_MODE_MAX)
         return tl_error_set(err, TL_ERR_RUNTIME, "probe: bad mode, point or octave count");
     /* The features that change what the probe computes. */
     unsigned features =

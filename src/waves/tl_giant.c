@@ -404,6 +404,16 @@ void tl_giant_ride_grad(const tl_giant *g, const tl_giant_sample *smp, double gr
     grad[1] -= along * smp->ride[1];
 }
 
+double tl_giant_short_wave_gain(const tl_giant *g, const tl_giant_sample *smp)
+{
+    if (!g->active)
+        return 1.0;
+    double top = smp->height / fmax(g->amplitude * smp->lambda, 1.0e-3);
+    top = fmin(fmax(top, 0.0), 1.0);
+    double lambda = fmin(fmax(smp->lambda, 0.0), 1.0);
+    return fmin(1.0 + g->k * g->amplitude * lambda * top, TL_GIANT_SHORT_WAVE_GAIN_MAX);
+}
+
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations)
 {
     tl_giant_sample smp;

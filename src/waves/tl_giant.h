@@ -134,6 +134,12 @@
 #define TL_GIANT_LIP_LUMP_CELL 0.9
 #define TL_GIANT_LIP_TEAR      0.6
 #define TL_GIANT_LIP_ROUGHEN   0.4
+/* Short waves riding a long one are heightened on its crest (their
+ * amplitude goes as 1 + A·k·cos θ of the long wave's phase, Longuet-Higgins
+ * and Stewart's radiation stress; the squeeze that shortens them there is
+ * giant.ride's): the face's small waves steepen toward the crest by up to
+ * this factor. Without it the face was a smooth glassy sheet. */
+#define TL_GIANT_SHORT_WAVE_GAIN_MAX 2.0
 /* tl_giant_lip_heights scans a vertical line across the tube in this
  * many intervals for its crossings. */
 #define TL_GIANT_LIP_SCAN 512
@@ -263,6 +269,14 @@ void tl_giant_ride_point(const tl_giant *g, const tl_giant_sample *smp, double x
 /* A gradient `grad` of the small waves at q, in (x, z): the chain rule
  * through q(x, z). */
 void tl_giant_ride_grad(const tl_giant *g, const tl_giant_sample *smp, double grad[2]);
+
+/* The factor the small waves' slopes are steepened by on the wave at a
+ * point (its sample `smp`): 1 + k·A·lambda times how far up the crest the
+ * point is (0 at the sea's mean level, 1 at the top), at most
+ * TL_GIANT_SHORT_WAVE_GAIN_MAX; 1 in the trough, where the issue's small
+ * waves stay as they are, and off the wave. Shading only: the march meets
+ * the surface without it. */
+double tl_giant_short_wave_gain(const tl_giant *g, const tl_giant_sample *smp);
 
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
