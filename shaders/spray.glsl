@@ -48,7 +48,7 @@ float giant_spray_sample(vec3 p, float span, out float shade)
                        (0.4 + 0.6 * breaking);
         float reach = u_giant_spray.y;
         float back = top_s - sw.x, up = p.y - top_y;
-        float rise = 0.05 * height + 0.05 * reach;
+        float rise = TL_SPRAY_RISE * (height + reach);
         float lift = TL_SPRAY_LIFT * rise * min(max(back, 0.0) / reach, 1.0);
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *

@@ -17,7 +17,7 @@ static double smoothstep(double e0, double e1, double x)
  * `height` tall whose spray reaches `reach` back. */
 static double plume_rise(double height, double reach)
 {
-    return 0.05 * height + 0.05 * reach;
+    return TL_SPRAY_RISE * (height + reach);
 }
 
 /* Where the crest's top is at w, and its height there: as the lip's
@@ -45,9 +45,10 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
     if (sp->drift < 0.0)
         sp->drift += 4096.0;
     /* The plume's box: behind the crest by TL_SPRAY_REACHES of its reach,
-     * ahead by a tenth of the crest, and from three rises below the
-     * lowest tall top to three above the highest lifted one: a tight box
-     * keeps the shader's few steps inside the thin plume. Where no stretch
+     * ahead by a tenth of the crest, and from TL_SPRAY_BOX_RISES rises
+     * below the lowest tall top to as many above the highest lifted one
+     * (the layer is down to e^-6.25 of its middle there): a tight box
+     * keeps the shader's few steps inside the plume. Where no stretch
      * of the crest is tall enough, no spray. */
     bool tall = false;
     const int n = TL_GIANT_PROFILE_SAMPLES;
@@ -61,8 +62,8 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         double rise = plume_rise(height, sp->reach);
         s_lo = fmin(s_lo, top_s - TL_SPRAY_REACHES * sp->reach);
         s_hi = fmax(s_hi, top_s + 0.1 * full);
-        y_lo = fmin(y_lo, top_y - 3.0 * rise);
-        y_hi = fmax(y_hi, top_y + TL_SPRAY_LIFT * rise + 3.0 * rise);
+        y_lo = fmin(y_lo, top_y - TL_SPRAY_BOX_RISES * rise);
+        y_hi = fmax(y_hi, top_y + (TL_SPRAY_LIFT + TL_SPRAY_BOX_RISES) * rise);
     }
     if (tall) {
         sp->box[0] = s_lo;

@@ -12,12 +12,18 @@
 #define TL_SPRAY_SIGMA 0.025
 /* Seconds the wind carries a droplet back from the crest before it falls:
  * the plume's reach is the wind times this (plus a twentieth of the crest). */
-#define TL_SPRAY_FLIGHT 0.4
-/* The plume ends this many reaches behind the crest (faded to nothing
- * over its last two fifths), and rises this many of its thicknesses
- * over its first reach. */
-#define TL_SPRAY_REACHES 2.5
-#define TL_SPRAY_LIFT    1.5
+#define TL_SPRAY_FLIGHT 0.6
+/* The plume's thickness: this share of the crest's height plus its
+ * reach. The plume ends TL_SPRAY_REACHES reaches behind the crest (faded
+ * to nothing over its last two fifths), and rises TL_SPRAY_LIFT of its
+ * thicknesses over its first reach. Half as thick, rising 1.5 of itself
+ * over two thirds of the reach, it hugged the crest: from in front of
+ * the wave only a faint haze showed along the top. Its box reaches
+ * TL_SPRAY_BOX_RISES thicknesses below and above it. */
+#define TL_SPRAY_RISE      0.1
+#define TL_SPRAY_BOX_RISES 2.5
+#define TL_SPRAY_REACHES   2.5
+#define TL_SPRAY_LIFT      2.5
 /* The crest makes spindrift once its envelope is this high (a share of
  * the wave's full height), fully at the second. */
 #define TL_SPRAY_FROM 0.3
