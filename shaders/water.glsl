@@ -109,18 +109,8 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #endif
     // Far away the normal's detail is below a pixel; blending toward "up"
     // removes the shimmer the reference also suppresses this way.
-    float smooth_dist = dist;
-#ifdef TL_FEATURE_GIANT_WAVE
-    // How many ripples a pixel holds depends on how obliquely the ray meets
-    // the water, not on distance alone: on the giant wave's face, seen
-    // head-on, the distance counts as far as it would on level water seen
-    // as obliquely (the face's ripples were smoothed away as if grazing).
-    // Off the wave the factor is 1.
-    vec3 wave_normal = normalize(vec3(-giant.grad.x, 1.0, -giant.grad.y));
-    smooth_dist *= max(abs(ray.y), 0.05) / max(abs(dot(ray, wave_normal)), 0.05);
-#endif
     float smoothing = u_normal_smooth_max *
-                      min(1.0, sqrt(smooth_dist * u_normal_smooth_rate) * u_normal_smooth_gain);
+                      min(1.0, sqrt(dist * u_normal_smooth_rate) * u_normal_smooth_gain);
     // The reference shader leaves the blend unnormalised (a shorter normal
     // darkens the Fresnel term a little); `seed` keeps that.
     n = mix(n, vec3(0.0, 1.0, 0.0), smoothing);
@@ -134,8 +124,12 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     sunlit = giant_sunlit(hit.xz, hit.y);
     // The giant wave is large against a pixel: its slope is added unsmoothed
     // (slopes of summed height fields add), the small waves' steepened as
-    // they ride up toward its crest.
-    vec2 slope = -n.xz / n.y * giant_short_wave_gain(giant) + giant.grad;
+    // they ride up toward its crest, and with them the slopes the level of
+    // detail left out (without, `final` lost the steepened detail that
+    // `reference` resolves, and filtered shading took it further away).
+    float short_gain = giant_short_wave_gain(giant);
+    slope_var *= short_gain * short_gain;
+    vec2 slope = -n.xz / n.y * short_gain + giant.grad;
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
     ocean_y -= giant.height;
 #endif
