@@ -13,5 +13,5 @@ source scripts/lib/sheet.sh
 tl_build build -- tideline >/dev/null
 tl_sheet "${1:-docs/images/giant-wave-sheet.png}" "${2:-final}" "contact sheet" \
   timelines/giant_wave.tl:2 timelines/giant_wave.tl:4.2 timelines/giant_wave.tl:7.2 \
-  timelines/giant_wave.tl:8.9 timelines/giant_wave.tl:10.3 timelines/giant_wave.tl:11 \
+  timelines/giant_wave.tl:8.9 timelines/giant_wave.tl:10.4 timelines/giant_wave.tl:10.8 \
   timelines/voyage.tl:5 timelines/voyage.tl:9.4
