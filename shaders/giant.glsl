@@ -357,11 +357,13 @@ float giant_streaks(float s0, float w)
 }
 
 // The field whose middle contour draws the stringers: a noise across the
-// crest (cells 2.2 m) whose phase wavers slowly down the face, so its
-// contours run down the face nearly straight.
+// crest (cells 2.2 m) whose phase wavers down the face, slowly and, a
+// little, every few metres, so its contours run down the face but not
+// ruled straight (seen from afar, straight ones read as scratches).
 float giant_stringer_field(float s0, float w)
 {
-    float waver = 1.2 * foam_noise(vec2(s0 / 16.0, w / 11.0));
+    float waver = 1.2 * foam_noise(vec2(s0 / 16.0, w / 11.0)) +
+                  0.9 * foam_noise(vec2(s0 / 4.5, 3.7 + w / 6.0));
     // A finer, weaker octave that wavers faster: lines fork and merge.
     float fine = foam_noise(vec2(w / 0.9 + 2.0 * waver, 5.1 + s0 / 30.0));
     return 0.72 * foam_noise(vec2(w / 2.2 + waver, 0.37 + s0 / 60.0)) + 0.28 * fine;
@@ -459,8 +461,9 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
         float drawn = max(half_width, 0.5 * footprint);
         stringer = (1.0 - smoothstep(drawn, 2.0 * drawn, metres)) * half_width / max(drawn, 1e-4);
         // Lines come and go along the crest (some stretches spill none),
-        // and each thins out in gaps and dashes down the face.
-        float presence = smoothstep(0.3, 0.6, foam_noise(vec2(g.w / 7.0, 2.3 + g.s0 / 40.0)));
+        // and each breaks into dashes a few metres long down the face.
+        float presence = smoothstep(0.3, 0.6, foam_noise(vec2(g.w / 7.0, 2.3 + g.s0 / 40.0))) *
+                         smoothstep(0.35, 0.65, foam_noise(vec2(g.w / 1.5, 8.1 + g.s0 / 2.2)));
         // Close up a line is bubbles, not a painted ribbon: the foam's
         // fine detail, drawn out down the face, breaks it up.
         stringer *= spill * u_giant_foam.z * presence * down_face *
