@@ -79,10 +79,14 @@ float giant_spray_sample(vec3 p, float span, out float shade)
             float d2 = max(ts * ts + ty * ty - a * a, 0.0);
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
                     sqrt(TL_PI) * r * (1.0 + giant_erf(a / r)) / max(len, 0.1);
+            // Billows: two noises in crossed planes multiplied, round
+            // lumps about 1.6 m across in all three directions, with a
+            // finer grain (as tl_giant_spray_density).
+            float billow = foam_noise(vec2(sw.y / 1.6 + 5.0, ts / 1.6)) *
+                           foam_noise(vec2(sw.y / 1.6 - 2.0, ty / 1.6 + 4.0));
+            float grain = foam_noise(vec2(sw.y / 0.5 - 3.0, (ts + ty) / 0.5));
             density += landing * exp(-(ts * ts + ty * ty) / (r * r)) *
-                smoothstep(0.3, 0.8,
-                           0.6 * foam_noise(vec2(sw.y / 2.0 + 5.0, ty / 1.6 - ts / 2.2)) +
-                               0.4 * foam_noise(vec2(sw.y / 0.7 - 3.0, ts / 0.8 + ty / 0.6)));
+                       smoothstep(0.12, 0.45, (0.8 + 0.2 * grain) * billow + 0.1 * grain);
         }
 #endif
     }

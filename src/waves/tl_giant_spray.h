@@ -50,10 +50,10 @@
 #define TL_SPRAY_SPLASH_AHEAD   0.6
 /* The landing's whitewater is this much denser than the spindrift: an
  * opaque, churning cloud, not a veil. */
-#define TL_SPRAY_LANDING_GAIN 20.0
-/* The landing's torn noise (its smoothstep of two octaves) averages
- * about this: what its self-shade takes for the noise. */
-#define TL_SPRAY_LANDING_MEAN 0.4
+#define TL_SPRAY_LANDING_GAIN 30.0
+/* The landing's billows (a smoothstep of crossed noises) average about
+ * this: what its self-shade takes for the noise. */
+#define TL_SPRAY_LANDING_MEAN 0.47
 /* The burst is this much denser than the spindrift: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  12.0
