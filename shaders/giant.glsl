@@ -581,8 +581,14 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     // on the sea in front glowed green. Weighting by where the light came
     // in, high up the crest or not, cut the glow off at one height.
     vec3 wave_normal = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
-    float through =
-        smoothstep(0.0, 0.3, giant_top(g)) * smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
+    // The gate's ramp runs up to 0.3 to 0.7 of the wave's height, by a
+    // noise in fingers 6 m across, long down the face: the wave is not
+    // equally thick all along, and ramped to one height everywhere the glow
+    // ended in a level line (judge). Its foot stays at the wave's: lower,
+    // the trough ahead glowed.
+    float reach = 0.3 + 0.4 * foam_noise(vec2(g.w / 6.0 + 11.3, g.s0 / 45.0));
+    float through = smoothstep(0.0, reach, giant_top(g)) *
+                    smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
 #ifdef TL_FEATURE_GIANT_CAUSTICS
     // The ripples where the light came in focus it into a web. They ride
