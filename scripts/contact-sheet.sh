@@ -12,6 +12,6 @@ source scripts/lib/build.sh
 source scripts/lib/sheet.sh
 tl_build build -- tideline >/dev/null
 tl_sheet "${1:-docs/images/giant-wave-sheet.png}" "${2:-final}" "contact sheet" \
-  timelines/giant_wave.tl:2 timelines/giant_wave.tl:4.2 timelines/giant_wave.tl:7.2 \
-  timelines/giant_wave.tl:8.9 timelines/giant_wave.tl:10.4 timelines/giant_wave.tl:10.8 \
+  timelines/giant_wave.tl:4.2 timelines/giant_wave.tl:7.2 timelines/giant_wave.tl:8.9 \
+  timelines/giant_wave.tl:10.4 timelines/giant_wave.tl:10.8 timelines/giant_wave.tl:13.5 \
   timelines/voyage.tl:5 timelines/voyage.tl:9.4

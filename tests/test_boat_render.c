@@ -295,11 +295,12 @@ static int cutscene_frame_edited(tl_renderer *r, const tl_mesh *m, const char *t
     return 0;
 }
 
-/* The hero cutscene's frame 216: the boat climbs the giant wave's face,
- * its wake's path running up the face behind it. The wave sweeps the wake
- * away, so the frame is the one without the wake; the foam once showed as
- * a white trail where the face crosses the mean water level (the wave's
- * height alone gated it). */
+/* The hero cutscene's frame 216: the boat, ending its turn, heads down
+ * into the trough ahead of the giant wave's face, its wake's path on the
+ * water the wave lowers and lifts. The wave sweeps the wake away, so the
+ * frame is the one without the wake; the foam once showed as a white trail
+ * where the face crosses the mean water level (the wave's height alone
+ * gated it). */
 static void test_wake_swept(tl_renderer *r, const tl_mesh *m, const char *timelines)
 {
     tl_scene s;
