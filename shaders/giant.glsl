@@ -405,8 +405,15 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float tumble = smoothstep(1.0 - 1.1 * breaking, 1.1 - 1.1 * breaking, top) * front * breaking;
     face = max(face, tumble * (0.85 + 0.15 * smoothstep(0.3, 0.7, streaks)));
     float passed = behind / max(u_giant_speed, 1.0e-3);
+    // Its edge, where the break had reached when the crest passed, is
+    // ragged (TL_GIANT_TRAIL_RAGGED, fixed in the world; mirrored by
+    // tl_giant_foam_coverage).
+    float ragged = TL_GIANT_TRAIL_RAGGED * 2.0 *
+                   (foam_noise((u_giant_world + vec2(g.s0, g.w)) / TL_GIANT_TRAIL_RAGGED_CELL +
+                               vec2(4.1, 7.7)) -
+                    0.5);
     trail = fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind) *
-            smoothstep(0.0, 0.5 * u_giant_break.z, giant_break_age(g.w) - passed);
+            smoothstep(0.0, 0.5 * u_giant_break.z, giant_break_age(g.w) - passed + ragged);
 #endif
     float coverage = max(max(compressed, cap), face) * g.lambda;
     vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));

@@ -277,11 +277,11 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     u->giant_rise[1] = first > last ? 0.0f : (float)(-g.reach_along + (last + 1) * bin);
     /* World-fixed texture coordinates for foam left behind, reduced in
      * double so the GPU sees small numbers wherever the wave is. */
-    double along = g.dir[0] * g.origin[0] + g.dir[1] * g.origin[1];
-    double across = g.across[0] * g.origin[0] + g.across[1] * g.origin[1];
+    double world[2];
+    tl_giant_world_origin(&g, world);
     prepare_spray(s, &g, u);
-    u->giant_world[0] = (float)wrap65536(along);
-    u->giant_world[1] = (float)wrap65536(across);
+    u->giant_world[0] = (float)world[0];
+    u->giant_world[1] = (float)world[1];
     tl_prepare_giant_rect(s, u);
 }
 

@@ -459,6 +459,14 @@ static double smoothstep(double e0, double e1, double x)
     return smooth01((x - e0) / (e1 - e0), &d);
 }
 
+void tl_giant_world_origin(const tl_giant *g, double out[2])
+{
+    double along = g->dir[0] * g->origin[0] + g->dir[1] * g->origin[1];
+    double across = g->across[0] * g->origin[0] + g->across[1] * g->origin[1];
+    out[0] = along - 65536.0 * floor(along / 65536.0);
+    out[1] = across - 65536.0 * floor(across / 65536.0);
+}
+
 double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, double amount,
                               double foam_compression, double foam_trail)
 {
@@ -484,9 +492,15 @@ double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, dou
     double face = 0.0;
     if (g->breaks) {
         face = smoothstep(1.0 - 1.1 * breaking, 1.1 - 1.1 * breaking, top) * front * breaking;
-        double passed = behind / fmax(g->speed, 1e-3);
-        trail = fresh * smoothstep(0.0, 0.1 * g->half_length, behind) *
-                smoothstep(0.0, 0.5 * g->throw_time, tl_giant_break_age(g, smp->w) - passed);
+        double passed = behind / fmax(g->speed, 1e-3), world[2];
+        tl_giant_world_origin(g, world);
+        double ragged = TL_GIANT_TRAIL_RAGGED * 2.0 *
+                        (tl_noise_value((world[0] + smp->s0) / TL_GIANT_TRAIL_RAGGED_CELL + 4.1,
+                                        (world[1] + smp->w) / TL_GIANT_TRAIL_RAGGED_CELL + 7.7) -
+                         0.5);
+        trail =
+            fresh * smoothstep(0.0, 0.1 * g->half_length, behind) *
+            smoothstep(0.0, 0.5 * g->throw_time, tl_giant_break_age(g, smp->w) - passed + ragged);
     }
     double c = fmax(fmax(compressed, cap), fmax(face, trail)) * smp->lambda * amount;
     return clampd(c, 0.0, 1.0);

@@ -140,6 +140,13 @@
  * giant.ride's): the face's small waves steepen toward the crest by up to
  * this factor. Without it the face was a smooth glassy sheet. */
 #define TL_GIANT_SHORT_WAVE_GAIN_MAX 2.0
+/* The foam trail's edge (where the break had reached when the crest
+ * passed) is ragged: the break's age there is taken up to
+ * TL_GIANT_TRAIL_RAGGED seconds earlier or later by a value noise fixed in
+ * the world, cells TL_GIANT_TRAIL_RAGGED_CELL metres. A straight seam
+ * along the travel read as a pasted texture. */
+#define TL_GIANT_TRAIL_RAGGED      1.0
+#define TL_GIANT_TRAIL_RAGGED_CELL 12.0
 /* tl_giant_lip_heights scans a vertical line across the tube in this
  * many intervals for its crossings. */
 #define TL_GIANT_LIP_SCAN 512
@@ -277,6 +284,11 @@ void tl_giant_ride_grad(const tl_giant *g, const tl_giant_sample *smp, double gr
  * waves stay as they are, and off the wave. Shading only: the march meets
  * the surface without it. */
 double tl_giant_short_wave_gain(const tl_giant *g, const tl_giant_sample *smp);
+
+/* The wave's origin in its own frame (along the travel, across it),
+ * wrapped every 65536 m: the world-fixed coordinates of the foam it
+ * leaves behind are these plus (s0, w) (the shaders' u_giant_world). */
+void tl_giant_world_origin(const tl_giant *g, double out[2]);
 
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);
