@@ -594,8 +594,14 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     // ended in a level line (judge). Its foot stays at the wave's: lower,
     // the trough ahead glowed.
     float reach = 0.3 + 0.4 * foam_noise(vec2(g.w / 6.0 + 11.3, g.s0 / 45.0));
-    float through = smoothstep(0.0, reach, giant_top(g)) *
-                    smoothstep(0.2, -0.1, dot(wave_normal, u_sun_dir));
+    // At the very top (its last 0.15) the crest is thin water whichever way
+    // its slope turns: the gate lets a slope up to 0.45 toward the sun glow
+    // there (at 0.2 everywhere, the crest's level top was a dark navy rim
+    // above the glowing face, seen from above; judge).
+    float top = giant_top(g);
+    float facing = mix(0.2, 0.45, smoothstep(0.85, 1.0, top));
+    float through = smoothstep(0.0, reach, top) *
+                    smoothstep(facing, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
 #ifdef TL_FEATURE_GIANT_CAUSTICS
     // The ripples where the light came in focus it into a web. They ride
