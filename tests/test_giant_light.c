@@ -441,6 +441,15 @@ static void test_lip_facing(tl_renderer *r)
     CHECK(dark[1] <= dark[0] / 5);
 }
 
+/* The scene's waves, its giant wave and the frame's uniforms: what the
+ * probes against the double mirror need. */
+static void prepare_wave(const tl_scene *s, tl_waves *w, tl_giant *g, tl_frame_uniforms *u)
+{
+    tl_waves_init(w, &s->ocean);
+    tl_giant_prepare(g, &s->giant, s->time);
+    tl_prepare_frame(s, w, u);
+}
+
 /* The crest's shadow (giant_sunlit, probe mode 7) against its double
  * mirror along the wave's centre line, and what it must be: with a low sun
  * behind a 20 m wave, the water in front of the crest is in its shadow out
@@ -460,11 +469,9 @@ static void test_sun_shadow(tl_renderer *r)
         s.sun.azimuth = azimuths[k == 1];
         s.sun.elevation = k == 2 ? -3.0 * M_PI / 180.0 : elevation;
         tl_waves w;
-        tl_waves_init(&w, &s.ocean);
         tl_giant g;
-        tl_giant_prepare(&g, &s.giant, s.time);
         tl_frame_uniforms u;
-        tl_prepare_frame(&s, &w, &u);
+        prepare_wave(&s, &w, &g, &u);
         double sun[3];
         tl_scene_sun_direction(&s.sun, sun);
         double crest = g.fade * g.curl / g.k; /* s of the crest line on the centre line */
@@ -546,11 +553,9 @@ static void test_short_wave_gain(tl_renderer *r, double x, double z, double t)
     wave_scene(&s, 20.0, t, cam);
     s.giant.fade = 1.0;
     tl_waves w;
-    tl_waves_init(&w, &s.ocean);
     tl_giant g;
-    tl_giant_prepare(&g, &s.giant, s.time);
     tl_frame_uniforms u;
-    tl_prepare_frame(&s, &w, &u);
+    prepare_wave(&s, &w, &g, &u);
     double crest = g.fade * g.curl / g.k;
     float xz[2 * N], gpu[4 * N];
     double at[N];
