@@ -588,19 +588,23 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     // on the sea in front glowed green. Weighting by where the light came
     // in, high up the crest or not, cut the glow off at one height.
     vec3 wave_normal = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
-    // The gate's ramp runs up to 0.3 to 0.7 of the wave's height, by a
+    // The gate's ramp runs up to 0.55 to 0.95 of the wave's height, by a
     // noise in fingers 6 m across, long down the face: the wave is not
     // equally thick all along, and ramped to one height everywhere the glow
-    // ended in a level line (judge). Its foot stays at the wave's: lower,
-    // the trough ahead glowed.
-    float reach = 0.3 + 0.4 * foam_noise(vec2(g.w / 6.0 + 11.3, g.s0 / 45.0));
+    // ended in a level line (judge). It rises as the square of the height
+    // over that reach: brightest just under the crest, fading to deep blue
+    // down the face (ramped linearly up to 0.3 .. 0.7, seen from above the
+    // face glowed like gel halfway down; judge). Its foot stays at the
+    // wave's: lower, the trough ahead glowed.
+    float reach = 0.55 + 0.4 * foam_noise(vec2(g.w / 6.0 + 11.3, g.s0 / 45.0));
     // At the very top (its last 0.15) the crest is thin water whichever way
     // its slope turns: the gate lets a slope up to 0.45 toward the sun glow
     // there (at 0.2 everywhere, the crest's level top was a dark navy rim
     // above the glowing face, seen from above; judge).
     float top = giant_top(g);
     float facing = mix(0.2, 0.45, smoothstep(0.85, 1.0, top));
-    float through = smoothstep(0.0, reach, top) *
+    float ramp = clamp(top / reach, 0.0, 1.0);
+    float through = ramp * ramp *
                     smoothstep(facing, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
 #ifdef TL_FEATURE_GIANT_CAUSTICS
