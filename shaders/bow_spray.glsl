@@ -30,21 +30,43 @@ float spray_step_offset()
     return float(k & 0xffffu) / 65536.0;
 }
 
+// erf, to 1.5e-7 (Abramowitz and Stegun 7.1.26).
+float spray_erf(float x)
+{
+    float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+    float poly = t * (0.254829592 + t * (-0.284496736 +
+                                         t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+    return sign(x) * (1.0 - poly * exp(-x * x));
+}
+
+// The sheet's envelope integrated from offset d toward the sun, in closed
+// form (tl_bow_spray_sheet_depth).
+float bow_spray_sheet_depth(vec3 d, vec2 h, float radius, vec3 sun)
+{
+    vec3 scale = vec3(0.4, 1.3, 0.9) * radius;
+    vec3 q = vec3(dot(d.xz, h), d.x * h.y - d.z * h.x, d.y) / scale;
+    vec3 e = vec3(dot(sun.xz, h), sun.x * h.y - sun.z * h.x, sun.y) / scale;
+    float len = length(e), a = dot(q, e) / len;
+    float perp = max(dot(q, q) - a * a, 0.0);
+    return exp(-perp) * 0.5 * sqrt(TL_PI) / len * (1.0 - spray_erf(a));
+}
+
 // The sheet's shape at offset d (metres) from its centre for a boat
 // heading h (unit x z) and a burst of `radius`: thin along the heading,
-// wide across it, rising; torn by the noise. 0 beyond three radii.
+// wide across it, rising; torn by the noise. 0 beyond TL_BOW_SPRAY_REACH
+// radii (tl_bow_spray_sheet).
 float bow_spray_sheet(vec3 d, vec2 h, float radius)
 {
     float along = dot(d.xz, h) / (0.4 * radius);
     float side = (d.x * h.y - d.z * h.x) / (1.3 * radius);
     float up = d.y / (0.9 * radius);
     float r2 = along * along + side * side + up * up;
-    if (r2 >= 9.0)
+    if (r2 >= TL_BOW_SPRAY_END)
         return 0.0;
     // Torn into sheets and clots of droplets: two scales of noise.
     float torn = 0.65 * foam_noise(vec2(side * 2.6 + 17.0, up * 3.1 - along)) +
                  0.35 * foam_noise(vec2(side * 7.3 - 4.0, up * 8.9 + along * 2.0));
-    return exp(-r2) * smoothstep(0.4, 0.75, torn);
+    return exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2)) * smoothstep(0.48, 0.62, torn);
 }
 
 #ifdef TL_FEATURE_BOW_SPRAY
@@ -56,10 +78,20 @@ float bow_spray_density(int o, vec3 p)
     return spray.w * bow_spray_sheet(p - spray.xyz, shape.xy, shape.z);
 }
 
+// The optical depth from camera-relative p toward the sun through object
+// o's burst (tl_bow_spray_shade).
+float bow_spray_shade(int o, vec3 p)
+{
+    vec4 spray = u_objects[o].bow_spray, shape = u_objects[o].bow_spray_shape;
+    return TL_SPRAY_SIGMA * TL_BOW_SPRAY_TORN_MEAN * spray.w *
+           bow_spray_sheet_depth(p - spray.xyz, shape.xy, shape.z, u_sun_dir);
+}
+
 // Object o's burst along `ray` from the camera to `dist`, over `color`,
 // lit as the giant wave's spray is (giant_spray, without the wave's
 // shade): the sun's single scattering in a forward lobe, many times inside
-// where it is dense, and the sky; in steps over the ray's part in the
+// where it is dense, both dimmed by the sheet's own shade, and the sky; in
+// steps over the ray's part in the
 // sheet's sphere, each at an offset by a hash of the pixel (a frame is the
 // same alone or in a sequence).
 vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
@@ -68,7 +100,7 @@ vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
     if (!(spray.w > 0.0))
         return color;
     vec3 c = spray.xyz - vec3(0.0, u_cam_height, 0.0);
-    float along = dot(c, ray), R = 3.0 * 1.3 * u_objects[o].bow_spray_shape.z; // the sheet's widest
+    float along = dot(c, ray), R = TL_BOW_SPRAY_REACH * u_objects[o].bow_spray_shape.z;
     float h = R * R - (dot(c, c) - along * along);
     if (h <= 0.0)
         return color;
@@ -89,7 +121,8 @@ vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
         float density = bow_spray_density(o, p);
         float step_trans = exp(-TL_SPRAY_SIGMA * density * dt);
         float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
-        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase + many) + ambient);
+        float shaded = density > 0.0 ? exp(-bow_spray_shade(o, p)) : 1.0;
+        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }

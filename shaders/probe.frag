@@ -24,8 +24,8 @@
 //   mode 11: the same lip's angles from and to, throw and presence
 //   mode 12: the spray's density at camera-relative (x, z) and height y,
 //           the input's third float, over the span of height its fourth
-//           (tl_giant_spray_density), and in .y the landing's optical
-//           depth toward the sun there (tl_giant_spray_landing_shade)
+//           (tl_giant_spray_density), and in .y the landing's and the
+//           burst's optical depth toward the sun there (tl_giant_spray_shade)
 //   mode 13: a material's BRDF x cos for the normal +y, the view at angle x
 //           from it, the light at angle y, z the azimuth between them; w
 //           the roughness, negative for a metal; base colour 0.8 0.4 0.1
@@ -42,7 +42,8 @@
 //           tilt scaled by |w|, the bitangent's side the sign of w
 //           (tl_mesh_normal_map)
 //   mode 18: the bow's spray density at camera-relative (x, z) and height
-//           y, the input's third float       (tl_bow_spray_density)
+//           y, the input's third float       (tl_bow_spray_density), and
+//           y its shade toward the sun       (tl_bow_spray_shade)
 //   mode 20: the light the water scatters toward the eye along a ray from
 //           x metres down, its y component the input's y, its azimuth z
 //           radians from +x toward +z, over w metres (tl_optics_water_inscatter)
@@ -140,7 +141,10 @@ void main()
 #endif
 #ifdef TL_FEATURE_BOW_SPRAY
     else if (u_probe_mode == 18)
+    {
         result.x = bow_spray_density(0, vec3(p.x, input4.z, p.y));
+        result.y = bow_spray_shade(0, vec3(p.x, input4.z, p.y));
+    }
 #endif
     else if (u_probe_mode == 17)
         result.xyz = material_normal_map(normalize(vec3(0.3, 0.9, -0.2)),

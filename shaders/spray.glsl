@@ -5,15 +5,6 @@
 // has the TL_SPRAY_* constants; keep the two in step.
 #include "bow_spray.glsl"
 
-// erf, to 1.5e-7 (Abramowitz and Stegun 7.1.26).
-float giant_erf(float x)
-{
-    float t = 1.0 / (1.0 + 0.3275911 * abs(x));
-    float poly = t * (0.254829592 + t * (-0.284496736 +
-                                         t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
-    return sign(x) * (1.0 - poly * exp(-x * x));
-}
-
 // The mean of exp(-x²/r²) over [x - span/2, x + span/2]
 // (tl_giant_spray_layer).
 float giant_spray_layer(float x, float r, float span)
@@ -24,7 +15,7 @@ float giant_spray_layer(float x, float r, float span)
         return g * (1.0 + e2 * (2.0 * u2 - 1.0) / 3.0 +
                     e2 * e2 * (4.0 * u2 * u2 - 12.0 * u2 + 3.0) / 30.0);
     }
-    return 0.25 * sqrt(TL_PI) * r / h * (giant_erf((x + h) / r) - giant_erf((x - h) / r));
+    return 0.25 * sqrt(TL_PI) * r / h * (spray_erf((x + h) / r) - spray_erf((x - h) / r));
 }
 
 // Density (0 .. giant.spray) at camera-relative p (y absolute); `span`:
@@ -78,7 +69,7 @@ float giant_spray_sample(vec3 p, float span, out float shade)
             float len = length(v), a = len > 1.0e-6 ? dot(vec2(ts, ty), v) / len : 0.0;
             float d2 = max(ts * ts + ty * ty - a * a, 0.0);
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
-                    sqrt(TL_PI) * r * (1.0 + giant_erf(a / r)) / max(len, 0.1);
+                    sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
             // Billows: two noises in crossed planes multiplied, round
             // lumps about 1.6 m across in all three directions, with a
             // finer grain (as tl_giant_spray_density).
@@ -90,9 +81,15 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         }
 #endif
     }
-    if (u_giant_spray_bow.w > 0.0)
-        density += u_giant_spray_bow.w * bow_spray_sheet(p - u_giant_spray_bow.xyz,
-                                                         u_giant_spray_heading, u_giant_spray.w);
+    if (u_giant_spray_bow.w > 0.0) {
+        vec3 d = p - u_giant_spray_bow.xyz;
+        float sheet = bow_spray_sheet(d, u_giant_spray_heading, u_giant_spray.w);
+        density += u_giant_spray_bow.w * sheet;
+        // Its own shade (tl_giant_spray_shade), where it has any spray.
+        if (sheet > 0.0)
+            shade += TL_SPRAY_SIGMA * TL_BOW_SPRAY_TORN_MEAN * u_giant_spray_bow.w *
+                     bow_spray_sheet_depth(d, u_giant_spray_heading, u_giant_spray.w, u_sun_dir);
+    }
     return density;
 }
 
@@ -131,9 +128,9 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     vec2 box = giant_box_interval(ray, lo, hi, min(dist, TL_FAR));
     float t0 = box.x, t1 = box.y;
     if (u_giant_spray_bow.w > 0.0) {
-        // The sphere of three radii around the bow's burst.
+        // The sphere the bow's burst reaches.
         vec3 c = u_giant_spray_bow.xyz - vec3(0.0, u_cam_height, 0.0);
-        float along = dot(c, ray), R = 3.0 * 1.3 * u_giant_spray.w; // the sheet's widest
+        float along = dot(c, ray), R = TL_BOW_SPRAY_REACH * u_giant_spray.w;
         float h = R * R - (dot(c, c) - along * along);
         if (h > 0.0) {
             float b0 = max(along - sqrt(h), 0.0), b1 = min(along + sqrt(h), dist);
@@ -175,8 +172,9 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         // 10 m the whitewater was tinted into cyan smoke.
         float sunlit = density > 0.0 ? giant_sunlit(p.xz, p.y) : 1.0;
         vec3 through = max(vec3(sunlit), dense * exp(-u_giant_sigma * TL_SPRAY_SHADE_WATER));
-        // The landing's own shade dims the sun's single scattering, and its
-        // many scatterings less (they carry light in from the lit side).
+        // The landing's and the burst's own shade dims the sun's single
+        // scattering, and its many scatterings less (they carry light in
+        // from the lit side).
         float shaded = exp(-shade);
         vec3 light =
             TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through + ambient);

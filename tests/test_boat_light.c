@@ -476,7 +476,7 @@ static void test_bow_spray(tl_renderer *r, const tl_mesh *m)
                         : c == 2 ? 1
                                  : 0)] =
                 (float)(sp.center[c] - (c == 1 ? 0.0 : s.camera.position[c]) +
-                        2.0 * sp.radius * (2.0 * rand() / RAND_MAX - 1.0));
+                        1.2 * sp.radius * (2.0 * rand() / RAND_MAX - 1.0));
         in[4 * i + 3] = 0.0f;
     }
     if (tl_renderer_probe4(r, &u, 18, in, N, u.octaves, out, &err)) {
@@ -484,20 +484,27 @@ static void test_bow_spray(tl_renderer *r, const tl_mesh *m)
         CHECK(0);
         return;
     }
-    double worst = 0.0, most = 0.0;
+    double worst = 0.0, most = 0.0, worst_shade = 0.0, most_shade = 0.0;
     int dense = 0;
+    const double sun[3] = {u.sun_dir[0], u.sun_dir[1], u.sun_dir[2]};
     for (int i = 0; i < N; i++) {
-        double want = tl_bow_spray_density(&sp, in[4 * i] + s.camera.position[0], in[4 * i + 2],
-                                           in[4 * i + 1] + s.camera.position[2]);
+        double x = in[4 * i] + s.camera.position[0], y = in[4 * i + 2],
+               z = in[4 * i + 1] + s.camera.position[2];
+        double want = tl_bow_spray_density(&sp, x, y, z);
+        double shade = tl_bow_spray_shade(&sp, x, y, z, sun);
         worst = fmax(worst, fabs(out[4 * i] - want));
+        worst_shade = fmax(worst_shade, fabs(out[4 * i + 1] - shade) / fmax(shade, 1.0));
         most = fmax(most, want);
+        most_shade = fmax(most_shade, shade);
         dense += want > 0.1 * sp.amount;
     }
     printf("bow spray: radius %.2f m, amount %.2f; GPU against CPU over %d points: %.2g (the "
-           "densest %.2f, %d over a tenth of the amount)\n",
-           sp.radius, sp.amount, N, worst, most, dense);
+           "densest %.2f, %d over a tenth of the amount); its shade %.2g (up to %.2f)\n",
+           sp.radius, sp.amount, N, worst, most, dense, worst_shade, most_shade);
     CHECK(dense > 10);
     CHECK(worst < 1e-3 * sp.amount);
+    CHECK(most_shade > 0.05);
+    CHECK(worst_shade < 2e-3);
     /* Drawn: whiter around the stem, nothing beyond the sheet's sphere. */
     tl_frame with, without;
     if (render(r, &s, &with))
@@ -506,7 +513,7 @@ static void test_bow_spray(tl_renderer *r, const tl_mesh *m)
         tl_frame_free(&with);
         return;
     }
-    const double reach = 3.0 * 1.3 * sp.radius;
+    const double reach = TL_BOW_SPRAY_REACH * sp.radius;
     long whiter = 0, outside = 0;
     for (int y = 0; y < s.height; y++)
         for (int x = 0; x < s.width; x++) {

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "tl_gl_test.h"
+#include "waves/tl_bow_spray.h"
 #include "waves/tl_giant_spray.h"
 
 /* A breaking wave whose peak broke `age` seconds before t, centred on
@@ -42,6 +43,21 @@ static double smoothstep_test(double e0, double e1, double x)
 static double base_of(const tl_scene *s)
 {
     return -0.5 * s->ocean.depth;
+}
+
+/* A level hull of 9 m with its stem at `stem`, heading (x, z). */
+static const tl_giant_hull *level_hull(tl_giant_hull *h, const double stem[3],
+                                       const double heading[2])
+{
+    h->length = 9.0;
+    h->heading[0] = heading[0];
+    h->heading[1] = heading[1];
+    for (int i = 0; i < 3; i++)
+        h->stem[i] = stem[i];
+    h->stern[0] = stem[0] - 9.0 * heading[0];
+    h->stern[1] = stem[1];
+    h->stern[2] = stem[2] - 9.0 * heading[1];
+    return h;
 }
 
 /* Every height tl_giant_lip_heights returns lies on the tube's boundary,
@@ -183,11 +199,11 @@ static void test_spray_density(void)
     breaking_scene(&s, 10.0, 1.0, 0.0, 0.0);
     tl_giant g;
     tl_giant_prepare(&g, &s.giant, s.time);
-    const double heading[2] = {g.dir[0], g.dir[1]};
     tl_giant_spray sp;
-    tl_giant_spray_prepare(&sp, &g, 0.0, 8.0, s.time, s.ocean.depth, NULL, 0.0, heading);
+    tl_giant_hull hull;
+    tl_giant_spray_prepare(&sp, &g, 0.0, 8.0, s.time, s.ocean.depth, NULL);
     CHECK(!sp.active);
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL, 0.0, heading);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
     CHECK(sp.active && sp.bow_amount == 0.0);
     double dl, db, most = 0.0, ahead = 0.0;
     int outside = 0;
@@ -219,14 +235,14 @@ static void test_spray_density(void)
     double bow[3] = {g.origin[0] + g.dir[0] * sv + g.across[0] * 10.0, 5.0,
                      g.origin[1] + g.dir[1] * sv + g.across[1] * 10.0};
     const double into[2] = {-g.dir[0], -g.dir[1]};
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, into);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, level_hull(&hull, bow, into));
     CHECK(sp.bow_amount > 0.0);
     const double along[2] = {g.across[0], g.across[1]}; /* along the crest: no slope ahead */
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, along);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, level_hull(&hull, bow, along));
     CHECK(sp.bow_amount < 0.5 * TL_SPRAY_BOW_GAIN * 1.5);
     bow[0] = g.origin[0] + g.dir[0] * 400.0; /* far ahead of the wave: calm water */
     bow[2] = g.origin[1] + g.dir[1] * 400.0;
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, bow, 9.0, into);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, level_hull(&hull, bow, into));
     CHECK(sp.bow_amount == 0.0);
     /* Without a break the box is the plume's alone: tight around the thin
      * plume (its floor far above the wave's foot, where the shader's few
@@ -234,7 +250,7 @@ static void test_spray_density(void)
      * far end. */
     s.giant.breaking = false;
     tl_giant_prepare(&g, &s.giant, s.time);
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL, 0.0, heading);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
     CHECK(sp.active);
     printf("spray box without a break: y %.2f .. %.2f m over a foot at %.2f m\n", sp.box[2],
            sp.box[3], base_of(&s));
@@ -336,8 +352,9 @@ static void test_bow_burst_pitched(void)
         s.giant.breaking = false;
         tl_giant g;
         tl_giant_prepare(&g, &s.giant, s.time);
-        /* On the face ahead of the crest, heading down it. */
-        double sv = g.curl / g.k + 6.0;
+        /* On the face ahead of the crest, heading down it, the stern
+         * clear of the crest (no crossing yet). */
+        double sv = g.curl / g.k + 9.0;
         s.boat.enabled = s.boat.visible = true;
         s.boat.length = 9.0;
         s.boat.beam = 3.0;
@@ -362,6 +379,113 @@ static void test_bow_burst_pitched(void)
     CHECK(fabs((centre_s[0] - centre_s[1]) - 4.5 * (1.0 - cos(0.6))) < 1e-3);
 }
 
+/* Where the crest passes under a hull heading into the wave, the burst
+ * stands over the crest at full strength with the crossing's radius; the
+ * crest far ahead of the bow on the wave's gentle front throws none; a
+ * hull beam on to the crest does not split it. As the crest sweeps along
+ * the hull the burst never goes out and its centre and radius move
+ * smoothly (no jump between frames). */
+static void test_crossing_burst(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 0.0, 0.0, 0.0);
+    s.giant.breaking = false;
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    const double w = s.giant.peak, L = 9.0;
+    double dl, db, lambda = tl_giant_lambda(&g, w, &dl);
+    double top_s = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k;
+    double top_y = base_of(&s) + lambda * g.amplitude;
+    const double into[2] = {-g.dir[0], -g.dir[1]};
+    tl_giant_spray sp;
+    tl_giant_hull hull;
+    double stem[3];
+    /* The hull's middle at crest + `mid` along the travel, level at the top. */
+#define AT(mid)                                                                                    \
+    (stem[0] = g.origin[0] + g.dir[0] * (top_s + (mid)-0.5 * L) + g.across[0] * w,                 \
+     stem[1] = top_y,                                                                              \
+     stem[2] = g.origin[1] + g.dir[1] * (top_s + (mid)-0.5 * L) + g.across[1] * w,                 \
+     level_hull(&hull, stem, into))
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, AT(0.0));
+    printf("crossing burst: amount %.3f, radius %.3f m, centre %.3f m over the crest\n",
+           sp.bow_amount, sp.bow_radius, sp.bow[1] - top_y);
+    CHECK(fabs(sp.bow_amount - TL_SPRAY_CROSS_GAIN * 1.5) < 1e-9);
+    CHECK(fabs(sp.bow_radius - TL_SPRAY_CROSS_RADIUS * L) < 1e-9);
+    CHECK(sp.bow[1] > top_y);
+    /* The crest 1.5 hull lengths beyond the bow: nothing from the crossing. */
+    double far_mid = -(0.5 + 1.5) * L;
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, AT(far_mid));
+    CHECK(fabs(sp.bow_radius - TL_SPRAY_CROSS_RADIUS * L) > 1e-6);
+    /* Beam on, on the crest: no crossing (the burst, if any, is the bow's). */
+    const double beam[2] = {g.across[0], g.across[1]};
+    stem[0] = g.origin[0] + g.dir[0] * top_s + g.across[0] * (w + 0.5 * L);
+    stem[1] = top_y;
+    stem[2] = g.origin[1] + g.dir[1] * top_s + g.across[1] * (w + 0.5 * L);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, level_hull(&hull, stem, beam));
+    CHECK(sp.bow_amount == 0.0 || fabs(sp.bow_radius - TL_SPRAY_BOW_RADIUS * L) < 1e-9);
+    /* The crest sweeping from just short of the bow to past the stern, in
+     * 0.3 m steps: while the burst is dense, no step moves it more than
+     * one. */
+    double last[4] = {0.0, 0.0, 0.0, 0.0}, worst = 0.0, weakest = 1e30;
+    for (int i = 0; i <= 40; i++) {
+        double mid = -0.5 * L + 12.0 * i / 40.0 - 0.5;
+        tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, AT(-mid));
+        if (mid < 0.5 * L)
+            weakest = fmin(weakest, sp.bow_amount);
+        if (i > 0 && sp.bow_amount > 0.2 * TL_SPRAY_CROSS_GAIN * 1.5) {
+            for (int k = 0; k < 3; k++)
+                worst = fmax(worst, fabs(sp.bow[k] - last[k]));
+            worst = fmax(worst, fabs(sp.bow_radius - last[3]));
+        }
+        for (int k = 0; k < 3; k++)
+            last[k] = sp.bow[k];
+        last[3] = sp.bow_radius;
+    }
+#undef AT
+    printf("crossing burst swept: weakest %.3f while the crest is under the hull, largest step "
+           "%.3f m\n",
+           weakest, worst);
+    CHECK(weakest > 0.8 * TL_SPRAY_CROSS_GAIN * 1.5);
+    CHECK(worst < 0.3);
+}
+
+/* The burst's self-shade (tl_bow_spray_sheet_depth) is its envelope
+ * integrated toward the sun: the closed form matches a midpoint sum along
+ * the sun's ray for a low and a high sun and a sheet heading across and
+ * along it, and a point on the sheet's sunward side lies in less shade
+ * than one on its far side. */
+static void test_burst_shade(void)
+{
+    const double radius = 3.0, headings[2][2] = {{1.0, 0.0}, {0.6, 0.8}};
+    const double elevations[2] = {0.15, 0.9};
+    double worst = 0.0, near = 0.0, far = 0.0;
+    for (int k = 0; k < 4; k++) {
+        const double *h = headings[k % 2], el = elevations[k / 2], az = 0.7;
+        const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)};
+        for (int j = -1; j <= 1; j++) {
+            const double d[3] = {j * radius * sun[0], j * radius * sun[1] + 0.4,
+                                 j * radius * sun[2] - 0.3};
+            double closed = tl_bow_spray_sheet_depth(d, h, radius, sun), sum = 0.0, dt = 0.002;
+            for (int i = 0; i < 20000; i++) {
+                double t = (i + 0.5) * dt;
+                const double p[3] = {d[0] + sun[0] * t, d[1] + sun[1] * t, d[2] + sun[2] * t};
+                double a = (p[0] * h[0] + p[2] * h[1]) / (0.4 * radius);
+                double c = (p[0] * h[1] - p[2] * h[0]) / (1.3 * radius);
+                double u = p[1] / (0.9 * radius);
+                sum += exp(-(a * a + c * c + u * u)) * dt;
+            }
+            worst = fmax(worst, fabs(closed - sum) / fmax(sum, 1e-9));
+            if (k == 0 && j != 0)
+                *(j > 0 ? &near : &far) = closed;
+        }
+    }
+    printf("burst's shade: closed form within %.2g of the sum; sunward side %.3f m, far side "
+           "%.3f m\n",
+           worst, near, far);
+    CHECK(worst < 1e-3);
+    CHECK(near < 0.2 * far);
+}
+
 /* The landing's self-shade (tl_giant_spray_landing_shade) is its
  * envelope's optical depth toward the sun: the closed form matches a
  * midpoint sum of the envelope's density (noise at its mean) along the
@@ -374,7 +498,7 @@ static void test_landing_shade(void)
     tl_giant g;
     tl_giant_prepare(&g, &s.giant, s.time);
     tl_giant_spray sp;
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL, 0.0, NULL);
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
     const double el = 0.2, az = 2.8; /* low, behind the wave */
     const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)};
     double w = s.giant.peak;
@@ -450,20 +574,36 @@ static void test_lip_low_crest(void)
 }
 
 /* GPU against CPU: the lip's cross-section (probe modes 10, 11), the
- * spray's density (mode 12) and the tube's lumped distance (mode 22) at
- * points across the crest, for a wave at the origin at t = 10 s and for
- * one 1e4 m out at t = 1e5 s, and for the first once it has landed. */
+ * spray's density and shade (mode 12) and the tube's lumped distance
+ * (mode 22) at points across the crest, for a wave at the origin at
+ * t = 10 s and for one 1e4 m out at t = 1e5 s, and for the first once it
+ * has landed; the last with a boat crossing the crest 8 m beside the
+ * peak, its burst among the points. */
 static void test_gpu_mirror(tl_renderer *r)
 {
     /* t, x, z and the break's age at the peak: thrown, and landed there
      * (its whitewater lumped all along the tube). */
-    const double where[3][4] = {
-        {10.0, 0.0, 0.0, 2.0}, {1e5, 1e4, -7e3, 2.0}, {10.0, 0.0, 0.0, 4.5}};
-    for (int k = 0; k < 3; k++) {
+    const double where[4][4] = {
+        {10.0, 0.0, 0.0, 2.0}, {1e5, 1e4, -7e3, 2.0}, {10.0, 0.0, 0.0, 4.5}, {10.0, 0.0, 0.0, 2.0}};
+    for (int k = 0; k < 4; k++) {
         tl_scene s;
         breaking_scene(&s, where[k][0], where[k][3], where[k][1], where[k][2]);
         tl_giant g;
         tl_giant_prepare(&g, &s.giant, s.time);
+        tl_giant_hull hull, *crossing = NULL;
+        if (k == 3) { /* heading into the wave, the crest under its middle */
+            double w = s.giant.peak + 8.0, dl, db, lambda = tl_giant_lambda(&g, w, &dl);
+            double top = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k;
+            s.boat.enabled = s.boat.visible = true;
+            s.boat.length = 9.0;
+            s.boat.beam = 3.0;
+            s.boat.position[0] = g.origin[0] + g.dir[0] * top + g.across[0] * w;
+            s.boat.position[1] = base_of(&s) + lambda * g.amplitude;
+            s.boat.position[2] = g.origin[1] + g.dir[1] * top + g.across[1] * w;
+            s.boat.heading = atan2(-g.dir[0], -g.dir[1]);
+            tl_giant_hull_of(&hull, &s.boat);
+            crossing = &hull;
+        }
         /* The camera 60 m in front of the crest, looking at it. */
         s.camera.position[0] = g.origin[0] + g.dir[0] * 60.0;
         s.camera.position[1] = 6.0;
@@ -481,9 +621,9 @@ static void test_gpu_mirror(tl_renderer *r)
         tl_giant_lip cpu[N];
         double density[N];
         tl_giant_spray sp;
-        const double heading[2] = {g.dir[0], g.dir[1]};
         tl_giant_spray_prepare(&sp, &g, s.giant.spray, s.giant.spray_wind, s.time, s.ocean.depth,
-                               NULL, 0.0, heading);
+                               crossing);
+        CHECK((sp.bow_amount > 0.0) == (crossing != NULL));
         for (int i = 0; i < N; i++) {
             double w = s.giant.peak - 12.0 + 24.0 * i / (N - 1), dl, db;
             double lambda = tl_giant_lambda(&g, w, &dl);
@@ -496,11 +636,18 @@ static void test_gpu_mirror(tl_renderer *r)
             }
             double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
             double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+            if (crossing && i % 4 == 2) { /* in the burst, the lip where it is */
+                x = sp.bow[0] + 0.3 * sp.bow_radius * ((i % 7) - 3);
+                y = sp.bow[1] + 0.2 * sp.bow_radius * ((i % 5) - 2);
+                z = sp.bow[2] + 0.1 * sp.bow_radius * ((i % 3) - 1);
+                w = g.across[0] * (x - g.origin[0]) + g.across[1] * (z - g.origin[1]);
+                tl_giant_lip_at(&g, w, base_of(&s), &cpu[i]);
+            }
             /* Points, and samples standing for up to 2.4 m of height (a
              * march's step through the plume's layer). */
             double span = 0.6 * (i % 5);
             density[i] = tl_giant_spray_density(&sp, &g, x, y, z, span);
-            shade[i] = tl_giant_spray_landing_shade(&sp, &g, x, y, z, sun);
+            shade[i] = tl_giant_spray_shade(&sp, &g, x, y, z, sun);
             in4[4 * i + 0] = (float)(x - s.camera.position[0]);
             in4[4 * i + 1] = (float)(z - s.camera.position[2]);
             in4[4 * i + 2] = (float)y;
@@ -521,6 +668,7 @@ static void test_gpu_mirror(tl_renderer *r)
          * centre line), as the CPU's. */
         double worst = 0.0, worst_angle = 0.0, worst_density = 0.0, landing = 0.0;
         double worst_distance = 0.0, worst_lump = 0.0, worst_shade = 0.0, most_shade = 0.0;
+        double burst = 0.0;
         int present = 0, rough = 0;
         for (int i = 0; i < N; i++) {
             CHECK((ang4[4 * i + 3] > 0.5) == cpu[i].present);
@@ -553,18 +701,22 @@ static void test_gpu_mirror(tl_renderer *r)
             rough += tl_giant_lip_roughness(&cpu[i], angle) > 0.1;
             if (i % 4 == 3)
                 landing = fmax(landing, density[i]);
+            if (crossing && i % 4 == 2)
+                burst = fmax(burst, shade[i]);
         }
         printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g; "
-               "distance %.3g m, lumps %.3g (%d points rough); landing's shade %.3g (up to %.3g)\n",
+               "distance %.3g m, lumps %.3g (%d points rough); shade %.3g (up to %.3g; in the "
+               "burst %.3g)\n",
                s.time, hypot(where[k][1], where[k][2]), present, N, worst, worst_angle,
-               worst_density, worst_distance, worst_lump, rough, worst_shade, most_shade);
+               worst_density, worst_distance, worst_lump, rough, worst_shade, most_shade, burst);
         CHECK(present > N / 2);
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
         CHECK(worst_density <= 2e-3 * s.giant.spray);
         CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
         CHECK(worst_shade <= 2e-3);
-        CHECK(landing > 0.1); /* the landing's cloud is among the points compared */
+        CHECK(landing > 0.1);            /* the landing's cloud is among the points compared */
+        CHECK(!crossing || burst > 0.5); /* and the crossing's burst */
     }
 }
 
@@ -685,6 +837,8 @@ int main(void)
     test_lip_low_crest();
     test_lip_lumps();
     test_bow_burst_pitched();
+    test_crossing_burst();
+    test_burst_shade();
     test_landing_shade();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;

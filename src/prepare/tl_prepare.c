@@ -120,19 +120,11 @@ static double breaking(double threshold, double min_jacobian)
 static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniforms *u)
 {
     const tl_boat *b = &s->boat;
-    double heading[2] = {sin(b->heading), cos(b->heading)}, bow[3];
-    /* The stem where the pitched hull has it: bow down on a face it is
-     * metres below the boat's middle (taken level, the burst rose from the
-     * crest beside the boat, not from its bow). */
-    for (int i = 0; i < 3; i++)
-        bow[i] = b->position[i];
-    double reach = 0.5 * b->length * cos(b->pitch);
-    bow[0] += heading[0] * reach;
-    bow[1] += 0.5 * b->length * sin(b->pitch);
-    bow[2] += heading[1] * reach;
+    tl_giant_hull hull;
+    tl_giant_hull_of(&hull, b);
     tl_giant_spray sp;
     tl_giant_spray_prepare(&sp, g, s->giant.spray, s->giant.spray_wind, s->time, s->ocean.depth,
-                           b->enabled ? bow : NULL, b->length, heading);
+                           b->enabled ? &hull : NULL);
     if (!sp.active)
         return;
     u->features |= TL_FEATURE_GIANT_SPRAY;
@@ -361,7 +353,7 @@ static void prepare_bow_spray(const tl_scene *s, const tl_boat *b, int k, tl_obj
     double c[3];
     for (int i = 0; i < 3; i++)
         c[i] = sp.center[i] - s->camera.position[i];
-    if (!sp.active || !sphere_in_view(s, c, 3.0 * 1.3 * sp.radius))
+    if (!sp.active || !sphere_in_view(s, c, TL_BOW_SPRAY_REACH * sp.radius))
         return;
     u->features |= TL_FEATURE_BOW_SPRAY;
     o->bow_spray[0] = (float)c[0];

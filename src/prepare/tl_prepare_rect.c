@@ -8,6 +8,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "waves/tl_bow_spray.h"
+
 /* The longest shadow the crest casts on the water (giant_sunlit in
  * shaders/giant.glsl), metres along the sun's horizontal direction from
  * the crest line, for water no lower than the trough plane: there the
@@ -79,7 +81,7 @@ static void cover_box(const tl_frame_uniforms *u, double cam_y, double min_y, do
         const double bx = u->giant_spray_bow[0], bz = u->giant_spray_bow[2];
         const double s = u->giant_frame[2] + dx * bx + dz * bz;
         const double w = u->giant_frame[3] + dz * bx - dx * bz;
-        const double r = 3.0 * 1.3 * (double)u->giant_spray[3];
+        const double r = TL_BOW_SPRAY_REACH * (double)u->giant_spray[3];
         lo[0] = fmin(lo[0], s - r);
         hi[0] = fmax(hi[0], s + r);
         hi[1] = fmax(hi[1], u->giant_spray_bow[1] + r);

@@ -38,12 +38,13 @@ double tl_bow_spray_sheet(const double d[3], const double heading[2], double rad
     double side = (d[0] * heading[1] - d[2] * heading[0]) / (1.3 * radius);
     double up = d[1] / (0.9 * radius);
     double r2 = along * along + side * side + up * up;
-    if (r2 >= 9.0)
+    if (r2 >= TL_BOW_SPRAY_END)
         return 0.0;
-    /* Torn into sheets and clots of droplets: two scales of noise. */
+    /* Torn into sheets and clots of droplets: two scales of noise, cut
+     * sharply (a soft cut left a smoke, not thrown water). */
     double torn = 0.65 * tl_noise_value(side * 2.6 + 17.0, up * 3.1 - along) +
                   0.35 * tl_noise_value(side * 7.3 - 4.0, up * 8.9 + along * 2.0);
-    return exp(-r2) * smoothstep(0.4, 0.75, torn);
+    return exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2)) * smoothstep(0.48, 0.62, torn);
 }
 
 double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z)
@@ -52,4 +53,31 @@ double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z
         return 0.0;
     const double d[3] = {x - sp->center[0], y - sp->center[1], z - sp->center[2]};
     return sp->amount * tl_bow_spray_sheet(d, sp->heading, sp->radius);
+}
+
+double tl_bow_spray_sheet_depth(const double d[3], const double heading[2], double radius,
+                                const double sun[3])
+{
+    /* In the sheet's frame scaled by its three widths the envelope is
+     * exp(-|q + t e|²) along the sun's ray; with a = q·e / |e| that is
+     * exp(-(|q|² - a²)) exp(-(t|e| + a)²), whose integral over t >= 0 is
+     * exp(-(|q|² - a²)) sqrt(pi) / (2|e|) erfc(a). */
+    const double sa = 0.4 * radius, ss = 1.3 * radius, su = 0.9 * radius;
+    const double q[3] = {(d[0] * heading[0] + d[2] * heading[1]) / sa,
+                         (d[0] * heading[1] - d[2] * heading[0]) / ss, d[1] / su};
+    const double e[3] = {(sun[0] * heading[0] + sun[2] * heading[1]) / sa,
+                         (sun[0] * heading[1] - sun[2] * heading[0]) / ss, sun[1] / su};
+    double len = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    double a = (q[0] * e[0] + q[1] * e[1] + q[2] * e[2]) / len;
+    double perp = fmax(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] - a * a, 0.0);
+    return exp(-perp) * 0.5 * sqrt(M_PI) / len * (1.0 - erf(a));
+}
+
+double tl_bow_spray_shade(const tl_bow_spray *sp, double x, double y, double z, const double sun[3])
+{
+    if (!sp->active)
+        return 0.0;
+    const double d[3] = {x - sp->center[0], y - sp->center[1], z - sp->center[2]};
+    return TL_SPRAY_SIGMA * sp->amount * TL_BOW_SPRAY_TORN_MEAN *
+           tl_bow_spray_sheet_depth(d, sp->heading, sp->radius, sun);
 }

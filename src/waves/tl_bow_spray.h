@@ -21,6 +21,16 @@
  * centre then: thrown water, an opaque white sheet where it is thickest. */
 #define TL_BOW_SPRAY_RADIUS 0.25
 #define TL_BOW_SPRAY_GAIN   8.0
+/* The sheet's tearing (the smoothstep of its noises) averages about this:
+ * what its self-shade takes for the noise. */
+#define TL_BOW_SPRAY_TORN_MEAN 0.387
+/* The sheet ends where its scaled radius squared reaches this (its
+ * Gaussian cut off smoothly from 1): carried out to three radii, its faint
+ * tail glowed against the sun as a fog around the burst. Its widest reach
+ * is sqrt of this times 1.3 radii across (TL_BOW_SPRAY_REACH, what a
+ * march covers). */
+#define TL_BOW_SPRAY_END   2.5
+#define TL_BOW_SPRAY_REACH (1.3 * 1.5811388300841898)
 
 /* One frame's burst at one bow. */
 typedef struct tl_bow_spray {
@@ -35,11 +45,26 @@ typedef struct tl_bow_spray {
 void tl_bow_spray_prepare(tl_bow_spray *sp, const tl_boat *b);
 
 /* The sheet's shape at offset d (world metres) from its centre, for a
- * boat heading (x, z) and a burst of `radius`: in [0, 1], 0 beyond three
- * radii (the sphere a march covers). */
+ * boat heading (x, z) and a burst of `radius`: in [0, 1], 0 beyond
+ * TL_BOW_SPRAY_REACH radii (the sphere a march covers). */
 double tl_bow_spray_sheet(const double d[3], const double heading[2], double radius);
+
+/* The sheet's envelope (its shape before the tearing, exp(-r²) in its
+ * scaled frame) integrated from offset d toward the sun (unit `sun`) to
+ * infinity, in metres, in closed form: the erfc of a Gaussian along a
+ * line. Times the density's scale, TL_BOW_SPRAY_TORN_MEAN and
+ * TL_SPRAY_SIGMA it is the optical depth of the sun's way out of the
+ * sheet: a dense burst is bright on its sunward side and grey in its own
+ * shade, not a uniformly glowing fog. */
+double tl_bow_spray_sheet_depth(const double d[3], const double heading[2], double radius,
+                                const double sun[3]);
 
 /* The burst's density at world (x, y, z). */
 double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z);
+
+/* The optical depth from world (x, y, z) toward the sun through the burst
+ * (tl_bow_spray_sheet_depth, scaled). */
+double tl_bow_spray_shade(const tl_bow_spray *sp, double x, double y, double z,
+                          const double sun[3]);
 
 #endif

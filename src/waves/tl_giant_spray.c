@@ -30,9 +30,90 @@ static double crest_top(const tl_giant *g, double w, double base, double *top_s,
     return base + *height;
 }
 
+/* The burst at the bow where the hull lies on the wave's slope along its
+ * heading, either way (heading into a face the bow slams into it; lifted
+ * from behind, it digs into the water below): its strength, centre and
+ * radius. */
+static double bow_burst(const tl_giant *g, const tl_giant_hull *hull, double centre[3],
+                        double *radius)
+{
+    tl_giant_sample smp;
+    tl_giant_sample_at(g, hull->stem[0], hull->stem[2], 8, &smp);
+    double slope = fabs(smp.grad[0] * hull->heading[0] + smp.grad[1] * hull->heading[1]);
+    *radius = TL_SPRAY_BOW_RADIUS * hull->length;
+    centre[0] = hull->stem[0] + hull->heading[0] * 0.5 * *radius;
+    centre[1] = hull->stem[1] + 0.6 * *radius;
+    centre[2] = hull->stem[2] + hull->heading[1] * 0.5 * *radius;
+    return smoothstep(TL_SPRAY_BOW_SLOPE_FROM, TL_SPRAY_BOW_SLOPE, slope);
+}
+
+/* The burst where the crest passes under the hull: its strength, centre
+ * (over the crest where it meets the hull) and radius, and `*hold`, how
+ * much it holds the bow's burst off (all of it from when it starts until
+ * as long again after it has gone: the bow's burst, metres away, takes
+ * over only once the crossing's has faded). The crest moves toward +s, so
+ * it meets the end with the lower s first; u is how far it has come along
+ * the hull from there, in hull lengths. A hull lying along the crest
+ * (beam on) does not split it: no burst. */
+static double crossing_burst(const tl_giant *g, const tl_giant_hull *hull, double base,
+                             double centre[3], double *radius, double *hold)
+{
+    *hold = 0.0;
+    double mid[2] = {0.5 * (hull->stem[0] + hull->stern[0]),
+                     0.5 * (hull->stem[2] + hull->stern[2])};
+    double w = g->across[0] * (mid[0] - g->origin[0]) + g->across[1] * (mid[1] - g->origin[1]);
+    double s_stem =
+        g->dir[0] * (hull->stem[0] - g->origin[0]) + g->dir[1] * (hull->stem[2] - g->origin[1]);
+    double s_stern =
+        g->dir[0] * (hull->stern[0] - g->origin[0]) + g->dir[1] * (hull->stern[2] - g->origin[1]);
+    double span = fabs(s_stern - s_stem);
+    if (!(span > 0.3 * hull->length))
+        return 0.0;
+    double top_s, height, top_y = crest_top(g, w, base, &top_s, &height);
+    const double *first = s_stem < s_stern ? hull->stem : hull->stern;
+    const double *last = s_stem < s_stern ? hull->stern : hull->stem;
+    double u = (top_s - fmin(s_stem, s_stern)) / span;
+    double tall = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / (g->lambda_max * g->amplitude));
+    double start = smoothstep(-TL_SPRAY_CROSS_EARLY, 0.0, u);
+    double strength = start * (1.0 - smoothstep(1.0, 1.0 + TL_SPRAY_CROSS_LATE, u)) * tall;
+    *hold = start * tall *
+            (1.0 - smoothstep(1.0 + TL_SPRAY_CROSS_LATE, 1.0 + 2.0 * TL_SPRAY_CROSS_LATE, u));
+    if (!(strength > 0.0))
+        return 0.0;
+    double k = u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u, at[3];
+    for (int i = 0; i < 3; i++)
+        at[i] = first[i] + k * (last[i] - first[i]);
+    *radius = TL_SPRAY_CROSS_RADIUS * hull->length;
+    centre[0] = at[0];
+    centre[1] = fmax(at[1], top_y) + 0.25 * *radius;
+    centre[2] = at[2];
+    return strength;
+}
+
+/* The boat's burst: at its bow on a steep face, over the crest where the
+ * crest passes under the hull; as the crest reaches the hull, the centre
+ * and radius move from the bow's to the crossing's by their shares (no
+ * jump from frame to frame). */
+static void prepare_burst(tl_giant_spray *sp, const tl_giant *g, double amount,
+                          const tl_giant_hull *hull)
+{
+    double at_bow[3], at_crest[3], r_bow, r_crest = 0.0, hold;
+    double crest = crossing_burst(g, hull, sp->base, at_crest, &r_crest, &hold);
+    double bow = bow_burst(g, hull, at_bow, &r_bow) * (1.0 - hold);
+    if (!(bow + crest > 0.0))
+        return;
+    double k = crest / (bow + crest);
+    for (int i = 0; i < 3; i++)
+        sp->bow[i] = at_bow[i] + k * (at_crest[i] - at_bow[i]);
+    sp->bow_radius = r_bow + k * (r_crest - r_bow);
+    sp->bow_amount = amount * fmax(TL_SPRAY_BOW_GAIN * bow, TL_SPRAY_CROSS_GAIN * crest);
+    sp->heading[0] = hull->heading[0];
+    sp->heading[1] = hull->heading[1];
+    sp->active = true;
+}
+
 void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount, double wind,
-                            double t, double depth, const double *bow, double length,
-                            const double heading[2])
+                            double t, double depth, const tl_giant_hull *hull)
 {
     memset(sp, 0, sizeof *sp);
     if (!g->active || !(amount > 0.0))
@@ -84,25 +165,8 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         sp->box[3] = fmax(sp->active ? sp->box[3] : -1e30, lip[3] + grow);
         sp->active = true;
     }
-    /* The bow's burst: where the hull lies on the wave's slope along its
-     * heading, either way: heading into a face the bow slams into it;
-     * lifted from behind, it digs into the water below. */
-    if (bow && length > 0.0) {
-        tl_giant_sample smp;
-        tl_giant_sample_at(g, bow[0], bow[2], 8, &smp);
-        double slope = fabs(smp.grad[0] * heading[0] + smp.grad[1] * heading[1]);
-        double strength = smoothstep(TL_SPRAY_BOW_SLOPE_FROM, TL_SPRAY_BOW_SLOPE, slope);
-        if (strength > 0.0) {
-            sp->bow_radius = TL_SPRAY_BOW_RADIUS * length;
-            sp->bow[0] = bow[0] + heading[0] * 0.5 * sp->bow_radius;
-            sp->bow[1] = bow[1] + 0.6 * sp->bow_radius;
-            sp->bow[2] = bow[2] + heading[1] * 0.5 * sp->bow_radius;
-            sp->bow_amount = TL_SPRAY_BOW_GAIN * amount * strength;
-            sp->heading[0] = heading[0];
-            sp->heading[1] = heading[1];
-            sp->active = true;
-        }
-    }
+    if (hull && hull->length > 0.0)
+        prepare_burst(sp, g, amount, hull);
 }
 
 double tl_giant_spray_layer(double x, double r, double span)
@@ -213,4 +277,34 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         density += sp->bow_amount * tl_bow_spray_sheet(d, sp->heading, sp->bow_radius);
     }
     return density;
+}
+
+double tl_giant_spray_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                            double z, const double sun[3])
+{
+    double shade = tl_giant_spray_landing_shade(sp, g, x, y, z, sun);
+    const double d[3] = {x - sp->bow[0], y - sp->bow[1], z - sp->bow[2]};
+    /* Only where the sheet holds spray: the shade of empty air is no use. */
+    if (sp->bow_amount > 0.0 && tl_bow_spray_sheet(d, sp->heading, sp->bow_radius) > 0.0) {
+        shade += TL_SPRAY_SIGMA * sp->bow_amount * TL_BOW_SPRAY_TORN_MEAN *
+                 tl_bow_spray_sheet_depth(d, sp->heading, sp->bow_radius, sun);
+    }
+    return shade;
+}
+
+void tl_giant_hull_of(tl_giant_hull *hull, const tl_boat *b)
+{
+    /* Bow down on a face the stem is metres below the boat's middle (taken
+     * level, the burst rose from the crest beside the boat, not from its
+     * bow). */
+    hull->heading[0] = sin(b->heading);
+    hull->heading[1] = cos(b->heading);
+    hull->length = b->length;
+    double reach = 0.5 * b->length * cos(b->pitch);
+    const double ahead[3] = {hull->heading[0] * reach, 0.5 * b->length * sin(b->pitch),
+                             hull->heading[1] * reach};
+    for (int i = 0; i < 3; i++) {
+        hull->stem[i] = b->position[i] + ahead[i];
+        hull->stern[i] = b->position[i] - ahead[i];
+    }
 }

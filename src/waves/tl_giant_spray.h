@@ -5,6 +5,7 @@
 #ifndef TL_GIANT_SPRAY_H
 #define TL_GIANT_SPRAY_H
 
+#include "scene/tl_scene.h"
 #include "waves/tl_giant.h"
 
 /* Extinction per metre of spray at density 1: thin enough that the
@@ -33,6 +34,21 @@
  * heading (up or down) is TL_SPRAY_BOW_SLOPE_FROM, at full strength where
  * it is TL_SPRAY_BOW_SLOPE or more. */
 #define TL_SPRAY_BOW_RADIUS 0.45
+/* Where the crest passes under the hull, the hull splits it: a burst of
+ * this radius (a share of the hull's length) stands over the crest where
+ * it meets the hull, from when the crest is TL_SPRAY_CROSS_EARLY of the
+ * hull's length short of the end it meets first, at full strength once it
+ * is under the hull, until it has passed the other end by TL_SPRAY_CROSS_LATE
+ * of the length (the thrown water hangs as the hull goes on). The burst at
+ * the bow alone ended as the bow cleared the face: the boat sat on the
+ * crest's ridge dry, a model pasted on the water. */
+#define TL_SPRAY_CROSS_RADIUS 0.4
+/* The crossing's burst is this much denser than the spindrift: the
+ * crest's whole top thrown up by the hull, an opaque eruption (as dense
+ * as the bow's burst, it was a few white flecks around the hull). */
+#define TL_SPRAY_CROSS_GAIN  30.0
+#define TL_SPRAY_CROSS_EARLY 0.3
+#define TL_SPRAY_CROSS_LATE  0.4
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
  * radius (a share of the lip's), from half the throw until it has landed
  * and gone. As the lip collapses the splash rises off the face by up to
@@ -62,6 +78,14 @@
  * its face, lifts a hull without throwing water. */
 #define TL_SPRAY_BOW_SLOPE_FROM 0.3
 
+/* A boat's hull as the spray sees it: its ends where the pitched hull has
+ * them (world metres), the stem ahead along the heading. */
+typedef struct tl_giant_hull {
+    double stem[3], stern[3];
+    double heading[2]; /* unit (x, z) */
+    double length;     /* metres */
+} tl_giant_hull;
+
 /* The spray of one frame. */
 typedef struct tl_giant_spray {
     bool active;       /* giant.spray > 0 and a crest tall enough somewhere */
@@ -77,11 +101,10 @@ typedef struct tl_giant_spray {
 } tl_giant_spray;
 
 /* The spray of wave `g` at time t with giant.spray `amount`, the wind
- * `wind` m/s (giant.spray_wind), ocean depth `depth`; the boat (NULL for
- * none) at world `bow`, its hull `length` metres, heading unit (x, z). */
+ * `wind` m/s (giant.spray_wind), ocean depth `depth`, and the boat's
+ * `hull` (NULL for none). */
 void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount, double wind,
-                            double t, double depth, const double *bow, double length,
-                            const double heading[2]);
+                            double t, double depth, const tl_giant_hull *hull);
 
 /* Spray density (0 .. amount) at world (x, y, z). `span`: the height (m)
  * a sample of a march stands for (0 for the point): the plume's thin
@@ -100,6 +123,16 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
  * at the point's w. */
 double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
                                     double z, const double sun[3]);
+
+/* All the spray's shade at world (x, y, z): the landing's
+ * (tl_giant_spray_landing_shade) and, where its sheet holds spray, the
+ * boat's burst's (tl_bow_spray_sheet_depth, scaled as tl_bow_spray_shade). */
+double tl_giant_spray_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                            double z, const double sun[3]);
+
+/* The hull of boat b as the burst sees it: its ends where its pitch puts
+ * them. */
+void tl_giant_hull_of(tl_giant_hull *hull, const tl_boat *b);
 
 /* The mean of exp(-x²/r²) over [x - h, x + h], h = span/2: the plume's
  * profile in height, x the height over its middle and r its rise. */
