@@ -435,7 +435,21 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     veins *= half_width / drawn;
     veins *= smoothstep(0.3, 0.6, foam_noise(at / 23.0 + vec2(5.2, 1.3))) *
              (0.55 + 0.45 * foam_noise(at * 0.9 + vec2(2.7, 8.1)));
-    float texture_trail = max(0.8 * veins, smoothstep(0.68, 0.85, trail_lace) * fresh);
+    // Patches: fresh foam near the crest is a nearly solid sheet, which
+    // opens into patches and then into the web as it ages (the patches'
+    // threshold rises with the age), in drifts 31 m across that hold more
+    // of it than the open water between them; the patches take a coarser
+    // lace as well as the web's and the foam's fine detail, inside and at
+    // their edges (one scale everywhere, solid inside, read as a printed
+    // leopard pattern to a judge).
+    float drift = foam_noise(at / 31.0 + vec2(1.7, 4.4));
+    float patch_lace = 0.6 * trail_lace +
+                       0.4 * foam_lace(at * vec2(0.5, 0.28) + vec2(3.3, 0.7)) +
+                       0.12 * (detail - 0.5);
+    float open = mix(0.72, 0.3, fresh * fresh) + 0.2 * (0.5 - drift);
+    float patches = smoothstep(open, open + 0.12, patch_lace) * (0.4 + 0.6 * fresh) *
+                    clamp(0.55 + 0.8 * detail, 0.0, 1.0);
+    float texture_trail = max(0.8 * veins, patches);
     // The bubbles the broken crest drove under stay longer than the foam
     // on top, in clouds larger than the web's cells.
     aerated =
