@@ -605,11 +605,12 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     // The gate's ramp runs up to 0.55 to 0.95 of the wave's height, by a
     // noise in fingers 6 m across, long down the face: the wave is not
     // equally thick all along, and ramped to one height everywhere the glow
-    // ended in a level line (judge). It rises as the square of the height
-    // over that reach: brightest just under the crest, fading to deep blue
-    // down the face (ramped linearly up to 0.3 .. 0.7, seen from above the
-    // face glowed like gel halfway down; judge). Its foot stays at the
-    // wave's: lower, the trough ahead glowed.
+    // ended in a level line (judge). It rises as r (0.35 + 0.65 r), r the
+    // height over that reach: brightest just under the crest, fading to
+    // deep blue down the face (ramped linearly up to 0.3 .. 0.7, seen from
+    // above the face glowed like gel halfway down, judge; as r², the lower
+    // face of the low shot went black). Its foot stays at the wave's:
+    // lower, the trough ahead glowed.
     float reach = 0.55 + 0.4 * foam_noise(vec2(g.w / 6.0 + 11.3, g.s0 / 45.0));
     // At the very top (its last 0.15) the crest is thin water whichever way
     // its slope turns: the gate lets a slope up to 0.45 toward the sun glow
@@ -618,7 +619,7 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     float top = giant_top(g);
     float facing = mix(0.2, 0.45, smoothstep(0.85, 1.0, top));
     float ramp = clamp(top / reach, 0.0, 1.0);
-    float through = ramp * ramp *
+    float through = ramp * (0.35 + 0.65 * ramp) *
                     smoothstep(facing, -0.1, dot(wave_normal, u_sun_dir));
     vec3 crossed = exp(-u_giant_sigma * path.x) * through;
 #ifdef TL_FEATURE_GIANT_CAUSTICS
