@@ -104,9 +104,10 @@ int tl_timeline_add_object(tl_timeline *tl, const char *name, int line, int colu
  * are up to TL_FLOAT_TILT_KNEE, then bent smoothly (a tanh, with slope 1 at
  * the knee) toward the limit. The five points' fit across a crest sharper
  * than the hull, or onto the giant wave's lip, stood the boat on its stern,
- * where a hull's weight and inertia carry it over. */
-#define TL_FLOAT_MAX_TILT  (35.0 * 3.14159265358979323846 / 180.0)
-#define TL_FLOAT_TILT_KNEE (20.0 * 3.14159265358979323846 / 180.0)
+ * where a hull's weight and inertia carry it over; at 35° a hull climbing
+ * the giant wave's steep face hung its stern in the air above it. */
+#define TL_FLOAT_MAX_TILT  (50.0 * 3.14159265358979323846 / 180.0)
+#define TL_FLOAT_TILT_KNEE (25.0 * 3.14159265358979323846 / 180.0)
 void tl_timeline_float_boat(const tl_timeline *tl, int object, double t, int heading_from_path,
                             tl_scene *s);
 
