@@ -395,6 +395,7 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float behind = max(-g.s0, 0.0);
     float fresh = exp(-behind / max(u_giant_foam.y, 1.0e-3));
     float trail = breaking * fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind);
+    float bubbles = trail;
 #ifdef TL_FEATURE_GIANT_BREAK
     // The whitewater of a scripted break: it tumbles from the crest down
     // the front as the lip throws and lands (down to the foot once it has),
@@ -414,6 +415,13 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
                     0.5);
     trail = fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind) *
             smoothstep(0.0, 0.5 * u_giant_break.z, giant_break_age(g.w) - passed + ragged);
+    // The bubbles under it spread further and fade out more softly than the
+    // foam on top: their edge ramps over twice the throw, jittered twice as
+    // far (with the foam's edge they drew a hard seam between the pale
+    // water and the unbroken navy; judge).
+    bubbles = fresh * smoothstep(0.0, 0.1 * u_giant_mask.x, behind) *
+              smoothstep(-u_giant_break.z, u_giant_break.z,
+                         giant_break_age(g.w) - passed + 2.0 * ragged);
 #endif
     float coverage = max(max(compressed, cap), face) * g.lambda;
     vec2 at = mix(vec2(g.s0, g.w), u_giant_world + vec2(g.s0, g.w), step(0.0, -g.s0));
@@ -452,8 +460,8 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float texture_trail = max(0.8 * veins, patches);
     // The bubbles the broken crest drove under stay longer than the foam
     // on top, in clouds larger than the web's cells.
-    aerated =
-        trail * g.lambda * u_giant_foam.z * (0.5 + 0.5 * foam_noise(at / 9.0 + vec2(3.1, 6.4)));
+    aerated = bubbles * g.lambda * u_giant_foam.z *
+              (0.2 + 0.8 * smoothstep(0.15, 0.85, foam_noise(at / 9.0 + vec2(3.1, 6.4))));
     coverage = clamp(coverage * u_giant_foam.z, 0.0, 1.0);
     // Even full coverage leaves holes where the lace is thinnest.
     float foam = smoothstep(1.05 - 0.8 * coverage, 1.25 - 0.8 * coverage, lace);
