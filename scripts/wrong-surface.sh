@@ -24,8 +24,8 @@ if (($#)); then
   exec "$tool" "$@"
 fi
 size=${SIZE:-320x180}
-# Frames at 24 fps: giant_wave 100 (shot 1) and 180 (shot 2, low ahead of
-# the boat); voyage 6-8 s (the cut to the crane shot); the low shots beside
+# Frames at 24 fps: giant_wave 100 (shot 1) and 180 (shot 2, at the foot of
+# the face); voyage 6-8 s (the cut to the crane shot); the low shots beside
 # the face at dusk and in daylight as the crest comes on.
 "$tool" --size "$size" timelines/giant_wave.tl 100,180
 "$tool" --size "$size" timelines/voyage.tl 150,180
