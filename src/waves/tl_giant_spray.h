@@ -65,8 +65,9 @@
 #define TL_SPRAY_SPLASH_GROW    1.2
 #define TL_SPRAY_SPLASH_AHEAD   0.6
 /* The landing's whitewater is this much denser than the spindrift: an
- * opaque, churning cloud, not a veil. */
-#define TL_SPRAY_LANDING_GAIN 30.0
+ * opaque, churning cloud, not a veil (at 30, seen against the sky from
+ * the low shot, it read as steam). */
+#define TL_SPRAY_LANDING_GAIN 60.0
 /* The landing's billows (a smoothstep of crossed noises) average about
  * this: what its self-shade takes for the noise. */
 #define TL_SPRAY_LANDING_MEAN 0.47
