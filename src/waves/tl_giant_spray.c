@@ -85,7 +85,9 @@ static double crossing_burst(const tl_giant *g, const tl_giant_hull *hull, doubl
         at[i] = first[i] + k * (last[i] - first[i]);
     *radius = TL_SPRAY_CROSS_RADIUS * hull->length;
     centre[0] = at[0];
-    centre[1] = fmax(at[1], top_y) + 0.25 * *radius;
+    /* A skirt where the hull splits the crest, the bow rising out of it:
+     * centred higher, it veiled the bow. */
+    centre[1] = fmax(at[1], top_y) - 0.1 * *radius;
     centre[2] = at[2];
     return strength;
 }
