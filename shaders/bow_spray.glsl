@@ -91,9 +91,8 @@ float bow_spray_shade(int o, vec3 p)
 // lit as the giant wave's spray is (giant_spray, without the wave's
 // shade): the sun's single scattering in a forward lobe, many times inside
 // where it is dense, both dimmed by the sheet's own shade, and the sky; in
-// steps over the ray's part in the
-// sheet's sphere, each at an offset by a hash of the pixel (a frame is the
-// same alone or in a sequence).
+// steps over the ray's part in the sheet's sphere, each at an offset by a
+// hash of the pixel (a frame is the same alone or in a sequence).
 vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
 {
     vec4 spray = u_objects[o].bow_spray;

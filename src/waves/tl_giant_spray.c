@@ -99,7 +99,9 @@ static double crossing_burst(const tl_giant *g, const tl_giant_hull *hull, doubl
 static void prepare_burst(tl_giant_spray *sp, const tl_giant *g, double amount,
                           const tl_giant_hull *hull)
 {
-    double at_bow[3], at_crest[3], r_bow, r_crest = 0.0, hold;
+    /* Set even where the crossing has none: weighted by 0 it must not be
+     * garbage (0 times NaN is NaN). */
+    double at_bow[3], at_crest[3] = {0.0, 0.0, 0.0}, r_bow, r_crest = 0.0, hold;
     double crest = crossing_burst(g, hull, sp->base, at_crest, &r_crest, &hold);
     double bow = bow_burst(g, hull, at_bow, &r_bow) * (1.0 - hold);
     if (!(bow + crest > 0.0))
