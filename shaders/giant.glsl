@@ -234,17 +234,17 @@ float giant_height(vec2 p)
     return giant_sample(p).height;
 }
 
-// How much of the sky in (unit, upward) direction `sun` a point of the
-// water at camera-relative p and height y sees past the wave's crest: 0
-// where the crest hides it, 1 in the open (tl_giant_clear). The crest is
-// the line across the travel where s0 = 0: at s = bow + lambda·C/k (the
-// curl's push, D(0) = C/k) and lambda·A high. The ray is followed to that
-// line, lambda taken where it crosses it; the edge is soft over a
-// penumbra that widens with the distance (the sun's half degree, and a
-// rounded crest), and by `spread` (radians: the spread of the rays it
-// stands for) times the distance.
-float giant_clear(vec2 p, float y, vec3 sun, float spread)
+// How much of the sun a point of the water at camera-relative p and
+// height y sees past the wave's crest: 0 in its shadow, 1 in the open.
+// The crest is the line across the travel where s0 = 0: at s = bow +
+// lambda·C/k (the curl's push, D(0) = C/k) and lambda·A high. The ray toward the sun
+// is followed to that line, lambda taken where it crosses it; the shadow's
+// edge is soft over a penumbra that widens with the distance (the sun's
+// half degree, and a rounded crest). Light through the crest
+// (giant_scatter) is not shadowed: it is the light that came through.
+float giant_sunlit(vec2 p, float y)
 {
+    vec3 sun = u_sun_dir;
     float flat_len = length(sun.xz);
     vec2 d = u_giant_frame.xy;
     float along = flat_len > 1.0e-4 ? dot(d, sun.xz) / flat_len : 0.0;
@@ -260,20 +260,12 @@ float giant_clear(vec2 p, float y, vec3 sun, float spread)
     float w = sw.y + dist * across;
     float crest_height = abs(w) < u_giant_mask.z ? giant_lambda(w, dl) * A : 0.0;
     float ray_height = y + dist * sun.y / flat_len;
-    float soft = 0.3 + (0.01 + spread) * dist + 0.08 * crest_height;
+    float soft = 0.3 + 0.01 * dist + 0.08 * crest_height;
     // No crest, no shadow: where the width mask has let the crest down to
     // the sea's mean level, the penumbra alone darkened the troughs beside
     // the wave along the whole crest line.
     float shade = 1.0 - smoothstep(-soft, soft, ray_height - crest_height);
     return 1.0 - shade * smoothstep(0.0, TL_GIANT_SHADOW_FADE, crest_height);
-}
-
-// The share of the sun the water at p, y sees past the crest: the
-// crest's shadow (tl_giant_sunlit). Light through the crest
-// (giant_scatter) is not shadowed: it is the light that came through.
-float giant_sunlit(vec2 p, float y)
-{
-    return giant_clear(p, y, u_sun_dir, 0.0);
 }
 
 // Bound on the wave's slope for s within `radius` of `s`.
