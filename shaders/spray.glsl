@@ -127,7 +127,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     vec3 hi = vec3(u_giant_spray_box.y, u_giant_spray_box.w, u_giant_mask.z);
     vec2 box = giant_box_interval(ray, lo, hi, min(dist, TL_FAR));
     float t0 = box.x, t1 = box.y;
-    float step = u_spray_step;
+    float step_len = u_spray_step;
     if (u_giant_spray_bow.w > 0.0) {
         // The sphere the bow's burst reaches.
         vec3 c = u_giant_spray_bow.xyz - vec3(0.0, u_cam_height, 0.0);
@@ -140,7 +140,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
             // The sheet is thin along the heading (0.4 of its radius): a ray
             // through it takes steps of at most a quarter of that, or each
             // pixel's few samples in it scattered it into speckle.
-            step = min(step, 0.1 * u_giant_spray.w);
+            step_len = min(step_len, 0.1 * u_giant_spray.w);
         }
     }
     if (!(t0 < t1))
@@ -149,7 +149,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float g = TL_SPRAY_PHASE_G;
     float phase = (1.0 - g * g) / (4.0 * TL_PI * pow(1.0 + g * g - 2.0 * g * mu, 1.5));
     vec3 sun = sky_sun_light(), ambient = sky_ambient();
-    int steps = clamp(int(ceil((t1 - t0) / step)), TL_SPRAY_STEPS_MIN, TL_SPRAY_STEPS_MAX);
+    int steps = clamp(int(ceil((t1 - t0) / step_len)), TL_SPRAY_STEPS_MIN, TL_SPRAY_STEPS_MAX);
     float dt = (t1 - t0) / float(steps);
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
