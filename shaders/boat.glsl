@@ -7,6 +7,9 @@
 
 uniform sampler2D u_boat_color;      // lit hull, alpha = covered
 uniform sampler2D u_boat_reflection; // the hull mirrored in the water plane, alpha = covered
+#ifdef TL_PASS_AOV
+uniform sampler2D u_boat_surface; // the hull's normal facing the eye, 1 + its object's scene index
+#endif
 uniform sampler2D u_boat_distance; // distance along the view ray, TL_SKY_DEPTH where none
 // The hulls' outlines (tl_mesh_outline, in the objects' uniform block:
 // objects.glsl): half widths at evenly spaced model z, at the waterline
@@ -67,6 +70,10 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
     bool inside = dist < TL_SKY_DEPTH && boat_contains(vec3(0.0, u_cam_height, 0.0) + ray * dist);
     if (hull < dist || inside) {
         dist = hull;
+#ifdef TL_PASS_AOV
+        vec4 surface = texelFetch(u_boat_surface, px, 0);
+        aov_surface(surface.xyz, AOV_OBJECT + int(surface.w + 0.5) - 1);
+#endif
         return texelFetch(u_boat_color, px, 0).rgb;
     }
     return water;

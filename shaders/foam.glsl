@@ -96,6 +96,9 @@ vec3 foam_shade_sky(vec3 color, vec3 n, float foam, float thickness, float sunli
 {
     vec3 sun = sky_sun_light() * sunlit * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / TL_PI;
     float albedo = 0.85 * (0.55 + 0.45 * thickness);
+#ifdef TL_PASS_AOV
+    aov_foam(foam);
+#endif
     return mix(color, albedo * (sky * sky_ambient() + sun), foam * (0.5 + 0.5 * thickness));
 }
 

@@ -52,6 +52,9 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
         vec3 tangent = cos(angle) * vec3(d.x, 0.0, d.y) - vec3(0.0, sin(angle), 0.0);
         n = normalize(n - dh_arc * tangent - dh_w * across);
     }
+#ifdef TL_PASS_AOV
+    aov_surface(dot(n, ray) > 0.0 ? -n : n, AOV_GIANT);
+#endif
     // The water is pulled up the face and over in sheets that do not stay
     // level: the surface is combed along the flow (ridges a metre or so
     // apart across the crest, metres long), which tilts the normal across

@@ -44,6 +44,10 @@ uniform float u_normal_scale, u_occlusion_strength;
 
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_depth;
+// With the compositing passes (a third attachment; dropped without it):
+// the normal facing the eye, and 1 + the object's index in the scene.
+layout(location = 2) out vec4 out_surface;
+uniform int u_scene_object;
 
 void main()
 {
@@ -144,4 +148,5 @@ void main()
         color = vec3(0.0);
     out_color = vec4(max(color, vec3(0.0)), 1.0);
     out_depth = length(v_world - u_eye);
+    out_surface = vec4(n, 1.0 + float(u_scene_object));
 }

@@ -2,6 +2,9 @@
 // marched water below. Writes linear radiance and the distance along the
 // view ray (TL_SKY_DEPTH where nothing is hit).
 #include "uniforms.glsl"
+#ifdef TL_PASS_AOV
+#include "aov.glsl"
+#endif
 #include "waves.glsl"
 #include "sky.glsl"
 #include "optics.glsl"
@@ -147,6 +150,10 @@ vec3 trace(vec3 ray, out float dist)
     under = gap < 0.0;
 #endif
     if (under) {
+#ifdef TL_PASS_AOV
+        g_aov_under = true;
+        g_aov_hit = AOV_OCEAN; // the water body, where the ray meets nothing
+#endif
         vec3 below = trace_underwater(ray, dist);
 #ifdef TL_FEATURE_BOAT
         // The hull under water, seen through the water body.
@@ -200,32 +207,53 @@ void main()
     int good = 0;
     // Depth of a supersampled pixel: the nearest surface any sample saw.
     float depth = TL_SKY_DEPTH;
+#ifdef TL_PASS_AOV
+    aov_begin_pixel();
+#endif
     for (int k = 0; k < max(u_sample_count, 1); k++) {
         int s = u_sample_first + k;
         float dist;
         g_pixel = gl_FragCoord.xy + sample_offset(s);
+#ifdef TL_PASS_AOV
+        aov_begin_sample();
+#endif
         vec3 c = trace(camera_ray(g_pixel), dist);
         // Last guard: no NaN or Inf may reach a pixel. A bad sample is
         // dropped alone, here and across the pixel's other passes
         // (radiance.glsl): one stray sample cannot blacken a pixel.
         if (any(isnan(c)) || any(isinf(c)))
             continue;
+#ifdef TL_PASS_AOV
+        aov_add_sample();
+#endif
         sum += c;
         good++;
         depth = min(depth, dist);
     }
     // Premultiplied (radiance.glsl): alpha is the share of good samples.
     vec4 color = vec4(sum, float(good)) / float(max(u_sample_count, 1));
+#ifdef TL_PASS_AOV
+    aov_write(float(max(u_sample_count, 1)), u_sample_weight);
+#endif
 #else
     // One sample at the pixel's centre, without the loop: around the whole
     // trace it costs llvmpipe a sixth of the frame.
     float depth;
     g_pixel = gl_FragCoord.xy;
+#ifdef TL_PASS_AOV
+    aov_begin_pixel();
+    aov_begin_sample();
+#endif
     vec4 color = vec4(trace(camera_ray(g_pixel), depth), 1.0);
     if (any(isnan(color)) || any(isinf(color))) { // the same last guard
         color = vec4(0.0);
         depth = TL_SKY_DEPTH;
     }
+#ifdef TL_PASS_AOV
+    else
+        aov_add_sample();
+    aov_write(1.0, u_sample_weight);
+#endif
 #endif
     out_color = color * u_sample_weight;
     out_depth = depth;

@@ -50,6 +50,10 @@ vec3 underwater_below(vec3 origin, vec3 ray, bool direct, out float dist)
     float down = origin.y + u_floor_depth; // the camera may be under the floor: none
     if (ray.y < 0.0 && down > 0.0) {
         dist = down / -ray.y;
+#ifdef TL_PASS_AOV
+        if (direct) // the sand, seen along the view (not in a mirrored ray)
+            aov_surface(vec3(0.0, 1.0, 0.0), AOV_OCEAN);
+#endif
         vec3 sand = floor_color(origin + ray * dist, ray, dist, 0.0, direct);
         return sand * optics_water_transmittance(dist) + water_inscatter(depth, ray, dist);
     }
@@ -84,6 +88,13 @@ vec3 trace_underwater(vec3 ray, out float dist)
     n = normalize(vec3(-slope.x, 1.0, -slope.y));
 #else
     vec3 n = water_normal(hit.xz, u_normal_epsilon, t * u_lod_angle, value, slope_var);
+#endif
+#ifdef TL_PASS_AOV
+#ifdef TL_FEATURE_GIANT_WAVE
+    aov_surface(-n, giant.height > TL_GIANT_MATTE_SHARE * u_giant_shape.y ? AOV_GIANT : AOV_OCEAN);
+#else
+    aov_surface(-n, AOV_OCEAN);
+#endif
 #endif
     // Light from above crosses into the water (radiance grows by n²: the
     // sky's hemisphere is squeezed into the window); what does not cross
@@ -137,6 +148,9 @@ vec3 trace_underwater(vec3 ray, out float dist)
         thickness = wake_thickness;
     }
     aerated = max(aerated, wake_aerated);
+#endif
+#ifdef TL_PASS_AOV
+    aov_foam(foam);
 #endif
     surface = mix(surface, (0.5 - 0.3 * thickness) * foam_daylight(sunlit), foam) +
               foam_bubbles(aerated, u_scatter_color, sunlit);

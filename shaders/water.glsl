@@ -162,6 +162,13 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     scatter_sunlit *= mix(1.0, boat_lit, TL_BOAT_SHADOW_SCATTER);
 #endif
     n = water_facing(ray, n);
+#ifdef TL_PASS_AOV
+#ifdef TL_FEATURE_GIANT_WAVE
+    aov_surface(n, giant.height > TL_GIANT_MATTE_SHARE * u_giant_shape.y ? AOV_GIANT : AOV_OCEAN);
+#else
+    aov_surface(n, AOV_OCEAN);
+#endif
+#endif
 
     float fresnel;
     vec3 reflection = water_sky_reflection(ray, n, slope_var, sunlit, fresnel);

@@ -38,6 +38,10 @@ tl_add_test(test_giant SOURCES test_giant.c LIBS tideline_core LABELS unit)
 tl_add_test(test_uniform_list SOURCES test_uniform_list.c LIBS tideline_core
   ARGS ${PROJECT_SOURCE_DIR}/shaders LABELS unit)
 tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl LABELS gl)
+# The compositing passes on the GPU (the hero frame): they leave the image
+# as it was, their covers add up, the mattes agree with the CPU mirror.
+tl_add_test(test_passes_render SOURCES test_passes_render.c LIBS tideline_gl
+  ARGS ${PROJECT_SOURCE_DIR}/timelines LABELS gl)
 tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_lip SOURCES test_giant_lip.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes LABELS unit)
@@ -139,3 +143,10 @@ add_test(NAME test_wrong_surface
   COMMAND sh -c "s=0; $<TARGET_FILE:wrong_surface> --min 0.99 ${CMAKE_CURRENT_SOURCE_DIR}/grazing/dusk_face.tl 96 || s=1; $<TARGET_FILE:wrong_surface> --min 0.99 ${CMAKE_CURRENT_SOURCE_DIR}/grazing/day_face.tl 72,96 || s=1; $<TARGET_FILE:wrong_surface> --min 0.99 --presets final ${CMAKE_CURRENT_SOURCE_DIR}/grazing/dusk_face.tl 104 || s=1; exit $s"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(test_wrong_surface PROPERTIES LABELS gl)
+# The passes in real clients: oiiotool lists the layers and attributes,
+# Blender's Cryptomatte node pulls the boat's and the giant wave's mattes
+# (skipped, 77, without blender or oiiotool).
+add_test(NAME test_blender
+  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/test_blender.sh $<TARGET_FILE:tideline>
+          ${PROJECT_SOURCE_DIR}/timelines ${CMAKE_CURRENT_SOURCE_DIR})
+set_tests_properties(test_blender PROPERTIES LABELS gl SKIP_RETURN_CODE 77)

@@ -88,6 +88,17 @@ static void test_bad_flags(void)
                  png);
     EXPECT_USAGE("--dither: 'maybe' is not on or off", "still", "--dither", "maybe", "-o", png);
     EXPECT_USAGE("no output file", "still");
+    /* The passes: an unknown name lists the valid ones; they are an EXR's
+     * layers, so a PNG alone is refused. */
+    const char *exr = in_dir(1, "x.exr");
+    EXPECT_USAGE("--passes: unknown pass 'vectors' in 'depth,vectors' (passes: combined, depth,",
+                 "still", "--passes", "depth,vectors", "-o", exr);
+    EXPECT_USAGE("cryptomatte, masks (every mask), all, none", "still", "--passes", "mask", "-o",
+                 exr);
+    EXPECT_USAGE("--passes: the passes are layers of an EXR; give -o FILE.exr", "still", "--passes",
+                 "depth", "-o", png);
+    EXPECT_USAGE("--passes: unknown pass 'none' in 'none,depth'", "render", "x.tl", "--passes",
+                 "none,depth", "-o", exr);
 }
 
 /* still --dither off rounds each code, on (the default) takes the code
@@ -227,6 +238,28 @@ static void test_success(void)
     CHECK(run(NULL, "eval", tl, "--at", "0s", "--json", NULL) == 0);
     CHECK_STR_CONTAINS(out_text,
                        "\"giant\": null, \"underwater\": \"no\", \"water\": {\"under_camera\": ");
+    /* The timeline's `passes` line makes a multilayer EXR; --passes none
+     * the plain one. The sky's mask is 1 in the top row, the water's in
+     * the bottom one (the default camera looks at the horizon). */
+    f = fopen(tl, "w");
+    if (f) {
+        fputs("tideline 1\npasses mask_sky mask_water,depth\n", f);
+        fclose(f);
+    }
+    CHECK(run(NULL, "still", tl, "--size", "32x18", "-o", exr, NULL) == 0);
+    int w = 0, h = 0;
+    float *sky = NULL, *water = NULL, *plain = NULL;
+    tl_error err;
+    CHECK(tl_exr_read_channel(exr, "ViewLayer.mask_sky.X", &w, &h, &sky, &err) == 0);
+    CHECK(tl_exr_read_channel(exr, "ViewLayer.mask_water.X", &w, &h, &water, &err) == 0);
+    if (sky && water)
+        CHECK(sky[0] == 1.0f && water[0] == 0.0f && sky[32 * 17] == 0.0f && water[32 * 17] == 1.0f);
+    CHECK(tl_exr_read_channel(exr, "ViewLayer.mask_boat.X", &w, &h, &plain, &err) != 0);
+    CHECK(run(NULL, "still", tl, "--size", "32x18", "--passes", "none", "-o", exr, NULL) == 0);
+    CHECK(tl_exr_read_channel(exr, "R", &w, &h, &plain, &err) == 0);
+    free(sky);
+    free(water);
+    free(plain);
     unlink(tl);
     unlink(png);
     unlink(exr);

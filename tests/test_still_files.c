@@ -36,8 +36,8 @@ int main(void)
     s.time = 7.5;
     tl_frame f = {0};
     CHECK(tl_render_frame(r, &s, &f, &err) == 0);
-    const tl_meta meta[] = {{"tideline/time", TL_META_DOUBLE, NULL, 7.5, 0},
-                            {"tideline/quality", TL_META_STRING, "final", 0, 0}};
+    const tl_meta meta[] = {{"tideline/time", TL_META_DOUBLE, NULL, 7.5, 0, NULL},
+                            {"tideline/quality", TL_META_STRING, "final", 0, 0, NULL}};
     tl_image_options opt = {.meta = meta, .meta_count = 2};
     CHECK(tl_image_write(exr_path, &f, &opt, &err) == 0);
     CHECK(tl_image_write(png_path, &f, &opt, &err) == 0);

@@ -75,8 +75,10 @@ static void reference_drawn(void *ctx, double share)
            share > 0.0 ? frame - spent + after : -1.0);
 }
 
-static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *frame,
-                       tl_error *err)
+/* `planes`: TL_PLANE_DISPLAY, and TL_PLANE_AOV for a preset with the
+ * compositing passes (PRESET+passes). */
+static int render_shot(bench_state *s, int shot, const tl_quality *q, unsigned planes,
+                       tl_frame *frame, tl_error *err)
 {
     const bench_shot *b = &s->shots[shot];
     const tl_bench_timeline *t = &s->timelines[b->timeline];
@@ -85,7 +87,7 @@ static int render_shot(bench_state *s, int shot, const tl_quality *q, tl_frame *
         rc = tl_render_use_cutscene(s->render, t->cutscene, err);
     s->boat_of = rc ? -1 : b->timeline;
     tl_render_settings settings = {
-        .width = s->cfg->width, .height = s->cfg->height, .quality = q, .planes = TL_PLANE_DISPLAY};
+        .width = s->cfg->width, .height = s->cfg->height, .quality = q, .planes = planes};
     if (!rc)
         rc = tl_render_timeline_frame(s->render, &t->cutscene->timeline, b->frame, &settings, frame,
                                       NULL, err);
@@ -160,9 +162,11 @@ static int measure_shot(bench_state *s, const tl_bench_preset *p, int k, int r, 
     report(s, TL_BENCH_MEASURING, p->name, k, r, -1.0, -1.0);
     int rc = tl_render_use_shaders(s->render, &p->lib, err);
     if (!rc)
-        rc = render_shot(s, k, &p->quality, frame, err);
+        rc = render_shot(s, k, &p->quality, TL_PLANE_DISPLAY | (p->aov ? TL_PLANE_AOV : 0u), frame,
+                         err);
     if (!rc)
-        rc = render_shot(s, k, &p->quality, frame, err);
+        rc = render_shot(s, k, &p->quality, TL_PLANE_DISPLAY | (p->aov ? TL_PLANE_AOV : 0u), frame,
+                         err);
     if (rc) {
         tl_error_prefix(err, "%s", p->name); /* which row's shaders or knobs */
         return rc;
@@ -335,7 +339,7 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
         s->drawing_shot = k;
         s->drawing_start = tl_clock_seconds();
         s->drawing_after = timed ? sum / timed * 1e-3 * (s->shot_count - k - 1) : -1.0;
-        rc = render_shot(s, k, &ref, &frame, err);
+        rc = render_shot(s, k, &ref, TL_PLANE_DISPLAY, &frame, err);
         if (rc)
             break;
         memcpy(s->shots[k].reference, frame.display, bytes);

@@ -65,13 +65,16 @@ typedef struct tl_bench_preset {
     char name[TL_BENCH_NAME]; /* as listed: "final:lod=off", "preview@edited" */
     tl_quality quality;
     const char *dir; /* the folder after '@' (in the parsed list), or NULL */
+    int aov;         /* PRESET+passes: drawn with the compositing passes' data, read back */
     tl_shader_lib lib;
 } tl_bench_preset;
 
 /* Splits a preset list (tl_bench_presets.c), in place: each item a
  * preset's name, optionally with knobs changed (`final:refine_steps=2:
  * lod=off`: quality.* channels) and with another folder's shaders
- * (`preview@DIR`). `reference` may not be listed (it is what the others
+ * (`preview@DIR`), and drawn with the compositing passes' data
+ * (`final+passes`: what `--passes` adds to a frame before its file is
+ * written). `reference` may not be listed (it is what the others
  * are measured against). Each preset's lib is left to the caller.
  * Errors (TL_ERR_USAGE) quote the item. */
 int tl_bench_parse_presets(char *list, tl_bench_preset *out, int *count, tl_error *err);

@@ -63,6 +63,11 @@ int tl_bench_parse_presets(char *list, tl_bench_preset *out, int *count, tl_erro
                                     out[*count].name);
             out[*count].dir = at;
         }
+        /* PRESET+passes: with the passes' data. */
+        size_t len = strlen(item), suffix = strlen("+passes");
+        out[*count].aov = len > suffix && strcmp(item + len - suffix, "+passes") == 0;
+        if (out[*count].aov)
+            item[len - suffix] = '\0';
         char *rest = strchr(item, ':');
         if (rest)
             *rest++ = '\0';

@@ -2,6 +2,6 @@
 tl_module(cli
   SOURCES tl_args.c tl_cli_common.c tl_cli_still.c tl_cli_timeline.c tl_cli_render.c
           tl_cli_preview.c tl_cli_compare.c tl_cli_bench.c
-  DEPS bench core cutscene gl_window image job mesh metrics movie prepare render render_window run scene
+  DEPS bench core cutscene gl_window image job mesh metrics movie passes prepare render render_window run scene
        shader timeline waves
   EXTERNAL Threads::Threads)

@@ -43,6 +43,10 @@ void tl_cli_format_duration(double seconds, char *out, size_t size);
  * which the tests use so as not to depend on a slow frame). */
 double tl_cli_progress_delay(void);
 
+/* --passes LIST (`flag` its name) into *passes (TL_PASSES_*): a usage
+ * error naming the unknown pass and listing the valid ones. */
+int tl_cli_passes(const char *flag, const char *value, unsigned *passes, tl_error *err);
+
 /* Prints err as one line (with file:line:col when it has one). */
 void tl_cli_print_error(const char *command, const tl_error *err);
 

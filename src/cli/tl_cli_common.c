@@ -6,8 +6,18 @@
 #include <sys/stat.h>
 
 #include "image/tl_image_io.h"
+#include "passes/tl_passes.h"
 #include "scene/tl_quality.h"
 #include "tl_cli.h"
+
+int tl_cli_passes(const char *flag, const char *value, unsigned *passes, tl_error *err)
+{
+    size_t at, len;
+    if (!tl_passes_parse(value, passes, &at, &len))
+        return TL_OK;
+    return tl_error_set(err, TL_ERR_USAGE, "%s: unknown pass '%.*s' in '%s' (passes: %s)", flag,
+                        (int)len, value + at, value, tl_passes_valid_names());
+}
 
 void tl_cli_print_error(const char *command, const tl_error *err)
 {

@@ -62,6 +62,11 @@ static const char usage[] =
     "                         so smooth skies do not band (default on; off rounds, for\n"
     "                         smaller files and a faster encode)\n"
     "  --exr-compression N    zlib level of EXR's ZIP chunks, 1 (fast) .. 9 (default 4)\n"
+    "  --passes LIST          EXR frames: compositing passes as layers named as Blender\n"
+    "                         names them (combined, depth, normal, position, mask_water,\n"
+    "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
+    "                         cryptomatte; masks, all; none); overrides the timeline's\n"
+    "                         `passes` line (docs/compositing.md)\n"
     "  --writers N            frames encoded and written side by side, 1..8 (default:\n"
     "                         half the processors, at most 8)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
@@ -92,7 +97,9 @@ typedef struct render_options {
     int png_compression; /* 0: the writer's default (fast) */
     int dither;          /* 8-bit PNG and movie frames dithered (default) */
     int exr_compression; /* 0: the writer's default (zlib level 4) */
-    int writers;         /* 0: tl_writer_default_count() */
+    unsigned passes;     /* --passes (TL_PASSES_*), when has_passes */
+    int has_passes;
+    int writers; /* 0: tl_writer_default_count() */
     int skip_existing;
     int quiet, verbose;
 } render_options;
@@ -152,6 +159,9 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
         } else if (tl_args_match(&a, "--writers", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, TL_WRITER_MAX, &o->writers, err)
                          : 0;
+        } else if (tl_args_match(&a, "--passes", NULL, true, err)) {
+            rc = a.value ? tl_cli_passes(a.flag, a.value, &o->passes, err) : 0;
+            o->has_passes = 1;
         } else if (tl_args_match(&a, "--exr-compression", NULL, true, err)) {
             rc = a.value ? tl_args_int_range(a.flag, a.value, 1, 9, &o->exr_compression, err) : 0;
         } else if (tl_args_match(&a, "--dither", NULL, true, err)) {
@@ -303,7 +313,7 @@ int tl_cli_render(int argc, char **argv)
                           "-o %s has no '#' for the frame number, and this run writes %zu "
                           "frames (e.g. -o shot_####.exr)",
                           o.pattern, frames.count);
-    char path[4096];
+    char path[4096] = "";
     if (!rc && o.pattern && frames.count > 0) {
         rc = tl_pattern_format(o.pattern, frames.frames[0], frames.count == 1, path, sizeof path,
                                &err);
@@ -315,6 +325,11 @@ int tl_cli_render(int argc, char **argv)
         if (!rc && tl_image_check_writable(path, &err))
             rc = TL_ERR_USAGE;
     }
+    const unsigned passes = o.has_passes ? o.passes : tl.passes;
+    if (!rc && o.has_passes && passes &&
+        (!o.pattern || tl_image_format_from_path(path) != TL_IMAGE_EXR))
+        rc = tl_error_set(&err, TL_ERR_USAGE,
+                          "--passes: the passes are layers of EXR frames; give -o PATTERN.exr");
     if (!rc && o.movie) {
         rc = tl_cli_make_parent_dirs(o.movie, &err);
         if (!rc && tl_movie_check(o.movie, width, height, &err))
@@ -370,6 +385,7 @@ int tl_cli_render(int argc, char **argv)
                                    .no_dither = !o.dither,
                                    .png_compression = o.png_compression,
                                    .exr_compression = o.exr_compression},
+                         .passes = passes,
                          .skip_existing = o.skip_existing,
                          .writers = o.writers,
                          .stop = &stop_signal,

@@ -10,6 +10,7 @@
 #include "cli/tl_cli.h"
 #include "core/tl_clock.h"
 #include "image/tl_image_io.h"
+#include "passes/tl_passes.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "run/tl_run.h"
@@ -75,6 +76,11 @@ static const char usage[] =
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  --dither on|off        8-bit PNG: dither to the code below or above so smooth\n"
     "                         skies do not band (default on; off rounds)\n"
+    "  --passes LIST          .exr: compositing passes as layers named as Blender\n"
+    "                         names them (combined, depth, normal, position, mask_water,\n"
+    "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
+    "                         cryptomatte; masks, all; none); overrides the timeline's\n"
+    "                         `passes` line (docs/compositing.md)\n"
     "  -v, --verbose          log the GL platform, renderer and timings\n"
     "  -h, --help             show this help\n"
     "Angles accept a 'rad' suffix for radians.\n";
@@ -95,8 +101,14 @@ typedef struct still_options {
     int has_look_at;
     const char *shader_dir;
     int verbose;
-    int spp;    /* 0: the preset's */
-    int dither; /* 8-bit PNGs dithered (default) */
+    int spp;         /* 0: the preset's */
+    int dither;      /* 8-bit PNGs dithered (default) */
+    unsigned passes; /* --passes, or the timeline's `passes` line (TL_PASSES_*) */
+    int has_passes;
+    /* Kept from the timeline for the EXR: its objects' names and fps. */
+    char object_names[TL_OBJECT_MAX][TL_OBJECT_NAME_MAX];
+    int objects;
+    double fps;
 } still_options;
 
 static int parse(int argc, char **argv, still_options *o, int *help, tl_error *err)
@@ -181,6 +193,9 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
             rc = a.value ? TL_OK : TL_ERR_USAGE;
         } else if (tl_args_match(&a, "--dither", NULL, true, err)) {
             rc = a.value ? tl_args_on_off(a.flag, a.value, &o->dither, err) : TL_ERR_USAGE;
+        } else if (tl_args_match(&a, "--passes", NULL, true, err)) {
+            rc = a.value ? tl_cli_passes(a.flag, a.value, &o->passes, err) : TL_ERR_USAGE;
+            o->has_passes = 1;
         } else if (!o->timeline && tl_args_positional(&a, &pos)) {
             o->timeline = pos;
         } else {
@@ -193,6 +208,12 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
         return tl_error_set(err, TL_ERR_USAGE, "no output file: give -o FILE.exr or -o FILE.png");
     if (o->time_text && o->has_frame)
         return tl_error_set(err, TL_ERR_USAGE, "give --time or --frame, not both");
+    int exr = 0;
+    for (int i = 0; i < o->output_count; i++)
+        exr |= tl_image_format_from_path(o->outputs[i]) == TL_IMAGE_EXR;
+    if (o->has_passes && o->passes && !exr)
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "--passes: the passes are layers of an EXR; give -o FILE.exr");
     if (o->has_frame && !o->timeline)
         return tl_error_set(err, TL_ERR_USAGE, "--frame needs a timeline file");
     return TL_OK;
@@ -210,7 +231,16 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
             return -1; /* diagnostics already printed */
         have_timeline = 1;
         fps = tl.fps;
+        if (!o->has_passes)
+            o->passes = tl.passes;
+        for (int k = 0; k < tl.object_count && k < TL_OBJECT_MAX; k++)
+            snprintf(o->object_names[k], sizeof o->object_names[k], "%s", tl.objects[k].name);
+        o->objects = tl.object_count;
+    } else {
+        snprintf(o->object_names[0], sizeof o->object_names[0], "boat");
+        o->objects = 1;
     }
+    o->fps = have_timeline ? fps : 0.0;
     int rc = TL_OK;
     if (o->time_text && tl_parse_time_text(o->time_text, fps, &t, err)) {
         tl_error_prefix(err, "--time");
@@ -318,8 +348,9 @@ int tl_cli_still(int argc, char **argv)
     still_progress progress = {t1, 0.0, tl_cli_progress_delay(), 0};
     if (!rc && isatty(STDERR_FILENO))
         tl_render_set_progress(render, still_progress_update, &progress);
+    const unsigned planes = TL_PLANES_ALL | (tl_passes_need_aov(o.passes) ? TL_PLANE_AOV : 0u);
     if (!rc)
-        rc = tl_render_frame(render, &scene, &frame, &err);
+        rc = tl_render_frame_planes(render, &scene, planes, &frame, &err);
     if (progress.shown)
         fputc('\n', stderr);
     double t2 = tl_clock_seconds();
@@ -338,16 +369,22 @@ int tl_cli_still(int argc, char **argv)
              cam->position[0], cam->position[1], cam->position[2], cam->yaw, cam->pitch, cam->roll,
              cam->vfov);
     tl_meta meta[4 + TL_RUN_QUALITY_META] = {
-        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
-        {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0},
-        {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0},
-        {"tideline/camera", TL_META_STRING, camera_text, 0, 0},
+        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0, NULL},
+        {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0, NULL},
+        {"tideline/timeline", TL_META_STRING, o.timeline ? o.timeline : "", 0, 0, NULL},
+        {"tideline/camera", TL_META_STRING, camera_text, 0, 0, NULL},
     };
     tl_image_options opt = {.no_dither = !o.dither,
                             .meta = meta,
                             .meta_count = 4 + tl_run_quality_meta(&scene.quality, meta + 4)};
+    const char *object[TL_OBJECT_MAX];
+    for (int k = 0; k < o.objects; k++)
+        object[k] = o.object_names[k];
+    const tl_passes_frame info = {o.passes, &scene.camera, object, o.objects, o.fps};
     for (int i = 0; !rc && i < o.output_count; i++) {
-        rc = tl_image_write(o.outputs[i], &frame, &opt, &err);
+        rc = tl_image_format_from_path(o.outputs[i]) == TL_IMAGE_EXR
+                 ? tl_passes_write_frame(o.outputs[i], &frame, &info, &opt, &err)
+                 : tl_image_write(o.outputs[i], &frame, &opt, &err);
         if (!rc && o.verbose)
             fprintf(stderr, "tideline still: wrote %s\n", o.outputs[i]);
     }

@@ -158,6 +158,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_MESH_WET_HIGH %.17g\n"
         "#define TL_MESH_WET_DARKEN %.17g\n"
         "#define TL_OBJECT_MAX %d\n"
+        "#define TL_FRAME_AOV_OBJECTS %d\n"
+        "#define TL_GIANT_MATTE_SHARE %.17g\n"
         "#define TL_CAUSTIC_STEP %.17g\n"
         "#define TL_CAUSTIC_BLUR %.17g\n"
         "#define TL_CAUSTIC_PEAK %.17g\n"
@@ -204,11 +206,12 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_QUALITY_MARCH_RELAX, TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_MIRROR_STREAK,
         TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE,
         TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA,
-        TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_CAUSTIC_STEP,
-        TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK, TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_CREST_REACH,
-        TL_CAUSTIC_SUN_SPREAD, TL_CAUSTIC_FOLD, TL_CAUSTIC_FINE_BLUR, TL_CAUSTIC_FINE_SHARE,
-        TL_CAUSTIC_FINE_GAP, TL_SHAFT_RANGE, TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR,
-        TL_PARTICLE_PERIOD, TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY,
+        TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_FRAME_AOV_OBJECTS,
+        TL_GIANT_MATTE_SHARE, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
+        TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_CREST_REACH, TL_CAUSTIC_SUN_SPREAD, TL_CAUSTIC_FOLD,
+        TL_CAUSTIC_FINE_BLUR, TL_CAUSTIC_FINE_SHARE, TL_CAUSTIC_FINE_GAP, TL_SHAFT_RANGE,
+        TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD,
+        TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY,
         TL_PARTICLE_PIXEL_SPREAD, TL_PARTICLE_MAX_CELLS, TL_PARTICLE_FOCUS, TL_PARTICLE_PUPIL,
         TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
         TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN,
@@ -236,12 +239,13 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
     int fits = tl_renderer_defines(features, defines, sizeof defines) == 0;
     size_t n = strlen(defines);
     int more = snprintf(defines + n, sizeof defines - n,
-                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s",
+                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s%s",
                         key.march_octaves, key.normal_octaves,
                         features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
                         features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "",
                         features & TL_PASS_SKY ? "#define TL_SKY_ONLY 1\n" : "",
-                        features & TL_PASS_MIRROR ? "#define TL_BOAT_MIRROR 1\n" : "");
+                        features & TL_PASS_MIRROR ? "#define TL_BOAT_MIRROR 1\n" : "",
+                        features & TL_PASS_AOV ? "#define TL_PASS_AOV 1\n" : "");
     if (!fits || more < 0 || (size_t)more >= sizeof defines - n) {
         tl_error_set(err, TL_ERR_RUNTIME, "the ocean program's #defines do not fit in %d bytes",
                      TL_DEFINES_SIZE);
@@ -281,14 +285,16 @@ int tl_renderer_target_ensure(target *t, int width, int height, int attachments,
 int tl_renderer_target_ensure_depth(target *t, int width, int height, int attachments,
                                     const GLenum *formats, int depth, tl_error *err)
 {
-    if (t->fbo && t->width == width && t->height == height)
+    if (t->fbo && t->width == width && t->height == height && t->attachments == attachments)
         return TL_OK;
+    if (attachments < 1 || attachments > TL_TARGET_ATTACHMENTS)
+        return tl_error_set(err, TL_ERR_RUNTIME, "a framebuffer of %d attachments", attachments);
     tl_renderer_target_free(t);
     glGenFramebuffers(1, &t->fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
     glGenTextures(attachments, t->tex);
     t->attachments = attachments;
-    GLenum draw[3];
+    GLenum draw[TL_TARGET_ATTACHMENTS];
     for (int i = 0; i < attachments; i++) {
         glBindTexture(GL_TEXTURE_2D, t->tex[i]);
         glTexImage2D(GL_TEXTURE_2D, 0, (GLint)formats[i], width, height, 0,
@@ -350,6 +356,7 @@ void tl_renderer_destroy(tl_renderer *r)
     for (int i = 0; i < r->probe_count; i++)
         glDeleteProgram(r->probes[i].program);
     tl_renderer_target_free(&r->scene);
+    tl_renderer_target_free(&r->aov);
     tl_renderer_target_free(&r->display);
     tl_renderer_target_free(&r->boat);
     tl_renderer_target_free(&r->mirror);
@@ -419,9 +426,12 @@ void tl_renderer_upload_uniforms(GLuint p, const tl_frame_uniforms *u)
 int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
                       tl_error *err)
 {
-    const GLenum scene_formats[2] = {GL_RGBA32F, GL_R32F};
+    const GLenum scene_formats[TL_SCENE_AOV_ATTACHMENTS] = {GL_RGBA32F, GL_R32F,    GL_RGBA32F,
+                                                            GL_RGBA32F, GL_RGBA32F, GL_RGBA32F,
+                                                            GL_RGBA32F, GL_RGBA32F};
     const GLenum display_formats[3] = {GL_RGBA32F, GL_RGBA32F, GL_R32F};
-    int rc = tl_renderer_target_ensure(&r->scene, width, height, 2, scene_formats, err);
+    const int attachments = r->want_aov ? TL_SCENE_AOV_ATTACHMENTS : TL_SCENE_PLAIN_ATTACHMENTS;
+    int rc = tl_renderer_target_ensure(&r->scene, width, height, attachments, scene_formats, err);
     if (!rc)
         rc = tl_renderer_target_ensure(&r->display, out_width, out_height, 3, display_formats, err);
     if (rc)
@@ -432,8 +442,15 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
     const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     glClearBufferfv(GL_COLOR, 1, sky);
+    for (int i = TL_SCENE_PLAIN_ATTACHMENTS; i < attachments; i++)
+        glClearBufferfv(GL_COLOR, i, zero);
     tl_timers_begin_frame(&r->timers);
     return tl_renderer_check("frame setup", err);
+}
+
+void tl_renderer_want_aov(tl_renderer *r, int on)
+{
+    r->want_aov = on != 0;
 }
 
 void tl_renderer_drop_program(GLuint *program)
@@ -686,6 +703,11 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
             lean |= TL_PASS_HINTED;
         features |= TL_PASS_HINTED;
     }
+    /* The passes' data beside the radiance (the prepass has none). */
+    if (tl_renderer_aov_on(r)) {
+        features |= TL_PASS_AOV;
+        lean |= TL_PASS_AOV;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
@@ -695,6 +717,11 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     glEnablei(GL_BLEND, 1);
     glBlendEquationi(0, GL_FUNC_ADD);
     glBlendEquationi(1, GL_MIN);
+    /* The passes' data blend as the radiance does. */
+    for (int i = TL_SCENE_PLAIN_ATTACHMENTS; i < r->scene.attachments; i++) {
+        glEnablei(GL_BLEND, (GLuint)i);
+        glBlendEquationi((GLuint)i, GL_FUNC_ADD);
+    }
     glEnable(GL_SCISSOR_TEST);
     int bands[4][4], has_rect;
     int n = tl_renderer_split(w, h, rect, bands, &has_rect);
@@ -726,8 +753,8 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDisablei(GL_BLEND, 0);
-    glDisablei(GL_BLEND, 1);
+    for (int i = 0; i < r->scene.attachments; i++)
+        glDisablei(GL_BLEND, (GLuint)i);
     glBlendEquation(GL_FUNC_ADD);
     if (rc)
         return rc;

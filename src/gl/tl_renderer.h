@@ -72,6 +72,11 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
  * distance nearest. */
 int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
                       tl_error *err);
+/* Whether the frames begun from now on carry the compositing passes' data
+ * (the normal, the foam, the covers of the sky, the water, the giant wave
+ * and each floating object: tl_frame.h's aov plane), read back with
+ * TL_PLANE_AOV. Off by default: it costs six more float targets' writes. */
+void tl_renderer_want_aov(tl_renderer *r, int on);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsigned planes,
@@ -110,6 +115,8 @@ int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display,
 int tl_renderer_finish_end(tl_renderer *r, tl_frame *frame, tl_error *err);
 /* How many frames wait for their readback, and the oldest one's size. */
 int tl_renderer_queued_size(const tl_renderer *r, int *width, int *height);
+/* The planes the oldest queued frame reads back (0 when none waits). */
+unsigned tl_renderer_queued_planes(const tl_renderer *r);
 /* Seconds the last tl_renderer_finish spent reading the planes back (after
  * waiting for the GPU to finish drawing), or finish_end waiting for and
  * copying them. */

@@ -268,6 +268,8 @@ static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const t
     glClearBufferfv(GL_COLOR, 0, zero);
     if (t->attachments > 1)
         glClearBufferfv(GL_COLOR, 1, sky);
+    if (t->attachments > 2)
+        glClearBufferfv(GL_COLOR, 2, zero);
     glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
     if (mirrored)
         glEnable(GL_CLIP_DISTANCE0);
@@ -287,6 +289,7 @@ static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const t
         glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
         glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_model"), 1, GL_FALSE, pass->model);
         glUniform1i(tl_renderer_loc(program, "u_object"), i);
+        glUniform1i(tl_renderer_loc(program, "u_scene_object"), pass->object);
         glUniform1f(tl_renderer_loc(program, "u_sunlit"), pass->sunlit);
         glUniform1f(tl_renderer_loc(program, "u_lights"), pass->lights);
         draw_elements(g, program);
@@ -390,8 +393,10 @@ static const unsigned MESH_FEATURES[TL_MESH_LIGHT_FEATURES] = {
 
 int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse, tl_error *err)
 {
-    const GLenum formats[2] = {GL_RGBA32F, GL_R32F};
-    int rc = tl_renderer_target_ensure_depth(&r->boat, u->width, u->height, 2, formats, 1, err);
+    /* With the compositing passes the hull's normal and object too. */
+    const GLenum formats[3] = {GL_RGBA32F, GL_R32F, GL_RGBA32F};
+    int rc = tl_renderer_target_ensure_depth(&r->boat, u->width, u->height,
+                                             tl_renderer_aov_on(r) ? 3 : 2, formats, 1, err);
     if (!rc)
         rc = tl_renderer_target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
     if (rc)
@@ -459,6 +464,12 @@ void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned featur
     glUniform1i(tl_renderer_loc(program, "u_boat_color"), TL_UNIT_BOAT_COLOR);
     glUniform1i(tl_renderer_loc(program, "u_boat_distance"), TL_UNIT_BOAT_DISTANCE);
     glUniform1i(tl_renderer_loc(program, "u_boat_reflection"), TL_UNIT_BOAT_REFLECTION);
+    if (features & TL_PASS_AOV) {
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_SURFACE);
+        glBindTexture(GL_TEXTURE_2D, r->boat.tex[2]);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+        glUniform1i(tl_renderer_loc(program, "u_boat_surface"), TL_UNIT_BOAT_SURFACE);
+    }
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, program);
 }

@@ -35,6 +35,17 @@ GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err)
  * flipping GL's bottom-up rows here took as long as the transfer. */
 static void read_plane(const tl_renderer *r, unsigned p, void *dst)
 {
+    if (p == TL_PLANE_AOV) { /* its groups one after another (tl_frame.h) */
+        const size_t group = (size_t)r->aov.width * (size_t)r->aov.height * 4 * sizeof(float);
+        glBindFramebuffer(GL_FRAMEBUFFER, r->aov.fbo);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        for (int i = 0; i < r->aov.attachments; i++) {
+            glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)i);
+            glReadPixels(0, 0, r->aov.width, r->aov.height, GL_RGBA, GL_FLOAT,
+                         (char *)dst + (size_t)i * group);
+        }
+        return;
+    }
     int filtered = p == TL_PLANE_DISPLAY && r->display_filtered;
     glBindFramebuffer(GL_FRAMEBUFFER, filtered ? r->filtered.fbo : r->display.fbo);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + (p == TL_PLANE_COLOR ? 1u : p == TL_PLANE_DEPTH ? 2u : 0u));
@@ -198,6 +209,38 @@ static int upscale_rows(tl_renderer *r, tl_error *err)
     return tl_renderer_check("the upscale's rows", err);
 }
 
+/* The compositing passes' data at the output size, top row first, nearest
+ * (a coverage or a normal is not interpolated): a flipped blit of each of
+ * the scene's attachments past its radiance and distance. */
+static int aov_pass(tl_renderer *r, tl_error *err)
+{
+    if (!tl_renderer_aov_on(r))
+        return tl_error_set(err, TL_ERR_RUNTIME,
+                            "the compositing passes were not drawn (tl_renderer_want_aov)");
+    int w = r->display.width, h = r->display.height;
+    enum { GROUPS = TL_SCENE_AOV_ATTACHMENTS - TL_SCENE_PLAIN_ATTACHMENTS };
+    GLenum formats[GROUPS];
+    for (int i = 0; i < GROUPS; i++)
+        formats[i] = GL_RGBA32F;
+    int rc = tl_renderer_target_ensure(&r->aov, w, h, GROUPS, formats, err);
+    if (rc)
+        return rc;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r->scene.fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r->aov.fbo);
+    for (int i = 0; i < GROUPS; i++) {
+        glReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)(TL_SCENE_PLAIN_ATTACHMENTS + i));
+        glDrawBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)i);
+        glBlitFramebuffer(0, 0, r->scene.width, r->scene.height, 0, h, w, 0, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
+    }
+    GLenum draw[GROUPS];
+    for (int i = 0; i < GROUPS; i++)
+        draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
+    glDrawBuffers(GROUPS, draw);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return tl_renderer_check("the compositing passes' copy", err);
+}
+
 /* The display pass, writing only the planes in `planes` (the display image
  * always: the window shows it). */
 static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned planes,
@@ -253,6 +296,8 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
         rc = filter_pass(r, d->pixel_filter, err);
         tl_timers_stop(&r->timers);
     }
+    if (!rc && (planes & TL_PLANE_AOV))
+        rc = aov_pass(r, err);
     return rc;
 }
 
@@ -297,8 +342,10 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
     double t0 = tl_clock_seconds();
     /* Each plane is a transfer: only the ones asked for.
      * All three come from the display pass, at the output size. */
-    float *dst[3] = {frame->color, frame->depth, frame->display};
-    for (int k = 0; k < 3; k++)
+    if ((planes & TL_PLANE_AOV) && !frame->aov)
+        return tl_error_set(err, TL_ERR_RUNTIME, "the frame has no plane for the passes' data");
+    float *dst[4] = {frame->color, frame->depth, frame->display, frame->aov};
+    for (int k = 0; k < 4; k++)
         if (planes & (1u << k))
             read_plane(r, 1u << k, dst[k]);
     r->readback_seconds = tl_clock_seconds() - t0;
@@ -313,7 +360,10 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
 static size_t plane_bytes(unsigned plane, int w, int h)
 {
     size_t px = (size_t)w * (size_t)h;
-    return px * sizeof(float) * (plane == TL_PLANE_DEPTH ? 1 : 4);
+    return px * sizeof(float) *
+           (plane == TL_PLANE_DEPTH ? 1
+            : plane == TL_PLANE_AOV ? TL_FRAME_AOV_FLOATS
+                                    : 4);
 }
 
 int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display, unsigned planes,
@@ -330,7 +380,7 @@ int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display,
     tl_timers_collect(&r->timers);
     readback_slot *slot = &r->readback[(r->readback_head + r->readback_queued) % TL_READBACK_SLOTS];
     size_t need = 0;
-    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1)
+    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_AOV; p <<= 1)
         if (planes & p)
             need += plane_bytes(p, w, h);
     if (!slot->buffer)
@@ -341,7 +391,7 @@ int tl_renderer_finish_begin(tl_renderer *r, const tl_display_settings *display,
         slot->bytes = need;
     }
     size_t offset = 0;
-    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1) {
+    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_AOV; p <<= 1) {
         if (!(planes & p))
             continue;
         read_plane(r, p, (void *)(uintptr_t)offset);
@@ -366,6 +416,11 @@ int tl_renderer_queued_size(const tl_renderer *r, int *width, int *height)
     return r->readback_queued;
 }
 
+unsigned tl_renderer_queued_planes(const tl_renderer *r)
+{
+    return r->readback_queued ? r->readback[r->readback_head].planes : 0;
+}
+
 int tl_renderer_finish_end(tl_renderer *r, tl_frame *frame, tl_error *err)
 {
     if (!r->readback_queued)
@@ -377,7 +432,7 @@ int tl_renderer_finish_end(tl_renderer *r, tl_frame *frame, tl_error *err)
         return tl_error_set(err, TL_ERR_RUNTIME, "frame buffer size does not match the render");
     double t0 = tl_clock_seconds();
     size_t need = 0;
-    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_DISPLAY; p <<= 1)
+    for (unsigned p = TL_PLANE_COLOR; p <= TL_PLANE_AOV; p <<= 1)
         if (slot->planes & p)
             need += plane_bytes(p, slot->width, slot->height);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, slot->buffer);
@@ -389,12 +444,17 @@ int tl_renderer_finish_end(tl_renderer *r, tl_frame *frame, tl_error *err)
         if (!rc)
             rc = tl_error_set(err, TL_ERR_RUNTIME, "the readback buffer could not be mapped");
     } else {
-        float *dst[3] = {frame->color, frame->depth, frame->display};
+        float *dst[4] = {frame->color, frame->depth, frame->display, frame->aov};
         size_t offset = 0;
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 4; k++) {
             unsigned p = 1u << k;
             if (!(slot->planes & p))
                 continue;
+            if (!dst[k]) {
+                rc = tl_error_set(err, TL_ERR_RUNTIME,
+                                  "the frame has no plane for the passes' data");
+                break;
+            }
             size_t n = plane_bytes(p, slot->width, slot->height);
             memcpy(dst[k], src + offset, n);
             offset += n;

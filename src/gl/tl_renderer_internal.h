@@ -42,6 +42,7 @@ enum {
     TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances, */
     TL_UNIT_BOAT_SHADOW = 6,       /* the objects' shadow maps (the mesh pass's too) */
     TL_UNIT_MESH_MAPS = 7,         /* the mesh pass's maps, 7 to 11 in tl_mesh_map order */
+    TL_UNIT_BOAT_SURFACE = 12,     /* the ocean's with the passes: the hull's normal and object */
     TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
     TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
     TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
@@ -53,13 +54,20 @@ enum {
  * a march prepass level, a pass that starts from a coarser level's
  * distances, the sky alone (the rows above the horizon,
  * tl_frame_uniforms.plan.sky_rows), and the water that can mirror the boat's
- * hull (tl_frame_uniforms.plan.boat_mirror_rect). */
+ * hull (tl_frame_uniforms.plan.boat_mirror_rect), and the compositing
+ * passes' outputs beside the radiance (tl_renderer_want_aov). */
 enum {
     TL_PASS_PREPASS = 1u << 30,
     TL_PASS_HINTED = 1u << 29,
     TL_PASS_SKY = 1u << 28,
-    TL_PASS_MIRROR = 1u << 27
+    TL_PASS_MIRROR = 1u << 27,
+    TL_PASS_AOV = 1u << 26
 };
+/* The scene target's attachments: radiance, distance, and with the
+ * compositing passes the normal and foam, the covers, and the objects'
+ * covers in four (tl_frame.h's aov plane, in that order). */
+#define TL_SCENE_PLAIN_ATTACHMENTS 2
+#define TL_SCENE_AOV_ATTACHMENTS   (TL_SCENE_PLAIN_ATTACHMENTS + TL_FRAME_AOV_FLOATS / 4)
 
 typedef struct cached_program {
     unsigned features;
@@ -69,9 +77,10 @@ typedef struct cached_program {
 
 /* A framebuffer with float colour attachments of one size, and a depth
  * buffer when it is asked for. */
+#define TL_TARGET_ATTACHMENTS 8
 typedef struct target {
     GLuint fbo;
-    GLuint tex[3];
+    GLuint tex[TL_TARGET_ATTACHMENTS];
     GLuint depth; /* renderbuffer, 0 when none */
     int attachments;
     int width, height;
@@ -128,9 +137,11 @@ struct tl_renderer {
     GLuint present_programs[4];
     cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
     int probe_count;
-    target scene;   /* colour RGBA32F + depth R32F */
+    target scene;   /* colour RGBA32F + depth R32F (+ the passes' data, TL_SCENE_AOV_ATTACHMENTS) */
+    int want_aov;   /* the next begin's target carries the passes' data (tl_renderer_want_aov) */
+    target aov;     /* the passes' data at the output size, top row first (finish) */
     target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
-    target boat;    /* the lit hull RGBA32F + its distance R32F + depth */
+    target boat;    /* the lit hull RGBA32F + its distance R32F + depth (+ its normal and object) */
     target mirror;  /* the hull reflected in the water RGBA32F + depth */
     /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
      * render size (tl_renderer_prepass.c). */
@@ -171,6 +182,12 @@ struct tl_renderer {
     tl_renderer_progress_fn progress; /* tl_renderer_set_progress, NULL when off */
     void *progress_ctx;
 };
+
+/* Whether the frame begun last carries the compositing passes' data. */
+static inline int tl_renderer_aov_on(const tl_renderer *r)
+{
+    return r->scene.attachments == TL_SCENE_AOV_ATTACHMENTS;
+}
 
 /* The boat (tl_renderer_boat.c): its passes for the frame (the shadow map,
  * the lit hull, its mirror image); the textures they leave bound for an

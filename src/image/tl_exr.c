@@ -102,12 +102,17 @@ static int64_t exr_size(exr_const_context_t ctxt, void *user)
     return fstat(s->fd, &st) == 0 ? (int64_t)st.st_size : -1;
 }
 
-/* Index of the colour component (R,G,B,A = 0..3) or 4 for Z, -1 otherwise. */
+/* Index of the colour component (R,G,B,A = 0..3) or 4 for Z, -1 otherwise:
+ * a plain file's channels, or Blender's multilayer names for them (a frame
+ * written with passes). */
 static int channel_slot(const char *name)
 {
     static const char *const names[] = {"R", "G", "B", "A", "Z"};
+    static const char *const layered[] = {"ViewLayer.Combined.R", "ViewLayer.Combined.G",
+                                          "ViewLayer.Combined.B", "ViewLayer.Combined.A",
+                                          "ViewLayer.Depth.Z"};
     for (int i = 0; i < 5; i++)
-        if (strcmp(name, names[i]) == 0)
+        if (strcmp(name, names[i]) == 0 || strcmp(name, layered[i]) == 0)
             return i;
     return -1;
 }
@@ -159,37 +164,61 @@ static uint16_t float_to_half(float v)
     return (uint16_t)(sign | h);
 }
 
-/* Converts `rows` rows of the colour plane from row y0 into interleaved RGBA halves. */
-static void pack_half_rows(const tl_frame *frame, int y0, int rows, uint16_t *out)
+/* The channel named `name` of the caller's, or NULL. */
+static const tl_exr_channel *find_channel(const tl_exr_channel *ch, int count, const char *name)
 {
-    size_t n = (size_t)rows * (size_t)frame->width * 4;
-    const float *src = frame->color + (size_t)y0 * (size_t)frame->width * 4;
-    for (size_t i = 0; i < n; i++)
-        out[i] = float_to_half(sanitize_half(src[i]));
+    for (int i = 0; i < count; i++)
+        if (strcmp(ch[i].name, name) == 0)
+            return &ch[i];
+    return NULL;
+}
+
+/* What one file's channels are written from: the caller's list, and per
+ * half channel a buffer of one chunk's halves. */
+typedef struct exr_source {
+    int width, height;
+    const tl_exr_channel *channels;
+    int count;
+    uint16_t **halves; /* per channel: a chunk's halves, or NULL for a float one */
+} exr_source;
+
+/* Converts `rows` rows from row y0 of each half channel into its buffer. */
+static void pack_half_rows(const exr_source *src, int y0, int rows)
+{
+    size_t n = (size_t)rows * (size_t)src->width;
+    for (int c = 0; c < src->count; c++) {
+        if (!src->halves[c])
+            continue;
+        const tl_exr_channel *ch = &src->channels[c];
+        const float *from = ch->data + (size_t)y0 * (size_t)src->width * (size_t)ch->stride;
+        for (size_t i = 0; i < n; i++)
+            src->halves[c][i] = float_to_half(sanitize_half(from[i * (size_t)ch->stride]));
+    }
 }
 
 /* Points the encoder's channels at this chunk's rows. */
-static void bind_encode_channels(exr_encode_pipeline_t *enc, const tl_frame *frame, int y0,
-                                 const uint16_t *halves)
+static void bind_encode_channels(exr_encode_pipeline_t *enc, const exr_source *src, int y0)
 {
-    int w = frame->width;
+    int w = src->width;
     for (int c = 0; c < enc->channel_count; c++) {
         exr_coding_channel_info_t *ch = &enc->channels[c];
-        int slot = channel_slot(ch->channel_name);
-        if (slot == 4) {
-            ch->encode_from_ptr = (const uint8_t *)(frame->depth + (size_t)y0 * (size_t)w);
+        /* Every channel of the header is one of the caller's. */
+        const tl_exr_channel *from = find_channel(src->channels, src->count, ch->channel_name);
+        int k = (int)(from - src->channels);
+        if (src->halves[k]) {
+            ch->encode_from_ptr = (const uint8_t *)src->halves[k];
+            ch->user_data_type = EXR_PIXEL_HALF;
+            ch->user_bytes_per_element = 2;
+            ch->user_pixel_stride = 2;
+            ch->user_line_stride = 2 * w;
+        } else {
+            ch->encode_from_ptr =
+                (const uint8_t *)(from->data + (size_t)y0 * (size_t)w * (size_t)from->stride);
             ch->user_data_type = EXR_PIXEL_FLOAT;
             ch->user_bytes_per_element = 4;
-            ch->user_pixel_stride = 4;
-            ch->user_line_stride = 4 * w;
-            continue;
+            ch->user_pixel_stride = 4 * from->stride;
+            ch->user_line_stride = 4 * from->stride * w;
         }
-        /* Only R, G, B, A and Z exist: the header is ours. */
-        ch->encode_from_ptr = (const uint8_t *)(halves + slot);
-        ch->user_data_type = EXR_PIXEL_HALF;
-        ch->user_bytes_per_element = 2;
-        ch->user_pixel_stride = 4 * 2;
-        ch->user_line_stride = 4 * 2 * w;
     }
 }
 
@@ -213,20 +242,21 @@ static exr_result_t compress_guarded(exr_encode_pipeline_t *enc)
     return r;
 }
 
-static exr_result_t write_chunks(exr_context_t ctx, const tl_frame *frame)
+static exr_result_t write_chunks(exr_context_t ctx, const exr_source *src)
 {
     zip_guard guard = {NULL};
     int32_t lines = 0;
     exr_result_t r = exr_get_scanlines_per_chunk(ctx, 0, &lines);
     if (r != EXR_ERR_SUCCESS)
         return r;
-    uint16_t *halves = malloc((size_t)lines * (size_t)frame->width * 4 * sizeof *halves);
-    if (!halves)
-        return EXR_ERR_OUT_OF_MEMORY;
+    for (int c = 0; c < src->count && r == EXR_ERR_SUCCESS; c++)
+        if (src->channels[c].half &&
+            !(src->halves[c] = malloc((size_t)lines * (size_t)src->width * sizeof(uint16_t))))
+            r = EXR_ERR_OUT_OF_MEMORY;
 
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
     int started = 0;
-    for (int y = 0; y < frame->height && r == EXR_ERR_SUCCESS; y += lines) {
+    for (int y = 0; y < src->height && r == EXR_ERR_SUCCESS; y += lines) {
         exr_chunk_info_t chunk;
         r = exr_write_scanline_chunk_info(ctx, 0, y, &chunk);
         if (r != EXR_ERR_SUCCESS)
@@ -235,8 +265,8 @@ static exr_result_t write_chunks(exr_context_t ctx, const tl_frame *frame)
                     : exr_encoding_initialize(ctx, 0, &chunk, &enc);
         if (r != EXR_ERR_SUCCESS)
             break;
-        pack_half_rows(frame, y, chunk.height, halves);
-        bind_encode_channels(&enc, frame, y, halves);
+        pack_half_rows(src, y, chunk.height);
+        bind_encode_channels(&enc, src, y);
         if (!started) {
             started = 1;
             r = exr_encoding_choose_default_routines(ctx, 0, &enc);
@@ -252,7 +282,10 @@ static exr_result_t write_chunks(exr_context_t ctx, const tl_frame *frame)
     }
     if (started)
         exr_encoding_destroy(ctx, &enc);
-    free(halves);
+    for (int c = 0; c < src->count; c++) {
+        free(src->halves[c]);
+        src->halves[c] = NULL;
+    }
     return r;
 }
 
@@ -270,31 +303,64 @@ static exr_result_t set_meta(exr_context_t ctx, const tl_image_options *opt)
         case TL_META_STRING: r = exr_attr_set_string(ctx, 0, m->name, m->s); break;
         case TL_META_DOUBLE: r = exr_attr_set_double(ctx, 0, m->name, m->d); break;
         case TL_META_INT: r = exr_attr_set_int(ctx, 0, m->name, m->i); break;
+        case TL_META_FLOAT: r = exr_attr_set_float(ctx, 0, m->name, (float)m->d); break;
+        case TL_META_M44F: {
+            exr_attr_m44f_t v;
+            for (int k = 0; k < 16; k++)
+                v.m[k] = (float)m->v[k];
+            r = exr_attr_set_m44f(ctx, 0, m->name, &v);
+            break;
+        }
+        case TL_META_V3D: {
+            exr_attr_v3d_t v = {.arr = {m->v[0], m->v[1], m->v[2]}};
+            r = exr_attr_set_v3d(ctx, 0, m->name, &v);
+            break;
+        }
+        case TL_META_CHROMATICITIES: {
+            const exr_attr_chromaticities_t v = {(float)m->v[0], (float)m->v[1], (float)m->v[2],
+                                                 (float)m->v[3], (float)m->v[4], (float)m->v[5],
+                                                 (float)m->v[6], (float)m->v[7]};
+            r = exr_attr_set_chromaticities(ctx, 0, m->name, &v);
+            break;
+        }
+        case TL_META_RATIONAL: {
+            const exr_attr_rational_t v = {(int32_t)m->v[0], (uint32_t)m->v[1]};
+            r = exr_attr_set_rational(ctx, 0, m->name, &v);
+            break;
+        }
         }
     }
     return r;
 }
 
-static exr_result_t define_header(exr_context_t ctx, const tl_frame *frame,
+/* Colour is perceptually logarithmic, everything else linear (this only
+ * guides lossy codecs): the channels whose last name is R, G or B. */
+static exr_perceptual_treatment_t perceptual(const char *name)
+{
+    const char *dot = strrchr(name, '.');
+    const char *last = dot ? dot + 1 : name;
+    return strcmp(last, "R") == 0 || strcmp(last, "G") == 0 || strcmp(last, "B") == 0
+               ? EXR_PERCEPTUALLY_LOGARITHMIC
+               : EXR_PERCEPTUALLY_LINEAR;
+}
+
+static exr_result_t define_header(exr_context_t ctx, const exr_source *src,
                                   const tl_image_options *opt, int level)
 {
     int part = 0;
     exr_result_t r = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
     if (r == EXR_ERR_SUCCESS)
-        r = exr_initialize_required_attr_simple(ctx, part, frame->width, frame->height,
+        r = exr_initialize_required_attr_simple(ctx, part, src->width, src->height,
                                                 EXR_COMPRESSION_ZIP);
-    /* Colour is perceptually logarithmic, alpha and depth linear (this only
-     * guides lossy codecs). */
-    if (r == EXR_ERR_SUCCESS)
-        r = exr_add_channel(ctx, part, "A", EXR_PIXEL_HALF, EXR_PERCEPTUALLY_LINEAR, 1, 1);
-    if (r == EXR_ERR_SUCCESS)
-        r = exr_add_channel(ctx, part, "B", EXR_PIXEL_HALF, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
-    if (r == EXR_ERR_SUCCESS)
-        r = exr_add_channel(ctx, part, "G", EXR_PIXEL_HALF, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
-    if (r == EXR_ERR_SUCCESS)
-        r = exr_add_channel(ctx, part, "R", EXR_PIXEL_HALF, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
-    if (r == EXR_ERR_SUCCESS)
-        r = exr_add_channel(ctx, part, "Z", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1);
+    /* Channel names over 31 bytes need the long-name flag too. */
+    for (int c = 0; c < src->count && r == EXR_ERR_SUCCESS; c++)
+        if (strlen(src->channels[c].name) > 31)
+            r = exr_set_longname_support(ctx, 1);
+    for (int c = 0; c < src->count && r == EXR_ERR_SUCCESS; c++) {
+        const tl_exr_channel *ch = &src->channels[c];
+        r = exr_add_channel(ctx, part, ch->name, ch->half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT,
+                            perceptual(ch->name), 1, 1);
+    }
     if (r == EXR_ERR_SUCCESS)
         r = exr_set_zip_compression_level(ctx, part, level);
     if (r == EXR_ERR_SUCCESS)
@@ -302,11 +368,20 @@ static exr_result_t define_header(exr_context_t ctx, const tl_frame *frame,
     return r;
 }
 
-int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
-                 tl_error *err)
+int tl_exr_write_channels(const char *path, int width, int height, const tl_exr_channel *channels,
+                          int count, const tl_image_options *opt, tl_error *err)
 {
-    if (!frame || frame->width <= 0 || frame->height <= 0 || !frame->color || !frame->depth)
+    if (width <= 0 || height <= 0 || !channels || count < 1 || count > TL_EXR_CHANNELS_MAX)
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: no frame to write", path);
+    for (int c = 0; c < count; c++) {
+        const tl_exr_channel *ch = &channels[c];
+        if (!ch->name || !ch->name[0] || strlen(ch->name) > 255 || !ch->data || ch->stride < 1)
+            return tl_error_set(err, TL_ERR_RUNTIME, "%s: channel %d has no name or no data", path,
+                                c);
+        if (find_channel(channels, c, ch->name))
+            return tl_error_set(err, TL_ERR_RUNTIME, "%s: two channels are named '%s'", path,
+                                ch->name);
+    }
     int level = opt && opt->exr_compression ? opt->exr_compression : TL_EXR_COMPRESSION_DEFAULT;
     if (level < 1 || level > 9)
         return tl_error_set(err, TL_ERR_USAGE, "%s: EXR compression must be 1..9, not %d", path,
@@ -314,6 +389,8 @@ int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options
     int rc = tl_image_check_meta(path, opt, err);
     if (rc)
         return rc;
+    uint16_t *halves[TL_EXR_CHANNELS_MAX] = {NULL};
+    exr_source src = {width, height, channels, count, halves};
     tl_atomic_file file;
     rc = tl_atomic_open(&file, path, err);
     if (rc)
@@ -331,11 +408,11 @@ int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options
     exr_context_t ctx = NULL;
     exr_result_t r = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (r == EXR_ERR_SUCCESS)
-        r = define_header(ctx, frame, opt, level);
+        r = define_header(ctx, &src, opt, level);
     if (r == EXR_ERR_SUCCESS)
         r = exr_write_header(ctx);
     if (r == EXR_ERR_SUCCESS)
-        r = write_chunks(ctx, frame);
+        r = write_chunks(ctx, &src);
     if (ctx) {
         exr_result_t fr = exr_finish(&ctx);
         if (r == EXR_ERR_SUCCESS)
@@ -347,6 +424,18 @@ int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options
                             exr_reason(&stream, r));
     }
     return tl_atomic_commit(&file, err);
+}
+
+int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
+                 tl_error *err)
+{
+    if (!frame || frame->width <= 0 || frame->height <= 0 || !frame->color || !frame->depth)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: no frame to write", path);
+    const tl_exr_channel channels[5] = {
+        {"R", 1, frame->color + 0, 4}, {"G", 1, frame->color + 1, 4}, {"B", 1, frame->color + 2, 4},
+        {"A", 1, frame->color + 3, 4}, {"Z", 0, frame->depth, 1},
+    };
+    return tl_exr_write_channels(path, frame->width, frame->height, channels, 5, opt, err);
 }
 
 /* ---- reading ---------------------------------------------------------- */
@@ -527,6 +616,99 @@ int tl_exr_read(const char *path, tl_frame *frame, tl_error *err)
     rc = read_image(path, &rd, frame, err);
     exr_close_read(&rd);
     return rc;
+}
+
+/* The decoder's channels pointed at the rows of `row` of channel `name`
+ * alone (as floats in `out`, `w` wide); the others skipped. */
+static void bind_one_channel(exr_decode_pipeline_t *dec, const char *name, float *out, int w,
+                             int row)
+{
+    for (int c = 0; c < dec->channel_count; c++) {
+        exr_coding_channel_info_t *ch = &dec->channels[c];
+        if (strcmp(ch->channel_name, name) != 0) {
+            ch->decode_to_ptr = NULL;
+            continue;
+        }
+        ch->decode_to_ptr = (uint8_t *)(out + (size_t)row * (size_t)w);
+        ch->user_data_type = EXR_PIXEL_FLOAT;
+        ch->user_bytes_per_element = 4;
+        ch->user_pixel_stride = 4;
+        ch->user_line_stride = 4 * w;
+    }
+}
+
+int tl_exr_read_channel(const char *path, const char *name, int *width, int *height, float **out,
+                        tl_error *err)
+{
+    *out = NULL;
+    exr_reader rd;
+    int rc = exr_open_read(path, &rd, err);
+    if (rc)
+        return rc;
+    exr_attr_box2i_t dw;
+    const exr_attr_chlist_t *list = NULL;
+    exr_storage_t storage;
+    exr_result_t r = exr_get_storage(rd.ctx, 0, &storage);
+    if (r == EXR_ERR_SUCCESS && storage != EXR_STORAGE_SCANLINE)
+        r = EXR_ERR_INVALID_ARGUMENT;
+    if (r == EXR_ERR_SUCCESS)
+        r = exr_get_data_window(rd.ctx, 0, &dw);
+    if (r == EXR_ERR_SUCCESS)
+        r = exr_get_channels(rd.ctx, 0, &list);
+    int found = 0;
+    for (int i = 0; r == EXR_ERR_SUCCESS && i < list->num_channels; i++)
+        found |= strcmp(list->entries[i].name.str, name) == 0 && list->entries[i].x_sampling == 1 &&
+                 list->entries[i].y_sampling == 1;
+    int64_t w = r == EXR_ERR_SUCCESS ? (int64_t)dw.max.x - dw.min.x + 1 : 0,
+            h = r == EXR_ERR_SUCCESS ? (int64_t)dw.max.y - dw.min.y + 1 : 0;
+    if (r != EXR_ERR_SUCCESS)
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: cannot read its header: %s", path,
+                          exr_reason(NULL, r));
+    else if (!found)
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: no channel '%s'", path, name);
+    else if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: invalid data window", path);
+    float *data = rc ? NULL : calloc((size_t)w * (size_t)h, sizeof *data);
+    if (!rc && !data)
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory", path);
+    int32_t lines = 0;
+    if (!rc && (exr_get_scanlines_per_chunk(rd.ctx, 0, &lines) != EXR_ERR_SUCCESS || lines <= 0))
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: bad chunks", path);
+    exr_decode_pipeline_t dec = EXR_DECODE_PIPELINE_INITIALIZER;
+    int started = 0;
+    for (int64_t y = dw.min.y; !rc && y <= dw.max.y; y += lines) {
+        exr_chunk_info_t chunk;
+        r = exr_read_scanline_chunk_info(rd.ctx, 0, (int)y, &chunk);
+        if (r == EXR_ERR_SUCCESS)
+            r = started ? exr_decoding_update(rd.ctx, 0, &chunk, &dec)
+                        : exr_decoding_initialize(rd.ctx, 0, &chunk, &dec);
+        int row = chunk.start_y - dw.min.y;
+        if (r == EXR_ERR_SUCCESS && (row < 0 || row + chunk.height > h))
+            r = EXR_ERR_CORRUPT_CHUNK;
+        if (r == EXR_ERR_SUCCESS) {
+            bind_one_channel(&dec, name, data, (int)w, row);
+            if (!started) {
+                started = 1;
+                r = exr_decoding_choose_default_routines(rd.ctx, 0, &dec);
+            }
+        }
+        if (r == EXR_ERR_SUCCESS)
+            r = exr_decoding_run(rd.ctx, 0, &dec);
+        if (r != EXR_ERR_SUCCESS)
+            rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: cannot read channel '%s': %s", path, name,
+                              exr_reason(&rd.stream, r));
+    }
+    if (started)
+        exr_decoding_destroy(rd.ctx, &dec);
+    exr_close_read(&rd);
+    if (rc) {
+        free(data);
+        return rc;
+    }
+    *out = data;
+    *width = (int)w;
+    *height = (int)h;
+    return TL_OK;
 }
 
 /* Finds attribute `name` in part 0 of an open file. */

@@ -27,7 +27,20 @@ void tl_frame_free(tl_frame *frame)
     free(frame->color);
     free(frame->depth);
     free(frame->display);
+    free(frame->aov);
     memset(frame, 0, sizeof *frame);
+}
+
+int tl_frame_alloc_aov(tl_frame *frame, tl_error *err)
+{
+    if (frame->aov)
+        return TL_OK;
+    size_t pixels = (size_t)frame->width * (size_t)frame->height;
+    frame->aov = calloc(pixels * TL_FRAME_AOV_FLOATS, sizeof(float));
+    if (!frame->aov)
+        return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for a %dx%d frame's passes",
+                            frame->width, frame->height);
+    return TL_OK;
 }
 
 /* The dither of pixel (x, y): three uniform noises in [0, 1) codes, bytes

@@ -18,18 +18,40 @@ enum {
     TL_PLANE_DEPTH = 1u << 1,   /* EXR */
     TL_PLANE_DISPLAY = 1u << 2, /* PNG, movies, metrics */
     TL_PLANES_ALL = 7u,
+    /* The compositing passes' data (EXR with --passes): read back only
+     * into a frame with an `aov` plane, and never part of TL_PLANES_ALL. */
+    TL_PLANE_AOV = 1u << 3,
 };
+
+/* The `aov` plane: per pixel, the mean over the pixel's samples of what
+ * each saw, TL_FRAME_AOV_FLOATS values (src/passes turns them into an
+ * EXR's layers). They come in groups of four, each a plane of its own
+ * (value c of group g at aov[((size_t)g * width * height + pixel) * 4 + c],
+ * rows top first), in this order:
+ *   0-2  the normal of the surface hit, world axes, facing the eye (0 for
+ *        the sky), 3 the foam's cover there;
+ *   4-7  the share of samples that saw the sky, the ocean, the giant wave,
+ *        and that were under the water;
+ *   8-   the share that saw each floating object, by its index in the
+ *        scene (TL_FRAME_AOV_OBJECTS of them: the scene's most). */
+#define TL_FRAME_AOV_OBJECTS 16
+#define TL_FRAME_AOV_OBJECT0 8
+#define TL_FRAME_AOV_FLOATS  (TL_FRAME_AOV_OBJECT0 + TL_FRAME_AOV_OBJECTS)
 
 typedef struct tl_frame {
     int width, height;
     float *color;   /* width*height*4: linear scene-referred RGBA */
     float *depth;   /* width*height: distance along the view ray, metres */
     float *display; /* width*height*4: tonemapped, sRGB-encoded RGBA in [0,1] */
+    float *aov;     /* width*height*TL_FRAME_AOV_FLOATS, or NULL (tl_frame_alloc_aov) */
 } tl_frame;
 
 /* Allocates all three planes, zero-filled. */
 int tl_frame_alloc(tl_frame *frame, int width, int height, tl_error *err);
 void tl_frame_free(tl_frame *frame);
+/* Adds the `aov` plane, zero-filled, to an allocated frame (nothing when
+ * it has one). */
+int tl_frame_alloc_aov(tl_frame *frame, tl_error *err);
 
 /* Row y of the display plane as 8-bit RGB codes (3 bytes a pixel), for
  * 8-bit PNGs and movies. Dithered, so that a smooth sky does not band into

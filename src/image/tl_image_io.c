@@ -85,6 +85,17 @@ int tl_image_check_writable(const char *path, tl_error *err)
     return TL_OK;
 }
 
+int tl_meta_values(tl_meta_type type)
+{
+    switch (type) {
+    case TL_META_M44F: return 16;
+    case TL_META_V3D: return 3;
+    case TL_META_CHROMATICITIES: return 8;
+    case TL_META_RATIONAL: return 2;
+    default: return 0;
+    }
+}
+
 int tl_image_check_meta(const char *path, const tl_image_options *opt, tl_error *err)
 {
     int n = opt && opt->meta ? opt->meta_count : 0;
@@ -94,8 +105,11 @@ int tl_image_check_meta(const char *path, const tl_image_options *opt, tl_error 
         if (!m->name || !m->name[0] || strlen(m->name) > 255)
             return tl_error_set(err, TL_ERR_RUNTIME, "%s: metadata entry %d has no valid name",
                                 path, i);
-        if (m->type != TL_META_STRING && m->type != TL_META_DOUBLE && m->type != TL_META_INT)
+        if ((int)m->type < TL_META_STRING || m->type > TL_META_RATIONAL)
             return tl_error_set(err, TL_ERR_RUNTIME, "%s: metadata '%s' has an unknown type", path,
+                                m->name);
+        if (tl_meta_values(m->type) && !m->v)
+            return tl_error_set(err, TL_ERR_RUNTIME, "%s: metadata '%s' has no values", path,
                                 m->name);
         if (m->type == TL_META_STRING && !m->s)
             return tl_error_set(err, TL_ERR_RUNTIME, "%s: metadata '%s' has no string value", path,

@@ -23,16 +23,29 @@ typedef enum tl_image_format {
     TL_IMAGE_PNG,
 } tl_image_format;
 
-typedef enum tl_meta_type { TL_META_STRING, TL_META_DOUBLE, TL_META_INT } tl_meta_type;
+typedef enum tl_meta_type {
+    TL_META_STRING,
+    TL_META_DOUBLE,
+    TL_META_INT,
+    TL_META_FLOAT,          /* d, stored as a 32-bit float */
+    TL_META_M44F,           /* v[16], row-major as Imath's M44f (v * M) */
+    TL_META_V3D,            /* v[3] */
+    TL_META_CHROMATICITIES, /* v[8]: red, green, blue, white x y */
+    TL_META_RATIONAL,       /* v[2]: numerator, denominator (integers) */
+} tl_meta_type;
+
+/* How many values `v` holds for a type (0 for the scalar ones). */
+int tl_meta_values(tl_meta_type type);
 
 /* One EXR header attribute. PNG writes strings as tEXt chunks, numbers
- * printed with %.17g. */
+ * printed with %.17g (several separated by spaces). */
 typedef struct tl_meta {
     const char *name; /* e.g. "tideline/frame" */
     tl_meta_type type;
     const char *s;
     double d;
     int i;
+    const double *v; /* the values of the types that hold several */
 } tl_meta;
 
 /* zlib level of PNGs when the options leave it 0: fast. Level 1 encodes
@@ -74,13 +87,39 @@ int tl_image_write(const char *path, const tl_frame *frame, const tl_image_optio
 
 int tl_exr_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
                  tl_error *err);
+
+/* One channel of an EXR written by tl_exr_write_channels: its full name
+ * ("ViewLayer.Combined.R"), stored as half or 32-bit float, from `data`:
+ * the top-left pixel's value, `stride` floats from one pixel to the next,
+ * rows one after another. Halves are saturated as tl_exr_write's colour
+ * (NaN 0, beyond the half range its largest finite value). */
+typedef struct tl_exr_channel {
+    const char *name;
+    int half;
+    const float *data;
+    int stride;
+} tl_exr_channel;
+
+/* Writes any set of channels (1 .. TL_EXR_CHANNELS_MAX, distinct names)
+ * of width x height atomically, with opt's compression and metadata. */
+#define TL_EXR_CHANNELS_MAX 256
+int tl_exr_write_channels(const char *path, int width, int height, const tl_exr_channel *channels,
+                          int count, const tl_image_options *opt, tl_error *err);
 int tl_png_write(const char *path, const tl_frame *frame, const tl_image_options *opt,
                  tl_error *err);
 
 /* Reads an EXR written by tl_exr_write into a freshly allocated frame
  * (color and depth filled; display left zero). Any scanline EXR with
- * R,G,B[,A] (half or float) and optional Z is accepted. */
+ * R,G,B[,A] (half or float) and optional Z is accepted, or the same as
+ * Blender's multilayer names them (ViewLayer.Combined.R .. A,
+ * ViewLayer.Depth.Z: tideline's frames with passes). */
 int tl_exr_read(const char *path, tl_frame *frame, tl_error *err);
+
+/* Reads channel `name` of an EXR (half or float) into a freshly
+ * malloc'd *out of *width x *height floats, rows top first (tests, and a
+ * compositor's view of the passes). */
+int tl_exr_read_channel(const char *path, const char *name, int *width, int *height, float **out,
+                        tl_error *err);
 
 /* Reads one string/double/int attribute from an EXR header (tests). */
 int tl_exr_read_attr_string(const char *path, const char *name, char *out, int out_size,

@@ -168,7 +168,7 @@ static int make_text(const tl_image_options *opt, png_text **text_out, char **nu
     *numbers_out = NULL;
     if (n <= 0)
         return 0;
-    enum { NUM_LEN = 32 };
+    enum { NUM_LEN = 16 * 26 };
     png_text *text = calloc((size_t)n, sizeof *text);
     char *numbers = calloc((size_t)n, NUM_LEN);
     if (!text || !numbers) {
@@ -179,10 +179,12 @@ static int make_text(const tl_image_options *opt, png_text **text_out, char **nu
     for (int i = 0; i < n; i++) {
         const tl_meta *m = &opt->meta[i];
         char *num = numbers + (size_t)i * NUM_LEN;
-        if (m->type == TL_META_DOUBLE)
+        if (m->type == TL_META_DOUBLE || m->type == TL_META_FLOAT)
             snprintf(num, NUM_LEN, "%.17g", m->d);
         else if (m->type == TL_META_INT)
             snprintf(num, NUM_LEN, "%d", m->i);
+        for (int k = 0, at = 0; k < tl_meta_values(m->type) && at < NUM_LEN; k++)
+            at += snprintf(num + at, (size_t)(NUM_LEN - at), "%s%.9g", k ? " " : "", m->v[k]);
         text[i].compression = PNG_TEXT_COMPRESSION_NONE;
         /* libpng's png_text is not const-correct; it only reads these. */
         text[i].key = (png_charp)m->name;

@@ -43,9 +43,11 @@ int tl_pattern_format(const char *pattern, long frame, int single_frame, char *o
                       tl_error *err);
 
 /* Resuming a run (--skip-existing): 1 when `path` holds a complete,
- * readable frame of width x height (a file cut short or of another size
- * is rendered again). */
-int tl_job_frame_complete(const char *path, int width, int height);
+ * readable frame of width x height and, for an EXR, the run's compositing
+ * passes (`passes`: its tideline/passes attribute, tl_passes_format's
+ * names; NULL or "" for the plain file). A file cut short, of another size
+ * or with other passes is rendered again. */
+int tl_job_frame_complete(const char *path, int width, int height, const char *passes);
 /* A process killed mid-write (SIGKILL, a node lost) leaves its hidden
  * temporary behind: removes those of `frames` (named by `pattern`, in the
  * folder of `first_path`) that no live writer holds, so that a resumed run

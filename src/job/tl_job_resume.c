@@ -8,7 +8,7 @@
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
 
-int tl_job_frame_complete(const char *path, int width, int height)
+int tl_job_frame_complete(const char *path, int width, int height, const char *passes)
 {
     if (access(path, R_OK) != 0)
         return 0;
@@ -18,6 +18,11 @@ int tl_job_frame_complete(const char *path, int width, int height)
                                                              : tl_png_read(path, &f, NULL, &err);
     int ok = rc == TL_OK && f.width == width && f.height == height;
     tl_frame_free(&f);
+    if (ok && tl_image_format_from_path(path) == TL_IMAGE_EXR) {
+        char got[256];
+        int layered = tl_exr_read_attr_string(path, "tideline/passes", got, sizeof got, &err) == 0;
+        ok = passes && passes[0] ? layered && strcmp(got, passes) == 0 : !layered;
+    }
     return ok;
 }
 

@@ -132,12 +132,17 @@ static const tl_waves *waves_for(tl_render *r, const tl_ocean *ocean)
     return &r->waves;
 }
 
-static int ensure_frame(tl_frame *frame, int width, int height, tl_error *err)
+/* `frame` at the size, with a plane for the passes' data when `planes`
+ * reads them back. */
+static int ensure_frame(tl_frame *frame, int width, int height, unsigned planes, tl_error *err)
 {
-    if (frame->width == width && frame->height == height && frame->color)
-        return TL_OK;
-    tl_frame_free(frame);
-    return tl_frame_alloc(frame, width, height, err);
+    if (frame->width != width || frame->height != height || !frame->color) {
+        tl_frame_free(frame);
+        int rc = tl_frame_alloc(frame, width, height, err);
+        if (rc)
+            return rc;
+    }
+    return (planes & TL_PLANE_AOV) ? tl_frame_alloc_aov(frame, err) : TL_OK;
 }
 
 /* One (sub-)frame's passes. With the boat in view and several samples a
@@ -173,11 +178,18 @@ int tl_render_prepare_sky(tl_renderer *renderer, const tl_scene *scene, tl_sky_l
 
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err)
 {
+    return tl_render_frame_planes(r, scene, TL_PLANES_ALL, frame, err);
+}
+
+int tl_render_frame_planes(tl_render *r, const tl_scene *scene, unsigned planes, tl_frame *frame,
+                           tl_error *err)
+{
     int rc = tl_scene_validate(scene, err);
     if (!rc)
-        rc = ensure_frame(frame, scene->width, scene->height, err);
+        rc = ensure_frame(frame, scene->width, scene->height, planes, err);
     if (rc)
         return rc;
+    tl_renderer_want_aov(r->renderer, (planes & TL_PLANE_AOV) != 0);
     tl_frame_uniforms u;
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
@@ -189,8 +201,8 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
         rc = accumulate(r, &u, 1.0f, 1, err);
     if (!rc)
         rc = tl_renderer_finish(r->renderer,
-                                &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
-                                TL_PLANES_ALL, frame, err);
+                                &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter}, planes,
+                                frame, err);
     return rc;
 }
 
@@ -243,9 +255,10 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     tl_render_frame_scene(tl, t, settings, scene);
     int rc = tl_scene_validate(scene, err);
     if (!rc && out)
-        rc = ensure_frame(out, scene->width, scene->height, err);
+        rc = ensure_frame(out, scene->width, scene->height, settings->planes, err);
     int rw, rh;
     tl_prepare_render_size(scene, &rw, &rh);
+    tl_renderer_want_aov(r->renderer, (settings->planes & TL_PLANE_AOV) != 0);
     if (!rc)
         rc = tl_renderer_begin(r->renderer, rw, rh, scene->width, scene->height, err);
     if (rc)
@@ -321,7 +334,7 @@ int tl_render_collect(tl_render *r, tl_frame *out, tl_error *err)
     int w, h;
     if (!tl_renderer_queued_size(r->renderer, &w, &h))
         return tl_error_set(err, TL_ERR_RUNTIME, "no frame is queued");
-    int rc = ensure_frame(out, w, h, err);
+    int rc = ensure_frame(out, w, h, tl_renderer_queued_planes(r->renderer), err);
     if (rc) {
         tl_frame dummy = {0}; /* the queue moves on all the same */
         tl_renderer_finish_end(r->renderer, &dummy, &(tl_error){0});
@@ -342,9 +355,10 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     tl_render_frame_scene(tl, tl_timeline_frame_time(tl, frame), &pass, &scene);
     int rc = tl_scene_validate(&scene, err);
     if (!rc && out)
-        rc = ensure_frame(out, scene.width, scene.height, err);
+        rc = ensure_frame(out, scene.width, scene.height, 0, err);
     int rw, rh;
     tl_prepare_render_size(&scene, &rw, &rh);
+    tl_renderer_want_aov(r->renderer, 0); /* the preview's: no passes */
     if (!rc && sample == 0)
         rc = tl_renderer_begin(r->renderer, rw, rh, scene.width, scene.height, err);
     progress_begin(r, 0.0); /* the preview's refinement: a sample a call */

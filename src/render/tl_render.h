@@ -54,6 +54,10 @@ void tl_render_set_progress(tl_render *r, tl_render_progress_fn fn, void *ctx);
 
 /* Renders `scene` into `frame`, (re)allocating it to the scene's size. */
 int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_error *err);
+/* The same, reading back `planes` (TL_PLANE_*; with TL_PLANE_AOV the
+ * frame gets its aov plane and the passes' data are drawn). */
+int tl_render_frame_planes(tl_render *r, const tl_scene *scene, unsigned planes, tl_frame *frame,
+                           tl_error *err);
 
 /* The physical sky of a prepared frame, in the order its data flows: the
  * scene's atmosphere into the tables in `luts` (tl_prepare_sky_tables),

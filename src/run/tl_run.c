@@ -8,34 +8,35 @@
 
 #include "core/tl_clock.h"
 #include "job/tl_writer.h"
+#include "passes/tl_passes.h"
 
 int tl_run_quality_meta(const tl_quality *q, tl_meta *out)
 {
     const tl_meta m[TL_RUN_QUALITY_META] = {
-        {"tideline/quality", TL_META_STRING, q->name, 0, 0},
-        {"tideline/spp", TL_META_INT, NULL, 0, q->spp},
-        {"tideline/march_octaves", TL_META_INT, NULL, 0, q->march_octaves},
-        {"tideline/normal_octaves", TL_META_INT, NULL, 0, q->normal_octaves},
-        {"tideline/march_steps", TL_META_INT, NULL, 0, q->march_steps},
-        {"tideline/hit_epsilon", TL_META_DOUBLE, NULL, q->hit_epsilon, 0},
-        {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0},
-        {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations},
-        {"tideline/spray_step", TL_META_DOUBLE, NULL, q->spray_step, 0},
-        {"tideline/shaft_steps", TL_META_INT, NULL, 0, q->shaft_steps},
-        {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps},
-        {"tideline/polish", TL_META_INT, NULL, 0, q->polish},
-        {"tideline/lod", TL_META_INT, NULL, 0, q->lod},
-        {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals},
-        {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading},
-        {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0},
-        {"tideline/pixel_filter", TL_META_DOUBLE, NULL, q->pixel_filter, 0},
-        {"tideline/march_relax", TL_META_DOUBLE, NULL, q->march_relax, 0},
-        {"tideline/march_prepass", TL_META_INT, NULL, 0, q->march_prepass},
-        {"tideline/prepass_budget", TL_META_INT, NULL, 0, q->prepass_budget},
-        {"tideline/giant_prepass", TL_META_INT, NULL, 0, q->giant_prepass},
-        {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start},
-        {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed},
-        {"tideline/facing_normals", TL_META_INT, NULL, 0, q->facing_normals},
+        {"tideline/quality", TL_META_STRING, q->name, 0, 0, NULL},
+        {"tideline/spp", TL_META_INT, NULL, 0, q->spp, NULL},
+        {"tideline/march_octaves", TL_META_INT, NULL, 0, q->march_octaves, NULL},
+        {"tideline/normal_octaves", TL_META_INT, NULL, 0, q->normal_octaves, NULL},
+        {"tideline/march_steps", TL_META_INT, NULL, 0, q->march_steps, NULL},
+        {"tideline/hit_epsilon", TL_META_DOUBLE, NULL, q->hit_epsilon, 0, NULL},
+        {"tideline/normal_epsilon", TL_META_DOUBLE, NULL, q->normal_epsilon, 0, NULL},
+        {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations, NULL},
+        {"tideline/spray_step", TL_META_DOUBLE, NULL, q->spray_step, 0, NULL},
+        {"tideline/shaft_steps", TL_META_INT, NULL, 0, q->shaft_steps, NULL},
+        {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps, NULL},
+        {"tideline/polish", TL_META_INT, NULL, 0, q->polish, NULL},
+        {"tideline/lod", TL_META_INT, NULL, 0, q->lod, NULL},
+        {"tideline/analytic_normals", TL_META_INT, NULL, 0, q->analytic_normals, NULL},
+        {"tideline/filtered_shading", TL_META_INT, NULL, 0, q->filtered_shading, NULL},
+        {"tideline/render_scale", TL_META_DOUBLE, NULL, q->render_scale, 0, NULL},
+        {"tideline/pixel_filter", TL_META_DOUBLE, NULL, q->pixel_filter, 0, NULL},
+        {"tideline/march_relax", TL_META_DOUBLE, NULL, q->march_relax, 0, NULL},
+        {"tideline/march_prepass", TL_META_INT, NULL, 0, q->march_prepass, NULL},
+        {"tideline/prepass_budget", TL_META_INT, NULL, 0, q->prepass_budget, NULL},
+        {"tideline/giant_prepass", TL_META_INT, NULL, 0, q->giant_prepass, NULL},
+        {"tideline/miss_at_start", TL_META_INT, NULL, 0, q->miss_at_start, NULL},
+        {"tideline/normalize_smoothed", TL_META_INT, NULL, 0, q->normalize_smoothed, NULL},
+        {"tideline/facing_normals", TL_META_INT, NULL, 0, q->facing_normals, NULL},
     };
     memcpy(out, m, sizeof m);
     return TL_RUN_QUALITY_META;
@@ -76,18 +77,27 @@ static int write_frame_files(const run_state *s, long frame, const tl_scene *sce
              "position %.17g %.17g %.17g yaw %.17g pitch %.17g roll %.17g vfov %.17g (radians)",
              c->position[0], c->position[1], c->position[2], c->yaw, c->pitch, c->roll, c->vfov);
     tl_meta meta[7 + TL_RUN_QUALITY_META] = {
-        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0},
-        {"tideline/timeline", TL_META_STRING, cfg->timeline_path, 0, 0},
-        {"tideline/frame", TL_META_INT, NULL, 0, (int)frame},
-        {"tideline/time", TL_META_DOUBLE, NULL, scene->time, 0},
-        {"tideline/fps", TL_META_DOUBLE, NULL, cfg->timeline->fps, 0},
-        {"tideline/camera", TL_META_STRING, camera, 0, 0},
-        {"tideline/shutter", TL_META_DOUBLE, NULL, cfg->settings.shutter_deg, 0},
+        {"tideline/version", TL_META_STRING, TL_VERSION, 0, 0, NULL},
+        {"tideline/timeline", TL_META_STRING, cfg->timeline_path, 0, 0, NULL},
+        {"tideline/frame", TL_META_INT, NULL, 0, (int)frame, NULL},
+        {"tideline/time", TL_META_DOUBLE, NULL, scene->time, 0, NULL},
+        {"tideline/fps", TL_META_DOUBLE, NULL, cfg->timeline->fps, 0, NULL},
+        {"tideline/camera", TL_META_STRING, camera, 0, 0, NULL},
+        {"tideline/shutter", TL_META_DOUBLE, NULL, cfg->settings.shutter_deg, 0, NULL},
     };
     tl_image_options opt = cfg->image;
     opt.meta = meta;
     opt.meta_count = 7 + tl_run_quality_meta(&scene->quality, meta + 7);
-    return tl_image_write(path, f, &opt, err);
+    if (tl_image_format_from_path(path) != TL_IMAGE_EXR)
+        return tl_image_write(path, f, &opt, err);
+    /* An EXR carries the camera as OpenEXR's standard attributes, and the
+     * passes asked for. */
+    const char *object[TL_OBJECT_MAX];
+    for (int k = 0; k < cfg->timeline->object_count && k < TL_OBJECT_MAX; k++)
+        object[k] = cfg->timeline->objects[k].name;
+    const tl_passes_frame info = {cfg->passes, &scene->camera, object, cfg->timeline->object_count,
+                                  cfg->timeline->fps};
+    return tl_passes_write_frame(path, f, &info, &opt, err);
 }
 
 /* A frame's files: on any writer thread, several frames at once. */
@@ -172,7 +182,8 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
         rc = tl_pattern_format(cfg->pattern, frames->frames[0], frames->count == 1, path,
                                sizeof path, err);
         settings.planes |= tl_image_format_from_path(path) == TL_IMAGE_EXR
-                               ? TL_PLANE_COLOR | TL_PLANE_DEPTH
+                               ? TL_PLANE_COLOR | TL_PLANE_DEPTH |
+                                     (tl_passes_need_aov(cfg->passes) ? TL_PLANE_AOV : 0u)
                                : TL_PLANE_DISPLAY;
     }
     if (cfg->movie) {
@@ -186,6 +197,10 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
         return rc;
     }
 
+    /* The passes a complete frame holds (--skip-existing). */
+    char passes[256] = "";
+    if (cfg->passes)
+        tl_passes_format(cfg->passes | TL_PASSES_COMBINED, passes, sizeof passes);
     tl_frame frame = {0};
     tl_writer writer;
     tl_writer_init(&writer, write_files, cfg->movie ? write_movie : NULL, &s,
@@ -200,7 +215,8 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
             rc = tl_pattern_format(cfg->pattern, n, frames->count == 1, path, sizeof path, err);
         if (rc)
             break;
-        if (cfg->skip_existing && cfg->pattern && tl_job_frame_complete(path, width, height)) {
+        if (cfg->skip_existing && cfg->pattern &&
+            tl_job_frame_complete(path, width, height, passes)) {
             /* The frames in flight are reported first: progress stays in order. */
             rc = submit_pending(&s, render, &writer, &pending, &frame, err);
             for (int k = 0; !rc && k < writer.count; k++) {

@@ -48,6 +48,7 @@ typedef struct tl_run_config {
     const char *pattern;    /* frame files ('#'s: the frame number), or NULL */
     tl_movie *movie;        /* an open movie that takes every frame in order, or NULL */
     tl_image_options image; /* PNG bits, dither, compression (metadata: the run's) */
+    unsigned passes;        /* EXR frames: the compositing passes (TL_PASSES_*; 0: none) */
     int skip_existing;
     int writers; /* 0: tl_writer_default_count() */
     volatile sig_atomic_t *stop;

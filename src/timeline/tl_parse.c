@@ -13,8 +13,11 @@
 #include <string.h>
 #include <sys/stat.h>
 
-static const char *const directives[] = {"tideline", "fps",  "duration", "size",   "quality", "set",
-                                         "key",      "path", "look",     "follow", "boat",    NULL};
+#include "passes/tl_passes.h"
+
+static const char *const directives[] = {"tideline", "fps",  "duration", "size", "quality",
+                                         "passes",   "set",  "key",      "path", "look",
+                                         "follow",   "boat", NULL};
 static const char *const key_words[] = {
     "cut",           "constant",         "step",    "linear",    "bezier", "spline", "auto-clamped",
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
@@ -633,6 +636,20 @@ static void dir_header(parser *p, token *tok, int n)
                                                 "reference", "seed",    NULL};
             tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names), "%s", e.message);
         }
+    } else if (strcmp(d, "passes") == 0) {
+        if (expect_args(p, tok, n, 1, MAX_TOKENS, "pass names (e.g. depth,normal or all)"))
+            return;
+        tl->passes = 0;
+        for (int i = 1; i < n; i++) {
+            size_t at, len;
+            unsigned passes;
+            if (!tl_passes_parse(tok[i].s, &passes, &at, &len))
+                tl->passes |= passes;
+            else
+                tl_parse_diag(p, tok[i].col + (int)at, len ? (int)len : 1, NULL,
+                              "unknown pass '%.*s' (passes: %s)", (int)len, tok[i].s + at,
+                              tl_passes_valid_names());
+        }
     }
 }
 
@@ -644,7 +661,7 @@ static void directive(parser *p, token *tok, int n)
         p->saw_header = 1; /* report it once, then read on */
     }
     if (strcmp(d, "tideline") == 0 || strcmp(d, "fps") == 0 || strcmp(d, "duration") == 0 ||
-        strcmp(d, "size") == 0 || strcmp(d, "quality") == 0)
+        strcmp(d, "size") == 0 || strcmp(d, "quality") == 0 || strcmp(d, "passes") == 0)
         dir_header(p, tok, n);
     else if (strcmp(d, "set") == 0)
         dir_set(p, tok, n);

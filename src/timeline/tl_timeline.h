@@ -73,6 +73,9 @@ typedef struct tl_timeline {
     double duration; /* seconds */
     int width, height;
     tl_quality quality;
+    /* The `passes` line: the compositing passes its EXR frames carry
+     * (TL_PASSES_* of src/passes; 0: none, the plain RGBA + Z file). */
+    unsigned passes;
     tl_track *tracks;          /* tl_channel_count() entries */
     tl_path_track camera_path; /* points x y z */
     tl_link camera_look;

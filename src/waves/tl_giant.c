@@ -682,3 +682,8 @@ int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, do
             heights[count++] = found[i];
     return count;
 }
+
+bool tl_giant_in_matte(const tl_giant *g, double height)
+{
+    return g->active && height > TL_GIANT_MATTE_SHARE * g->amplitude;
+}

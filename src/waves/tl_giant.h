@@ -171,6 +171,13 @@
  * one, and none at 0 (tl_giant_sunlit). */
 #define TL_GIANT_SHADOW_FADE 0.5
 
+/* The giant wave's matte (the compositing passes' mask_giant and its
+ * Cryptomatte object): the water it raises above this share of its height
+ * (giant.height), and its lip. The small waves' own heights are left out,
+ * so the matte's edge runs along the wave's body, not its ripples; the
+ * trough ahead, lowered by the wave, is the ocean's. */
+#define TL_GIANT_MATTE_SHARE 0.1
+
 /* The wave at one moment, ready to evaluate. All lengths in metres. */
 typedef struct tl_giant {
     bool active;          /* enabled, fade > 0 and height > 0 */
@@ -289,6 +296,10 @@ double tl_giant_short_wave_gain(const tl_giant *g, const tl_giant_sample *smp);
  * wrapped every 65536 m: the world-fixed coordinates of the foam it
  * leaves behind are these plus (s0, w) (the shaders' u_giant_world). */
 void tl_giant_world_origin(const tl_giant *g, double out[2]);
+
+/* Whether water the wave raises by `height` (tl_giant_sample.height) is in
+ * its matte (TL_GIANT_MATTE_SHARE); shaders/aov.glsl's rule. */
+bool tl_giant_in_matte(const tl_giant *g, double height);
 
 /* Height of the wave alone at world (x, z); 0 outside its reach. */
 double tl_giant_height(const tl_giant *g, double x, double z, int iterations);

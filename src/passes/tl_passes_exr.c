@@ -1,0 +1,268 @@
+/* A frame with its passes as one multilayer EXR (tl_passes.h): the layers
+ * and channel names Blender 3.4 writes, so that its compositor, Nuke and
+ * Natron read the file as any renderer's. */
+#include "passes/tl_passes.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+_Static_assert(TL_FRAME_AOV_OBJECTS == TL_OBJECT_MAX,
+               "the aov plane has a cover for every floating object a scene holds");
+
+#define LAYER "ViewLayer."
+/* Cryptomatte's layer: its channels are this name followed by 00, 01, 02,
+ * as the header's cryptomatte/<key>/name says. */
+#define CRYPTO_LAYER LAYER "CryptoObject"
+/* The objects besides the floating ones, by their names in the timeline
+ * language (none of them can name a floating object). */
+static const char *const fixed_objects[3] = {"sky", "ocean", "giant"};
+
+/* Value c of group g of pixel i of the aov plane (tl_frame.h). */
+static float aov_at(const tl_frame *f, int g, size_t i, int c)
+{
+    return f->aov[((size_t)g * (size_t)f->width * (size_t)f->height + i) * 4 + (size_t)c];
+}
+
+/* A cover or a mean that may leave the file: finite, held in [lo, hi]. */
+static float held(float v, float lo, float hi)
+{
+    return isfinite(v) ? fminf(fmaxf(v, lo), hi) : 0.0f;
+}
+
+/* The object covers of pixel i: sky, ocean, giant wave, then each floating
+ * object by scene index; returns their sum. */
+static float object_covers(const tl_frame *f, size_t i, float cover[3 + TL_FRAME_AOV_OBJECTS])
+{
+    float sum = 0.0f;
+    for (int k = 0; k < 3 + TL_FRAME_AOV_OBJECTS; k++) {
+        int v = k < 3 ? 4 + k : TL_FRAME_AOV_OBJECT0 + (k - 3);
+        cover[k] = held(aov_at(f, v / 4, i, v % 4), 0.0f, 1.0f);
+        sum += cover[k];
+    }
+    return sum;
+}
+
+/* The name of object k of the covers (sky, ocean, giant, then floating). */
+static const char *object_name(const tl_passes_frame *info, int k, char *buf, size_t size)
+{
+    if (k < 3)
+        return fixed_objects[k];
+    int o = k - 3;
+    if (o < info->objects && info->object && info->object[o])
+        return info->object[o];
+    snprintf(buf, size, "object%d", o);
+    return buf;
+}
+
+/* The Cryptomatte's ranks of pixel i into `out` (TL_CRYPTO_RANKS pairs of
+ * ID and coverage): its objects by their share of the pixel's samples,
+ * most first; the same ID's shares summed. */
+static void crypto_ranks(const tl_frame *f, size_t i, const float *ids, float *out)
+{
+    float cover[3 + TL_FRAME_AOV_OBJECTS];
+    float total = object_covers(f, i, cover);
+    float id[3 + TL_FRAME_AOV_OBJECTS], share[3 + TL_FRAME_AOV_OBJECTS];
+    int n = 0;
+    for (int k = 0; k < 3 + TL_FRAME_AOV_OBJECTS; k++) {
+        if (!(cover[k] > 0.0f))
+            continue;
+        int j = 0;
+        while (j < n && memcmp(&id[j], &ids[k], sizeof(float)) != 0)
+            j++;
+        if (j == n) {
+            id[n] = ids[k];
+            share[n++] = 0.0f;
+        }
+        share[j] += cover[k] / total;
+    }
+    for (int r = 0; r < TL_CRYPTO_RANKS; r++) {
+        int best = -1;
+        for (int j = 0; j < n; j++)
+            if (share[j] > 0.0f && (best < 0 || share[j] > share[best]))
+                best = j;
+        out[2 * r] = best < 0 ? 0.0f : id[best];
+        out[2 * r + 1] = best < 0 ? 0.0f : share[best];
+        if (best >= 0)
+            share[best] = 0.0f;
+    }
+}
+
+/* The manifest: every object's name and ID's hex digits, as JSON. */
+static int crypto_manifest(const tl_passes_frame *info, char *out, size_t size)
+{
+    size_t n = (size_t)snprintf(out, size, "{");
+    for (int k = 0; k < 3 + info->objects && k < 3 + TL_FRAME_AOV_OBJECTS; k++) {
+        char buf[32];
+        uint32_t bits;
+        const char *name = object_name(info, k, buf, sizeof buf);
+        tl_crypto_id(name, &bits);
+        n += (size_t)snprintf(out + n, n < size ? size - n : 0, "%s\"%s\":\"%08x\"", k ? "," : "",
+                              name, (unsigned)bits);
+    }
+    n += (size_t)snprintf(out + n, n < size ? size - n : 0, "}");
+    return n < size ? 0 : -1;
+}
+
+enum { MAX_CHANNELS = 4 + 1 + 3 + 3 + 6 + 4 * (TL_CRYPTO_RANKS / 2) };
+
+int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes_frame *info,
+                        const tl_image_options *opt, tl_error *err)
+{
+    const unsigned passes = info->passes | TL_PASSES_COMBINED;
+    if (!frame->color || !frame->depth)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: no frame to write", path);
+    if (tl_passes_need_aov(passes) && !frame->aov)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: the frame has no data for its passes", path);
+    const int w = frame->width, h = frame->height;
+    const size_t px = (size_t)w * (size_t)h;
+    /* Position, the masks and the Cryptomatte's ranks are computed here,
+     * interleaved per pixel: 3 + 6 + 2 * ranks floats. */
+    enum { POS = 0, MASK = 3, CRYPTO = 9, PER_PIXEL = CRYPTO + 2 * TL_CRYPTO_RANKS };
+    float *data = malloc(px * PER_PIXEL * sizeof *data);
+    if (!data)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory for the passes", path);
+    float ids[3 + TL_FRAME_AOV_OBJECTS];
+    for (int k = 0; k < 3 + TL_FRAME_AOV_OBJECTS; k++) {
+        char buf[32];
+        ids[k] = tl_crypto_id(object_name(info, k, buf, sizeof buf), NULL);
+    }
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            size_t i = (size_t)y * (size_t)w + (size_t)x;
+            float *d = data + i * PER_PIXEL;
+            /* Position: camera-relative (tideline/position_origin in the
+             * header), 0 where the ray met nothing, as Blender's. */
+            double ray[3];
+            tl_passes_pixel_ray(info->camera, w, h, x, y, ray);
+            double dist = frame->depth[i];
+            int hit = isfinite(dist) && dist < TL_FRAME_SKY_DEPTH;
+            for (int c = 0; c < 3; c++)
+                d[POS + c] = hit ? (float)(ray[c] * dist) : 0.0f;
+            if (!frame->aov)
+                continue;
+            float cover[3 + TL_FRAME_AOV_OBJECTS];
+            object_covers(frame, i, cover);
+            float boats = 0.0f;
+            for (int k = 3; k < 3 + TL_FRAME_AOV_OBJECTS; k++)
+                boats += cover[k];
+            d[MASK + 0] = held(cover[1] + cover[2], 0.0f, 1.0f);    /* water */
+            d[MASK + 1] = held(aov_at(frame, 0, i, 3), 0.0f, 1.0f); /* foam */
+            d[MASK + 2] = cover[2];                                 /* giant wave */
+            d[MASK + 3] = held(boats, 0.0f, 1.0f);                  /* boats */
+            d[MASK + 4] = cover[0];                                 /* sky */
+            d[MASK + 5] = held(aov_at(frame, 1, i, 3), 0.0f, 1.0f); /* under water */
+            crypto_ranks(frame, i, ids, d + CRYPTO);
+        }
+    /* The normal, a mean of unit vectors, finite and within [-1, 1]. */
+    float *normal = NULL;
+    if (passes & TL_PASSES_NORMAL) {
+        normal = malloc(px * 3 * sizeof *normal);
+        if (!normal) {
+            free(data);
+            return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory for the passes", path);
+        }
+        for (size_t i = 0; i < px; i++)
+            for (int c = 0; c < 3; c++)
+                normal[i * 3 + (size_t)c] = held(aov_at(frame, 0, i, c), -1.0f, 1.0f);
+    }
+
+    tl_exr_channel ch[MAX_CHANNELS];
+    int n = 0;
+    static const char *const rgba[4] = {LAYER "Combined.R", LAYER "Combined.G", LAYER "Combined.B",
+                                        LAYER "Combined.A"};
+    for (int c = 0; c < 4; c++)
+        ch[n++] = (tl_exr_channel){rgba[c], 1, frame->color + c, 4};
+    if (passes & TL_PASSES_DEPTH)
+        ch[n++] = (tl_exr_channel){LAYER "Depth.Z", 0, frame->depth, 1};
+    static const char *const xyz[2][3] = {
+        {LAYER "Normal.X", LAYER "Normal.Y", LAYER "Normal.Z"},
+        {LAYER "Position.X", LAYER "Position.Y", LAYER "Position.Z"}};
+    for (int c = 0; normal && c < 3; c++)
+        ch[n++] = (tl_exr_channel){xyz[0][c], 1, normal + c, 3};
+    for (int c = 0; (passes & TL_PASSES_POSITION) && c < 3; c++)
+        ch[n++] = (tl_exr_channel){xyz[1][c], 0, data + POS + c, PER_PIXEL};
+    static const struct {
+        unsigned pass;
+        const char *name;
+    } masks[6] = {{TL_PASSES_MASK_WATER, LAYER "mask_water.X"},
+                  {TL_PASSES_MASK_FOAM, LAYER "mask_foam.X"},
+                  {TL_PASSES_MASK_GIANT, LAYER "mask_giant.X"},
+                  {TL_PASSES_MASK_BOAT, LAYER "mask_boat.X"},
+                  {TL_PASSES_MASK_SKY, LAYER "mask_sky.X"},
+                  {TL_PASSES_MASK_UNDERWATER, LAYER "mask_underwater.X"}};
+    for (int m = 0; m < 6; m++)
+        if (passes & masks[m].pass)
+            ch[n++] = (tl_exr_channel){masks[m].name, 1, data + MASK + m, PER_PIXEL};
+    /* Cryptomatte: IDs and coverage in 32-bit float (a half ID matches
+     * nothing), lower-case rgba as Blender writes them. */
+    static const char *const crypto[TL_CRYPTO_RANKS / 2][4] = {
+        {CRYPTO_LAYER "00.r", CRYPTO_LAYER "00.g", CRYPTO_LAYER "00.b", CRYPTO_LAYER "00.a"},
+        {CRYPTO_LAYER "01.r", CRYPTO_LAYER "01.g", CRYPTO_LAYER "01.b", CRYPTO_LAYER "01.a"},
+        {CRYPTO_LAYER "02.r", CRYPTO_LAYER "02.g", CRYPTO_LAYER "02.b", CRYPTO_LAYER "02.a"}};
+    for (int l = 0; (passes & TL_PASSES_CRYPTOMATTE) && l < TL_CRYPTO_RANKS / 2; l++)
+        for (int c = 0; c < 4; c++)
+            ch[n++] = (tl_exr_channel){crypto[l][c], 0, data + CRYPTO + 4 * l + c, PER_PIXEL};
+
+    /* The caller's metadata, and the Cryptomatte's. */
+    int given = opt && opt->meta ? opt->meta_count : 0;
+    tl_meta *meta = malloc(sizeof *meta * (size_t)(given + 4));
+    char manifest[4096], keys[4][64];
+    int rc = TL_OK;
+    if (!meta)
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory for the passes", path);
+    else if (crypto_manifest(info, manifest, sizeof manifest))
+        rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: the Cryptomatte's manifest is too long", path);
+    if (!rc) {
+        if (given)
+            memcpy(meta, opt->meta, sizeof *meta * (size_t)given);
+        int m = given;
+        if (passes & TL_PASSES_CRYPTOMATTE) {
+            char key[8];
+            tl_crypto_key(CRYPTO_LAYER, key);
+            static const char *const field[4] = {"name", "hash", "conversion", "manifest"};
+            const char *value[4] = {CRYPTO_LAYER, "MurmurHash3_32", "uint32_to_float32", manifest};
+            for (int k = 0; k < 4; k++) {
+                snprintf(keys[k], sizeof keys[k], "cryptomatte/%s/%s", key, field[k]);
+                meta[m++] = (tl_meta){keys[k], TL_META_STRING, value[k], 0, 0, NULL};
+            }
+        }
+        tl_image_options o = opt ? *opt : (tl_image_options){0};
+        o.meta = meta;
+        o.meta_count = m;
+        rc = tl_exr_write_channels(path, w, h, ch, n, &o, err);
+    }
+    free(meta);
+    free(normal);
+    free(data);
+    return rc;
+}
+
+int tl_passes_write_frame(const char *path, const tl_frame *frame, const tl_passes_frame *info,
+                          const tl_image_options *opt, tl_error *err)
+{
+    int given = opt && opt->meta ? opt->meta_count : 0;
+    tl_meta *meta = malloc(sizeof *meta * (size_t)(given + TL_PASSES_CAMERA_META + 1));
+    if (!meta)
+        return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory", path);
+    if (given)
+        memcpy(meta, opt->meta, sizeof *meta * (size_t)given);
+    tl_passes_meta camera;
+    int n = tl_passes_camera_meta(info->camera, frame->width, frame->height, info->fps, &camera);
+    memcpy(meta + given, camera.meta, sizeof *meta * (size_t)n);
+    tl_image_options o = opt ? *opt : (tl_image_options){0};
+    o.meta = meta;
+    o.meta_count = given + n;
+    char names[256];
+    int rc;
+    if (!info->passes) {
+        rc = tl_exr_write(path, frame, &o, err);
+    } else {
+        tl_passes_format(info->passes | TL_PASSES_COMBINED, names, sizeof names);
+        meta[o.meta_count++] = (tl_meta){"tideline/passes", TL_META_STRING, names, 0, 0, NULL};
+        rc = tl_passes_write_exr(path, frame, info, &o, err);
+    }
+    free(meta);
+    return rc;
+}

@@ -1,0 +1,70 @@
+#!/bin/sh
+# tideline's EXR passes in real clients: OpenImageIO's oiiotool lists every
+# layer and the camera's and Cryptomatte's attributes; Blender 3.4's
+# compositor pulls the boat's and the giant wave's mattes with its
+# Cryptomatte node, and they match tideline's own masks (intersection over
+# union at least 0.97). Skipped (77) where blender or oiiotool is missing
+# (scripts/setup.sh installs both).
+# Usage: test_blender.sh TIDELINE TIMELINES_DIR TESTS_DIR
+set -eu
+tideline=$1
+timelines=$2
+tests=$3
+for tool in blender oiiotool; do
+  if ! command -v $tool >/dev/null 2>&1; then
+    echo "test_blender: $tool is not installed: skipped (scripts/setup.sh installs it)"
+    exit 77
+  fi
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+w=320
+h=180
+"$tideline" still "$timelines/giant_wave.tl" --time 10.4 --size ${w}x$h --spp 4 --passes all \
+  -o "$work/hero.exr"
+
+fail=0
+check() { # what, then a command that must succeed
+  what=$1
+  shift
+  if "$@"; then echo "ok: $what"; else echo "FAILED: $what"; fail=1; fi
+}
+
+# Every layer and attribute, as OpenImageIO reads the file.
+oiiotool --info -v "$work/hero.exr" >"$work/info.txt"
+for channel in ViewLayer.Combined.R ViewLayer.Combined.A ViewLayer.Depth.Z ViewLayer.Normal.Z \
+  ViewLayer.Position.X ViewLayer.mask_water.X ViewLayer.mask_foam.X ViewLayer.mask_giant.X \
+  ViewLayer.mask_boat.X ViewLayer.mask_sky.X ViewLayer.mask_underwater.X \
+  ViewLayer.CryptoObject00.r ViewLayer.CryptoObject02.a; do
+  check "oiiotool lists $channel" grep -q "$channel" "$work/info.txt"
+done
+check "the Cryptomatte's IDs are 32-bit float" \
+  grep -q 'ViewLayer.CryptoObject00.r (float)' "$work/info.txt"
+for attribute in worldToCamera worldToNDC chromaticities framesPerSecond \
+  'cryptomatte/542cafa/name: "ViewLayer.CryptoObject"' 'cryptomatte/542cafa/hash: "MurmurHash3_32"' \
+  'cryptomatte/542cafa/conversion: "uint32_to_float32"' 'cryptomatte/542cafa/manifest: "{"sky"' \
+  tideline/position_origin tideline/focal_length_mm; do
+  check "oiiotool shows $attribute" grep -qF "$attribute" "$work/info.txt"
+done
+
+# Blender's Cryptomatte node against tideline's masks.
+matte() { # object, its mask pass
+  blender -b --factory-startup --python "$tests/blender_cryptomatte.py" -- \
+    "$work/hero.exr" "$1" "$2" "$work/iou_$1.exr" $w $h >"$work/blender_$1.txt" 2>&1 || true
+  grep -E '^(PASSES|MATTE|IOU|ERROR)' "$work/blender_$1.txt" || tail -5 "$work/blender_$1.txt"
+  iou=$(sed -n 's/^IOU //p' "$work/blender_$1.txt")
+  pixels=$(sed -n 's/^MATTE \([0-9]*\) of.*/\1/p' "$work/blender_$1.txt")
+  check "Blender's matte of $1 matches $2 (IoU ${iou:-none} >= 0.97)" \
+    awk -v v="${iou:-0}" 'BEGIN { exit !(v >= 0.97) }'
+  check "Blender's matte of $1 covers pixels (${pixels:-none})" \
+    awk -v v="${pixels:-0}" 'BEGIN { exit !(v >= 50) }'
+}
+matte boat mask_boat
+matte giant mask_giant
+# A name the frame does not hold pulls an empty matte: the comparison can fail.
+blender -b --factory-startup --python "$tests/blender_cryptomatte.py" -- \
+  "$work/hero.exr" ocean mask_boat "$work/iou_x.exr" $w $h >"$work/blender_x.txt" 2>&1 || true
+iou=$(sed -n 's/^IOU //p' "$work/blender_x.txt")
+check "the ocean's matte is not the boat's mask (IoU ${iou:-none} < 0.1)" \
+  awk -v v="${iou:-1}" 'BEGIN { exit !(v < 0.1) }'
+exit $fail
