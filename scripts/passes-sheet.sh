@@ -22,7 +22,7 @@ w=1280
 h=720
 echo "passes-sheet: rendering giant_wave.tl at ${time} s, ${w}x$h, every pass" >&2
 build/tideline still timelines/giant_wave.tl --time "$time" --size ${w}x$h --spp 4 \
-  --passes all -o "$work/frame.exr"
+  --passes all -o "$work/frame.exr" -o "$work/display.png"
 f="$work/frame.exr"
 L=ViewLayer
 half=(--resize $((w / 2))x$((h / 2)))
@@ -34,13 +34,14 @@ tile() { # name, then oiiotool's steps from the frame to an RGB image
 gray() { # a one-channel layer as grey
   echo --ch "$1" --chnames Y --ch Y,Y,Y --chnames R,G,B
 }
-tile combined --ch $L.Combined.R,$L.Combined.G,$L.Combined.B --chnames R,G,B \
-  --mulc 0.5 --colorconvert linear sRGB
+# Combined: the frame's display image (its exposure and tonemap), beside
+# which the layers are read.
+oiiotool "$work/display.png" "${half[@]}" -o "$work/combined.png"
 # Normal: x, y, z from -1..1 as red, green, blue.
 tile normal --ch $L.Normal.X,$L.Normal.Y,$L.Normal.Z --chnames R,G,B --mulc 0.5 --addc 0.5
-# Position: camera-relative x, y, z within 150 m as red, green, blue.
+# Position: camera-relative x, y, z within 50 m as red, green, blue.
 tile position --ch $L.Position.X,$L.Position.Y,$L.Position.Z --chnames R,G,B \
-  --divc 300 --addc 0.5 --clamp:min=0:max=1
+  --divc 100 --addc 0.5 --clamp:min=0:max=1
 # Depth: near bright, 400 m and beyond black.
 tile depth $(gray $L.Depth.Z) --divc 400 --clamp:min=0:max=1 --invert --powc 2
 for m in water foam giant boat sky underwater; do
