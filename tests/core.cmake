@@ -41,7 +41,7 @@ tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl LABEL
 # The compositing passes on the GPU (the hero frame): they leave the image
 # as it was, their covers add up, the mattes agree with the CPU mirror.
 tl_add_test(test_passes_render SOURCES test_passes_render.c LIBS tideline_gl
-  ARGS ${PROJECT_SOURCE_DIR}/timelines LABELS gl)
+  ARGS ${PROJECT_SOURCE_DIR}/timelines $<TARGET_FILE:tideline> LABELS gl)
 tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_lip SOURCES test_giant_lip.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes LABELS unit)

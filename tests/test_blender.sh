@@ -3,7 +3,8 @@
 # layer and the camera's and Cryptomatte's attributes; Blender 3.4's
 # compositor pulls the boat's and the giant wave's mattes with its
 # Cryptomatte node, and they match tideline's own masks (intersection over
-# union at least 0.97). Skipped (77) where blender or oiiotool is missing
+# union at least 0.97); its Vector Blur node blurs a panning shot along
+# the pan. Skipped (77) where blender or oiiotool is missing
 # (scripts/setup.sh installs both).
 # Usage: test_blender.sh TIDELINE TIMELINES_DIR TESTS_DIR
 set -eu
@@ -35,7 +36,7 @@ oiiotool --info -v "$work/hero.exr" >"$work/info.txt"
 for channel in ViewLayer.Combined.R ViewLayer.Combined.A ViewLayer.Depth.Z ViewLayer.Normal.Z \
   ViewLayer.Position.X ViewLayer.mask_water.X ViewLayer.mask_foam.X ViewLayer.mask_giant.X \
   ViewLayer.mask_boat.X ViewLayer.mask_sky.X ViewLayer.mask_underwater.X \
-  ViewLayer.CryptoObject00.r ViewLayer.CryptoObject02.a; do
+  ViewLayer.CryptoObject00.r ViewLayer.CryptoObject02.a ViewLayer.Vector.X ViewLayer.Vector.W; do
   check "oiiotool lists $channel" grep -q "$channel" "$work/info.txt"
 done
 check "the Cryptomatte's IDs are 32-bit float" \
@@ -67,4 +68,28 @@ blender -b --factory-startup --python "$tests/blender_cryptomatte.py" -- \
 iou=$(sed -n 's/^IOU //p' "$work/blender_x.txt")
 check "the ocean's matte is not the boat's mask (IoU ${iou:-none} < 0.1)" \
   awk -v v="${iou:-1}" 'BEGIN { exit !(v < 0.1) }'
+# Vector Blur on a camera panning at 8 degrees a frame: the detail across
+# the pan is smeared (neighbouring pixels across differ much less), the
+# detail down the frame far less.
+cat >"$work/pan.tl" <<'EOF'
+tideline 1
+fps 24
+duration 2s
+size 160x90
+quality draft
+set camera.position 0 3 0
+set camera.pitch -12deg
+set camera.fov 50deg
+key camera.yaw linear
+  0s 0deg
+  2s 192deg
+EOF
+"$tideline" render "$work/pan.tl" --frames 24 --passes vector,depth -o "$work/pan_##.exr" -q
+blender -b --factory-startup --python "$tests/blender_vector_blur.py" -- \
+  "$work/pan_24.exr" "$work" 160 90 >"$work/blender_blur.txt" 2>&1 || true
+grep -E '^(GRADIENT|ERROR)' "$work/blender_blur.txt" || tail -5 "$work/blender_blur.txt"
+set -- $(sed -n 's/^GRADIENT //p' "$work/blender_blur.txt") 1 1 1 1
+check "Vector Blur smears across the pan (detail across $1 -> $2, down $3 -> $4)" \
+  awk -v xb="$1" -v xa="$2" -v yb="$3" -v ya="$4" \
+  'BEGIN { rx = xa / xb; ry = ya / yb; exit !(rx < 0.8 && rx < ry - 0.15) }'
 exit $fail

@@ -192,7 +192,8 @@ static void test_file(void)
         *aov(&f, 1, i, 1) = 1.0f;
     const tl_camera cam = {{100.0, 5.0, -40.0}, 0.4, -0.2, 0.0, 1.0};
     const char *names[2] = {"boat", "dinghy"};
-    tl_passes_frame info = {TL_PASSES_ALL, &cam, names, 2, 24.0};
+    tl_passes_frame info = {
+        TL_PASSES_ALL & ~TL_PASSES_VECTOR, &cam, names, 2, 24.0, NULL, NULL, NULL};
     char path[] = "/tmp/tideline_test_passes_XXXXXX.exr";
     int fd = mkstemps(path, 4);
     CHECK(fd >= 0);

@@ -8,8 +8,10 @@
 #include <unistd.h>
 
 #include "cutscene/tl_cutscene.h"
+#include "image/tl_image_io.h"
 #include "passes/tl_passes.h"
 #include "tl_gl_test.h"
+#include "tl_run.h"
 
 #define W 160
 #define H 90
@@ -20,12 +22,119 @@ static float aov(const tl_frame *f, int g, int i, int c)
     return f->aov[((size_t)g * W * H + (size_t)i) * 4 + (size_t)c];
 }
 
+/* Reads channel `name` of `path` (W2 x H2 floats), or NULL (a failed check). */
+#define W2 96
+#define H2 54
+static float *channel(const char *path, const char *name)
+{
+    int w = 0, h = 0;
+    float *data = NULL;
+    tl_error err;
+    CHECK(tl_exr_read_channel(path, name, &w, &h, &data, &err) == 0);
+    CHECK(w == W2 && h == H2);
+    return data;
+}
+
+/* The Vector pass through `tideline render`: a camera panning at 24 deg/s
+ * over a sea whose waves stand still, then a cut. Each pixel of the
+ * horizon's rows (pitch 0: its rays turn about the camera's own up axis)
+ * moves as the pan's rotation predicts, found here from angles alone:
+ * towards the frame before by the turn back, towards the frame after by
+ * the turn on, the two opposite. At the cut's frame the motion from the
+ * frame before is zero; a camera and sea at rest move nothing. */
+static void test_vectors(void)
+{
+    char dir[] = "/tmp/tideline-vectors-XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char tl[256], pattern[256], at_cut[256], still[256];
+    snprintf(tl, sizeof tl, "%s/pan.tl", dir);
+    snprintf(pattern, sizeof pattern, "%s/f_####.exr", dir);
+    snprintf(at_cut, sizeof at_cut, "%s/f_0060.exr", dir);
+    snprintf(still, sizeof still, "%s/f_0006.exr", dir);
+    tl_test_write_file(tl, "tideline 1\nfps 24\nduration 4s\nsize 96x54\nquality draft\n"
+                           "set ocean.speed 0\nset camera.position 0 3 0\nset camera.pitch 0\n"
+                           "set camera.fov 50deg\n"
+                           "key camera.yaw linear\n  0s 0deg\n  0.5s 0deg\n  2s 36deg\n"
+                           "  2.5s cut 120deg\n  4s 150deg\n");
+    CHECK(tl_run(&(tl_run_opts){0}, "render", tl, "--frames", "6,36,60", "--passes", "vector", "-o",
+                 pattern, "-q", NULL) == 0);
+    if (strstr(tl_run_output, "error"))
+        fprintf(stderr, "%s\n", tl_run_output);
+    char mid[256];
+    snprintf(mid, sizeof mid, "%s/f_0036.exr", dir);
+    float *vx = channel(mid, "ViewLayer.Vector.X"), *vy = channel(mid, "ViewLayer.Vector.Y");
+    float *vz = channel(mid, "ViewLayer.Vector.Z"), *vw = channel(mid, "ViewLayer.Vector.W");
+    const double fy = 0.5 * H2 / tan(0.5 * 50.0 * M_PI / 180.0), fx = fy, turn = M_PI / 180.0;
+    double worst = 0.0;
+    int rows = 0, opposite = 0;
+    for (int y = H2 / 2 - 3; vx && vy && vz && vw && y < H2 / 2 + 3; y++)
+        for (int x = 0; x < W2; x++) {
+            size_t i = (size_t)y * W2 + (size_t)x;
+            /* The pixel's ray in the camera's frame, turned by a degree
+             * (24 deg/s at 24 fps) about the up axis. */
+            double u = x + 0.5 - 0.5 * W2, v = 0.5 * H2 - (y + 0.5);
+            double dx = u / fx, dz = 1.0;
+            double back_x = dx * cos(turn) + dz * sin(turn),
+                   back_z = -dx * sin(turn) + dz * cos(turn);
+            double on_x = dx * cos(turn) - dz * sin(turn), on_z = dx * sin(turn) + dz * cos(turn);
+            double want_x = fx * back_x / back_z - u, want_y = fy * (v / fy) / back_z - v;
+            double want_z = u - fx * on_x / on_z;
+            worst = fmax(worst, fabs(vx[i] - want_x) / fabs(want_x));
+            worst = fmax(worst, fabs(vy[i] - want_y) - 0.02 * fabs(want_x));
+            worst = fmax(worst, fabs(vz[i] - want_z) / fabs(want_z));
+            /* Blender's layout stores both as a move along the motion:
+             * toward the frame before and from the frame after point the
+             * same way on screen when the motion keeps on. */
+            opposite += (vx[i] > 0.0f) == (want_x > 0.0) && (vz[i] > 0.0f) == (want_z > 0.0);
+            rows++;
+        }
+    printf("pan: %d pixels, worst error %.5f of the predicted move\n", rows, worst);
+    CHECK(rows == 6 * W2);
+    CHECK(worst < 0.02);
+    CHECK(opposite == rows);
+    free(vx), free(vy), free(vz), free(vw);
+
+    /* At the cut: nothing from the frame before (another shot), the new
+     * shot's pan (20 deg/s) toward the frame after. */
+    vx = channel(at_cut, "ViewLayer.Vector.X");
+    vz = channel(at_cut, "ViewLayer.Vector.Z");
+    double before = 0.0, after = 0.0;
+    for (int i = 0; vx && vz && i < W2 * H2; i++) {
+        before = fmax(before, fabs(vx[i]));
+        after += vz[i] / (W2 * H2);
+    }
+    printf("cut: largest move toward the frame before %g px, mean toward the one after %.3f px\n",
+           before, after);
+    CHECK(before == 0.0);
+    CHECK(after > 0.5 * fx * tan(20.0 / 24.0 * turn));
+    free(vx), free(vz);
+
+    /* At rest (0.25 s: the pan has not begun; the waves stand still). */
+    double rest = 0.0;
+    const char *names[4] = {"ViewLayer.Vector.X", "ViewLayer.Vector.Y", "ViewLayer.Vector.Z",
+                            "ViewLayer.Vector.W"};
+    for (int c = 0; c < 4; c++) {
+        float *v = channel(still, names[c]);
+        for (int i = 0; v && i < W2 * H2; i++)
+            rest = fmax(rest, fabs(v[i]));
+        free(v);
+    }
+    printf("at rest: largest move %g px\n", rest);
+    CHECK(rest < 1e-3);
+    const char *files[4] = {still, mid, at_cut, tl};
+    for (int k = 0; k < 4; k++)
+        unlink(files[k]);
+    rmdir(dir);
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        fprintf(stderr, "usage: test_passes_render TIMELINES_DIR\n");
+    if (argc < 3) {
+        fprintf(stderr, "usage: test_passes_render TIMELINES_DIR TIDELINE\n");
         return 2;
     }
+    tl_run_binary = argv[2];
+    test_vectors();
     char path[4096];
     snprintf(path, sizeof path, "%s/giant_wave.tl", argv[1]);
     tl_cutscene cs;
@@ -184,7 +293,14 @@ int main(int argc, char **argv)
     const char *names[TL_OBJECT_MAX];
     for (int k = 0; k < tl->object_count; k++)
         names[k] = tl->objects[k].name;
-    tl_passes_frame info = {TL_PASSES_ALL, &scene.camera, names, tl->object_count, tl->fps};
+    tl_passes_frame info = {TL_PASSES_ALL & ~TL_PASSES_VECTOR,
+                            &scene.camera,
+                            names,
+                            tl->object_count,
+                            tl->fps,
+                            &scene,
+                            NULL,
+                            NULL};
     char out[] = "/tmp/tideline_test_passes_render_XXXXXX.exr";
     int fd = mkstemps(out, 4);
     close(fd);

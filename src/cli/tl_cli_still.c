@@ -79,8 +79,8 @@ static const char usage[] =
     "  --passes LIST          .exr: compositing passes as layers named as Blender\n"
     "                         names them (combined, depth, normal, position, mask_water,\n"
     "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
-    "                         cryptomatte; masks, all; none); overrides the timeline's\n"
-    "                         `passes` line (docs/compositing.md)\n"
+    "                         cryptomatte, vector; masks, all; none); overrides the\n"
+    "                         timeline's `passes` line (docs/compositing.md)\n"
     "  -v, --verbose          log the GL platform, renderer and timings\n"
     "  -h, --help             show this help\n"
     "Angles accept a 'rad' suffix for radians.\n";
@@ -109,6 +109,9 @@ typedef struct still_options {
     char object_names[TL_OBJECT_MAX][TL_OBJECT_NAME_MAX];
     int objects;
     double fps;
+    /* The Vector pass: the scenes a frame before and after. */
+    tl_scene prev, next;
+    int has_prev, has_next;
 } still_options;
 
 static int parse(int argc, char **argv, still_options *o, int *help, tl_error *err)
@@ -219,6 +222,36 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
     return TL_OK;
 }
 
+/* The flags' values over a scene (all but --look-at, which can fail). */
+static void apply_flags(const still_options *o, tl_scene *scene)
+{
+    const tl_scene *v = &o->values;
+    if (o->has_size) {
+        scene->width = v->width;
+        scene->height = v->height;
+    }
+    if (o->has_camera)
+        memcpy(scene->camera.position, v->camera.position, sizeof v->camera.position);
+    if (o->has_yaw)
+        scene->camera.yaw = v->camera.yaw;
+    if (o->has_pitch)
+        scene->camera.pitch = v->camera.pitch;
+    if (o->has_roll)
+        scene->camera.roll = v->camera.roll;
+    if (o->has_fov)
+        scene->camera.vfov = v->camera.vfov;
+    if (o->has_sun_elevation)
+        scene->sun.elevation = v->sun.elevation;
+    if (o->has_sun_azimuth)
+        scene->sun.azimuth = v->sun.azimuth;
+    if (o->has_exposure)
+        scene->exposure = v->exposure;
+    if (o->has_quality)
+        scene->quality = v->quality;
+    if (o->spp)
+        scene->quality.spp = o->spp;
+}
+
 /* The scene to render: the timeline's at the requested time (or the
  * defaults), then every flag the user gave on top. */
 static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_error *err)
@@ -260,38 +293,37 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
             tl_scene_defaults(scene);
         scene->time = t;
     }
+    if (rc) {
+        if (have_timeline)
+            tl_timeline_free(&tl);
+        return rc;
+    }
+
+    apply_flags(o, scene);
+    if (!rc && o->has_look_at)
+        rc = tl_scene_camera_look_at(&scene->camera, o->look_at, err);
+    /* The Vector pass: the scenes a frame before and after (none across a
+     * cut), with the same flags. */
+    o->has_prev = o->has_next = 0;
+    if (!rc && (o->passes & TL_PASSES_VECTOR)) {
+        for (int k = 0; k < 2; k++) {
+            double tk = t + (k ? 1.0 : -1.0) / fps;
+            tl_scene *to = k ? &o->next : &o->prev;
+            if (have_timeline && tl_timeline_has_cut_between(&tl, k ? t : tk, k ? tk : t))
+                continue;
+            if (have_timeline)
+                tl_timeline_eval(&tl, tk, to);
+            else
+                tl_scene_defaults(to);
+            to->time = tk;
+            apply_flags(o, to);
+            if (o->has_look_at && tl_scene_camera_look_at(&to->camera, o->look_at, err))
+                continue;
+            *(k ? &o->has_next : &o->has_prev) = 1;
+        }
+    }
     if (have_timeline)
         tl_timeline_free(&tl);
-    if (rc)
-        return rc;
-
-    const tl_scene *v = &o->values;
-    if (o->has_size) {
-        scene->width = v->width;
-        scene->height = v->height;
-    }
-    if (o->has_camera)
-        memcpy(scene->camera.position, v->camera.position, sizeof v->camera.position);
-    if (o->has_yaw)
-        scene->camera.yaw = v->camera.yaw;
-    if (o->has_pitch)
-        scene->camera.pitch = v->camera.pitch;
-    if (o->has_roll)
-        scene->camera.roll = v->camera.roll;
-    if (o->has_fov)
-        scene->camera.vfov = v->camera.vfov;
-    if (o->has_sun_elevation)
-        scene->sun.elevation = v->sun.elevation;
-    if (o->has_sun_azimuth)
-        scene->sun.azimuth = v->sun.azimuth;
-    if (o->has_exposure)
-        scene->exposure = v->exposure;
-    if (o->has_quality)
-        scene->quality = v->quality;
-    if (o->spp)
-        scene->quality.spp = o->spp;
-    if (o->has_look_at)
-        rc = tl_scene_camera_look_at(&scene->camera, o->look_at, err);
     return rc ? rc : tl_scene_validate(scene, err);
 }
 
@@ -380,7 +412,14 @@ int tl_cli_still(int argc, char **argv)
     const char *object[TL_OBJECT_MAX];
     for (int k = 0; k < o.objects; k++)
         object[k] = o.object_names[k];
-    const tl_passes_frame info = {o.passes, &scene.camera, object, o.objects, o.fps};
+    const tl_passes_frame info = {o.passes,
+                                  &scene.camera,
+                                  object,
+                                  o.objects,
+                                  o.fps,
+                                  &scene,
+                                  o.has_prev ? &o.prev : NULL,
+                                  o.has_next ? &o.next : NULL};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_format_from_path(o.outputs[i]) == TL_IMAGE_EXR
                  ? tl_passes_write_frame(o.outputs[i], &frame, &info, &opt, &err)

@@ -7,33 +7,33 @@
 
 #include "core/tl_math.h"
 
-static const struct {
-    const char *name;
-    unsigned passes;
-} pass_names[] = {
-    {"combined", TL_PASSES_COMBINED},
-    {"depth", TL_PASSES_DEPTH},
-    {"normal", TL_PASSES_NORMAL},
-    {"position", TL_PASSES_POSITION},
-    {"mask_water", TL_PASSES_MASK_WATER},
-    {"mask_foam", TL_PASSES_MASK_FOAM},
-    {"mask_giant", TL_PASSES_MASK_GIANT},
-    {"mask_boat", TL_PASSES_MASK_BOAT},
-    {"mask_sky", TL_PASSES_MASK_SKY},
-    {"mask_underwater", TL_PASSES_MASK_UNDERWATER},
-    {"cryptomatte", TL_PASSES_CRYPTOMATTE},
-    /* Groups, after the passes (tl_passes_format names passes only). */
-    {"masks", TL_PASSES_MASKS},
-    {"all", TL_PASSES_ALL},
-    {"none", 0},
-};
-#define PASS_NAMES ((int)(sizeof pass_names / sizeof pass_names[0]))
+/* The names `--passes` takes, each with the passes it asks for: the passes
+ * one by one, then the groups (tl_passes_format names passes only). */
+static const char *const pass_names[] = {
+    "combined",    "depth",      "normal",    "position", "mask_water",
+    "mask_foam",   "mask_giant", "mask_boat", "mask_sky", "mask_underwater",
+    "cryptomatte", "vector",     "masks",     "all",      "none",
+    NULL};
+static const unsigned pass_bits[] = {
+    TL_PASSES_COMBINED,        TL_PASSES_DEPTH,       TL_PASSES_NORMAL,
+    TL_PASSES_POSITION,        TL_PASSES_MASK_WATER,  TL_PASSES_MASK_FOAM,
+    TL_PASSES_MASK_GIANT,      TL_PASSES_MASK_BOAT,   TL_PASSES_MASK_SKY,
+    TL_PASSES_MASK_UNDERWATER, TL_PASSES_CRYPTOMATTE, TL_PASSES_VECTOR,
+    TL_PASSES_MASKS,           TL_PASSES_ALL,         0};
+#define PASS_NAMES ((int)(sizeof pass_bits / sizeof pass_bits[0]))
+_Static_assert(sizeof pass_names / sizeof pass_names[0] == PASS_NAMES + 1,
+               "a name for every set of passes");
 
 const char *tl_passes_valid_names(void)
 {
     return "combined, depth, normal, position, mask_water, mask_foam, mask_giant, mask_boat, "
-           "mask_sky, mask_underwater, cryptomatte, masks (every mask), all, none (alone: the "
-           "plain file)";
+           "mask_sky, mask_underwater, cryptomatte, vector, masks (every mask), all, none (alone: "
+           "the plain file)";
+}
+
+const char *const *tl_passes_name_list(void)
+{
+    return pass_names;
 }
 
 int tl_passes_parse(const char *list, unsigned *passes, size_t *bad_at, size_t *bad_len)
@@ -43,18 +43,18 @@ int tl_passes_parse(const char *list, unsigned *passes, size_t *bad_at, size_t *
     for (;;) {
         size_t len = strcspn(list + at, ",");
         int k = 0;
-        while (k < PASS_NAMES && !(strlen(pass_names[k].name) == len &&
-                                   strncmp(list + at, pass_names[k].name, len) == 0))
+        while (k < PASS_NAMES &&
+               !(strlen(pass_names[k]) == len && strncmp(list + at, pass_names[k], len) == 0))
             k++;
         /* "none" stands alone. */
-        if (k == PASS_NAMES || (!pass_names[k].passes && (at > 0 || list[at + len]))) {
+        if (k == PASS_NAMES || (!pass_bits[k] && (at > 0 || list[at + len]))) {
             *bad_at = at;
             *bad_len = len;
             return -1;
         }
-        if (!pass_names[k].passes)
+        if (!pass_bits[k])
             found = 0;
-        found |= pass_names[k].passes;
+        found |= pass_bits[k];
         if (!list[at + len])
             break;
         at += len + 1;
@@ -69,15 +69,16 @@ void tl_passes_format(unsigned passes, char *out, size_t size)
     if (size)
         out[0] = '\0';
     for (int k = 0; k < PASS_NAMES && n < size; k++) {
-        unsigned p = pass_names[k].passes;
+        unsigned p = pass_bits[k];
         if ((p & (p - 1)) == 0 && (passes & p)) /* one pass, not a group */
-            n += (size_t)snprintf(out + n, size - n, "%s%s", n ? "," : "", pass_names[k].name);
+            n += (size_t)snprintf(out + n, size - n, "%s%s", n ? "," : "", pass_names[k]);
     }
 }
 
 int tl_passes_need_aov(unsigned passes)
 {
-    return (passes & (TL_PASSES_NORMAL | TL_PASSES_MASKS | TL_PASSES_CRYPTOMATTE)) != 0;
+    return (passes &
+            (TL_PASSES_NORMAL | TL_PASSES_MASKS | TL_PASSES_CRYPTOMATTE | TL_PASSES_VECTOR)) != 0;
 }
 
 /* ---- the camera ---- */

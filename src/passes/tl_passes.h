@@ -30,11 +30,12 @@ enum {
     TL_PASSES_MASK_SKY = 1u << 8,
     TL_PASSES_MASK_UNDERWATER = 1u << 9,
     TL_PASSES_CRYPTOMATTE = 1u << 10,
+    TL_PASSES_VECTOR = 1u << 11,
 };
 #define TL_PASSES_MASKS                                                                            \
     (TL_PASSES_MASK_WATER | TL_PASSES_MASK_FOAM | TL_PASSES_MASK_GIANT | TL_PASSES_MASK_BOAT |     \
      TL_PASSES_MASK_SKY | TL_PASSES_MASK_UNDERWATER)
-#define TL_PASSES_ALL ((1u << 11) - 1u)
+#define TL_PASSES_ALL ((1u << 12) - 1u)
 
 /* Parses a list of pass names separated by commas ("depth,normal", "all",
  * "masks" for every mask) into *passes, with TL_PASSES_COMBINED; "none"
@@ -44,11 +45,13 @@ enum {
 int tl_passes_parse(const char *list, unsigned *passes, size_t *bad_at, size_t *bad_len);
 /* The valid names, for messages: "combined, depth, ..., all". */
 const char *tl_passes_valid_names(void);
+/* The same as a NULL-terminated list (for "did you mean"). */
+const char *const *tl_passes_name_list(void);
 /* The names of the passes in `passes`, separated by commas, into out. */
 void tl_passes_format(unsigned passes, char *out, size_t size);
 /* Whether the passes need the renderer's per-sample data (tl_frame's aov
- * plane): normal, masks, Cryptomatte. Depth and position need only the
- * distance plane. */
+ * plane): normal, masks, Cryptomatte, vector (which surface each pixel
+ * shows). Depth and position need only the distance plane. */
 int tl_passes_need_aov(unsigned passes);
 
 /* ---- Cryptomatte (Psyop's specification 1.1) ---- */
@@ -108,7 +111,19 @@ typedef struct tl_passes_frame {
     const char *const *object; /* the floating objects' names by scene index, NULL past them */
     int objects;
     double fps; /* the timeline's frames per second (framesPerSecond; 0: none) */
+    /* The Vector pass: the frame's scene, and the scenes one frame before
+     * and after it (NULL: no motion that way, as across a cut). */
+    const tl_scene *scene, *prev, *next;
 } tl_passes_frame;
+
+/* The Vector pass of `frame` (Blender's layout, 4 floats a pixel, rows top
+ * first, in pixels with y up): x y the move to where the point a pixel
+ * shows was a frame before, z w from where it will be a frame after. A
+ * point moves with what it lies on: the sky with the camera's turn alone,
+ * a hull with its object, the giant wave with its crest's travel, the
+ * ocean up and down with its waves. Needs the aov plane (which surface a
+ * pixel shows). */
+void tl_passes_vectors(const tl_frame *frame, const tl_passes_frame *info, float *out);
 
 /* Writes `frame` (its colour and depth, and its aov plane for the passes
  * that need it) as a multilayer EXR with the passes in info, atomically,

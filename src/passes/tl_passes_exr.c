@@ -105,7 +105,7 @@ static int crypto_manifest(const tl_passes_frame *info, char *out, size_t size)
     return n < size ? 0 : -1;
 }
 
-enum { MAX_CHANNELS = 4 + 1 + 3 + 3 + 6 + 4 * (TL_CRYPTO_RANKS / 2) };
+enum { MAX_CHANNELS = 4 + 1 + 3 + 3 + 6 + 4 * (TL_CRYPTO_RANKS / 2) + 4 };
 
 int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes_frame *info,
                         const tl_image_options *opt, tl_error *err)
@@ -168,6 +168,17 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
                 normal[i * 3 + (size_t)c] = held(aov_at(frame, 0, i, c), -1.0f, 1.0f);
     }
 
+    float *vector = NULL;
+    if (passes & TL_PASSES_VECTOR) {
+        vector = malloc(px * 4 * sizeof *vector);
+        if (!vector) {
+            free(normal);
+            free(data);
+            return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory for the passes", path);
+        }
+        tl_passes_vectors(frame, info, vector);
+    }
+
     tl_exr_channel ch[MAX_CHANNELS];
     int n = 0;
     static const char *const rgba[4] = {LAYER "Combined.R", LAYER "Combined.G", LAYER "Combined.B",
@@ -195,6 +206,10 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
     for (int m = 0; m < 6; m++)
         if (passes & masks[m].pass)
             ch[n++] = (tl_exr_channel){masks[m].name, 1, data + MASK + m, PER_PIXEL};
+    static const char *const xyzw[4] = {LAYER "Vector.X", LAYER "Vector.Y", LAYER "Vector.Z",
+                                        LAYER "Vector.W"};
+    for (int c = 0; vector && c < 4; c++)
+        ch[n++] = (tl_exr_channel){xyzw[c], 0, vector + c, 4};
     /* Cryptomatte: IDs and coverage in 32-bit float (a half ID matches
      * nothing), lower-case rgba as Blender writes them. */
     static const char *const crypto[TL_CRYPTO_RANKS / 2][4] = {
@@ -234,6 +249,7 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
         rc = tl_exr_write_channels(path, w, h, ch, n, &o, err);
     }
     free(meta);
+    free(vector);
     free(normal);
     free(data);
     return rc;

@@ -95,8 +95,19 @@ static int write_frame_files(const run_state *s, long frame, const tl_scene *sce
     const char *object[TL_OBJECT_MAX];
     for (int k = 0; k < cfg->timeline->object_count && k < TL_OBJECT_MAX; k++)
         object[k] = cfg->timeline->objects[k].name;
-    const tl_passes_frame info = {cfg->passes, &scene->camera, object, cfg->timeline->object_count,
-                                  cfg->timeline->fps};
+    tl_passes_frame info = {cfg->passes,        &scene->camera, object, cfg->timeline->object_count,
+                            cfg->timeline->fps, scene,          NULL,   NULL};
+    /* The Vector pass: the scenes a frame before and after, none across a cut. */
+    tl_scene prev, next;
+    if (cfg->passes & TL_PASSES_VECTOR) {
+        const tl_timeline *tl = cfg->timeline;
+        double t0 = tl_timeline_frame_time(tl, frame - 1),
+               t1 = tl_timeline_frame_time(tl, frame + 1);
+        tl_render_frame_scene(tl, t0, &cfg->settings, &prev);
+        tl_render_frame_scene(tl, t1, &cfg->settings, &next);
+        info.prev = tl_timeline_has_cut_between(tl, t0, scene->time) ? NULL : &prev;
+        info.next = tl_timeline_has_cut_between(tl, scene->time, t1) ? NULL : &next;
+    }
     return tl_passes_write_frame(path, f, &info, &opt, err);
 }
 

@@ -645,10 +645,13 @@ static void dir_header(parser *p, token *tok, int n)
             unsigned passes;
             if (!tl_passes_parse(tok[i].s, &passes, &at, &len))
                 tl->passes |= passes;
-            else
-                tl_parse_diag(p, tok[i].col + (int)at, len ? (int)len : 1, NULL,
-                              "unknown pass '%.*s' (passes: %s)", (int)len, tok[i].s + at,
-                              tl_passes_valid_names());
+            else {
+                char bad[64];
+                snprintf(bad, sizeof bad, "%.*s", (int)len, tok[i].s + at);
+                tl_parse_diag(p, tok[i].col + (int)at, len ? (int)len : 1,
+                              tl_suggest(bad, tl_passes_name_list()),
+                              "unknown pass '%s' (passes: %s)", bad, tl_passes_valid_names());
+            }
         }
     }
 }
