@@ -35,6 +35,15 @@ add_library(tl_openexr_core INTERFACE)
 target_link_libraries(tl_openexr_core INTERFACE ${OPENEXR_CORE_LIB})
 target_include_directories(tl_openexr_core INTERFACE ${OPENEXR_CORE_INCLUDE})
 
+# tinygltf writes the camera's glTF (tideline export-camera). Debian's
+# package ships the library and its header, whose declarations need no
+# JSON library.
+find_package(TinyGLTF CONFIG QUIET)
+if(NOT TinyGLTF_FOUND)
+  message(FATAL_ERROR "Missing dependency 'TinyGLTF': install the Debian package 'libtinygltf-dev' "
+                      "(or run scripts/setup.sh)")
+endif()
+
 find_library(MATH_LIB m)
 
 # POSIX threads: render writes frame n-1 while frame n renders.

@@ -21,8 +21,10 @@ packages=(
   gnuplot-nox                      # tideline bench --plot
   clang-14 libclang-rt-14-dev      # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
   valgrind                         # memcheck over a still and a render (scripts/valgrind.sh)
-  blender openimageio-tools        # compositing clients in the tests: Blender 3.4's Cryptomatte
-                                   # node and oiiotool read the EXR passes (tests/test_blender.sh)
+  libtinygltf-dev                  # glTF writing (tideline export-camera)
+  blender python3-numpy            # a real client in the tests: Blender 3.4 reads the EXR passes
+  openimageio-tools                # (Cryptomatte, Vector Blur) and the glTF; oiiotool lists the
+                                   # layers (tests/test_blender.sh); numpy: its glTF importer
 )
 
 missing=()

@@ -18,6 +18,8 @@ static const char usage[] =
     "  eval      print a timeline's channel values at a time or frames\n"
     "  compare   how far one image is from another (PSNR, SSIM, pixel error)\n"
     "  bench     measure each quality preset's time and error against reference\n"
+    "  export-camera  write the camera, sun and boats' animation as glTF for a 3D\n"
+    "            package\n"
     "\n"
     "Options:\n"
     "  -h, --help       show this help ('tideline COMMAND --help' for a command)\n"
@@ -59,6 +61,8 @@ int main(int argc, char **argv)
         return tl_cli_bench(argc - 1, argv + 1);
     if (strcmp(cmd, "compare") == 0)
         return tl_cli_compare(argc - 1, argv + 1);
+    if (strcmp(cmd, "export-camera") == 0)
+        return tl_cli_export_camera(argc - 1, argv + 1);
     fprintf(stderr, "tideline: unknown command '%s' (see 'tideline --help')\n", cmd);
     return 2;
 }

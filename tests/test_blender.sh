@@ -4,7 +4,8 @@
 # compositor pulls the boat's and the giant wave's mattes with its
 # Cryptomatte node, and they match tideline's own masks (intersection over
 # union at least 0.97); its Vector Blur node blurs a panning shot along
-# the pan. Skipped (77) where blender or oiiotool is missing
+# the pan; its glTF importer reads `tideline export-camera`'s file with the
+# camera, its lens and the boat where `tideline eval` puts them. Skipped (77) where blender or oiiotool is missing
 # (scripts/setup.sh installs both).
 # Usage: test_blender.sh TIDELINE TIMELINES_DIR TESTS_DIR
 set -eu
@@ -92,4 +93,20 @@ set -- $(sed -n 's/^GRADIENT //p' "$work/blender_blur.txt") 1 1 1 1
 check "Vector Blur smears across the pan (detail across $1 -> $2, down $3 -> $4)" \
   awk -v xb="$1" -v xa="$2" -v yb="$3" -v ya="$4" \
   'BEGIN { rx = xa / xb; ry = ya / yb; exit !(rx < 0.8 && rx < ry - 0.15) }'
+# The camera and boat through glTF, at a frame of each of two shots.
+"$tideline" export-camera "$timelines/giant_wave.tl" -o "$work/camera.gltf"
+for frame in 100 250; do
+  "$tideline" eval "$timelines/giant_wave.tl" --at ${frame}f --json >"$work/eval.json"
+  blender -b --factory-startup --python "$tests/blender_camera.py" -- \
+    "$work/camera.gltf" "$work/eval.json" $frame >"$work/blender_camera.txt" 2>&1 || true
+  grep -E '^(OBJECTS|CAMERA|BOAT|ERROR)' "$work/blender_camera.txt" || tail -5 "$work/blender_camera.txt"
+  set -- $(sed -n 's/^CAMERA //p' "$work/blender_camera.txt") 9 9 9 9
+  check "frame $frame: Blender's camera at tideline's (${1} m, ${2} rad, lens ${3} rad off)" \
+    awk -v p="$1" -v d="$2" -v f="$3" 'BEGIN { exit !(p < 1e-3 && d < 1e-4 && f < 1e-4) }'
+  [ $frame = 100 ] && check "Blender's camera has the first shot's lens (${4} rad)" \
+    awk -v a="$4" 'BEGIN { exit !(a > 0.8726 && a < 0.8727) }'
+  set -- $(sed -n 's/^BOAT //p' "$work/blender_camera.txt") 9 9
+  check "frame $frame: Blender's boat at tideline's (${1} m, heading ${2} rad off)" \
+    awk -v p="$1" -v h="$2" 'BEGIN { exit !(p < 1e-3 && h < 1e-4) }'
+done
 exit $fail

@@ -99,6 +99,9 @@ static void test_bad_flags(void)
                  "depth", "-o", png);
     EXPECT_USAGE("--passes: unknown pass 'none' in 'none,depth'", "render", "x.tl", "--passes",
                  "none,depth", "-o", exr);
+    EXPECT_USAGE("cam.txt: unknown format (use .gltf or .glb)", "export-camera", "x.tl", "-o",
+                 in_dir(2, "cam.txt"));
+    EXPECT_USAGE("nothing to write: give -o FILE.gltf", "export-camera", "x.tl");
 }
 
 /* still --dither off rounds each code, on (the default) takes the code
@@ -260,6 +263,34 @@ static void test_success(void)
     free(sky);
     free(water);
     free(plain);
+    /* export-camera: a binary glTF (its magic and version 2), and the JSON
+     * one naming the camera, the sun and the boat's node. */
+    const char *glb = in_dir(3, "cam.glb"), *gltf = in_dir(4, "cam.gltf");
+    f = fopen(tl, "w");
+    if (f) {
+        fputs("tideline 1\nduration 1s\npath boat\n  0s 0 10\n  1s 0 14\n", f);
+        fclose(f);
+    }
+    CHECK(run(NULL, "export-camera", tl, "-o", glb, NULL) == 0);
+    CHECK(run(NULL, "export-camera", tl, "-o", gltf, NULL) == 0);
+    unsigned char head[8] = {0};
+    FILE *g = fopen(glb, "rb");
+    CHECK(g && fread(head, 1, 8, g) == 8);
+    if (g)
+        fclose(g);
+    CHECK(memcmp(head, "glTF", 4) == 0 && head[4] == 2);
+    static char json[1 << 16];
+    g = fopen(gltf, "rb");
+    size_t got = g ? fread(json, 1, sizeof json - 1, g) : 0;
+    if (g)
+        fclose(g);
+    json[got] = '\0';
+    CHECK_STR_CONTAINS(json, "\"name\": \"camera\"");
+    CHECK_STR_CONTAINS(json, "\"KHR_lights_punctual\"");
+    CHECK_STR_CONTAINS(json, "\"name\": \"boat\"");
+    CHECK_STR_CONTAINS(json, "data:application/octet-stream;base64,");
+    unlink(glb);
+    unlink(gltf);
     unlink(tl);
     unlink(png);
     unlink(exr);

@@ -13,6 +13,7 @@ int tl_cli_eval(int argc, char **argv);
 int tl_cli_preview(int argc, char **argv);
 int tl_cli_compare(int argc, char **argv);
 int tl_cli_bench(int argc, char **argv);
+int tl_cli_export_camera(int argc, char **argv);
 
 /* Parses a timeline file, printing every diagnostic, and loads its boat's
  * mesh (the timeline's model, or the built-in boat) into *boat, or only

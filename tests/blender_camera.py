@@ -1,0 +1,74 @@
+# Blender 3.4 imports the glTF `tideline export-camera` writes, and its
+# camera and boat stand where `tideline eval` says they are at a frame.
+# Run headless:
+#   blender -b --factory-startup --python blender_camera.py -- CAMERA.gltf EVAL.json FRAME
+# Prints "CAMERA <position error m> <view direction error rad> <lens error rad>
+# <the camera's own angle_y>"
+# and "BOAT <position error m> <heading error rad>"; exits non-zero on any failure.
+import json
+import math
+import sys
+
+import bpy
+
+
+def blender_axes(v):
+    # tideline x east, y up, z north -> glTF (x, y, -z) -> Blender z up:
+    # (x, z, y).
+    return (v[0], v[2], v[1])
+
+
+def main():
+    args = sys.argv[sys.argv.index("--") + 1:]
+    path, eval_path, frame = args[0], args[1], int(args[2])
+    sample = json.load(open(eval_path))["samples"][0]
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.fps = 24
+    bpy.ops.import_scene.gltf(filepath=path)
+    names = sorted(o.name for o in bpy.data.objects)
+    print("OBJECTS", ",".join(names))
+    cam = next(o for o in bpy.data.objects if o.type == "CAMERA")
+    boat = bpy.data.objects.get("boat")
+    # Blender's importer puts glTF's time t at frame t * fps (+1 when its
+    # scene starts at frame 1: it shifts to the scene's first frame).
+    start = min(int(fc.range()[0]) for a in bpy.data.actions for fc in a.fcurves)
+    scene.frame_set(start + frame)
+
+    ch = sample["channels"]
+    p = ch["camera.position"]
+    yaw, pitch = math.radians(ch["camera.yaw"]), math.radians(ch["camera.pitch"])
+    forward = (math.cos(pitch) * math.sin(yaw), math.sin(pitch), math.cos(pitch) * math.cos(yaw))
+    want_p, want_f = blender_axes(p), blender_axes(forward)
+    m = cam.matrix_world
+    got_p = m.translation
+    got_f = -m.col[2].xyz
+    dp = math.dist(tuple(got_p), want_p)
+    df = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_f.normalized(), want_f)))))
+    # glTF animates no lens: the camera has frame 0's, and the lens of
+    # every frame rides along as extras, which Blender keeps as a custom
+    # property of the camera.
+    keys = cam.data.get("tideline_yfov_per_frame")
+    lens = keys[frame] if keys is not None else float("nan")
+    dfov = abs(lens - math.radians(ch["camera.fov"]))
+    print("CAMERA %.6f %.6f %.6f %.6f" % (dp, df, dfov, cam.data.angle_y))
+    if boat is not None:
+        b = sample["boat"]
+        heading = math.radians(b["heading"])
+        bow = blender_axes((math.sin(heading), 0.0, math.cos(heading)))
+        # The node's glTF +z, the bow, is its Blender -y (the importer turns
+        # a node's own y up into z up as it does the world's).
+        got_bow = -boat.matrix_world.col[1].xyz.normalized()
+        db = math.dist(tuple(boat.matrix_world.translation), blender_axes(b["position"]))
+        # The bow's compass heading, level (pitch and roll leave it alone).
+        dh = abs(math.atan2(got_bow.x, got_bow.y) - math.atan2(bow[0], bow[1]))
+        print("BOAT %.6f %.6f" % (db, min(dh, 2 * math.pi - dh)))
+
+
+try:
+    main()
+except SystemExit:
+    raise
+except Exception as e:  # a Python error is a failure, with its message
+    print("ERROR", e)
+    sys.exit(1)
