@@ -22,6 +22,7 @@ packages=(
   clang-14 libclang-rt-14-dev      # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
   valgrind                         # memcheck over a still and a render (scripts/valgrind.sh)
   libtinygltf-dev                  # glTF writing (tideline export-camera)
+  libopencolorio-dev               # colour management: working spaces, studio display transforms
   blender python3-numpy            # a real client in the tests: Blender 3.4 reads the EXR passes
   openimageio-tools                # (Cryptomatte, Vector Blur) and the glTF; oiiotool lists the
                                    # layers (tests/test_blender.sh); numpy: its glTF importer

@@ -27,6 +27,20 @@ uniform sampler2D u_glare; // glare.frag's image (TL_PRESENT_GLARE)
 uniform ivec2 u_out_size; // the output, pixels
 uniform float u_exposure;
 uniform float u_bloom;
+#ifdef TL_PRESENT_LUT
+// An OpenColorIO display transform baked into a table over a log2 shaper
+// (src/color/tl_color.h): it takes the place of the ACES fit and the sRGB
+// curve, its outputs the display's code values.
+uniform sampler3D u_display_lut;
+
+vec3 display_lut(vec3 radiance)
+{
+    vec3 u = (log2(max(radiance, vec3(1.0e-30))) - TL_COLOR_SHAPER_LO) /
+             (TL_COLOR_SHAPER_HI - TL_COLOR_SHAPER_LO);
+    float n = float(textureSize(u_display_lut, 0).x);
+    return texture(u_display_lut, (clamp(u, 0.0, 1.0) * (n - 1.0) + 0.5) / n).rgb;
+}
+#endif
 
 layout(location = 0) out vec4 out_display;
 layout(location = 1) out vec4 out_color;
@@ -71,5 +85,9 @@ void main()
 #ifdef TL_PRESENT_GLARE
     hdr = mix(hdr, texture(u_glare, frag_xy() / vec2(u_out_size)).rgb, u_bloom);
 #endif
+#ifdef TL_PRESENT_LUT
+    out_display = vec4(clamp(display_lut(hdr * u_exposure), 0.0, 1.0), 1.0);
+#else
     out_display = vec4(tonemap_srgb_encode(tonemap_aces(hdr * u_exposure)), 1.0);
+#endif
 }

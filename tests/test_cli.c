@@ -102,6 +102,20 @@ static void test_bad_flags(void)
     EXPECT_USAGE("cam.txt: unknown format (use .gltf or .glb)", "export-camera", "x.tl", "-o",
                  in_dir(2, "cam.txt"));
     EXPECT_USAGE("nothing to write: give -o FILE.gltf", "export-camera", "x.tl");
+    /* Colour: a working space, a display or view the config lacks, a
+     * config that cannot be read (named, here and through $OCIO). */
+    EXPECT_USAGE("--working-space: 'p3' is not rec709 or acescg", "still", "--working-space", "p3",
+                 "-o", exr);
+    EXPECT_USAGE("built-in: display 'sRGB' has no view 'Film' (views: ACES 1.0 - SDR Video, "
+                 "Un-tone-mapped, Raw)",
+                 "still", "--view", "Film", "-o", png);
+    EXPECT_USAGE("built-in: no display 'P3' (displays: sRGB)", "still", "--display", "P3", "-o",
+                 png);
+    EXPECT_USAGE("--ocio: OpenColorIO config /nonexistent/studio.ocio:", "still", "--ocio",
+                 "/nonexistent/studio.ocio", "-o", png);
+    CHECK(run("OCIO=/nonexistent/env.ocio", "still", "-o", png, NULL) == 2);
+    CHECK_STR_CONTAINS(out_text, "OpenColorIO config /nonexistent/env.ocio:");
+    CHECK(dir_entries(dir) == 0);
 }
 
 /* still --dither off rounds each code, on (the default) takes the code

@@ -121,7 +121,7 @@ static void test_camera(void)
     CHECK(worst_z < 1e-6);
 
     tl_passes_meta m;
-    int n = tl_passes_camera_meta(&cams[0], 1920, 1080, 24.0, &m);
+    int n = tl_passes_camera_meta(&cams[0], 1920, 1080, 24.0, TL_WORKING_REC709, &m);
     CHECK(n == TL_PASSES_CAMERA_META);
     /* vfov 1 rad over 16:9: the horizontal from the aspect, the focal
      * length from the 36 mm sensor's half width. */
@@ -142,7 +142,8 @@ static void test_camera(void)
         }
     }
     CHECK(seen == 3);
-    tl_passes_camera_meta(&cams[0], 1920, 1080, 23.976, &m);
+    tl_passes_camera_meta(&cams[0], 1920, 1080, 23.976, TL_WORKING_ACESCG, &m);
+    CHECK(m.chromaticities[0] == 0.713 && m.chromaticities[7] == 0.33767);
     CHECK(m.fps[0] == 2997.0 && m.fps[1] == 125.0);
 }
 
@@ -192,8 +193,16 @@ static void test_file(void)
         *aov(&f, 1, i, 1) = 1.0f;
     const tl_camera cam = {{100.0, 5.0, -40.0}, 0.4, -0.2, 0.0, 1.0};
     const char *names[2] = {"boat", "dinghy"};
-    tl_passes_frame info = {
-        TL_PASSES_ALL & ~TL_PASSES_VECTOR, &cam, names, 2, 24.0, NULL, NULL, NULL};
+    tl_passes_frame info = {TL_PASSES_ALL & ~TL_PASSES_VECTOR,
+                            &cam,
+                            names,
+                            2,
+                            24.0,
+                            NULL,
+                            NULL,
+                            NULL,
+                            TL_WORKING_REC709,
+                            NULL};
     char path[] = "/tmp/tideline_test_passes_XXXXXX.exr";
     int fd = mkstemps(path, 4);
     CHECK(fd >= 0);

@@ -300,6 +300,8 @@ int main(int argc, char **argv)
                             tl->fps,
                             &scene,
                             NULL,
+                            NULL,
+                            TL_WORKING_REC709,
                             NULL};
     char out[] = "/tmp/tideline_test_passes_render_XXXXXX.exr";
     int fd = mkstemps(out, 4);

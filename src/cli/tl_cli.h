@@ -44,6 +44,46 @@ void tl_cli_format_duration(double seconds, char *out, size_t size);
  * which the tests use so as not to depend on a slow frame). */
 double tl_cli_progress_delay(void);
 
+/* The colour flags of render and still (tl_cli_color.c): --working-space,
+ * --ocio, --display, --view; their help lines TL_CLI_COLOR_USAGE. */
+#include "color/tl_color.h"
+struct tl_args;
+struct tl_render;
+struct tl_ocio_display;
+typedef struct tl_cli_color {
+    tl_working_space space; /* the EXR colour's */
+    int has_space;          /* --working-space given */
+    const char *ocio, *display, *view;
+    /* After tl_cli_color_prepare: */
+    int convert; /* space is not the radiance's: matrix takes it there */
+    double matrix[9];
+    struct tl_ocio_display *transform; /* the display transform, or NULL: the ACES fit */
+    float *lut;                        /* its table (tl_color.h's layout) */
+} tl_cli_color;
+#define TL_CLI_COLOR_USAGE                                                                         \
+    "  --working-space rec709|acescg\n"                                                            \
+    "                         the EXR colour's space (default: the timeline's\n"                   \
+    "                         `working_space` line, else rec709); its chromaticities\n"            \
+    "                         are the file's\n"                                                    \
+    "  --ocio CONFIG          display images (PNG, movie) through this OpenColorIO\n"              \
+    "                         config's display and view (default $OCIO; without either\n"          \
+    "                         the ACES fit, unless --display or --view asks for\n"                 \
+    "                         tideline's own config)\n"                                            \
+    "  --display NAME         the config's display (default: its default display)\n"               \
+    "  --view NAME            the display's view (default: its default view)\n"
+/* One of the colour flags into c: 1 matched, 0 not one of them, -1 an
+ * error (err filled). */
+int tl_cli_color_flag(struct tl_args *a, tl_cli_color *c, tl_error *err);
+/* The working space (the flag over the timeline's `timeline_space`), its
+ * matrix, and the display transform when a config ($OCIO, --ocio) or
+ * --display / --view asks for one, baked into its table. Errors name the
+ * config, display or view (usage errors, 2). */
+int tl_cli_color_prepare(tl_cli_color *c, int timeline_space, tl_error *err);
+/* Hands the display table to the renderer (nothing for the ACES fit). */
+int tl_cli_color_use(const tl_cli_color *c, struct tl_render *render, tl_error *err);
+const char *tl_cli_color_describe(const tl_cli_color *c);
+void tl_cli_color_free(tl_cli_color *c);
+
 /* --passes LIST (`flag` its name) into *passes (TL_PASSES_*): a usage
  * error naming the unknown pass and listing the valid ones. */
 int tl_cli_passes(const char *flag, const char *value, unsigned *passes, tl_error *err);

@@ -66,7 +66,7 @@ static const char usage[] =
     "                         names them (combined, depth, normal, position, mask_water,\n"
     "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
     "                         cryptomatte, vector; masks, all; none); overrides the\n"
-    "                         timeline's `passes` line (docs/compositing.md)\n"
+    "                         timeline's `passes` line (docs/compositing.md)\n" TL_CLI_COLOR_USAGE
     "  --writers N            frames encoded and written side by side, 1..8 (default:\n"
     "                         half the processors, at most 8)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"
@@ -98,6 +98,7 @@ typedef struct render_options {
     int dither;          /* 8-bit PNG and movie frames dithered (default) */
     int exr_compression; /* 0: the writer's default (zlib level 4) */
     unsigned passes;     /* --passes (TL_PASSES_*), when has_passes */
+    tl_cli_color color;  /* --working-space, --ocio, --display, --view */
     int has_passes;
     int writers; /* 0: tl_writer_default_count() */
     int skip_existing;
@@ -119,6 +120,11 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
     while (!tl_args_done(&a)) {
         int rc = TL_OK;
         const char *pos;
+        int color = tl_cli_color_flag(&a, &o->color, err);
+        if (color < 0)
+            return err->status ? (int)err->status : TL_ERR_USAGE;
+        if (color > 0)
+            continue;
         if (tl_args_match(&a, "--help", "-h", false, err)) {
             *help = 1;
             return TL_OK;
@@ -337,7 +343,10 @@ int tl_cli_render(int argc, char **argv)
     }
     if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
         tl_error_prefix(&err, "--shader-dir");
+    if (!rc)
+        rc = tl_cli_color_prepare(&o.color, tl.working_space, &err);
     if (rc) {
+        tl_cli_color_free(&o.color);
         tl_cli_print_error("render", &err);
         tl_frame_list_free(&frames);
         tl_timeline_free(&tl);
@@ -360,8 +369,11 @@ int tl_cli_render(int argc, char **argv)
     rc = tl_render_open(&render, &lib, &err);
     if (!rc && models.count)
         rc = tl_render_set_models(render, &models, &err);
+    if (!rc)
+        rc = tl_cli_color_use(&o.color, render, &err);
     if (!rc && o.verbose)
-        fprintf(stderr, "tideline render: %s\n", tl_render_describe(render));
+        fprintf(stderr, "tideline render: %s\ntideline render: display: %s\n",
+                tl_render_describe(render), tl_cli_color_describe(&o.color));
     if (!rc && o.movie)
         rc = tl_movie_open(&movie, o.movie, width, height, tl.fps, &err);
 
@@ -386,6 +398,8 @@ int tl_cli_render(int argc, char **argv)
                                    .png_compression = o.png_compression,
                                    .exr_compression = o.exr_compression},
                          .passes = passes,
+                         .space = o.color.space,
+                         .working = o.color.convert ? o.color.matrix : NULL,
                          .skip_existing = o.skip_existing,
                          .writers = o.writers,
                          .stop = &stop_signal,
@@ -429,6 +443,7 @@ int tl_cli_render(int argc, char **argv)
                 o.movie, access(o.movie, F_OK) == 0 ? " (the earlier file is untouched)" : "");
 
     tl_render_close(render);
+    tl_cli_color_free(&o.color);
     tl_models_free(&models);
     tl_frame_list_free(&frames);
     tl_timeline_free(&tl);

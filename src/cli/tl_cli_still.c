@@ -75,7 +75,7 @@ static const char usage[] =
     "  --spp N                stratified samples per pixel (1..1024; default: the preset's)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
     "  --dither on|off        8-bit PNG: dither to the code below or above so smooth\n"
-    "                         skies do not band (default on; off rounds)\n"
+    "                         skies do not band (default on; off rounds)\n" TL_CLI_COLOR_USAGE
     "  --passes LIST          .exr: compositing passes as layers named as Blender\n"
     "                         names them (combined, depth, normal, position, mask_water,\n"
     "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
@@ -112,6 +112,8 @@ typedef struct still_options {
     /* The Vector pass: the scenes a frame before and after. */
     tl_scene prev, next;
     int has_prev, has_next;
+    tl_cli_color color; /* --working-space, --ocio, --display, --view */
+    int timeline_space; /* the timeline's `working_space` */
 } still_options;
 
 static int parse(int argc, char **argv, still_options *o, int *help, tl_error *err)
@@ -123,6 +125,11 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
     while (!tl_args_done(&a)) {
         int rc = TL_OK;
         const char *pos;
+        int color = tl_cli_color_flag(&a, &o->color, err);
+        if (color < 0)
+            return err->status ? (int)err->status : TL_ERR_USAGE;
+        if (color > 0)
+            continue;
         if (tl_args_match(&a, "--help", "-h", false, err)) {
             *help = 1;
             return TL_OK;
@@ -266,6 +273,7 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
         fps = tl.fps;
         if (!o->has_passes)
             o->passes = tl.passes;
+        o->timeline_space = tl.working_space;
         for (int k = 0; k < tl.object_count && k < TL_OBJECT_MAX; k++)
             snprintf(o->object_names[k], sizeof o->object_names[k], "%s", tl.objects[k].name);
         o->objects = tl.object_count;
@@ -361,7 +369,10 @@ int tl_cli_still(int argc, char **argv)
     tl_shader_lib_embedded(&lib);
     if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
         tl_error_prefix(&err, "--shader-dir");
+    if (!rc)
+        rc = tl_cli_color_prepare(&o.color, o.timeline_space, &err);
     if (rc) {
+        tl_cli_color_free(&o.color);
         tl_cli_print_error("still", &err);
         tl_models_free(&models);
         return rc == TL_ERR_RUNTIME ? 1 : 2;
@@ -374,6 +385,8 @@ int tl_cli_still(int argc, char **argv)
     if (!rc && models.count)
         rc = tl_render_set_models(render, &models, &err);
     tl_models_free(&models);
+    if (!rc)
+        rc = tl_cli_color_use(&o.color, render, &err);
     if (!rc && o.verbose)
         fprintf(stderr, "tideline still: %s\n", tl_render_describe(render));
     double t1 = tl_clock_seconds();
@@ -392,6 +405,7 @@ int tl_cli_still(int argc, char **argv)
         fprintf(stderr, "tideline still: %dx%d in %.1f ms (context and shaders %.1f ms)\n",
                 scene.width, scene.height, (t2 - t1) * 1e3, (t1 - t0) * 1e3);
         fprintf(stderr, "tideline still: features: %s\n", features);
+        fprintf(stderr, "tideline still: display: %s\n", tl_cli_color_describe(&o.color));
     }
 
     const tl_camera *cam = &scene.camera;
@@ -419,7 +433,9 @@ int tl_cli_still(int argc, char **argv)
                                   o.fps,
                                   &scene,
                                   o.has_prev ? &o.prev : NULL,
-                                  o.has_next ? &o.next : NULL};
+                                  o.has_next ? &o.next : NULL,
+                                  o.color.space,
+                                  o.color.convert ? o.color.matrix : NULL};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_format_from_path(o.outputs[i]) == TL_IMAGE_EXR
                  ? tl_passes_write_frame(o.outputs[i], &frame, &info, &opt, &err)
@@ -429,6 +445,7 @@ int tl_cli_still(int argc, char **argv)
     }
     tl_frame_free(&frame);
     tl_render_close(render);
+    tl_cli_color_free(&o.color);
     if (rc) {
         tl_cli_print_error("still", &err);
         return rc == TL_ERR_USAGE ? 2 : 1;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "color/tl_color.h"
 #include "gl/tl_renderer_internal.h"
 #include "mesh/tl_mesh.h"
 #include "optics/tl_optics.h"
@@ -143,6 +144,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_WAKE_SPEED_NONE %.3f\n"
         "#define TL_WAKE_SPEED_FULL %.3f\n"
         "#define TL_MARCH_RELAX %g\n"
+        "#define TL_COLOR_SHAPER_LO %.17g\n"
+        "#define TL_COLOR_SHAPER_HI %.17g\n"
         "#define TL_BOX_STEP_COST %g\n"
         "#define TL_MIRROR_SHIFT %g\n"
         "#define TL_MIRROR_STREAK %g\n"
@@ -203,14 +206,14 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_SPRAY_BOW_GAIN, TL_SPRAY_LANDING_GAIN, TL_SPRAY_LANDING_MEAN, TL_BOW_SPRAY_TORN_MEAN,
         TL_BOW_SPRAY_END, TL_BOW_SPRAY_REACH, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_SPRAY_RISE,
         TL_WAKE_POINTS, TL_WAKE_GROUP, TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL,
-        TL_QUALITY_MARCH_RELAX, TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_MIRROR_STREAK,
-        TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE,
-        TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA,
-        TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_FRAME_AOV_OBJECTS,
-        TL_GIANT_MATTE_SHARE, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
-        TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_CREST_REACH, TL_CAUSTIC_SUN_SPREAD, TL_CAUSTIC_FOLD,
-        TL_CAUSTIC_FINE_BLUR, TL_CAUSTIC_FINE_SHARE, TL_CAUSTIC_FINE_GAP, TL_SHAFT_RANGE,
-        TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD,
+        TL_QUALITY_MARCH_RELAX, TL_COLOR_SHAPER_LO, TL_COLOR_SHAPER_HI, TL_QUALITY_GIANT_STEP_COST,
+        TL_MIRROR_SHIFT, TL_MIRROR_STREAK, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
+        TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT,
+        TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN,
+        TL_OBJECT_MAX, TL_FRAME_AOV_OBJECTS, TL_GIANT_MATTE_SHARE, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR,
+        TL_CAUSTIC_PEAK, TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_CREST_REACH, TL_CAUSTIC_SUN_SPREAD,
+        TL_CAUSTIC_FOLD, TL_CAUSTIC_FINE_BLUR, TL_CAUSTIC_FINE_SHARE, TL_CAUSTIC_FINE_GAP,
+        TL_SHAFT_RANGE, TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD,
         TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY,
         TL_PARTICLE_PIXEL_SPREAD, TL_PARTICLE_MAX_CELLS, TL_PARTICLE_FOCUS, TL_PARTICLE_PUPIL,
         TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
@@ -350,9 +353,11 @@ void tl_renderer_destroy(tl_renderer *r)
         return;
     for (int i = 0; i < r->program_count; i++)
         glDeleteProgram(r->programs[i].program);
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < TL_PRESENT_VARIANTS; i++)
         if (r->present_programs[i])
             glDeleteProgram(r->present_programs[i]);
+    if (r->display_lut)
+        glDeleteTextures(1, &r->display_lut);
     for (int i = 0; i < r->probe_count; i++)
         glDeleteProgram(r->probes[i].program);
     tl_renderer_target_free(&r->scene);
@@ -465,7 +470,7 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     GLuint present = tl_renderer_build_present(r, 0, err);
     if (!present)
         return err ? (int)err->status : TL_ERR_RUNTIME; /* the old programs stay */
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < TL_PRESENT_VARIANTS; i++) {
         if (r->present_programs[i])
             glDeleteProgram(r->present_programs[i]);
         r->present_programs[i] = 0;

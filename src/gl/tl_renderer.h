@@ -122,6 +122,13 @@ unsigned tl_renderer_queued_planes(const tl_renderer *r);
  * copying them. */
 double tl_renderer_last_readback(const tl_renderer *r);
 
+/* A display transform as a table (src/color/tl_color.h's layout: n^3 RGB
+ * over its log2 shaper, as src/ocio bakes an OpenColorIO display and
+ * view): the display pass then reads it in place of the ACES fit and the
+ * sRGB curve (the table's outputs are the display's code values). NULL
+ * goes back to the ACES fit. */
+int tl_renderer_set_display_lut(tl_renderer *r, const float *rgb, int n, tl_error *err);
+
 /* The glare image (render.bloom) is this many times smaller than the
  * output on each side (rounded up), read back bilinearly. */
 #define TL_GLARE_DIVISOR 4

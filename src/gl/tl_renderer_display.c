@@ -15,9 +15,10 @@ GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err)
     char defines[TL_DEFINES_SIZE];
     tl_renderer_defines(0, defines, sizeof defines);
     size_t n = strlen(defines);
-    snprintf(defines + n, sizeof defines - n, "%s%s",
+    snprintf(defines + n, sizeof defines - n, "%s%s%s",
              (variant & TL_PRESENT_UPSCALE) ? "#define TL_PRESENT_UPSCALE 1\n" : "",
-             (variant & TL_PRESENT_GLARE) ? "#define TL_PRESENT_GLARE 1\n" : "");
+             (variant & TL_PRESENT_GLARE) ? "#define TL_PRESENT_GLARE 1\n" : "",
+             (variant & TL_PRESENT_LUT) ? "#define TL_PRESENT_LUT 1\n" : "");
     return tl_renderer_build_program(r, "fullscreen.vert", "present.frag", defines, err);
 }
 
@@ -269,8 +270,11 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
                             (planes & TL_PLANE_DEPTH) ? GL_COLOR_ATTACHMENT2 : GL_NONE};
     glDrawBuffers(3, draw);
     glViewport(0, 0, w, h);
-    GLuint program = tl_renderer_present_program(
-        r, (upscale ? TL_PRESENT_UPSCALE : 0) | (bloom > 0.0f ? TL_PRESENT_GLARE : 0), err);
+    GLuint program = tl_renderer_present_program(r,
+                                                 (upscale ? TL_PRESENT_UPSCALE : 0) |
+                                                     (bloom > 0.0f ? TL_PRESENT_GLARE : 0) |
+                                                     (r->display_lut ? TL_PRESENT_LUT : 0),
+                                                 err);
     if (!program)
         return err ? (int)err->status : TL_ERR_RUNTIME;
     glUseProgram(program);
@@ -283,6 +287,12 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     glUniform1i(tl_renderer_loc(program, "u_hdr"), TL_UNIT_DISPLAY_HDR);
     glUniform1i(tl_renderer_loc(program, "u_distance"), TL_UNIT_DISPLAY_DISTANCE);
     glUniform1i(tl_renderer_loc(program, "u_glare"), TL_UNIT_DISPLAY_GLARE);
+    if (r->display_lut) {
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_DISPLAY_LUT);
+        glBindTexture(GL_TEXTURE_3D, r->display_lut);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_DISPLAY_HDR);
+        glUniform1i(tl_renderer_loc(program, "u_display_lut"), TL_UNIT_DISPLAY_LUT);
+    }
     glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
     glUniform1f(tl_renderer_loc(program, "u_exposure"), d->exposure);
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
@@ -299,6 +309,29 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     if (!rc && (planes & TL_PLANE_AOV))
         rc = aov_pass(r, err);
     return rc;
+}
+
+int tl_renderer_set_display_lut(tl_renderer *r, const float *rgb, int n, tl_error *err)
+{
+    if (!rgb) {
+        if (r->display_lut)
+            glDeleteTextures(1, &r->display_lut);
+        r->display_lut = 0;
+        return TL_OK;
+    }
+    if (!r->display_lut)
+        glGenTextures(1, &r->display_lut);
+    glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+    glBindTexture(GL_TEXTURE_3D, r->display_lut);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGB32F, n, n, n, 0, GL_RGB, GL_FLOAT, rgb);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_3D, 0);
+    return tl_renderer_check("the display table", err);
 }
 
 int tl_renderer_display(tl_renderer *r, const tl_display_settings *display, tl_error *err)

@@ -13,7 +13,8 @@
 #include "mesh/tl_mesh.h"
 #include "sky/tl_sky.h"
 
-#define MAX_PROGRAMS 24
+#define MAX_PROGRAMS        24
+#define TL_PRESENT_VARIANTS 8
 /* Mesh programs: one per set of the features that light the hull
  * (MESH_FEATURES in tl_renderer_boat.c), with and without the model's
  * texture maps. */
@@ -47,7 +48,8 @@ enum {
     TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
     TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
     TL_UNIT_DISPLAY_DISTANCE = 1,  /* its distances, */
-    TL_UNIT_DISPLAY_GLARE = 2      /* the glare */
+    TL_UNIT_DISPLAY_GLARE = 2,     /* the glare, */
+    TL_UNIT_DISPLAY_LUT = 3        /* the display table */
 };
 
 /* Ocean program variants beyond the frame's features (bits above them):
@@ -131,10 +133,13 @@ struct tl_renderer {
     cached_program programs[MAX_PROGRAMS];
     int program_count;
     /* The display pass per variant: bit 0 upscales (render scale < 1), bit
-     * 1 adds glare. Each is its own program: llvmpipe runs the code of an
-     * `if` for every pixel, taken or not, so code a frame does not use must
-     * not be compiled in (the upscale's code was most of the pass). */
-    GLuint present_programs[4];
+     * 1 adds glare, bit 2 displays through a table (an OpenColorIO display
+     * transform) in place of the ACES fit. Each is its own program:
+     * llvmpipe runs the code of an `if` for every pixel, taken or not, so
+     * code a frame does not use must not be compiled in (the upscale's
+     * code was most of the pass). */
+    GLuint present_programs[TL_PRESENT_VARIANTS];
+    GLuint display_lut; /* the display table, a 3D texture (tl_renderer_set_display_lut), or 0 */
     cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
     int probe_count;
     target scene;   /* colour RGBA32F + depth R32F (+ the passes' data, TL_SCENE_AOV_ATTACHMENTS) */
@@ -268,7 +273,7 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
 
 /* The display pass's program for `variant` (TL_PRESENT_*), built on first
  * use; tl_renderer_build_present builds one afresh. */
-enum { TL_PRESENT_UPSCALE = 1, TL_PRESENT_GLARE = 2 };
+enum { TL_PRESENT_UPSCALE = 1, TL_PRESENT_GLARE = 2, TL_PRESENT_LUT = 4 };
 GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err);
 GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err);
 

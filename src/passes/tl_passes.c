@@ -146,13 +146,11 @@ static void fps_ratio(double fps, double out[2])
 }
 
 int tl_passes_camera_meta(const tl_camera *camera, int width, int height, double fps,
-                          tl_passes_meta *m)
+                          tl_working_space space, tl_passes_meta *m)
 {
     tl_passes_world_to_camera(camera, m->world_to_camera);
     tl_passes_world_to_ndc(camera, width, height, m->world_to_ndc);
-    /* Rec.709 primaries and D65, the working space of the colour. */
-    const double rec709[8] = {0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290};
-    memcpy(m->chromaticities, rec709, sizeof rec709);
+    tl_color_working_chromaticities(space, m->chromaticities);
     memcpy(m->origin, camera->position, sizeof m->origin);
     double ty = tan(0.5 * camera->vfov), tx = ty * width / height;
     double focal = 0.5 * TL_PASSES_SENSOR_WIDTH_MM / tx;

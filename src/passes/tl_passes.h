@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "color/tl_color.h"
 #include "core/tl_error.h"
 #include "image/tl_frame.h"
 #include "image/tl_image_io.h"
@@ -95,12 +96,12 @@ typedef struct tl_passes_meta {
     tl_meta meta[TL_PASSES_CAMERA_META];
 } tl_passes_meta;
 /* Fills m with the attributes every EXR frame carries: worldToCamera,
- * worldToNDC, chromaticities (linear Rec.709), framesPerSecond (when fps >
- * 0), the lens (focal length and sensor in mm, the horizontal and
+ * worldToNDC, chromaticities (the working space's), framesPerSecond (when
+ * fps > 0), the lens (focal length and sensor in mm, the horizontal and
  * vertical field of view in degrees) and the origin of the Position
  * pass (the camera's position in double). Returns how many (in m->meta). */
 int tl_passes_camera_meta(const tl_camera *camera, int width, int height, double fps,
-                          tl_passes_meta *m);
+                          tl_working_space space, tl_passes_meta *m);
 
 /* ---- the file ---- */
 
@@ -114,6 +115,10 @@ typedef struct tl_passes_frame {
     /* The Vector pass: the frame's scene, and the scenes one frame before
      * and after it (NULL: no motion that way, as across a cut). */
     const tl_scene *scene, *prev, *next;
+    /* The colour's working space, and the matrix (row-major 3x3) from the
+     * frame's linear Rec.709 to it (src/ocio gives it); NULL: as rendered. */
+    tl_working_space space;
+    const double *working;
 } tl_passes_frame;
 
 /* The Vector pass of `frame` (Blender's layout, 4 floats a pixel, rows top

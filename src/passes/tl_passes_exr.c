@@ -259,26 +259,50 @@ int tl_passes_write_frame(const char *path, const tl_frame *frame, const tl_pass
                           const tl_image_options *opt, tl_error *err)
 {
     int given = opt && opt->meta ? opt->meta_count : 0;
-    tl_meta *meta = malloc(sizeof *meta * (size_t)(given + TL_PASSES_CAMERA_META + 1));
+    tl_meta *meta = malloc(sizeof *meta * (size_t)(given + TL_PASSES_CAMERA_META + 2));
     if (!meta)
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory", path);
     if (given)
         memcpy(meta, opt->meta, sizeof *meta * (size_t)given);
     tl_passes_meta camera;
-    int n = tl_passes_camera_meta(info->camera, frame->width, frame->height, info->fps, &camera);
+    int n = tl_passes_camera_meta(info->camera, frame->width, frame->height, info->fps, info->space,
+                                  &camera);
     memcpy(meta + given, camera.meta, sizeof *meta * (size_t)n);
     tl_image_options o = opt ? *opt : (tl_image_options){0};
     o.meta = meta;
     o.meta_count = given + n;
+    meta[o.meta_count++] = (tl_meta){
+        "tideline/working_space", TL_META_STRING, tl_color_working_name(info->space), 0, 0, NULL};
+    /* The colour in the working space: a copy, the frame is the caller's. */
+    tl_frame converted = *frame;
+    converted.color = NULL;
+    if (info->working) {
+        const double *m = info->working;
+        size_t px = (size_t)frame->width * (size_t)frame->height;
+        converted.color = malloc(px * 4 * sizeof(float));
+        if (!converted.color) {
+            free(meta);
+            return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory", path);
+        }
+        for (size_t i = 0; i < px; i++) {
+            const float *c = frame->color + i * 4;
+            float *d = converted.color + i * 4;
+            for (int r = 0; r < 3; r++)
+                d[r] = (float)(m[r * 3] * c[0] + m[r * 3 + 1] * c[1] + m[r * 3 + 2] * c[2]);
+            d[3] = c[3];
+        }
+    }
+    const tl_frame *out = info->working ? &converted : frame;
     char names[256];
     int rc;
     if (!info->passes) {
-        rc = tl_exr_write(path, frame, &o, err);
+        rc = tl_exr_write(path, out, &o, err);
     } else {
         tl_passes_format(info->passes | TL_PASSES_COMBINED, names, sizeof names);
         meta[o.meta_count++] = (tl_meta){"tideline/passes", TL_META_STRING, names, 0, 0, NULL};
-        rc = tl_passes_write_exr(path, frame, info, &o, err);
+        rc = tl_passes_write_exr(path, out, info, &o, err);
     }
+    free(converted.color);
     free(meta);
     return rc;
 }

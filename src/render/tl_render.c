@@ -110,6 +110,11 @@ int tl_render_use_cutscene(tl_render *r, const tl_cutscene *cs, tl_error *err)
     return tl_render_set_models(r, &cs->models, err);
 }
 
+int tl_render_set_display_lut(tl_render *r, const float *rgb, int n, tl_error *err)
+{
+    return tl_renderer_set_display_lut(r->renderer, rgb, n, err);
+}
+
 unsigned tl_render_last_features(const tl_render *r)
 {
     return r->last_features;

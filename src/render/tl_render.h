@@ -41,6 +41,11 @@ int tl_render_set_models(tl_render *r, const tl_models *models, tl_error *err);
  * that its frames draw as `tideline still` draws them. */
 int tl_render_use_cutscene(tl_render *r, const tl_cutscene *cs, tl_error *err);
 
+/* The display image through a display transform's table (src/color's
+ * layout, as src/ocio bakes an OpenColorIO display and view) in place of
+ * the ACES fit; NULL goes back to the ACES fit. */
+int tl_render_set_display_lut(tl_render *r, const float *rgb, int n, tl_error *err);
+
 /* The shader features (tl_feature bits) of the last frame rendered: the
  * union over its passes. tl_feature_describe turns them into words. */
 unsigned tl_render_last_features(const tl_render *r);

@@ -96,7 +96,8 @@ static int write_frame_files(const run_state *s, long frame, const tl_scene *sce
     for (int k = 0; k < cfg->timeline->object_count && k < TL_OBJECT_MAX; k++)
         object[k] = cfg->timeline->objects[k].name;
     tl_passes_frame info = {cfg->passes,        &scene->camera, object, cfg->timeline->object_count,
-                            cfg->timeline->fps, scene,          NULL,   NULL};
+                            cfg->timeline->fps, scene,          NULL,   NULL,
+                            cfg->space,         cfg->working};
     /* The Vector pass: the scenes a frame before and after, none across a cut. */
     tl_scene prev, next;
     if (cfg->passes & TL_PASSES_VECTOR) {

@@ -13,6 +13,7 @@
 #include <signal.h>
 #include <stddef.h>
 
+#include "color/tl_color.h"
 #include "core/tl_error.h"
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
@@ -49,6 +50,8 @@ typedef struct tl_run_config {
     tl_movie *movie;        /* an open movie that takes every frame in order, or NULL */
     tl_image_options image; /* PNG bits, dither, compression (metadata: the run's) */
     unsigned passes;        /* EXR frames: the compositing passes (TL_PASSES_*; 0: none) */
+    tl_working_space space; /* EXR frames: the colour's working space, */
+    const double *working;  /* the matrix from linear Rec.709 to it (NULL: as rendered) */
     int skip_existing;
     int writers; /* 0: tl_writer_default_count() */
     volatile sig_atomic_t *stop;

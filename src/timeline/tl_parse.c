@@ -13,11 +13,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "color/tl_color.h"
 #include "passes/tl_passes.h"
 
-static const char *const directives[] = {"tideline", "fps",  "duration", "size", "quality",
-                                         "passes",   "set",  "key",      "path", "look",
-                                         "follow",   "boat", NULL};
+static const char *const directives[] = {"tideline", "fps",           "duration", "size", "quality",
+                                         "passes",   "working_space", "set",      "key",  "path",
+                                         "look",     "follow",        "boat",     NULL};
 static const char *const key_words[] = {
     "cut",           "constant",         "step",    "linear",    "bezier", "spline", "auto-clamped",
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
@@ -636,6 +637,17 @@ static void dir_header(parser *p, token *tok, int n)
                                                 "reference", "seed",    NULL};
             tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names), "%s", e.message);
         }
+    } else if (strcmp(d, "working_space") == 0) {
+        if (expect_args(p, tok, n, 1, 1, "rec709 or acescg"))
+            return;
+        tl_working_space space;
+        if (tl_color_working_parse(tok[1].s, &space)) {
+            static const char *const names[] = {"rec709", "acescg", NULL};
+            tl_parse_diag(p, tok[1].col, tok[1].len, tl_suggest(tok[1].s, names),
+                          "unknown working space '%s' (rec709 or acescg)", tok[1].s);
+            return;
+        }
+        tl->working_space = (int)space;
     } else if (strcmp(d, "passes") == 0) {
         if (expect_args(p, tok, n, 1, MAX_TOKENS, "pass names (e.g. depth,normal or all)"))
             return;
@@ -664,7 +676,8 @@ static void directive(parser *p, token *tok, int n)
         p->saw_header = 1; /* report it once, then read on */
     }
     if (strcmp(d, "tideline") == 0 || strcmp(d, "fps") == 0 || strcmp(d, "duration") == 0 ||
-        strcmp(d, "size") == 0 || strcmp(d, "quality") == 0 || strcmp(d, "passes") == 0)
+        strcmp(d, "size") == 0 || strcmp(d, "quality") == 0 || strcmp(d, "passes") == 0 ||
+        strcmp(d, "working_space") == 0)
         dir_header(p, tok, n);
     else if (strcmp(d, "set") == 0)
         dir_set(p, tok, n);

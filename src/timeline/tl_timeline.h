@@ -76,6 +76,8 @@ typedef struct tl_timeline {
     /* The `passes` line: the compositing passes its EXR frames carry
      * (TL_PASSES_* of src/passes; 0: none, the plain RGBA + Z file). */
     unsigned passes;
+    /* The `working_space` line: the EXR colour's space (tl_working_space). */
+    int working_space;
     tl_track *tracks;          /* tl_channel_count() entries */
     tl_path_track camera_path; /* points x y z */
     tl_link camera_look;
