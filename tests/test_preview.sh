@@ -108,6 +108,20 @@ cat "$work/out3"
 check "right, right, shift+right from 1 s is frame 50" grep -q "stopped at frame 50 " "$work/out3"
 check "F writes EXR and PNG" test -s "$work/keys_frame0050_1.exr" -a -s "$work/keys_frame0050_1.png"
 
+# An OpenColorIO view: the window shows what `still` writes with it.
+"$bin" preview "$timelines/calm.tl" --paused --time 5 --size 320x180 --quality final --refine 1 \
+  --view "ACES 1.0 - SDR Video" --screenshot "$work/view.png" --exit-after-frames 12 \
+  >"$work/out7" 2>&1
+"$bin" still "$timelines/calm.tl" --time 5 --size 320x180 --quality final \
+  --view "ACES 1.0 - SDR Video" -o "$work/still_view.png"
+psnr=$(psnr_of "$work/view.png" "$work/still_view.png")
+echo "screenshot through the OpenColorIO view against still's: PSNR $psnr dB"
+check "OpenColorIO view screenshot PSNR >= 40 dB" \
+  awk -v p="$psnr" 'BEGIN { exit !(p == "inf" || p >= 40) }'
+psnr=$(psnr_of "$work/view.png" "$work/preview.png")
+check "the view is not the ACES fit (PSNR $psnr dB < 60)" \
+  awk -v p="$psnr" 'BEGIN { exit !(p != "inf" && p < 60) }'
+
 # The title's shot index: voyage.tl cuts at 6 s.
 "$bin" preview "$timelines/voyage.tl" --paused --time 7 --size 64x36 --quality draft \
   --exit-after-frames 3 >"$work/out6" 2>&1

@@ -60,17 +60,17 @@ typedef struct tl_cli_color {
     struct tl_ocio_display *transform; /* the display transform, or NULL: the ACES fit */
     float *lut;                        /* its table (tl_color.h's layout) */
 } tl_cli_color;
+#define TL_CLI_DISPLAY_USAGE                                                                       \
+    "  --ocio CONFIG          display images through this OpenColorIO config's display\n"          \
+    "                         and view (default $OCIO; without either the ACES fit,\n"             \
+    "                         unless --display or --view asks for tideline's own config)\n"        \
+    "  --display NAME         the config's display (default: its default display)\n"               \
+    "  --view NAME            the display's view (default: its default view)\n"
 #define TL_CLI_COLOR_USAGE                                                                         \
     "  --working-space rec709|acescg\n"                                                            \
     "                         the EXR colour's space (default: the timeline's\n"                   \
     "                         `working_space` line, else rec709); its chromaticities\n"            \
-    "                         are the file's\n"                                                    \
-    "  --ocio CONFIG          display images (PNG, movie) through this OpenColorIO\n"              \
-    "                         config's display and view (default $OCIO; without either\n"          \
-    "                         the ACES fit, unless --display or --view asks for\n"                 \
-    "                         tideline's own config)\n"                                            \
-    "  --display NAME         the config's display (default: its default display)\n"               \
-    "  --view NAME            the display's view (default: its default view)\n"
+    "                         are the file's\n" TL_CLI_DISPLAY_USAGE
 /* One of the colour flags into c: 1 matched, 0 not one of them, -1 an
  * error (err filled). */
 int tl_cli_color_flag(struct tl_args *a, tl_cli_color *c, tl_error *err);

@@ -47,8 +47,8 @@ static const char usage[] =
     "  --keys LIST           play keys, one per frame: space,left,right,shift+left,\n"
     "                        shift+right,home,end,[,],1,2,3,4,c,p,f,r,l,h,esc\n"
     "  --watch-interval S    seconds between checks of the files (default 0.25)\n"
-    "  --shader-dir DIR      load shaders from DIR and reload them when they change\n"
-    "  -v, --verbose         log the GL renderer and every reload\n"
+    "  --shader-dir DIR      load shaders from DIR and reload them when they "
+    "change\n" TL_CLI_DISPLAY_USAGE "  -v, --verbose         log the GL renderer and every reload\n"
     "  -h, --help            show this help\n"
     "\n"
     "Keys: space play/pause; left/right one frame; shift+left/right one second;\n"
@@ -65,7 +65,8 @@ typedef struct options {
     int width, height;
     double scale, target_fps, watch_interval;
     long exit_after;
-    int refine; /* samples per pixel a paused frame refines to */
+    int refine;         /* samples per pixel a paused frame refines to */
+    tl_cli_color color; /* --ocio, --display, --view */
 } options;
 
 static volatile sig_atomic_t stop_signal = 0;
@@ -88,6 +89,15 @@ static int parse(int argc, char **argv, options *o, int *help, tl_error *err)
     while (!tl_args_done(&a)) {
         const char *pos;
         int rc = 0;
+        int color = tl_cli_color_flag(&a, &o->color, err);
+        if (color < 0)
+            return err->status ? (int)err->status : TL_ERR_USAGE;
+        if (color > 0 && o->color.has_space)
+            return tl_error_set(err, TL_ERR_USAGE,
+                                "--working-space: the preview shows its frames; give it to "
+                                "render or still");
+        if (color > 0)
+            continue;
         if (tl_args_match(&a, "--help", "-h", false, err)) {
             *help = 1;
             return 0;
@@ -568,8 +578,19 @@ int tl_cli_preview(int argc, char **argv)
         free(p.shot_starts);
         return 2;
     }
-    if (tl_render_open_window(&p.render, &lib, width, height, "tideline preview", &err)) {
+    int crc = tl_cli_color_prepare(&o.color, 0, &err);
+    if (crc) {
+        tl_cli_color_free(&o.color);
         tl_cli_print_error("preview", &err);
+        tl_timeline_free(&p.tl);
+        free(p.shot_starts);
+        return crc == TL_ERR_USAGE ? 2 : 1;
+    }
+    if (tl_render_open_window(&p.render, &lib, width, height, "tideline preview", &err) ||
+        tl_cli_color_use(&o.color, p.render, &err)) {
+        tl_cli_print_error("preview", &err);
+        tl_render_close(p.render); /* NULL when it did not open */
+        tl_cli_color_free(&o.color);
         tl_timeline_free(&p.tl);
         free(p.shot_starts);
         return 1;
@@ -718,6 +739,7 @@ int tl_cli_preview(int argc, char **argv)
     sigaction(SIGTERM, &old_term, NULL);
     tl_frame_free(&shot);
     tl_render_close(p.render);
+    tl_cli_color_free(&o.color);
     tl_timeline_free(&p.tl);
     free(p.shot_starts);
     return 0;
