@@ -43,6 +43,17 @@ def main():
     m = cam.matrix_world
     got_p = m.translation
     got_f = -m.col[2].xyz
+    roll = math.radians(ch["camera.roll"])
+    # The camera's up: tideline's basis (right from the yaw alone, rolled).
+    right0 = (math.cos(yaw), 0.0, -math.sin(yaw))
+    up0 = (forward[1] * right0[2] - forward[2] * right0[1],
+           forward[2] * right0[0] - forward[0] * right0[2],
+           forward[0] * right0[1] - forward[1] * right0[0])
+    up = tuple(math.cos(roll) * u - math.sin(roll) * r for u, r in zip(up0, right0))
+    want_up = blender_axes(up)
+    got_up = m.col[1].xyz.normalized()
+    dup = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_up, want_up)))))
+    print("UP %.6f" % dup)
     dp = math.dist(tuple(got_p), want_p)
     df = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_f.normalized(), want_f)))))
     # glTF animates no lens: the camera has frame 0's, and the lens of
@@ -62,7 +73,17 @@ def main():
         db = math.dist(tuple(boat.matrix_world.translation), blender_axes(b["position"]))
         # The bow's compass heading, level (pitch and roll leave it alone).
         dh = abs(math.atan2(got_bow.x, got_bow.y) - math.atan2(bow[0], bow[1]))
-        print("BOAT %.6f %.6f" % (db, min(dh, 2 * math.pi - dh)))
+        # The deck's up, pitched and rolled: R = Ry(heading) Rx(-pitch)
+        # Rz(-roll) applied to (0, 1, 0), as tideline places the hull.
+        p_, r_ = -math.radians(b["pitch"]), -math.radians(b["roll"])
+        v = (-math.sin(r_), math.cos(r_), 0.0)
+        v = (v[0], v[1] * math.cos(p_) - v[2] * math.sin(p_), v[1] * math.sin(p_) + v[2] * math.cos(p_))
+        v = (v[0] * math.cos(heading) + v[2] * math.sin(heading), v[1],
+             -v[0] * math.sin(heading) + v[2] * math.cos(heading))
+        want_deck = blender_axes(v)
+        got_deck = boat.matrix_world.col[2].xyz.normalized()  # glTF +y: Blender's +z
+        dd = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_deck, want_deck)))))
+        print("BOAT %.6f %.6f %.6f" % (db, min(dh, 2 * math.pi - dh), dd))
 
 
 try:

@@ -105,8 +105,14 @@ for frame in 100 250; do
     awk -v p="$1" -v d="$2" -v f="$3" 'BEGIN { exit !(p < 1e-3 && d < 1e-4 && f < 1e-4) }'
   [ $frame = 100 ] && check "Blender's camera has the first shot's lens (${4} rad)" \
     awk -v a="$4" 'BEGIN { exit !(a > 0.8726 && a < 0.8727) }'
-  set -- $(sed -n 's/^BOAT //p' "$work/blender_camera.txt") 9 9
-  check "frame $frame: Blender's boat at tideline's (${1} m, heading ${2} rad off)" \
-    awk -v p="$1" -v h="$2" 'BEGIN { exit !(p < 1e-3 && h < 1e-4) }'
+  set -- $(sed -n 's/^UP //p' "$work/blender_camera.txt") 9
+  # Blender's import turns the keys into Euler curves in single precision:
+  # its camera's up lands about 1e-4 rad off (a tenth of a pixel at a 4K
+  # frame's corner) where the file's is within 1e-7.
+  check "frame $frame: Blender's camera is rolled as tideline's (up ${1} rad off)" \
+    awk -v u="$1" 'BEGIN { exit !(u < 5e-4) }'
+  set -- $(sed -n 's/^BOAT //p' "$work/blender_camera.txt") 9 9 9
+  check "frame $frame: Blender's boat at tideline's (${1} m, heading ${2}, deck ${3} rad off)" \
+    awk -v p="$1" -v h="$2" -v d="$3" 'BEGIN { exit !(p < 1e-3 && h < 1e-4 && d < 1e-4) }'
 done
 exit $fail

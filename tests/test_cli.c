@@ -97,11 +97,12 @@ static void test_bad_flags(void)
                  "-o", exr);
     EXPECT_USAGE("--passes: the passes are layers of an EXR; give -o FILE.exr", "still", "--passes",
                  "depth", "-o", png);
-    EXPECT_USAGE("--passes: unknown pass 'none' in 'none,depth'", "render", "x.tl", "--passes",
+    EXPECT_USAGE("--passes: 'none' stands alone (in 'none,depth')", "render", "x.tl", "--passes",
                  "none,depth", "-o", exr);
     EXPECT_USAGE("cam.txt: unknown format (use .gltf or .glb)", "export-camera", "x.tl", "-o",
                  in_dir(2, "cam.txt"));
     EXPECT_USAGE("nothing to write: give -o FILE.gltf", "export-camera", "x.tl");
+    EXPECT_USAGE("-o needs a value", "export-camera", "x.tl", "-o");
     /* Colour: a working space, a display or view the config lacks, a
      * config that cannot be read (named, here and through $OCIO). */
     EXPECT_USAGE("--working-space: 'p3' is not rec709 or acescg", "still", "--working-space", "p3",

@@ -270,20 +270,27 @@ static void test_frame_complete(void)
     CHECK(tl_frame_alloc(&f, 8, 4, &err) == 0);
     CHECK(tl_image_write(png, &f, NULL, &err) == 0);
     CHECK(tl_image_write(exr, &f, NULL, &err) == 0);
-    CHECK(tl_job_frame_complete(png, 8, 4, NULL) == 1);
-    CHECK(tl_job_frame_complete(exr, 8, 4, NULL) == 1);
+    CHECK(tl_job_frame_complete(png, 8, 4, NULL, NULL) == 1);
+    CHECK(tl_job_frame_complete(exr, 8, 4, NULL, NULL) == 1);
     /* An EXR without the run's passes, or with passes the run does not
      * write, is rendered again. */
-    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth") == 0);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth", NULL) == 0);
     const tl_meta layered = {"tideline/passes", TL_META_STRING, "combined,depth", 0, 0, NULL};
     CHECK(tl_image_write(exr, &f, &(tl_image_options){.meta = &layered, .meta_count = 1}, &err) ==
           0);
-    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth") == 1);
-    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,normal") == 0);
-    CHECK(tl_job_frame_complete(exr, 8, 4, NULL) == 0);
-    CHECK(tl_job_frame_complete(png, 8, 5, NULL) == 0); /* another size */
-    CHECK(tl_job_frame_complete(exr, 4, 4, NULL) == 0);
-    CHECK(tl_job_frame_complete(none, 8, 4, NULL) == 0);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth", NULL) == 1);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth", "rec709") == 1);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth", "acescg") == 0);
+    const tl_meta aces[2] = {{"tideline/passes", TL_META_STRING, "combined,depth", 0, 0, NULL},
+                             {"tideline/working_space", TL_META_STRING, "acescg", 0, 0, NULL}};
+    CHECK(tl_image_write(exr, &f, &(tl_image_options){.meta = aces, .meta_count = 2}, &err) == 0);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth", "acescg") == 1);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,depth", NULL) == 0);
+    CHECK(tl_job_frame_complete(exr, 8, 4, "combined,normal", NULL) == 0);
+    CHECK(tl_job_frame_complete(exr, 8, 4, NULL, NULL) == 0);
+    CHECK(tl_job_frame_complete(png, 8, 5, NULL, NULL) == 0); /* another size */
+    CHECK(tl_job_frame_complete(exr, 4, 4, NULL, NULL) == 0);
+    CHECK(tl_job_frame_complete(none, 8, 4, NULL, NULL) == 0);
     /* A file cut short, as a killed writer without atomic files leaves. */
     FILE *in = fopen(png, "rb"), *out = fopen(cut, "wb");
     char bytes[4096];
@@ -295,7 +302,7 @@ static void test_frame_complete(void)
         fclose(in);
     if (out)
         fclose(out);
-    CHECK(tl_job_frame_complete(cut, 8, 4, NULL) == 0);
+    CHECK(tl_job_frame_complete(cut, 8, 4, NULL, NULL) == 0);
     tl_frame_free(&f);
     unlink(png);
     unlink(exr);

@@ -176,7 +176,7 @@ int main(int argc, char **argv)
 
     /* Every sample met one thing: the covers add up to 1. */
     double worst_sum = 0.0;
-    int giant_px = 0, sky_px = 0, boat_px = 0;
+    int giant_px = 0, sky_px = 0, boat_px = 0, away = 0;
     for (int i = 0; i < W * H; i++) {
         double sum = aov(&with, 1, i, 0) + aov(&with, 1, i, 1) + aov(&with, 1, i, 2);
         double boats = 0.0;
@@ -186,8 +186,15 @@ int main(int argc, char **argv)
         giant_px += aov(&with, 1, i, 2) > 0.99f;
         sky_px += aov(&with, 1, i, 0) > 0.99f;
         boat_px += boats > 0.99;
-        /* A normal faces the eye. */
+        /* A pixel's normal faces the eye: the mean of its samples' normals
+         * points back along its ray. */
+        double ray[3];
+        tl_passes_pixel_ray(&scene.camera, W, H, i % W, i / W, ray);
+        double n_dot = aov(&with, 0, i, 0) * ray[0] + aov(&with, 0, i, 1) * ray[1] +
+                       aov(&with, 0, i, 2) * ray[2];
+        away += aov(&with, 1, i, 0) < 0.01f && n_dot > 0.0;
     }
+    CHECK(away == 0);
     CHECK(worst_sum < 1e-4);
     printf("pixels: giant wave %d, sky %d, boat %d of %d\n", giant_px, sky_px, boat_px, W * H);
     CHECK(giant_px > W * H / 4 && sky_px > W * H / 20 && boat_px > 40);

@@ -75,10 +75,11 @@ typedef struct tl_cli_color {
  * error (err filled). */
 int tl_cli_color_flag(struct tl_args *a, tl_cli_color *c, tl_error *err);
 /* The working space (the flag over the timeline's `timeline_space`), its
- * matrix, and the display transform when a config ($OCIO, --ocio) or
- * --display / --view asks for one, baked into its table. Errors name the
- * config, display or view (usage errors, 2). */
-int tl_cli_color_prepare(tl_cli_color *c, int timeline_space, tl_error *err);
+ * matrix, and the display transform when a config (--ocio, or $OCIO when
+ * the run `shows` display images: PNGs, a movie, a window) or --display /
+ * --view asks for one, baked into its table. Errors name the config,
+ * display or view (usage errors, 2). */
+int tl_cli_color_prepare(tl_cli_color *c, int timeline_space, int shows, tl_error *err);
 /* Hands the display table to the renderer (nothing for the ACES fit). */
 int tl_cli_color_use(const tl_cli_color *c, struct tl_render *render, tl_error *err);
 const char *tl_cli_color_describe(const tl_cli_color *c);

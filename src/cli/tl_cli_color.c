@@ -30,7 +30,7 @@ int tl_cli_color_flag(tl_args *a, tl_cli_color *c, tl_error *err)
     return err->status ? -1 : 1;
 }
 
-int tl_cli_color_prepare(tl_cli_color *c, int timeline_space, tl_error *err)
+int tl_cli_color_prepare(tl_cli_color *c, int timeline_space, int shows, tl_error *err)
 {
     if (!c->has_space)
         c->space = (tl_working_space)timeline_space;
@@ -40,8 +40,10 @@ int tl_cli_color_prepare(tl_cli_color *c, int timeline_space, tl_error *err)
             return rc;
         c->convert = 1;
     }
+    /* $OCIO alone sets the display of the images a run shows; a run that
+     * writes only EXRs shows none, and does not need the config to load. */
     const char *env = getenv("OCIO");
-    if (!c->ocio && !(env && env[0]) && !c->display && !c->view)
+    if (!c->ocio && !c->display && !c->view && (!(env && env[0]) || !shows))
         return TL_OK; /* the ACES fit */
     int rc = tl_ocio_display_open(c->ocio, c->display, c->view, &c->transform, err);
     if (rc) {

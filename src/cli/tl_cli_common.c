@@ -15,6 +15,8 @@ int tl_cli_passes(const char *flag, const char *value, unsigned *passes, tl_erro
     size_t at, len;
     if (!tl_passes_parse(value, passes, &at, &len))
         return TL_OK;
+    if (len == 4 && strncmp(value + at, "none", 4) == 0)
+        return tl_error_set(err, TL_ERR_USAGE, "%s: 'none' stands alone (in '%s')", flag, value);
     return tl_error_set(err, TL_ERR_USAGE, "%s: unknown pass '%.*s' in '%s' (passes: %s)", flag,
                         (int)len, value + at, value, tl_passes_valid_names());
 }

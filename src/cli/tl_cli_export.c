@@ -37,6 +37,7 @@ int tl_cli_export_camera(int argc, char **argv)
             return 0;
         } else if (tl_args_match(&a, "--output", "-o", true, &err)) {
             out = a.value;
+            rc = err.status; /* the flag without its value */
         } else if (!err.status && !timeline && tl_args_positional(&a, &positional)) {
             timeline = positional;
         } else {

@@ -33,23 +33,24 @@ static const char usage[] =
     "pixel a frame until it is the frame 'tideline still --spp N' renders.\n"
     "\n"
     "Options:\n"
-    "  --time T              start at this time (2.5, 2.5s, 60f); default 0\n"
-    "  --paused              start paused\n"
-    "  --quality PRESET      draft, preview (default), final, reference, seed\n"
-    "  --size WxH            frame size (default: the timeline's, at most 1280x720)\n"
-    "  --scale S             fixed render scale in (0, 1] (default: adapt to --target-fps)\n"
-    "  --target-fps F        frame rate to hold while playing (default 24)\n"
-    "  --refine N            samples per pixel a paused frame refines to, 1..1024\n"
-    "                        (default 16; 1: no refinement)\n"
-    "  --screenshot PATH     write PATH (PNG or EXR, atomically) each time the displayed\n"
-    "                        frame has fully sharpened and refined\n"
-    "  --exit-after-frames N quit after N displayed frames\n"
-    "  --keys LIST           play keys, one per frame: space,left,right,shift+left,\n"
-    "                        shift+right,home,end,[,],1,2,3,4,c,p,f,r,l,h,esc\n"
-    "  --watch-interval S    seconds between checks of the files (default 0.25)\n"
-    "  --shader-dir DIR      load shaders from DIR and reload them when they "
-    "change\n" TL_CLI_DISPLAY_USAGE "  -v, --verbose         log the GL renderer and every reload\n"
-    "  -h, --help            show this help\n"
+    "  --time T               start at this time (2.5, 2.5s, 60f); default 0\n"
+    "  --paused               start paused\n"
+    "  --quality PRESET       draft, preview (default), final, reference, seed\n"
+    "  --size WxH             frame size (default: the timeline's, at most 1280x720)\n"
+    "  --scale S              fixed render scale in (0, 1] (default: adapt to --target-fps)\n"
+    "  --target-fps F         frame rate to hold while playing (default 24)\n"
+    "  --refine N             samples per pixel a paused frame refines to, 1..1024\n"
+    "                         (default 16; 1: no refinement)\n"
+    "  --screenshot PATH      write PATH (PNG or EXR, atomically) each time the displayed\n"
+    "                         frame has fully sharpened and refined\n"
+    "  --exit-after-frames N  quit after N displayed frames\n"
+    "  --keys LIST            play keys, one per frame: space,left,right,shift+left,\n"
+    "                         shift+right,home,end,[,],1,2,3,4,c,p,f,r,l,h,esc\n"
+    "  --watch-interval S     seconds between checks of the files (default 0.25)\n"
+    "  --shader-dir DIR       load shaders from DIR and reload them when they "
+    "change\n" TL_CLI_DISPLAY_USAGE
+    "  -v, --verbose          log the GL renderer and every reload\n"
+    "  -h, --help             show this help\n"
     "\n"
     "Keys: space play/pause; left/right one frame; shift+left/right one second;\n"
     "Home/End; [ ] playback speed; 1-4 quality draft/preview/final/reference;\n"
@@ -578,7 +579,7 @@ int tl_cli_preview(int argc, char **argv)
         free(p.shot_starts);
         return 2;
     }
-    int crc = tl_cli_color_prepare(&o.color, 0, &err);
+    int crc = tl_cli_color_prepare(&o.color, 0, 1, &err);
     if (crc) {
         tl_cli_color_free(&o.color);
         tl_cli_print_error("preview", &err);

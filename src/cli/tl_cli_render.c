@@ -40,7 +40,8 @@ static const char usage[] =
     "Render a timeline's frames headless. In PATTERN the last run of '#' in the\n"
     "file name becomes the zero-padded frame number (shot_####.exr ->\n"
     "shot_0042.exr); the extension picks the format (.exr: linear half RGBA +\n"
-    "float Z + metadata; .png: tonemapped sRGB). Folders are created.\n"
+    "float Z + metadata, or with --passes layers named as Blender names them;\n"
+    ".png: tonemapped sRGB, or an OpenColorIO view). Folders are created.\n"
     "A frame's time is frame / fps; the same frame is identical on every run.\n"
     "\n"
     "Options:\n"
@@ -344,7 +345,9 @@ int tl_cli_render(int argc, char **argv)
     if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
         tl_error_prefix(&err, "--shader-dir");
     if (!rc)
-        rc = tl_cli_color_prepare(&o.color, tl.working_space, &err);
+        rc = tl_cli_color_prepare(
+            &o.color, tl.working_space,
+            o.movie || (o.pattern && tl_image_format_from_path(path) == TL_IMAGE_PNG), &err);
     if (rc) {
         tl_cli_color_free(&o.color);
         tl_cli_print_error("render", &err);

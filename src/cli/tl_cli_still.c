@@ -49,8 +49,10 @@ static const char usage[] =
     "at --time / --frame. Flags below override what the timeline says.\n"
     "The extension of each -o picks the format:\n"
     "  .exr  linear scene-referred half RGBA + float Z (distance along the view\n"
-    "        ray, metres; sky = 1e10), ZIP compressed\n"
-    "  .png  tonemapped (exposure, ACES, sRGB) 8-bit RGB, dithered\n"
+    "        ray, metres; sky = 1e10), ZIP compressed; with --passes, layers\n"
+    "        named as Blender names them\n"
+    "  .png  tonemapped (exposure, ACES fit, sRGB; or an OpenColorIO view)\n"
+    "        8-bit RGB, dithered\n"
     "Files are written atomically: a failed run never leaves a partial file.\n"
     "On a terminal a frame that takes over a second shows how much of it is\n"
     "drawn (a `reference` frame takes minutes on a CPU renderer).\n"
@@ -369,8 +371,11 @@ int tl_cli_still(int argc, char **argv)
     tl_shader_lib_embedded(&lib);
     if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
         tl_error_prefix(&err, "--shader-dir");
+    int shows = 0; /* a PNG among the outputs */
+    for (int i = 0; i < o.output_count; i++)
+        shows |= tl_image_format_from_path(o.outputs[i]) == TL_IMAGE_PNG;
     if (!rc)
-        rc = tl_cli_color_prepare(&o.color, o.timeline_space, &err);
+        rc = tl_cli_color_prepare(&o.color, o.timeline_space, shows, &err);
     if (rc) {
         tl_cli_color_free(&o.color);
         tl_cli_print_error("still", &err);

@@ -101,6 +101,14 @@ int tl_export_camera(const tl_timeline *tl, const char *path, tl_error *err)
     long frames = tl_timeline_frame_count(tl);
     if (frames < 1)
         return tl_error_set(err, TL_ERR_USAGE, "%s: the timeline has no frame", path);
+    /* glTF's key times are 32-bit floats: each frame's must be a float of
+     * its own, after the one before. */
+    if (frames > TL_EXPORT_MAX_FRAMES || (float)tl_timeline_frame_time(tl, frames - 1) <=
+                                             (float)tl_timeline_frame_time(tl, frames - 2))
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "%s: %ld frames are more than a glTF animation holds (its key times "
+                            "are 32-bit floats; at most %d frames)",
+                            path, frames, TL_EXPORT_MAX_FRAMES);
     /* The camera, the sun, then each floating object with a path. */
     int objects = tl->object_count;
     int nodes = 2 + objects;
@@ -182,6 +190,17 @@ int tl_export_camera(const tl_timeline *tl, const char *path, tl_error *err)
             pose(b->position, mx, ay, az, t, r);
         }
     }
+    /* q and -q are one rotation: each key takes the sign nearer the key
+     * before, so that a package interpolating the components does not swing
+     * the long way round between two frames. */
+    for (int n = 0; n < nodes; n++)
+        for (long k = 1; k < frames; k++) {
+            float *q = (float *)node[n].rotation + k * 4;
+            const float *before = q - 4;
+            if (q[0] * before[0] + q[1] * before[1] + q[2] * before[2] + q[3] * before[3] < 0.0f)
+                for (int i = 0; i < 4; i++)
+                    q[i] = -q[i];
+        }
     node[0].name = "camera";
     node[0].kind = TL_GLTF_CAMERA;
     node[0].yfov_keys = yfov;

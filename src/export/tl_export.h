@@ -12,6 +12,9 @@
  * (.gltf: JSON with the data embedded; .glb: binary), atomically: a key
  * per frame at its time (frame / fps) for each node. */
 int tl_export_camera(const tl_timeline *tl, const char *path, tl_error *err);
+/* The most frames an export holds (a day at 24 fps, well inside the
+ * float key times' resolution of a frame). */
+#define TL_EXPORT_MAX_FRAMES 2073600
 /* Checks `path`'s extension (.gltf or .glb) before any work: a usage
  * error naming it otherwise. */
 int tl_export_check_path(const char *path, tl_error *err);

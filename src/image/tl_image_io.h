@@ -112,7 +112,8 @@ int tl_png_write(const char *path, const tl_frame *frame, const tl_image_options
  * (color and depth filled; display left zero). Any scanline EXR with
  * R,G,B[,A] (half or float) and optional Z is accepted, or the same as
  * Blender's multilayer names them (ViewLayer.Combined.R .. A,
- * ViewLayer.Depth.Z: tideline's frames with passes). */
+ * ViewLayer.Depth.Z: tideline's frames with passes, whose depth is planar,
+ * along the camera's axis). */
 int tl_exr_read(const char *path, tl_frame *frame, tl_error *err);
 
 /* Reads channel `name` of an EXR (half or float) into a freshly

@@ -45,9 +45,12 @@ int tl_pattern_format(const char *pattern, long frame, int single_frame, char *o
 /* Resuming a run (--skip-existing): 1 when `path` holds a complete,
  * readable frame of width x height and, for an EXR, the run's compositing
  * passes (`passes`: its tideline/passes attribute, tl_passes_format's
- * names; NULL or "" for the plain file). A file cut short, of another size
- * or with other passes is rendered again. */
-int tl_job_frame_complete(const char *path, int width, int height, const char *passes);
+ * names; NULL or "" for the plain file) in the run's working space
+ * (`space`: its tideline/working_space, "rec709" when a file has none;
+ * NULL: "rec709"). A file cut short, of another size, with other passes
+ * or in another space is rendered again. */
+int tl_job_frame_complete(const char *path, int width, int height, const char *passes,
+                          const char *space);
 /* A process killed mid-write (SIGKILL, a node lost) leaves its hidden
  * temporary behind: removes those of `frames` (named by `pattern`, in the
  * folder of `first_path`) that no live writer holds, so that a resumed run

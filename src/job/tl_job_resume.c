@@ -8,7 +8,8 @@
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
 
-int tl_job_frame_complete(const char *path, int width, int height, const char *passes)
+int tl_job_frame_complete(const char *path, int width, int height, const char *passes,
+                          const char *space)
 {
     if (access(path, R_OK) != 0)
         return 0;
@@ -22,6 +23,10 @@ int tl_job_frame_complete(const char *path, int width, int height, const char *p
         char got[256];
         int layered = tl_exr_read_attr_string(path, "tideline/passes", got, sizeof got, &err) == 0;
         ok = passes && passes[0] ? layered && strcmp(got, passes) == 0 : !layered;
+        char in[64];
+        if (tl_exr_read_attr_string(path, "tideline/working_space", in, sizeof in, &err))
+            snprintf(in, sizeof in, "rec709");
+        ok = ok && strcmp(in, space ? space : "rec709") == 0;
     }
     return ok;
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,7 +55,7 @@ extern "C" int tl_ocio_working_matrix(tl_working_space space, double m[9], tl_er
                 m[r * 3 + c] = rgb[r];
         }
         return TL_OK;
-    } catch (const OCIO::Exception &e) {
+    } catch (const std::exception &e) { // OpenColorIO's own, or out of memory
         return tl_error_set(err, TL_ERR_RUNTIME, "OpenColorIO: %s", e.what());
     }
 }
@@ -109,6 +110,14 @@ extern "C" int tl_ocio_display_open(const char *config_path, const char *display
         // ACES2065-1 (both configs' aces_interchange role), then its
         // display and view.
         OCIO::ConstConfigRcPtr ours = builtin_config();
+        if (!config->hasRole("aces_interchange"))
+            return tl_error_set(err, TL_ERR_USAGE,
+                                "OpenColorIO config %s%s has no aces_interchange role (an "
+                                "OpenColorIO 1 config?): tideline brings its linear Rec.709 "
+                                "into a config through ACES2065-1; give --ocio a config with "
+                                "the role%s",
+                                where.c_str(), config_path ? "" : " ($OCIO)",
+                                config_path ? "" : ", or unset $OCIO for the ACES fit");
         OCIO::ConstProcessorRcPtr into =
             OCIO::Config::GetProcessorFromConfigs(ours, kRadiance, config, OCIO::ROLE_SCENE_LINEAR);
         OCIO::DisplayViewTransformRcPtr dv = OCIO::DisplayViewTransform::Create();
@@ -119,10 +128,10 @@ extern "C" int tl_ocio_display_open(const char *config_path, const char *display
         group->appendTransform(into->createGroupTransform());
         group->appendTransform(dv);
         OCIO::ConstProcessorRcPtr all = config->getProcessor(group);
-        tl_ocio_display *cd = new tl_ocio_display;
+        std::unique_ptr<tl_ocio_display> cd(new tl_ocio_display);
         cd->cpu = all->getDefaultCPUProcessor();
         cd->describe = where + ": " + d + " / " + v;
-        *out = cd;
+        *out = cd.release();
         return TL_OK;
     } catch (const OCIO::Exception &e) {
         return tl_error_set(err, config_path || (env && env[0]) ? TL_ERR_USAGE : TL_ERR_RUNTIME,
@@ -168,7 +177,7 @@ extern "C" int tl_ocio_display_bake(const tl_ocio_display *d, int n, float *rgb,
                     tl_ocio_display_apply(d, in, rgb + k);
                 }
         return TL_OK;
-    } catch (const OCIO::Exception &e) {
+    } catch (const std::exception &e) { // OpenColorIO's own, or out of memory
         return tl_error_set(err, TL_ERR_RUNTIME, "OpenColorIO: %s", e.what());
     }
 }

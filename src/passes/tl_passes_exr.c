@@ -117,9 +117,11 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: the frame has no data for its passes", path);
     const int w = frame->width, h = frame->height;
     const size_t px = (size_t)w * (size_t)h;
-    /* Position, the masks and the Cryptomatte's ranks are computed here,
-     * interleaved per pixel: 3 + 6 + 2 * ranks floats. */
-    enum { POS = 0, MASK = 3, CRYPTO = 9, PER_PIXEL = CRYPTO + 2 * TL_CRYPTO_RANKS };
+    /* Position, the planar depth, the masks and the Cryptomatte's ranks are
+     * computed here, interleaved per pixel: 3 + 1 + 6 + 2 * ranks floats. */
+    enum { POS = 0, DEPTH = 3, MASK = 4, CRYPTO = 10, PER_PIXEL = CRYPTO + 2 * TL_CRYPTO_RANKS };
+    double right[3], up[3], forward[3];
+    tl_scene_camera_basis(info->camera, right, up, forward);
     float *data = malloc(px * PER_PIXEL * sizeof *data);
     if (!data)
         return tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory for the passes", path);
@@ -140,6 +142,10 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
             int hit = isfinite(dist) && dist < TL_FRAME_SKY_DEPTH;
             for (int c = 0; c < 3; c++)
                 d[POS + c] = hit ? (float)(ray[c] * dist) : 0.0f;
+            /* Depth as Blender's: along the camera's axis, not the ray. */
+            d[DEPTH] = hit ? (float)(dist * (ray[0] * forward[0] + ray[1] * forward[1] +
+                                             ray[2] * forward[2]))
+                           : TL_FRAME_SKY_DEPTH;
             if (!frame->aov)
                 continue;
             float cover[3 + TL_FRAME_AOV_OBJECTS];
@@ -186,7 +192,7 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
     for (int c = 0; c < 4; c++)
         ch[n++] = (tl_exr_channel){rgba[c], 1, frame->color + c, 4};
     if (passes & TL_PASSES_DEPTH)
-        ch[n++] = (tl_exr_channel){LAYER "Depth.Z", 0, frame->depth, 1};
+        ch[n++] = (tl_exr_channel){LAYER "Depth.Z", 0, data + DEPTH, PER_PIXEL};
     static const char *const xyz[2][3] = {
         {LAYER "Normal.X", LAYER "Normal.Y", LAYER "Normal.Z"},
         {LAYER "Position.X", LAYER "Position.Y", LAYER "Position.Z"}};

@@ -8,8 +8,10 @@
 #include "waves/tl_giant.h"
 #include "waves/tl_waves.h"
 
-/* What a pixel shows, by the largest of its covers (tl_frame.h). */
-enum { SHOWS_SKY = 0, SHOWS_OCEAN = 1, SHOWS_GIANT = 2, SHOWS_OBJECT = 3 };
+/* What a pixel shows, by the largest of its covers (tl_frame.h), and the
+ * sea floor (an ocean pixel whose point lies well under the surface: the
+ * sand stays where it is). */
+enum { SHOWS_FLOOR = -1, SHOWS_SKY = 0, SHOWS_OCEAN = 1, SHOWS_GIANT = 2, SHOWS_OBJECT = 3 };
 
 static int shows(const tl_frame *f, size_t i)
 {
@@ -203,6 +205,14 @@ void tl_passes_vectors(const tl_frame *frame, const tl_passes_frame *info, float
             double p[3], here[2], there[2];
             for (int c = 0; c < 3; c++)
                 p[c] = sky ? ray[c] : now.camera.position[c] + ray[c] * dist;
+            /* Below the surface by more than a pixel's slip: the floor. */
+            if (what == SHOWS_OCEAN && !sky) {
+                double surface = tl_waves_surface_height(
+                    &waves, &now.giant, p[0], p[2], info->scene->time,
+                    info->scene->quality.march_octaves, info->scene->quality.giant_iterations);
+                if (p[1] < surface - fmax(0.5, 0.02 * dist))
+                    what = SHOWS_FLOOR;
+            }
             if (!raster(&now.camera, ray, here))
                 continue;
             float *v = out + i * 4;

@@ -215,8 +215,12 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
         tl_passes_format(cfg->passes | TL_PASSES_COMBINED, passes, sizeof passes);
     tl_frame frame = {0};
     tl_writer writer;
-    tl_writer_init(&writer, write_files, cfg->movie ? write_movie : NULL, &s,
-                   cfg->writers ? cfg->writers : tl_writer_default_count());
+    /* A frame with the passes' data holds 24 more floats a pixel, and its
+     * writer as many again while it encodes: fewer writers by default. */
+    int writers = cfg->writers ? cfg->writers : tl_writer_default_count();
+    if (!cfg->writers && tl_passes_need_aov(cfg->passes) && writers > TL_RUN_PASSES_WRITERS)
+        writers = TL_RUN_PASSES_WRITERS;
+    tl_writer_init(&writer, write_files, cfg->movie ? write_movie : NULL, &s, writers);
     report(&s, TL_RUN_STARTED, -1, "", 0, writer.count);
     unsigned last_features = 0;
     long done_frame;
@@ -228,7 +232,7 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
         if (rc)
             break;
         if (cfg->skip_existing && cfg->pattern &&
-            tl_job_frame_complete(path, width, height, passes)) {
+            tl_job_frame_complete(path, width, height, passes, tl_color_working_name(cfg->space))) {
             /* The frames in flight are reported first: progress stays in order. */
             rc = submit_pending(&s, render, &writer, &pending, &frame, err);
             for (int k = 0; !rc && k < writer.count; k++) {

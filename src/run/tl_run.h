@@ -41,6 +41,10 @@ typedef struct tl_run_status {
 
 typedef void (*tl_run_report_fn)(void *ctx, const tl_run_status *status);
 
+/* Writer threads by default for frames with the passes' data (about 190
+ * bytes a pixel each in flight: a 4K frame's are 1.5 GB). */
+#define TL_RUN_PASSES_WRITERS 2
+
 typedef struct tl_run_config {
     const tl_timeline *timeline;
     const char *timeline_path;   /* recorded in every frame's metadata */
@@ -53,7 +57,7 @@ typedef struct tl_run_config {
     tl_working_space space; /* EXR frames: the colour's working space, */
     const double *working;  /* the matrix from linear Rec.709 to it (NULL: as rendered) */
     int skip_existing;
-    int writers; /* 0: tl_writer_default_count() */
+    int writers; /* 0: tl_writer_default_count(), at most TL_RUN_PASSES_WRITERS with passes */
     volatile sig_atomic_t *stop;
     tl_run_report_fn report; /* NULL: none */
     void *report_ctx;

@@ -654,15 +654,21 @@ static void dir_header(parser *p, token *tok, int n)
         tl->passes = 0;
         for (int i = 1; i < n; i++) {
             size_t at, len;
-            unsigned passes;
-            if (!tl_passes_parse(tok[i].s, &passes, &at, &len))
+            unsigned passes = 0;
+            int bad = tl_passes_parse(tok[i].s, &passes, &at, &len);
+            if (!bad && passes) {
                 tl->passes |= passes;
-            else {
-                char bad[64];
-                snprintf(bad, sizeof bad, "%.*s", (int)len, tok[i].s + at);
+            } else if (!bad && n == 2) {
+                tl->passes = 0; /* `passes none`: the plain file */
+            } else if (!bad || (len == 4 && strncmp(tok[i].s + at, "none", 4) == 0)) {
+                tl_parse_diag(p, tok[i].col + (bad ? (int)at : 0), bad ? 4 : tok[i].len, NULL,
+                              "'none' stands alone on a passes line");
+            } else {
+                char name[64];
+                snprintf(name, sizeof name, "%.*s", (int)len, tok[i].s + at);
                 tl_parse_diag(p, tok[i].col + (int)at, len ? (int)len : 1,
-                              tl_suggest(bad, tl_passes_name_list()),
-                              "unknown pass '%s' (passes: %s)", bad, tl_passes_valid_names());
+                              tl_suggest(name, tl_passes_name_list()),
+                              "unknown pass '%s' (passes: %s)", name, tl_passes_valid_names());
             }
         }
     }
