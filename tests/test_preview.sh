@@ -107,6 +107,8 @@ cp "$timelines/calm.tl" "$work/keys.tl"
 cat "$work/out3"
 check "right, right, shift+right from 1 s is frame 50" grep -q "stopped at frame 50 " "$work/out3"
 check "F writes EXR and PNG" test -s "$work/keys_frame0050_1.exr" -a -s "$work/keys_frame0050_1.png"
+check "the saved EXR carries the camera (worldToCamera in its header)" \
+  grep -qa worldToCamera "$work/keys_frame0050_1.exr"
 
 # An OpenColorIO view: the window shows what `still` writes with it.
 "$bin" preview "$timelines/calm.tl" --paused --time 5 --size 320x180 --quality final --refine 1 \

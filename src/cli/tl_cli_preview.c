@@ -17,6 +17,7 @@
 #include "gl/tl_gl_window.h"
 #include "image/tl_image_io.h"
 #include "mesh/tl_mesh.h"
+#include "passes/tl_passes.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "render/tl_render_window.h"
@@ -386,6 +387,31 @@ static void print_pose(const preview *p)
     fflush(stdout);
 }
 
+/* A frame the preview saves (F, --screenshot): an EXR carries the camera
+ * and the timeline's floating objects as render's do (tl_passes), in the
+ * radiance's Rec.709; a PNG as it shows. */
+static int write_saved(const preview *p, const char *path, const tl_frame *f,
+                       const tl_render_settings *settings, long frame, tl_error *err)
+{
+    tl_image_options opt = {0};
+    if (tl_image_format_from_path(path) != TL_IMAGE_EXR)
+        return tl_image_write(path, f, &opt, err);
+    tl_scene scene;
+    tl_render_frame_scene(&p->tl, tl_timeline_frame_time(&p->tl, frame), settings, &scene);
+    const tl_meta meta[2] = {
+        {"tideline/timeline", TL_META_STRING, p->o->timeline, 0, 0, NULL},
+        {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0, NULL},
+    };
+    opt.meta = meta;
+    opt.meta_count = 2;
+    const char *names[TL_OBJECT_MAX];
+    for (int k = 0; k < p->tl.object_count && k < TL_OBJECT_MAX; k++)
+        names[k] = p->tl.objects[k].name;
+    const tl_passes_frame info = {0,      &scene.camera, names, p->tl.object_count, p->tl.fps,
+                                  &scene, NULL,          NULL,  TL_WORKING_REC709,  NULL};
+    return tl_passes_write_frame(path, f, &info, &opt, err);
+}
+
 /* F: the frame at full size and quality as EXR + PNG next to the timeline,
  * under a name that is not taken. */
 static void save_frame(preview *p)
@@ -410,14 +436,13 @@ static void save_frame(preview *p)
     tl_frame f = {0};
     tl_error err;
     tl_error_clear(&err);
-    tl_image_options opt = {0};
     int rc = tl_render_timeline_frame(p->render, &p->tl, frame, &settings, &f, NULL, &err);
     /* That frame took the renderer's targets: refinement starts again. */
     p->refined = 0;
     if (!rc)
-        rc = tl_image_write(exr, &f, &opt, &err);
+        rc = write_saved(p, exr, &f, &settings, frame, &err);
     if (!rc)
-        rc = tl_image_write(png, &f, &opt, &err);
+        rc = write_saved(p, png, &f, &settings, frame, &err);
     if (rc)
         tl_cli_print_error("preview", &err);
     else
@@ -710,8 +735,7 @@ int tl_cli_preview(int argc, char **argv)
             continue;
         }
         if (!rc && want_shot) {
-            tl_image_options opt = {0};
-            if (tl_image_write(o.screenshot, &shot, &opt, &err))
+            if (write_saved(&p, o.screenshot, &shot, &settings, frame_of(&p), &err))
                 tl_cli_print_error("preview", &err);
             snprintf(p.last_shot, sizeof p.last_shot, "%s", state);
         }
