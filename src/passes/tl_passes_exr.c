@@ -56,13 +56,13 @@ static const char *object_name(const tl_passes_frame *info, int k, char *buf, si
     return buf;
 }
 
-/* The Cryptomatte's ranks of pixel i into `out` (TL_CRYPTO_RANKS pairs of
- * ID and coverage): its objects by their share of the pixel's samples,
- * most first; the same ID's shares summed. */
-static void crypto_ranks(const tl_frame *f, size_t i, const float *ids, float *out)
+/* The Cryptomatte's ranks of a pixel into `out` (TL_CRYPTO_RANKS pairs of
+ * ID and coverage) from its object covers (object_covers) and their sum:
+ * its objects by their share of the pixel's samples, most first; the same
+ * ID's shares summed. */
+static void crypto_ranks(const float cover[3 + TL_FRAME_AOV_OBJECTS], float total, const float *ids,
+                         float *out)
 {
-    float cover[3 + TL_FRAME_AOV_OBJECTS];
-    float total = object_covers(f, i, cover);
     float id[3 + TL_FRAME_AOV_OBJECTS], share[3 + TL_FRAME_AOV_OBJECTS];
     int n = 0;
     for (int k = 0; k < 3 + TL_FRAME_AOV_OBJECTS; k++) {
@@ -149,7 +149,7 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
             if (!frame->aov)
                 continue;
             float cover[3 + TL_FRAME_AOV_OBJECTS];
-            object_covers(frame, i, cover);
+            float total = object_covers(frame, i, cover);
             float boats = 0.0f;
             for (int k = 3; k < 3 + TL_FRAME_AOV_OBJECTS; k++)
                 boats += cover[k];
@@ -159,7 +159,7 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
             d[MASK + 3] = held(boats, 0.0f, 1.0f);                  /* boats */
             d[MASK + 4] = cover[0];                                 /* sky */
             d[MASK + 5] = held(aov_at(frame, 1, i, 3), 0.0f, 1.0f); /* under water */
-            crypto_ranks(frame, i, ids, d + CRYPTO);
+            crypto_ranks(cover, total, ids, d + CRYPTO);
         }
     /* The normal, a mean of unit vectors, finite and within [-1, 1]. */
     float *normal = NULL;

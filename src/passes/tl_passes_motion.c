@@ -151,9 +151,9 @@ static void side_of(const tl_scene *s, int width, int height, side *out)
 
 /* Where world point p (or, for the sky, direction p) of what `what` names
  * is on side `to`'s image, from side `now`; 0 when it is behind the camera
- * then. */
+ * then. `surface`: the water's height under p now (the ocean's points). */
 static int moved(const side *now, const side *to, const tl_waves *waves, int what,
-                 const double p[3], int sky, double out[2])
+                 const double p[3], double surface, int sky, double out[2])
 {
     const tl_scene *s = now->scene;
     double q[3] = {p[0], p[1], p[2]};
@@ -163,10 +163,9 @@ static int moved(const side *now, const side *to, const tl_waves *waves, int wha
         /* The water rises and falls where it is. */
         int octaves = s->quality.march_octaves;
         int iterations = s->quality.giant_iterations;
-        q[1] +=
-            tl_waves_surface_height(waves, &to->giant, p[0], p[2], to->scene->time, octaves,
-                                    iterations) -
-            tl_waves_surface_height(waves, &now->giant, p[0], p[2], s->time, octaves, iterations);
+        q[1] += tl_waves_surface_height(waves, &to->giant, p[0], p[2], to->scene->time, octaves,
+                                        iterations) -
+                surface;
     } else if (what == SHOWS_GIANT) {
         /* The wave's shape travels with its crest. */
         q[0] += to->giant.origin[0] - now->giant.origin[0];
@@ -206,10 +205,11 @@ void tl_passes_vectors(const tl_frame *frame, const tl_passes_frame *info, float
             for (int c = 0; c < 3; c++)
                 p[c] = sky ? ray[c] : now.camera.position[c] + ray[c] * dist;
             /* Below the surface by more than a pixel's slip: the floor. */
+            double surface = 0.0;
             if (what == SHOWS_OCEAN && !sky) {
-                double surface = tl_waves_surface_height(
-                    &waves, &now.giant, p[0], p[2], info->scene->time,
-                    info->scene->quality.march_octaves, info->scene->quality.giant_iterations);
+                surface = tl_waves_surface_height(&waves, &now.giant, p[0], p[2], info->scene->time,
+                                                  info->scene->quality.march_octaves,
+                                                  info->scene->quality.giant_iterations);
                 if (p[1] < surface - fmax(0.5, 0.02 * dist))
                     what = SHOWS_FLOOR;
             }
@@ -217,11 +217,11 @@ void tl_passes_vectors(const tl_frame *frame, const tl_passes_frame *info, float
                 continue;
             float *v = out + i * 4;
             /* Blender's layout: x y = before - now, z w = now - after. */
-            if (before.scene && moved(&now, &before, &waves, what, p, sky, there)) {
+            if (before.scene && moved(&now, &before, &waves, what, p, surface, sky, there)) {
                 v[0] = (float)(there[0] - here[0]);
                 v[1] = (float)(there[1] - here[1]);
             }
-            if (after.scene && moved(&now, &after, &waves, what, p, sky, there)) {
+            if (after.scene && moved(&now, &after, &waves, what, p, surface, sky, there)) {
                 v[2] = (float)(here[0] - there[0]);
                 v[3] = (float)(here[1] - there[1]);
             }
