@@ -74,7 +74,7 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
         vec4 surface = texelFetch(u_boat_surface, px, 0);
         aov_surface(surface.xyz, AOV_OBJECT + int(surface.w + 0.5) - 1);
 #endif
-        return texelFetch(u_boat_color, px, 0).rgb;
+        return layer_emit(TL_LIGHT_BOAT, texelFetch(u_boat_color, px, 0).rgb);
     }
     return water;
 }
@@ -198,6 +198,7 @@ vec3 boat_reflect(vec3 sky, vec3 n, vec3 hit)
     float off_plane = 1.0e30;
     for (int o = 0; o < u_object_count; o++)
         off_plane = min(off_plane, abs(hit.y - (u_objects[o].hull.y + u_cam_height)));
-    return mix(sky, color, hull.a * (1.0 - smoothstep(0.5 * u_depth, u_depth, off_plane)));
+    return mix(sky, layer_emit(TL_LIGHT_REFLECTION, color),
+               hull.a * (1.0 - smoothstep(0.5 * u_depth, u_depth, off_plane)));
 }
 #endif

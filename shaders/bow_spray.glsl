@@ -125,7 +125,7 @@ vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }
-    return color * trans + scattered;
+    return color * trans + layer_emit(TL_LIGHT_SPRAY, scattered);
 }
 
 // Every object's burst in view.

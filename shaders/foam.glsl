@@ -74,7 +74,7 @@ vec3 foam_daylight(float sunlit)
 vec3 foam_bubbles(float aerated, vec3 hue, float sunlit)
 {
     vec3 tint = hue / max(max(hue.r, 1.0e-6), max(hue.g, hue.b));
-    return 0.4 * aerated * tint * foam_daylight(sunlit);
+    return layer_emit(TL_LIGHT_FOAM, 0.4 * aerated * tint * foam_daylight(sunlit));
 }
 
 // The same seen from above, less what the surface reflects. Added to the
@@ -99,7 +99,8 @@ vec3 foam_shade_sky(vec3 color, vec3 n, float foam, float thickness, float sunli
 #ifdef TL_PASS_AOV
     aov_foam(foam);
 #endif
-    return mix(color, albedo * (sky * sky_ambient() + sun), foam * (0.5 + 0.5 * thickness));
+    return mix(color, layer_emit(TL_LIGHT_FOAM, albedo * (sky * sky_ambient() + sun)),
+               foam * (0.5 + 0.5 * thickness));
 }
 
 vec3 foam_shade(vec3 color, vec3 n, float foam, float thickness, float sunlit)

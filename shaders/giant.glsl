@@ -662,7 +662,7 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
 #ifdef TL_FEATURE_GIANT_GLOW
     glow = giant_scatter(g, hit, ray, n, footprint, sunlit);
 #endif
-    color += glow * (1.0 - foam);
+    color += layer_emit(TL_LIGHT_BODY, glow) * (1.0 - foam);
     // The bubbles behind the crest, tinted by the water above them, under
     // the trail's web (which on the dark water alone read as cracks in mud).
     color += foam_aerated(ray, n, aerated, u_giant_scatter_color, sunlit);
@@ -678,5 +678,5 @@ vec3 giant_shade(vec3 color, vec3 hit, vec3 ray, vec3 n, GiantSample g, float oc
     // foam (the stringers, faint where narrower than a pixel) drew dark
     // veins down the glowing face.
     color = foam_shade(color, n, foam, thickness, max(sunlit, 0.4 * smoothstep(0.8, 1.0, top)));
-    return color + foam * glow;
+    return color + layer_emit(TL_LIGHT_FOAM, foam * glow);
 }

@@ -92,10 +92,11 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // the face and the trough) the lit water of the face, not the sky.
     float fresnel = optics_schlick(ray, n);
     vec3 r = normalize(reflect(ray, n));
-    vec3 below = body + lit * (0.25 / TL_PI);
+    vec3 below = layer_emit(TL_LIGHT_BODY, body + lit * (0.25 / TL_PI));
     vec3 reflection =
         mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit), smoothstep(-0.1, 0.05, r.y));
-    vec3 color = fresnel * reflection + (1.0 - fresnel) * (body + lit * phase);
+    vec3 color =
+        fresnel * reflection + (1.0 - fresnel) * layer_emit(TL_LIGHT_BODY, body + lit * phase);
     // Aerated: the thrown sheet takes air as it goes and is white along its
     // free edge, feathered into streaks along the flow; once landed the
     // rest of it collapses into whitewater, in lace, not a solid coat (a
@@ -124,5 +125,6 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float fine = foam_detail(vec2(sw.y, flow), length(hit) * u_lod_angle);
     float sky = mix(0.35, 1.25, 0.5 + 0.5 * n.y) * clamp(0.3 + 0.8 * lace + 1.4 * fine, 0.15, 1.3);
     color += foam_aerated(ray, n, white, u_scatter_color, foam_sun);
-    return foam_shade_sky(color, n, foam, thick, foam_sun, sky) + foam * lit * phase;
+    return foam_shade_sky(color, n, foam, thick, foam_sun, sky) +
+           layer_emit(TL_LIGHT_FOAM, foam * lit * phase);
 }

@@ -165,7 +165,7 @@ vec3 trace(vec3 ray, out float dist)
         }
 #endif
 #ifdef TL_FEATURE_PARTICLES
-        below += water_particles(ray, dist);
+        below += layer_emit(TL_LIGHT_BODY, water_particles(ray, dist));
 #endif
         // A thin dark meniscus where the lens meets the surface.
         return below * mix(0.35, 1.0, smoothstep(0.0, 0.015, -gap));
@@ -185,7 +185,7 @@ vec3 trace(vec3 ray, out float dist)
     color = bow_spray(ray, dist, color);
 #endif
 #ifdef TL_FEATURE_FOG
-    color = optics_fog(color, u_cam_height, ray, dist);
+    color = optics_fog(color, u_cam_height, ray, dist, TL_LIGHT_SKY);
 #endif
     return color;
 }

@@ -75,7 +75,7 @@ float optics_fog_depth(float y0, float ray_y, float dist)
 // Fog over `color` seen `dist` metres along `ray` from height y0
 // (TL_SKY_DEPTH: the sky): extinction T = exp(-depth) and in-scatter toward
 // the fog's colour, brighter toward the sun while it is up.
-vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist)
+vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist, int layer)
 {
     float depth = optics_fog_depth(y0, ray.y, min(dist, 1.0e7));
     float t = exp(-depth);
@@ -96,6 +96,6 @@ vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist)
 #else
     vec3 haze = u_fog_color * (1.0 + 1.5 * toward_sun * smoothstep(-0.05, 0.1, u_sun_dir.y));
 #endif
-    return color * t + haze * (1.0 - t);
+    return color * t + layer_emit(layer, haze * (1.0 - t));
 }
 #endif

@@ -83,7 +83,12 @@ void main()
 #endif
     out_color = vec4(hdr, 1.0);
 #ifdef TL_PRESENT_GLARE
-    hdr = mix(hdr, texture(u_glare, frag_xy() / vec2(u_out_size)).rgb, u_bloom);
+    vec3 glare = texture(u_glare, frag_xy() / vec2(u_out_size)).rgb;
+    hdr = mix(hdr, glare, u_bloom);
+#ifdef TL_PRESENT_GLARE_LAYER
+    // The glare's light layer: what the display adds to colour * (1 - bloom).
+    out_color = vec4(u_bloom * glare, 1.0);
+#endif
 #endif
 #ifdef TL_PRESENT_LUT
     out_display = vec4(clamp(display_lut(hdr * u_exposure), 0.0, 1.0), 1.0);

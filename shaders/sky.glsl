@@ -6,6 +6,9 @@
 // is read), and the sun as a disc of its real size with limb darkening, its
 // colour from the air along its path. Without it: the reference shader's
 // "extra cheap atmosphere" and its sun lobe, exactly as they were.
+// sky_color is the sky's light layer, sky_reflected the water's
+// reflection and the sun's glitter (layers.glsl).
+#include "layers.glsl"
 
 #ifdef TL_FEATURE_SKY_PHYSICAL
 uniform sampler2D u_sky_view;  // radiance for a sun of illuminance 1: azimuth from the sun, latitude
@@ -43,7 +46,8 @@ vec3 sky_disc(vec3 dir, float cos_radius)
 
 vec3 sky_color(vec3 dir)
 {
-    return sky_atmosphere(dir, u_sun_dir) + sky_disc(dir, u_sun_cos_radius);
+    return layer_emit(TL_LIGHT_SKY,
+                      sky_atmosphere(dir, u_sun_dir) + sky_disc(dir, u_sun_cos_radius));
 }
 
 // The sky the water mirrors: the sun's disc widened to 1.5 deg at least, so
@@ -52,8 +56,8 @@ vec3 sky_color(vec3 dir)
 // share of the sun that reaches the water there (the giant wave's shadow).
 vec3 sky_reflected(vec3 dir, float sunlit)
 {
-    return sky_atmosphere(dir, u_sun_dir) +
-           sunlit * sky_disc(dir, min(u_sun_cos_radius, 0.99966));
+    return layer_emit(TL_LIGHT_REFLECTION, sky_atmosphere(dir, u_sun_dir)) +
+           layer_emit(TL_LIGHT_GLITTER, sunlit * sky_disc(dir, min(u_sun_cos_radius, 0.99966)));
 }
 
 // The sun's light on a surface facing it.
@@ -101,12 +105,13 @@ float sky_sun(vec3 dir)
 
 vec3 sky_color(vec3 dir)
 {
-    return sky_atmosphere(dir, u_sun_dir) + vec3(sky_sun(dir));
+    return layer_emit(TL_LIGHT_SKY, sky_atmosphere(dir, u_sun_dir) + vec3(sky_sun(dir)));
 }
 
 vec3 sky_reflected(vec3 dir, float sunlit)
 {
-    return sky_atmosphere(dir, u_sun_dir) + vec3(sunlit * sky_sun(dir));
+    return layer_emit(TL_LIGHT_REFLECTION, sky_atmosphere(dir, u_sun_dir)) +
+           layer_emit(TL_LIGHT_GLITTER, vec3(sunlit * sky_sun(dir)));
 }
 
 // Irradiance on a surface facing the sun: the integral of the sun lobe

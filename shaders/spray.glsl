@@ -186,5 +186,5 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }
-    return color * trans + scattered;
+    return color * trans + layer_emit(TL_LIGHT_SPRAY, scattered);
 }

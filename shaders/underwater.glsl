@@ -55,7 +55,8 @@ vec3 underwater_below(vec3 origin, vec3 ray, bool direct, out float dist)
             aov_surface(vec3(0.0, 1.0, 0.0), AOV_OCEAN);
 #endif
         vec3 sand = floor_color(origin + ray * dist, ray, dist, 0.0, direct);
-        return sand * optics_water_transmittance(dist) + water_inscatter(depth, ray, dist);
+        return layer_emit(TL_LIGHT_BODY, sand) * optics_water_transmittance(dist) +
+               water_inscatter(depth, ray, dist);
     }
 #endif
     return water_inscatter(depth, ray, TL_SKY_DEPTH);
@@ -70,7 +71,7 @@ vec3 trace_underwater(vec3 ray, out float dist)
     if (t < 0.0) {
         vec3 below = underwater_below(eye, ray, true, dist);
 #ifdef TL_FEATURE_SHAFTS
-        below = max(below + water_shafts(ray, dist), vec3(0.0));
+        below = max(below + layer_emit(TL_LIGHT_BODY, water_shafts(ray, dist)), vec3(0.0));
 #endif
         return below;
     }
@@ -152,14 +153,15 @@ vec3 trace_underwater(vec3 ray, out float dist)
 #ifdef TL_PASS_AOV
     aov_foam(foam);
 #endif
-    surface = mix(surface, (0.5 - 0.3 * thickness) * foam_daylight(sunlit), foam) +
+    vec3 foam_light = (0.5 - 0.3 * thickness) * foam_daylight(sunlit);
+    surface = mix(surface, layer_emit(TL_LIGHT_FOAM, foam_light), foam) +
               foam_bubbles(aerated, u_scatter_color, sunlit);
 #endif
     vec3 color = surface * optics_water_transmittance(t) + water_inscatter(max(-u_cam_height, 0.0), ray, t);
 #ifdef TL_FEATURE_SHAFTS
     // The shafts take light from some samples (focus < 1) and give it to
     // others: a dim pixel's share cannot go below nothing.
-    color = max(color + water_shafts(ray, t), vec3(0.0));
+    color = max(color + layer_emit(TL_LIGHT_BODY, water_shafts(ray, t)), vec3(0.0));
 #endif
     return color;
 }

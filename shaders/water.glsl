@@ -176,7 +176,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // The sky the water mirrors is seen through the fog above it too.
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y);
-    reflection = optics_fog(reflection, max(hit.y, 0.0), r, TL_SKY_DEPTH);
+    reflection = optics_fog(reflection, max(hit.y, 0.0), r, TL_SKY_DEPTH, TL_LIGHT_REFLECTION);
 #endif
 #ifdef TL_BOAT_MIRROR
     reflection = boat_reflect(reflection, n, hit);
@@ -201,9 +201,10 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // sand seen through it stands for the rest.
     scattering *= 1.0 - exp(-2.0 * u_water_fall * max(hit.y + u_floor_depth, 0.0));
 #endif
-    vec3 color = fresnel * reflection + scattering;
+    vec3 color = fresnel * reflection + layer_emit(TL_LIGHT_BODY, scattering);
 #ifdef TL_FEATURE_SEA_FLOOR
-    color += (1.0 - fresnel) * floor_through_surface(ray, n, hit, dist, slope_var);
+    color += (1.0 - fresnel) *
+             layer_emit(TL_LIGHT_BODY, floor_through_surface(ray, n, hit, dist, slope_var));
 #endif
     // The water a pixel covers (0 without level of detail), more as the
     // view grazes the surface: foam's detail and veins stay a pixel wide.

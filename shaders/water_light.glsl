@@ -95,5 +95,5 @@ vec3 water_inscatter(float depth, vec3 ray, float t)
                water_path_integral(sigma - fall * (ray.y / sun_down), t);
     vec3 sky = u_water_scattering * TL_WATER_SKY_SCATTER * water_sky_at(depth) *
                water_path_integral(sigma - fall * ray.y, t);
-    return sun + sky;
+    return layer_emit(TL_LIGHT_BODY, sun + sky);
 }

@@ -3,8 +3,9 @@
 # compared with tideline's own mask of that object (intersection over
 # union). Run headless:
 #   blender -b --factory-startup --python blender_cryptomatte.py -- \
-#       FRAME.exr OBJECT MASK_PASS OUT.exr WIDTH HEIGHT
-# (OUT.exr: where the compositor's result goes; the frame's size).
+#       FRAME.exr NAME MASK_PASS OUT.exr WIDTH HEIGHT [LAYER]
+# (OUT.exr: where the compositor's result goes; the frame's size; LAYER:
+# the Cryptomatte layer, ViewLayer.CryptoObject unless given).
 # Prints the image node's passes and "IOU <value>"; exits non-zero on any failure.
 import sys
 
@@ -17,6 +18,7 @@ def main():
     # A multilayer image's size is not known to Python before the
     # compositor loads it: the caller gives it.
     width, height = int(args[4]), int(args[5])
+    layer = args[6] if len(args) > 6 else "ViewLayer.CryptoObject"
     image = bpy.data.images.load(path)
 
     scene = bpy.context.scene
@@ -39,7 +41,7 @@ def main():
     crypto = tree.nodes.new("CompositorNodeCryptomatteV2")
     crypto.source = "IMAGE"
     crypto.image = image
-    crypto.layer_name = "ViewLayer.CryptoObject"
+    crypto.layer_name = layer
     crypto.matte_id = name
     tree.links.new(source.outputs[0], crypto.inputs["Image"])
 

@@ -42,6 +42,9 @@ tl_add_test(test_giant_render SOURCES test_giant_render.c LIBS tideline_gl LABEL
 # as it was, their covers add up, the mattes agree with the CPU mirror.
 tl_add_test(test_passes_render SOURCES test_passes_render.c LIBS tideline_gl
   ARGS ${PROJECT_SOURCE_DIR}/timelines $<TARGET_FILE:tideline> LABELS gl)
+# The light layers: they add up to the colour, each holds its own light.
+tl_add_test(test_light_layers SOURCES test_light_layers.c LIBS tideline_gl tl_ocio tl_passes
+  ARGS ${PROJECT_SOURCE_DIR}/timelines $<TARGET_FILE:tideline> LABELS gl)
 tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_lip SOURCES test_giant_lip.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes LABELS unit)

@@ -37,7 +37,10 @@ oiiotool --info -v "$work/hero.exr" >"$work/info.txt"
 for channel in ViewLayer.Combined.R ViewLayer.Combined.A ViewLayer.Depth.Z ViewLayer.Normal.Z \
   ViewLayer.Position.X ViewLayer.mask_water.X ViewLayer.mask_foam.X ViewLayer.mask_giant.X \
   ViewLayer.mask_boat.X ViewLayer.mask_sky.X ViewLayer.mask_underwater.X \
-  ViewLayer.CryptoObject00.r ViewLayer.CryptoObject02.a ViewLayer.Vector.X ViewLayer.Vector.W; do
+  ViewLayer.CryptoObject00.r ViewLayer.CryptoObject02.a ViewLayer.Vector.X ViewLayer.Vector.W \
+  ViewLayer.CryptoMaterial00.r ViewLayer.CryptoMaterial02.a ViewLayer.light_sky.R \
+  ViewLayer.light_reflection.G ViewLayer.light_body.B ViewLayer.light_glitter.R \
+  ViewLayer.light_foam.R ViewLayer.light_spray.R ViewLayer.light_boat.R ViewLayer.light_glare.B; do
   check "oiiotool lists $channel" grep -q "$channel" "$work/info.txt"
 done
 check "the Cryptomatte's IDs are 32-bit float" \
@@ -50,9 +53,9 @@ for attribute in worldToCamera worldToNDC chromaticities framesPerSecond \
 done
 
 # Blender's Cryptomatte node against tideline's masks.
-matte() { # object, its mask pass
+matte() { # object (or material), its mask pass[, the Cryptomatte layer]
   blender -b --factory-startup --python "$tests/blender_cryptomatte.py" -- \
-    "$work/hero.exr" "$1" "$2" "$work/iou_$1.exr" $w $h >"$work/blender_$1.txt" 2>&1 || true
+    "$work/hero.exr" "$1" "$2" "$work/iou_$1.exr" $w $h ${3:-} >"$work/blender_$1.txt" 2>&1 || true
   grep -E '^(PASSES|MATTE|IOU|ERROR)' "$work/blender_$1.txt" || tail -5 "$work/blender_$1.txt"
   iou=$(sed -n 's/^IOU //p' "$work/blender_$1.txt")
   pixels=$(sed -n 's/^MATTE \([0-9]*\) of.*/\1/p' "$work/blender_$1.txt")
@@ -63,6 +66,12 @@ matte() { # object, its mask pass
 }
 matte boat mask_boat
 matte giant mask_giant
+# The material Cryptomatte: the built-in boat's material is its hull.
+matte builtin_boat mask_boat ViewLayer.CryptoMaterial
+# Blender's image node offers each light layer as a pass.
+for layer in sky reflection body glitter foam spray boat glare; do
+  check "Blender reads light_$layer as a pass" grep -q "^PASSES.*,light_$layer," "$work/blender_boat.txt"
+done
 # A name the frame does not hold pulls an empty matte: the comparison can fail.
 blender -b --factory-startup --python "$tests/blender_cryptomatte.py" -- \
   "$work/hero.exr" ocean mask_boat "$work/iou_x.exr" $w $h >"$work/blender_x.txt" 2>&1 || true

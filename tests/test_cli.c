@@ -93,8 +93,8 @@ static void test_bad_flags(void)
     const char *exr = in_dir(1, "x.exr");
     EXPECT_USAGE("--passes: unknown pass 'vectors' in 'depth,vectors' (passes: combined, depth,",
                  "still", "--passes", "depth,vectors", "-o", exr);
-    EXPECT_USAGE("cryptomatte, vector, masks (every mask), all, none", "still", "--passes", "mask",
-                 "-o", exr);
+    EXPECT_USAGE("cryptomatte_material, masks (every mask), lights (every light layer), all, none",
+                 "still", "--passes", "mask", "-o", exr);
     EXPECT_USAGE("--passes: the passes are layers of an EXR; give -o FILE.exr", "still", "--passes",
                  "depth", "-o", png);
     EXPECT_USAGE("--passes: 'none' stands alone (in 'none,depth')", "render", "x.tl", "--passes",

@@ -43,7 +43,8 @@ static void test_working_space(tl_render *r)
     int fd = mkstemps(path, 4);
     close(fd);
     const char *names[1] = {"boat"};
-    tl_passes_frame info = {0, &s.camera, names, 1, 24.0, &s, NULL, NULL, TL_WORKING_ACESCG, m};
+    tl_passes_frame info = {0,    &s.camera,         names, 1,   24.0, &s, NULL,
+                            NULL, TL_WORKING_ACESCG, m,     NULL};
     CHECK(tl_passes_write_frame(path, &f, &info, NULL, &err) == 0);
     tl_frame back;
     CHECK(tl_exr_read(path, &back, &err) == 0);

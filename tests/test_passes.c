@@ -193,7 +193,9 @@ static void test_file(void)
         *aov(&f, 1, i, 1) = 1.0f;
     const tl_camera cam = {{100.0, 5.0, -40.0}, 0.4, -0.2, 0.0, 1.0};
     const char *names[2] = {"boat", "dinghy"};
-    tl_passes_frame info = {TL_PASSES_ALL & ~TL_PASSES_VECTOR,
+    /* The first drawn with the built-in boat, the second with a model. */
+    const char *models[2] = {"", "/models/boats/dinghy.glb"};
+    tl_passes_frame info = {TL_PASSES_ALL & ~(TL_PASSES_VECTOR | TL_PASSES_LIGHTS),
                             &cam,
                             names,
                             2,
@@ -202,7 +204,8 @@ static void test_file(void)
                             NULL,
                             NULL,
                             TL_WORKING_REC709,
-                            NULL};
+                            NULL,
+                            models};
     char path[] = "/tmp/tideline_test_passes_XXXXXX.exr";
     int fd = mkstemps(path, 4);
     CHECK(fd >= 0);
@@ -269,6 +272,37 @@ static void test_file(void)
                     sky, under, id0, cov0, id1, cov1, id2,   cov2, cov5};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
         free(all[i]);
+
+    /* The materials: the ocean and the giant wave are water, less the
+     * foam's share; a floating object's is its model's. */
+    float *mid0 = read_channel(path, "ViewLayer.CryptoMaterial00.r");
+    float *mcov0 = read_channel(path, "ViewLayer.CryptoMaterial00.g");
+    float *mid3 = read_channel(path, "ViewLayer.CryptoMaterial01.b");
+    float *mcov3 = read_channel(path, "ViewLayer.CryptoMaterial01.a");
+    if (mid0 && mcov0 && mid3 && mcov3) {
+        CHECK(mid0[1] == tl_crypto_id("water", NULL));
+        CHECK_NEAR(mcov0[1], 0.4, 1e-6);
+        CHECK(mid3[1] == tl_crypto_id("foam", NULL)); /* the fourth rank */
+        CHECK_NEAR(mcov3[1], 0.1, 1e-6);
+        CHECK(mid0[2] == tl_crypto_id("water", NULL) && mcov0[2] == 1.0f);
+        CHECK(mid0[3] == tl_crypto_id("builtin_boat", NULL) && mcov0[3] == 0.75f);
+    }
+    free(mid0);
+    free(mcov0);
+    free(mid3);
+    free(mcov3);
+    char material_key[8], attr[64];
+    tl_crypto_key("ViewLayer.CryptoMaterial", material_key);
+    snprintf(attr, sizeof attr, "cryptomatte/%s/manifest", material_key);
+    char material_manifest[512], material_want[512];
+    CHECK(tl_exr_read_attr_string(path, attr, material_manifest, sizeof material_manifest, &err) ==
+          0);
+    snprintf(material_want, sizeof material_want,
+             "{\"sky\":\"%08x\",\"water\":\"%08x\",\"foam\":\"%08x\",\"builtin_boat\":\"%08x\","
+             "\"dinghy.glb\":\"%08x\"}",
+             (unsigned)id_bits("sky"), (unsigned)id_bits("water"), (unsigned)id_bits("foam"),
+             (unsigned)id_bits("builtin_boat"), (unsigned)id_bits("dinghy.glb"));
+    CHECK_STR_EQ(material_manifest, material_want);
 
     char text[1024];
     CHECK(tl_exr_read_attr_string(path, "cryptomatte/542cafa/name", text, sizeof text, &err) == 0);

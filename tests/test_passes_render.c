@@ -35,6 +35,31 @@ static float *channel(const char *path, const char *name)
     return data;
 }
 
+/* The matte of the names (NULL after the last) in Cryptomatte layer
+ * `layer` of the file: their IDs' coverage summed over the ranks. */
+static float *crypto_matte(const char *path, const char *layer, const char *const name[2])
+{
+    float *matte = calloc((size_t)W * H, sizeof *matte);
+    for (int rank = 0; matte && rank < TL_CRYPTO_RANKS; rank++) {
+        char id_name[64], cov_name[64];
+        snprintf(id_name, sizeof id_name, "ViewLayer.%s%02d.%c", layer, rank / 2,
+                 rank % 2 ? 'b' : 'r');
+        snprintf(cov_name, sizeof cov_name, "ViewLayer.%s%02d.%c", layer, rank / 2,
+                 rank % 2 ? 'a' : 'g');
+        float *id = NULL, *cov = NULL;
+        int w, h;
+        tl_error err;
+        CHECK(tl_exr_read_channel(path, id_name, &w, &h, &id, &err) == 0);
+        CHECK(tl_exr_read_channel(path, cov_name, &w, &h, &cov, &err) == 0);
+        for (int i = 0; id && cov && i < W * H; i++)
+            for (int k = 0; k < 2 && name[k]; k++)
+                matte[i] += id[i] == tl_crypto_id(name[k], NULL) ? cov[i] : 0.0f;
+        free(id);
+        free(cov);
+    }
+    return matte;
+}
+
 /* The Vector pass through `tideline render`: a camera panning at 24 deg/s
  * over a sea whose waves stand still, then a cut. Each pixel of the
  * horizon's rows (pitch 0: its rays turn about the camera's own up axis)
@@ -297,10 +322,12 @@ int main(int argc, char **argv)
     CHECK(off_surface <= surfaces / 100);
 
     /* Through the file: the boat's Cryptomatte matte is its mask. */
-    const char *names[TL_OBJECT_MAX];
-    for (int k = 0; k < tl->object_count; k++)
+    const char *names[TL_OBJECT_MAX], *models[TL_OBJECT_MAX];
+    for (int k = 0; k < tl->object_count; k++) {
         names[k] = tl->objects[k].name;
-    tl_passes_frame info = {TL_PASSES_ALL & ~TL_PASSES_VECTOR,
+        models[k] = tl->objects[k].model;
+    }
+    tl_passes_frame info = {TL_PASSES_ALL & ~(TL_PASSES_VECTOR | TL_PASSES_LIGHTS),
                             &scene.camera,
                             names,
                             tl->object_count,
@@ -309,41 +336,41 @@ int main(int argc, char **argv)
                             NULL,
                             NULL,
                             TL_WORKING_REC709,
-                            NULL};
+                            NULL,
+                            models};
     char out[] = "/tmp/tideline_test_passes_render_XXXXXX.exr";
     int fd = mkstemps(out, 4);
     close(fd);
     CHECK(tl_passes_write_frame(out, &with, &info, NULL, &err) == 0);
     int fw, fh;
-    /* The boat's matte as a Cryptomatte reader pulls it: its ID's
-     * coverage summed over the ranks. */
-    float *matte = calloc((size_t)W * H, sizeof *matte), *mask = NULL;
-    for (int rank = 0; rank < TL_CRYPTO_RANKS; rank++) {
-        char id_name[64], cov_name[64];
-        snprintf(id_name, sizeof id_name, "ViewLayer.CryptoObject%02d.%c", rank / 2,
-                 rank % 2 ? 'b' : 'r');
-        snprintf(cov_name, sizeof cov_name, "ViewLayer.CryptoObject%02d.%c", rank / 2,
-                 rank % 2 ? 'a' : 'g');
-        float *id = NULL, *cov = NULL;
-        CHECK(tl_exr_read_channel(out, id_name, &fw, &fh, &id, &err) == 0);
-        CHECK(tl_exr_read_channel(out, cov_name, &fw, &fh, &cov, &err) == 0);
-        for (int i = 0; id && cov && matte && i < W * H; i++)
-            matte[i] += id[i] == tl_crypto_id("boat", NULL) ? cov[i] : 0.0f;
-        free(id);
-        free(cov);
-    }
+    /* The boat's matte as a Cryptomatte reader pulls it (its ID's coverage
+     * summed over the ranks), by its object and by its material (the
+     * built-in boat's), against mask_boat; the material water's and
+     * foam's together against mask_water. */
+    float *mask = NULL, *water_mask = NULL;
     CHECK(tl_exr_read_channel(out, "ViewLayer.mask_boat.X", &fw, &fh, &mask, &err) == 0);
-    if (matte && mask) {
+    CHECK(tl_exr_read_channel(out, "ViewLayer.mask_water.X", &fw, &fh, &water_mask, &err) == 0);
+    const struct {
+        const char *layer, *name[2];
+        const float *against;
+    } mattes[3] = {{"CryptoObject", {"boat", NULL}, mask},
+                   {"CryptoMaterial", {"builtin_boat", NULL}, mask},
+                   {"CryptoMaterial", {"water", "foam"}, water_mask}};
+    for (int m = 0; m < 3 && mask && water_mask; m++) {
+        float *matte = crypto_matte(out, mattes[m].layer, mattes[m].name);
         double inter = 0.0, uni = 0.0;
-        for (int i = 0; i < W * H; i++) {
-            inter += fmin(matte[i], mask[i]);
-            uni += fmax(matte[i], mask[i]);
+        for (int i = 0; matte && i < W * H; i++) {
+            inter += fmin(matte[i], mattes[m].against[i]);
+            uni += fmax(matte[i], mattes[m].against[i]);
         }
-        printf("boat: the Cryptomatte's matte against mask_boat, IoU %.4f\n", inter / uni);
+        printf("%s %s%s%s: its matte against the mask, IoU %.4f\n", mattes[m].layer,
+               mattes[m].name[0], mattes[m].name[1] ? " + " : "",
+               mattes[m].name[1] ? mattes[m].name[1] : "", inter / uni);
         CHECK(inter / uni > 0.99);
+        free(matte);
     }
-    free(matte);
     free(mask);
+    free(water_mask);
     unlink(out);
 
     tl_frame_free(&plain);

@@ -76,9 +76,10 @@ static void reference_drawn(void *ctx, double share)
 }
 
 /* `planes`: TL_PLANE_DISPLAY, and TL_PLANE_AOV for a preset with the
- * compositing passes (PRESET+passes). */
+ * compositing passes (PRESET+passes); `layers`: the light layers
+ * (PRESET+lights). */
 static int render_shot(bench_state *s, int shot, const tl_quality *q, unsigned planes,
-                       tl_frame *frame, tl_error *err)
+                       unsigned layers, tl_frame *frame, tl_error *err)
 {
     const bench_shot *b = &s->shots[shot];
     const tl_bench_timeline *t = &s->timelines[b->timeline];
@@ -86,8 +87,11 @@ static int render_shot(bench_state *s, int shot, const tl_quality *q, unsigned p
     if (s->boat_of != b->timeline)
         rc = tl_render_use_cutscene(s->render, t->cutscene, err);
     s->boat_of = rc ? -1 : b->timeline;
-    tl_render_settings settings = {
-        .width = s->cfg->width, .height = s->cfg->height, .quality = q, .planes = planes};
+    tl_render_settings settings = {.width = s->cfg->width,
+                                   .height = s->cfg->height,
+                                   .quality = q,
+                                   .planes = planes,
+                                   .layers = layers};
     if (!rc)
         rc = tl_render_timeline_frame(s->render, &t->cutscene->timeline, b->frame, &settings, frame,
                                       NULL, err);
@@ -161,12 +165,12 @@ static int measure_shot(bench_state *s, const tl_bench_preset *p, int k, int r, 
     const int rounds = s->cfg->rounds;
     report(s, TL_BENCH_MEASURING, p->name, k, r, -1.0, -1.0);
     int rc = tl_render_use_shaders(s->render, &p->lib, err);
+    const unsigned planes = TL_PLANE_DISPLAY | (p->aov ? TL_PLANE_AOV : 0u),
+                   layers = p->lights ? (1u << TL_FRAME_LAYERS) - 1u : 0u;
     if (!rc)
-        rc = render_shot(s, k, &p->quality, TL_PLANE_DISPLAY | (p->aov ? TL_PLANE_AOV : 0u), frame,
-                         err);
+        rc = render_shot(s, k, &p->quality, planes, layers, frame, err);
     if (!rc)
-        rc = render_shot(s, k, &p->quality, TL_PLANE_DISPLAY | (p->aov ? TL_PLANE_AOV : 0u), frame,
-                         err);
+        rc = render_shot(s, k, &p->quality, planes, layers, frame, err);
     if (rc) {
         tl_error_prefix(err, "%s", p->name); /* which row's shaders or knobs */
         return rc;
@@ -339,7 +343,7 @@ static int render_references(bench_state *s, tl_bench_row *row, tl_error *err)
         s->drawing_shot = k;
         s->drawing_start = tl_clock_seconds();
         s->drawing_after = timed ? sum / timed * 1e-3 * (s->shot_count - k - 1) : -1.0;
-        rc = render_shot(s, k, &ref, TL_PLANE_DISPLAY, &frame, err);
+        rc = render_shot(s, k, &ref, TL_PLANE_DISPLAY, 0u, &frame, err);
         if (rc)
             break;
         memcpy(s->shots[k].reference, frame.display, bytes);

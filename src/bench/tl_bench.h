@@ -66,6 +66,7 @@ typedef struct tl_bench_preset {
     tl_quality quality;
     const char *dir; /* the folder after '@' (in the parsed list), or NULL */
     int aov;         /* PRESET+passes: drawn with the compositing passes' data, read back */
+    int lights;      /* PRESET+lights: with every light layer (the frame drawn again for each) */
     tl_shader_lib lib;
 } tl_bench_preset;
 

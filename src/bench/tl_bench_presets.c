@@ -63,11 +63,18 @@ int tl_bench_parse_presets(char *list, tl_bench_preset *out, int *count, tl_erro
                                     out[*count].name);
             out[*count].dir = at;
         }
-        /* PRESET+passes: with the passes' data. */
-        size_t len = strlen(item), suffix = strlen("+passes");
-        out[*count].aov = len > suffix && strcmp(item + len - suffix, "+passes") == 0;
-        if (out[*count].aov)
-            item[len - suffix] = '\0';
+        /* PRESET+passes: with the passes' data; PRESET+lights: with the
+         * light layers. */
+        out[*count].aov = out[*count].lights = 0;
+        size_t len = strlen(item);
+        if (len > strlen("+passes") && strcmp(item + len - strlen("+passes"), "+passes") == 0) {
+            out[*count].aov = 1;
+            item[len - strlen("+passes")] = '\0';
+        } else if (len > strlen("+lights") &&
+                   strcmp(item + len - strlen("+lights"), "+lights") == 0) {
+            out[*count].lights = 1;
+            item[len - strlen("+lights")] = '\0';
+        }
         char *rest = strchr(item, ':');
         if (rest)
             *rest++ = '\0';

@@ -408,7 +408,8 @@ static int write_saved(const preview *p, const char *path, const tl_frame *f,
     for (int k = 0; k < p->tl.object_count && k < TL_OBJECT_MAX; k++)
         names[k] = p->tl.objects[k].name;
     const tl_passes_frame info = {0,      &scene.camera, names, p->tl.object_count, p->tl.fps,
-                                  &scene, NULL,          NULL,  TL_WORKING_REC709,  NULL};
+                                  &scene, NULL,          NULL,  TL_WORKING_REC709,  NULL,
+                                  NULL};
     return tl_passes_write_frame(path, f, &info, &opt, err);
 }
 

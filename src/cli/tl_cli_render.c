@@ -66,8 +66,12 @@ static const char usage[] =
     "  --passes LIST          EXR frames: compositing passes as layers named as Blender\n"
     "                         names them (combined, depth, normal, position, mask_water,\n"
     "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
-    "                         cryptomatte, vector; masks, all; none); overrides the\n"
-    "                         timeline's `passes` line (docs/compositing.md)\n" TL_CLI_COLOR_USAGE
+    "                         cryptomatte, vector, light_sky, light_reflection,\n"
+    "                         light_body, light_glitter, light_foam, light_spray,\n"
+    "                         light_boat, light_glare, cryptomatte_material; masks,\n"
+    "                         lights, all; none); each light layer but the glare\n"
+    "                         draws the frame again; overrides the timeline's\n"
+    "                         `passes` line (docs/compositing.md)\n" TL_CLI_COLOR_USAGE
     "  --writers N            frames encoded and written side by side, 1..8 (default:\n"
     "                         half the processors, at most 8)\n"
     "  --skip-existing        keep frames whose file is already complete (resume)\n"

@@ -81,8 +81,12 @@ static const char usage[] =
     "  --passes LIST          .exr: compositing passes as layers named as Blender\n"
     "                         names them (combined, depth, normal, position, mask_water,\n"
     "                         mask_foam, mask_giant, mask_boat, mask_sky, mask_underwater,\n"
-    "                         cryptomatte, vector; masks, all; none); overrides the\n"
-    "                         timeline's `passes` line (docs/compositing.md)\n"
+    "                         cryptomatte, vector, light_sky, light_reflection,\n"
+    "                         light_body, light_glitter, light_foam, light_spray,\n"
+    "                         light_boat, light_glare, cryptomatte_material; masks,\n"
+    "                         lights, all; none); each light layer but the glare\n"
+    "                         draws the frame again; overrides the timeline's\n"
+    "                         `passes` line (docs/compositing.md)\n"
     "  -v, --verbose          log the GL platform, renderer and timings\n"
     "  -h, --help             show this help\n"
     "Angles accept a 'rad' suffix for radians.\n";
@@ -109,6 +113,7 @@ typedef struct still_options {
     int has_passes;
     /* Kept from the timeline for the EXR: its objects' names and fps. */
     char object_names[TL_OBJECT_MAX][TL_OBJECT_NAME_MAX];
+    char object_models[TL_OBJECT_MAX][256]; /* their materials (tl_crypto_material_name) */
     int objects;
     double fps;
     /* The Vector pass: the scenes a frame before and after. */
@@ -276,11 +281,16 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
         if (!o->has_passes)
             o->passes = tl.passes;
         o->timeline_space = tl.working_space;
-        for (int k = 0; k < tl.object_count && k < TL_OBJECT_MAX; k++)
+        for (int k = 0; k < tl.object_count && k < TL_OBJECT_MAX; k++) {
             snprintf(o->object_names[k], sizeof o->object_names[k], "%s", tl.objects[k].name);
+            snprintf(o->object_models[k], sizeof o->object_models[k], "%s",
+                     tl_crypto_material_name(tl.objects[k].model));
+        }
         o->objects = tl.object_count;
     } else {
         snprintf(o->object_names[0], sizeof o->object_names[0], "boat");
+        snprintf(o->object_models[0], sizeof o->object_models[0], "%s",
+                 tl_crypto_material_name(""));
         o->objects = 1;
     }
     o->fps = have_timeline ? fps : 0.0;
@@ -400,7 +410,8 @@ int tl_cli_still(int argc, char **argv)
         tl_render_set_progress(render, still_progress_update, &progress);
     const unsigned planes = TL_PLANES_ALL | (tl_passes_need_aov(o.passes) ? TL_PLANE_AOV : 0u);
     if (!rc)
-        rc = tl_render_frame_planes(render, &scene, planes, &frame, &err);
+        rc = tl_render_frame_layers(render, &scene, planes, tl_passes_light_layers(o.passes),
+                                    &frame, &err);
     if (progress.shown)
         fputc('\n', stderr);
     double t2 = tl_clock_seconds();
@@ -428,9 +439,11 @@ int tl_cli_still(int argc, char **argv)
     tl_image_options opt = {.no_dither = !o.dither,
                             .meta = meta,
                             .meta_count = 4 + tl_run_quality_meta(&scene.quality, meta + 4)};
-    const char *object[TL_OBJECT_MAX];
-    for (int k = 0; k < o.objects; k++)
+    const char *object[TL_OBJECT_MAX], *model[TL_OBJECT_MAX];
+    for (int k = 0; k < o.objects; k++) {
         object[k] = o.object_names[k];
+        model[k] = o.object_models[k];
+    }
     const tl_passes_frame info = {o.passes,
                                   &scene.camera,
                                   object,
@@ -440,7 +453,8 @@ int tl_cli_still(int argc, char **argv)
                                   o.has_prev ? &o.prev : NULL,
                                   o.has_next ? &o.next : NULL,
                                   o.color.space,
-                                  o.color.convert ? o.color.matrix : NULL};
+                                  o.color.convert ? o.color.matrix : NULL,
+                                  model};
     for (int i = 0; !rc && i < o.output_count; i++) {
         rc = tl_image_format_from_path(o.outputs[i]) == TL_IMAGE_EXR
                  ? tl_passes_write_frame(o.outputs[i], &frame, &info, &opt, &err)

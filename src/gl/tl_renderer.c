@@ -1,5 +1,6 @@
 #include "tl_renderer.h"
 
+#include <ctype.h>
 #include <epoxy/gl.h>
 #include <math.h>
 #include <stdint.h>
@@ -222,6 +223,16 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));
+    /* The light layers' constants (shaders/layers.glsl), from tl_light_layer. */
+    for (int k = 0; k < TL_LIGHT_SHADED && n > 0 && (size_t)n < size; k++) {
+        char name[32];
+        const char *s = tl_light_layer_name(k);
+        size_t j = 0;
+        for (; s[j] && j + 1 < sizeof name; j++)
+            name[j] = (char)toupper((unsigned char)s[j]);
+        name[j] = '\0';
+        n += snprintf(out + n, size - (size_t)n, "#define TL_LIGHT_%s %d\n", name, k);
+    }
     return n > 0 && (size_t)n < size ? 0 : -1;
 }
 
@@ -242,13 +253,14 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
     int fits = tl_renderer_defines(features, defines, sizeof defines) == 0;
     size_t n = strlen(defines);
     int more = snprintf(defines + n, sizeof defines - n,
-                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s%s",
+                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s%s%s",
                         key.march_octaves, key.normal_octaves,
                         features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
                         features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "",
                         features & TL_PASS_SKY ? "#define TL_SKY_ONLY 1\n" : "",
                         features & TL_PASS_MIRROR ? "#define TL_BOAT_MIRROR 1\n" : "",
-                        features & TL_PASS_AOV ? "#define TL_PASS_AOV 1\n" : "");
+                        features & TL_PASS_AOV ? "#define TL_PASS_AOV 1\n" : "",
+                        features & TL_PASS_LAYERS ? "#define TL_PASS_LAYERS 1\n" : "");
     if (!fits || more < 0 || (size_t)more >= sizeof defines - n) {
         tl_error_set(err, TL_ERR_RUNTIME, "the ocean program's #defines do not fit in %d bytes",
                      TL_DEFINES_SIZE);
@@ -273,6 +285,7 @@ int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *er
     if (!r)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     r->lib = *lib;
+    r->light_layer = -1;
     glGenVertexArrays(1, &r->vao); /* core profile draws need a bound VAO */
     if (!tl_renderer_present_program(r, 0, err)) {
         tl_renderer_destroy(r);
@@ -393,6 +406,11 @@ void tl_renderer_want_aov(tl_renderer *r, int on)
     r->want_aov = on != 0;
 }
 
+void tl_renderer_light_layer(tl_renderer *r, int layer)
+{
+    r->light_layer = layer >= 0 && layer < TL_LIGHT_SHADED ? layer : -1;
+}
+
 void tl_renderer_drop_program(GLuint *program)
 {
     if (*program)
@@ -475,6 +493,8 @@ GLuint tl_renderer_use_ocean(tl_renderer *r, const tl_frame_uniforms *u, unsigne
     tl_renderer_upload_uniforms(program, u);
     if (features & TL_FEATURE_BOAT)
         tl_renderer_bind_boat(r, program, features);
+    if (features & TL_PASS_LAYERS)
+        glUniform1i(tl_renderer_loc(program, "u_layer"), r->light_layer);
     if (features & TL_PASS_HINTED) { /* the prepass's finest level (tl_renderer_prepass) */
         glUniform1i(tl_renderer_loc(program, "u_march_hint"), TL_UNIT_MARCH_HINT);
         glUniform1f(tl_renderer_loc(program, "u_hint_pixel"), 1.0f);
@@ -647,6 +667,11 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     if (tl_renderer_aov_on(r)) {
         features |= TL_PASS_AOV;
         lean |= TL_PASS_AOV;
+    }
+    /* One light layer alone (shaders/layers.glsl). */
+    if (r->light_layer >= 0) {
+        features |= TL_PASS_LAYERS;
+        lean |= TL_PASS_LAYERS;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, r->scene.fbo);
     glViewport(0, 0, w, h);

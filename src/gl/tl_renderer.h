@@ -77,6 +77,15 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
  * and each floating object: tl_frame.h's aov plane), read back with
  * TL_PLANE_AOV. Off by default: it costs six more float targets' writes. */
 void tl_renderer_want_aov(tl_renderer *r, int on);
+/* The light layer (tl_light_layer, below TL_LIGHT_SHADED) the ocean draws
+ * keep from now on, every other source of light left out
+ * (shaders/layers.glsl); -1 (the default) keeps them all. */
+void tl_renderer_light_layer(tl_renderer *r, int layer);
+/* The glare's light layer of the frame drawn last, into frame's colour
+ * plane: u_bloom times the glare image, which the display adds to the
+ * colour times (1 - bloom); 0 without glare. */
+int tl_renderer_finish_glare(tl_renderer *r, const tl_display_settings *display, tl_frame *frame,
+                             tl_error *err);
 int tl_renderer_accumulate(tl_renderer *r, const tl_frame_uniforms *u, float weight,
                            int write_depth, tl_error *err);
 int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsigned planes,

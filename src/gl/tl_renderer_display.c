@@ -15,10 +15,11 @@ GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err)
     char defines[TL_DEFINES_SIZE];
     tl_renderer_defines(0, defines, sizeof defines);
     size_t n = strlen(defines);
-    snprintf(defines + n, sizeof defines - n, "%s%s%s",
+    snprintf(defines + n, sizeof defines - n, "%s%s%s%s",
              (variant & TL_PRESENT_UPSCALE) ? "#define TL_PRESENT_UPSCALE 1\n" : "",
              (variant & TL_PRESENT_GLARE) ? "#define TL_PRESENT_GLARE 1\n" : "",
-             (variant & TL_PRESENT_LUT) ? "#define TL_PRESENT_LUT 1\n" : "");
+             (variant & TL_PRESENT_LUT) ? "#define TL_PRESENT_LUT 1\n" : "",
+             (variant & TL_PRESENT_GLARE_LAYER) ? "#define TL_PRESENT_GLARE_LAYER 1\n" : "");
     return tl_renderer_build_program(r, "fullscreen.vert", "present.frag", defines, err);
 }
 
@@ -270,11 +271,12 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
                             (planes & TL_PLANE_DEPTH) ? GL_COLOR_ATTACHMENT2 : GL_NONE};
     glDrawBuffers(3, draw);
     glViewport(0, 0, w, h);
-    GLuint program = tl_renderer_present_program(r,
-                                                 (upscale ? TL_PRESENT_UPSCALE : 0) |
-                                                     (bloom > 0.0f ? TL_PRESENT_GLARE : 0) |
-                                                     (r->display_lut ? TL_PRESENT_LUT : 0),
-                                                 err);
+    GLuint program = tl_renderer_present_program(
+        r,
+        (upscale ? TL_PRESENT_UPSCALE : 0) | (bloom > 0.0f ? TL_PRESENT_GLARE : 0) |
+            (r->display_lut ? TL_PRESENT_LUT : 0) |
+            (r->glare_layer && bloom > 0.0f ? TL_PRESENT_GLARE_LAYER : 0),
+        err);
     if (!program)
         return err ? (int)err->status : TL_ERR_RUNTIME;
     glUseProgram(program);
@@ -384,6 +386,20 @@ int tl_renderer_finish(tl_renderer *r, const tl_display_settings *display, unsig
     r->readback_seconds = tl_clock_seconds() - t0;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return tl_renderer_check("reading the frame back", err);
+}
+
+int tl_renderer_finish_glare(tl_renderer *r, const tl_display_settings *display, tl_frame *frame,
+                             tl_error *err)
+{
+    if (!(display->bloom > 0.0f)) { /* no glare: none to add */
+        memset(frame->color, 0,
+               sizeof *frame->color * 4 * (size_t)frame->width * (size_t)frame->height);
+        return TL_OK;
+    }
+    r->glare_layer = 1;
+    int rc = tl_renderer_finish(r, display, TL_PLANE_COLOR, frame, err);
+    r->glare_layer = 0;
+    return rc;
 }
 
 /* ---- the readback in two halves (tideline render) ---- */

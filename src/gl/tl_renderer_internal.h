@@ -13,8 +13,8 @@
 #include "mesh/tl_mesh.h"
 #include "sky/tl_sky.h"
 
-#define MAX_PROGRAMS        24
-#define TL_PRESENT_VARIANTS 8
+#define MAX_PROGRAMS        48
+#define TL_PRESENT_VARIANTS 16
 /* Mesh programs: one per set of the features that light the hull
  * (MESH_FEATURES in tl_renderer_boat.c), with and without the model's
  * texture maps. */
@@ -63,7 +63,8 @@ enum {
     TL_PASS_HINTED = 1u << 29,
     TL_PASS_SKY = 1u << 28,
     TL_PASS_MIRROR = 1u << 27,
-    TL_PASS_AOV = 1u << 26
+    TL_PASS_AOV = 1u << 26,
+    TL_PASS_LAYERS = 1u << 25
 };
 /* The scene target's attachments: radiance, distance, and with the
  * compositing passes the normal and foam, the covers, and the objects'
@@ -142,12 +143,14 @@ struct tl_renderer {
     GLuint display_lut; /* the display table, a 3D texture (tl_renderer_set_display_lut), or 0 */
     cached_program probes[MAX_PROGRAMS]; /* per feature set that changes the probe */
     int probe_count;
-    target scene;   /* colour RGBA32F + depth R32F (+ the passes' data, TL_SCENE_AOV_ATTACHMENTS) */
-    int want_aov;   /* the next begin's target carries the passes' data (tl_renderer_want_aov) */
-    target aov;     /* the passes' data at the output size, top row first (finish) */
-    target display; /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
-    target boat;    /* the lit hull RGBA32F + its distance R32F + depth (+ its normal and object) */
-    target mirror;  /* the hull reflected in the water RGBA32F + depth */
+    target scene; /* colour RGBA32F + depth R32F (+ the passes' data, TL_SCENE_AOV_ATTACHMENTS) */
+    int want_aov; /* the next begin's target carries the passes' data (tl_renderer_want_aov) */
+    int light_layer; /* the light layer the ocean draws keep (tl_renderer_light_layer), or -1 */
+    int glare_layer; /* the display pass writes the glare into the colour plane (finish_glare) */
+    target aov;      /* the passes' data at the output size, top row first (finish) */
+    target display;  /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
+    target boat;   /* the lit hull RGBA32F + its distance R32F + depth (+ its normal and object) */
+    target mirror; /* the hull reflected in the water RGBA32F + depth */
     /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
      * render size (tl_renderer_prepass.c). */
     target hint[TL_PREPASS_LEVELS];
@@ -273,7 +276,12 @@ int tl_renderer_prepass(tl_renderer *r, const tl_frame_uniforms *u, unsigned fea
 
 /* The display pass's program for `variant` (TL_PRESENT_*), built on first
  * use; tl_renderer_build_present builds one afresh. */
-enum { TL_PRESENT_UPSCALE = 1, TL_PRESENT_GLARE = 2, TL_PRESENT_LUT = 4 };
+enum {
+    TL_PRESENT_UPSCALE = 1,
+    TL_PRESENT_GLARE = 2,
+    TL_PRESENT_LUT = 4,
+    TL_PRESENT_GLARE_LAYER = 8
+};
 GLuint tl_renderer_present_program(tl_renderer *r, int variant, tl_error *err);
 GLuint tl_renderer_build_present(tl_renderer *r, int variant, tl_error *err);
 

@@ -28,6 +28,8 @@ void tl_frame_free(tl_frame *frame)
     free(frame->depth);
     free(frame->display);
     free(frame->aov);
+    for (int k = 0; k < TL_FRAME_LAYERS; k++)
+        free(frame->layer[k]);
     memset(frame, 0, sizeof *frame);
 }
 
@@ -41,6 +43,36 @@ int tl_frame_alloc_aov(tl_frame *frame, tl_error *err)
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for a %dx%d frame's passes",
                             frame->width, frame->height);
     return TL_OK;
+}
+
+const char *tl_light_layer_name(int layer)
+{
+    static const char *const names[TL_FRAME_LAYERS] = {"sky",  "reflection", "body", "glitter",
+                                                       "foam", "spray",      "boat", "glare"};
+    return layer >= 0 && layer < TL_FRAME_LAYERS ? names[layer] : "";
+}
+
+int tl_frame_alloc_layers(tl_frame *frame, unsigned layers, tl_error *err)
+{
+    size_t pixels = (size_t)frame->width * (size_t)frame->height;
+    for (int k = 0; k < TL_FRAME_LAYERS; k++) {
+        if (!(layers & (1u << k)) || frame->layer[k])
+            continue;
+        frame->layer[k] = calloc(pixels * 3, sizeof(float));
+        if (!frame->layer[k])
+            return tl_error_set(err, TL_ERR_RUNTIME, "out of memory for a %dx%d frame's layers",
+                                frame->width, frame->height);
+    }
+    return TL_OK;
+}
+
+unsigned tl_frame_layers(const tl_frame *frame)
+{
+    unsigned layers = 0;
+    for (int k = 0; k < TL_FRAME_LAYERS; k++)
+        if (frame->layer[k])
+            layers |= 1u << k;
+    return layers;
 }
 
 /* The dither of pixel (x, y): three uniform noises in [0, 1) codes, bytes

@@ -72,3 +72,11 @@ void tl_crypto_key(const char *layer, char out[8])
     memcpy(out, hex, 7);
     out[7] = '\0';
 }
+
+const char *tl_crypto_material_name(const char *model)
+{
+    if (!model || !model[0])
+        return "builtin_boat";
+    const char *slash = strrchr(model, '/');
+    return slash ? slash + 1 : model;
+}

@@ -9,17 +9,57 @@
 
 /* The names `--passes` takes, each with the passes it asks for: the passes
  * one by one, then the groups (tl_passes_format names passes only). */
-static const char *const pass_names[] = {
-    "combined",    "depth",      "normal",    "position", "mask_water",
-    "mask_foam",   "mask_giant", "mask_boat", "mask_sky", "mask_underwater",
-    "cryptomatte", "vector",     "masks",     "all",      "none",
-    NULL};
-static const unsigned pass_bits[] = {
-    TL_PASSES_COMBINED,        TL_PASSES_DEPTH,       TL_PASSES_NORMAL,
-    TL_PASSES_POSITION,        TL_PASSES_MASK_WATER,  TL_PASSES_MASK_FOAM,
-    TL_PASSES_MASK_GIANT,      TL_PASSES_MASK_BOAT,   TL_PASSES_MASK_SKY,
-    TL_PASSES_MASK_UNDERWATER, TL_PASSES_CRYPTOMATTE, TL_PASSES_VECTOR,
-    TL_PASSES_MASKS,           TL_PASSES_ALL,         0};
+static const char *const pass_names[] = {"combined",
+                                         "depth",
+                                         "normal",
+                                         "position",
+                                         "mask_water",
+                                         "mask_foam",
+                                         "mask_giant",
+                                         "mask_boat",
+                                         "mask_sky",
+                                         "mask_underwater",
+                                         "cryptomatte",
+                                         "vector",
+                                         "light_sky",
+                                         "light_reflection",
+                                         "light_body",
+                                         "light_glitter",
+                                         "light_foam",
+                                         "light_spray",
+                                         "light_boat",
+                                         "light_glare",
+                                         "cryptomatte_material",
+                                         "masks",
+                                         "lights",
+                                         "all",
+                                         "none",
+                                         NULL};
+static const unsigned pass_bits[] = {TL_PASSES_COMBINED,
+                                     TL_PASSES_DEPTH,
+                                     TL_PASSES_NORMAL,
+                                     TL_PASSES_POSITION,
+                                     TL_PASSES_MASK_WATER,
+                                     TL_PASSES_MASK_FOAM,
+                                     TL_PASSES_MASK_GIANT,
+                                     TL_PASSES_MASK_BOAT,
+                                     TL_PASSES_MASK_SKY,
+                                     TL_PASSES_MASK_UNDERWATER,
+                                     TL_PASSES_CRYPTOMATTE,
+                                     TL_PASSES_VECTOR,
+                                     TL_PASSES_LIGHT_SKY,
+                                     TL_PASSES_LIGHT_REFLECTION,
+                                     TL_PASSES_LIGHT_BODY,
+                                     TL_PASSES_LIGHT_GLITTER,
+                                     TL_PASSES_LIGHT_FOAM,
+                                     TL_PASSES_LIGHT_SPRAY,
+                                     TL_PASSES_LIGHT_BOAT,
+                                     TL_PASSES_LIGHT_GLARE,
+                                     TL_PASSES_CRYPTO_MATERIAL,
+                                     TL_PASSES_MASKS,
+                                     TL_PASSES_LIGHTS,
+                                     TL_PASSES_ALL,
+                                     0};
 #define PASS_NAMES ((int)(sizeof pass_bits / sizeof pass_bits[0]))
 _Static_assert(sizeof pass_names / sizeof pass_names[0] == PASS_NAMES + 1,
                "a name for every set of passes");
@@ -27,8 +67,10 @@ _Static_assert(sizeof pass_names / sizeof pass_names[0] == PASS_NAMES + 1,
 const char *tl_passes_valid_names(void)
 {
     return "combined, depth, normal, position, mask_water, mask_foam, mask_giant, mask_boat, "
-           "mask_sky, mask_underwater, cryptomatte, vector, masks (every mask), all, none (alone: "
-           "the plain file)";
+           "mask_sky, mask_underwater, cryptomatte, vector, light_sky, light_reflection, "
+           "light_body, light_glitter, light_foam, light_spray, light_boat, light_glare, "
+           "cryptomatte_material, masks (every mask), lights (every light layer), all, none "
+           "(alone: the plain file)";
 }
 
 const char *const *tl_passes_name_list(void)
@@ -77,8 +119,13 @@ void tl_passes_format(unsigned passes, char *out, size_t size)
 
 int tl_passes_need_aov(unsigned passes)
 {
-    return (passes &
-            (TL_PASSES_NORMAL | TL_PASSES_MASKS | TL_PASSES_CRYPTOMATTE | TL_PASSES_VECTOR)) != 0;
+    return (passes & (TL_PASSES_NORMAL | TL_PASSES_MASKS | TL_PASSES_CRYPTOMATTE |
+                      TL_PASSES_CRYPTO_MATERIAL | TL_PASSES_VECTOR)) != 0;
+}
+
+unsigned tl_passes_light_layers(unsigned passes)
+{
+    return (passes & TL_PASSES_LIGHTS) >> TL_PASSES_LIGHT0;
 }
 
 /* ---- the camera ---- */

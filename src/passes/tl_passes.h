@@ -32,11 +32,25 @@ enum {
     TL_PASSES_MASK_UNDERWATER = 1u << 9,
     TL_PASSES_CRYPTOMATTE = 1u << 10,
     TL_PASSES_VECTOR = 1u << 11,
+    /* The light layers, tl_light_layer k as bit TL_PASSES_LIGHT0 + k. */
+    TL_PASSES_LIGHT0 = 12,
+    TL_PASSES_LIGHT_SKY = 1u << 12,
+    TL_PASSES_LIGHT_REFLECTION = 1u << 13,
+    TL_PASSES_LIGHT_BODY = 1u << 14,
+    TL_PASSES_LIGHT_GLITTER = 1u << 15,
+    TL_PASSES_LIGHT_FOAM = 1u << 16,
+    TL_PASSES_LIGHT_SPRAY = 1u << 17,
+    TL_PASSES_LIGHT_BOAT = 1u << 18,
+    TL_PASSES_LIGHT_GLARE = 1u << 19,
+    TL_PASSES_CRYPTO_MATERIAL = 1u << 20,
 };
 #define TL_PASSES_MASKS                                                                            \
     (TL_PASSES_MASK_WATER | TL_PASSES_MASK_FOAM | TL_PASSES_MASK_GIANT | TL_PASSES_MASK_BOAT |     \
      TL_PASSES_MASK_SKY | TL_PASSES_MASK_UNDERWATER)
-#define TL_PASSES_ALL ((1u << 12) - 1u)
+#define TL_PASSES_LIGHTS (((1u << TL_FRAME_LAYERS) - 1u) << TL_PASSES_LIGHT0)
+#define TL_PASSES_ALL    ((1u << 21) - 1u)
+/* Room for every pass's name in a list (tl_passes_format). */
+#define TL_PASSES_NAMES_SIZE 512
 
 /* Parses a list of pass names separated by commas ("depth,normal", "all",
  * "masks" for every mask) into *passes, with TL_PASSES_COMBINED; "none"
@@ -54,6 +68,9 @@ void tl_passes_format(unsigned passes, char *out, size_t size);
  * plane): normal, masks, Cryptomatte, vector (which surface each pixel
  * shows). Depth and position need only the distance plane. */
 int tl_passes_need_aov(unsigned passes);
+/* The light layers the passes ask for, bit k for tl_light_layer k (each
+ * shaded one costs the frame drawn again: tl_render_frame_layers). */
+unsigned tl_passes_light_layers(unsigned passes);
 
 /* ---- Cryptomatte (Psyop's specification 1.1) ---- */
 
@@ -68,6 +85,10 @@ float tl_crypto_id(const char *name, uint32_t *bits);
 void tl_crypto_key(const char *layer, char out[8]);
 /* The ranks each pixel keeps: three layers of two (ID, coverage) pairs. */
 #define TL_CRYPTO_RANKS 6
+/* The material of a floating object drawn with the model at `model` (a
+ * path; "" for the built-in boat): the file's name ("trawler.glb"), or
+ * "builtin_boat". Objects that share a model share it. */
+const char *tl_crypto_material_name(const char *model);
 
 /* ---- the camera's attributes ---- */
 
@@ -119,6 +140,9 @@ typedef struct tl_passes_frame {
      * frame's linear Rec.709 to it (src/ocio gives it); NULL: as rendered. */
     tl_working_space space;
     const double *working;
+    /* The floating objects' model paths by scene index ("" or NULL: the
+     * built-in boat), for the material Cryptomatte; NULL: all built-in. */
+    const char *const *model;
 } tl_passes_frame;
 
 /* The Vector pass of `frame` (Blender's layout, 4 floats a pixel, rows top

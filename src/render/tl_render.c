@@ -186,8 +186,95 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
     return tl_render_frame_planes(r, scene, TL_PLANES_ALL, frame, err);
 }
 
+/* Draws the frame again (with the renderer's light layer set). */
+typedef int (*redraw_fn)(tl_render *r, void *ctx, tl_error *err);
+
+static int count_layers(unsigned layers)
+{
+    int n = 0;
+    for (int k = 0; k < TL_FRAME_LAYERS; k++)
+        n += (layers >> k) & 1u;
+    return n;
+}
+
+/* A frame drawn smaller than its output (quality.render_scale < 1) is
+ * upscaled with each value held between its two nearest texels (against
+ * ringing), which is not linear: upscaled alone, the layers would not add
+ * up to the upscaled colour. With every shaded layer at hand, each pixel's
+ * are scaled by the colour over their sum (a subset is left as upscaled). */
+static void layers_hold_sum(tl_frame *out, unsigned layers)
+{
+    const unsigned shaded = (1u << TL_LIGHT_SHADED) - 1u;
+    if ((layers & shaded) != shaded)
+        return;
+    const size_t px = (size_t)out->width * (size_t)out->height;
+    for (size_t i = 0; i < px * 3; i++) {
+        double sum = 0.0;
+        for (int k = 0; k < TL_LIGHT_SHADED; k++)
+            sum += out->layer[k][i];
+        double colour = out->color[i / 3 * 4 + i % 3];
+        if (sum > 0.0)
+            for (int k = 0; k < TL_LIGHT_SHADED; k++)
+                out->layer[k][i] = (float)(out->layer[k][i] * (colour / sum));
+    }
+}
+
+/* The light layers in `layers` of the frame just drawn and read back, into
+ * out's layer planes: the glare's from the frame as it stands, then each
+ * shaded layer drawn again alone by `redraw` and its colour read back.
+ * `upscaled`: the frame was drawn smaller than its output. */
+static int read_layers(tl_render *r, unsigned layers, const tl_display_settings *display,
+                       redraw_fn redraw, void *ctx, int upscaled, tl_frame *out, tl_error *err)
+{
+    if (!layers)
+        return TL_OK;
+    const size_t px = (size_t)out->width * (size_t)out->height;
+    tl_frame scratch = {0};
+    int rc = tl_frame_alloc_layers(out, layers, err);
+    if (!rc)
+        rc = tl_frame_alloc(&scratch, out->width, out->height, err);
+    tl_renderer_want_aov(r->renderer, 0); /* the passes' data came with the frame */
+    for (int k = TL_FRAME_LAYERS - 1; !rc && k >= 0; k--) { /* the glare first */
+        if (!(layers & (1u << k)))
+            continue;
+        if (k == TL_LIGHT_GLARE) {
+            rc = tl_renderer_finish_glare(r->renderer, display, &scratch, err);
+        } else {
+            tl_renderer_light_layer(r->renderer, k);
+            rc = redraw(r, ctx, err);
+            if (!rc)
+                rc = tl_renderer_finish(r->renderer, display, TL_PLANE_COLOR, &scratch, err);
+        }
+        for (size_t i = 0; !rc && i < px; i++)
+            for (int c = 0; c < 3; c++)
+                out->layer[k][i * 3 + (size_t)c] = scratch.color[i * 4 + (size_t)c];
+    }
+    tl_renderer_light_layer(r->renderer, -1);
+    tl_frame_free(&scratch);
+    if (!rc && upscaled)
+        layers_hold_sum(out, layers);
+    return rc;
+}
+
+typedef struct scene_draw {
+    const tl_frame_uniforms *u;
+} scene_draw;
+
+static int redraw_scene(tl_render *r, void *ctx, tl_error *err)
+{
+    const tl_frame_uniforms *u = ((const scene_draw *)ctx)->u;
+    int rc = tl_renderer_begin(r->renderer, u->width, u->height, u->out_width, u->out_height, err);
+    return rc ? rc : accumulate(r, u, 1.0f, 1, err);
+}
+
 int tl_render_frame_planes(tl_render *r, const tl_scene *scene, unsigned planes, tl_frame *frame,
                            tl_error *err)
+{
+    return tl_render_frame_layers(r, scene, planes, 0, frame, err);
+}
+
+int tl_render_frame_layers(tl_render *r, const tl_scene *scene, unsigned planes, unsigned layers,
+                           tl_frame *frame, tl_error *err)
 {
     int rc = tl_scene_validate(scene, err);
     if (!rc)
@@ -198,16 +285,19 @@ int tl_render_frame_planes(tl_render *r, const tl_scene *scene, unsigned planes,
     tl_frame_uniforms u;
     tl_prepare_frame(scene, waves_for(r, &scene->ocean), &u);
     r->last_features = u.features;
-    progress_begin(r, (double)u.width * u.height * (u.spp < 1 ? 1 : u.spp));
+    /* Each shaded layer draws the frame again. */
+    const int draws = 1 + count_layers(layers & ((1u << TL_LIGHT_SHADED) - 1u));
+    progress_begin(r, (double)u.width * u.height * (u.spp < 1 ? 1 : u.spp) * draws);
     rc = tl_render_prepare_sky(r->renderer, scene, r->sky, &u, err);
+    scene_draw draw = {&u};
     if (!rc)
-        rc = tl_renderer_begin(r->renderer, u.width, u.height, u.out_width, u.out_height, err);
+        rc = redraw_scene(r, &draw, err);
+    const tl_display_settings display = {u.exposure, u.bloom, u.pixel_filter};
     if (!rc)
-        rc = accumulate(r, &u, 1.0f, 1, err);
+        rc = tl_renderer_finish(r->renderer, &display, planes, frame, err);
     if (!rc)
-        rc = tl_renderer_finish(r->renderer,
-                                &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter}, planes,
-                                frame, err);
+        rc = read_layers(r, layers, &display, redraw_scene, &draw,
+                         u.width != u.out_width || u.height != u.out_height, frame, err);
     return rc;
 }
 
@@ -303,6 +393,19 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     return rc;
 }
 
+typedef struct timeline_draw {
+    const tl_timeline *tl;
+    long frame;
+    tl_render_settings settings; /* the colour alone */
+} timeline_draw;
+
+static int redraw_timeline_frame(tl_render *r, void *ctx, tl_error *err)
+{
+    const timeline_draw *d = ctx;
+    tl_scene scene;
+    return draw_timeline_frame(r, d->tl, d->frame, &d->settings, NULL, &scene, err);
+}
+
 int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
                              const tl_render_settings *settings, tl_frame *out, tl_scene *scene_out,
                              tl_error *err)
@@ -313,6 +416,16 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     int rc = draw_timeline_frame(r, tl, frame, settings, out, &scene, err);
     if (!rc)
         rc = show_or_read(r, &scene, settings, out, err);
+    if (!rc && out && settings->layers) {
+        timeline_draw draw = {tl, frame, *settings};
+        draw.settings.planes = TL_PLANE_COLOR;
+        draw.settings.layers = 0;
+        const tl_display_settings display = display_of(&scene);
+        int rw, rh;
+        tl_prepare_render_size(&scene, &rw, &rh);
+        rc = read_layers(r, settings->layers, &display, redraw_timeline_frame, &draw,
+                         rw != scene.width || rh != scene.height, out, err);
+    }
     if (!rc && scene_out)
         *scene_out = scene;
     r->render_seconds = tl_clock_seconds() - t0 - r->readback_seconds;
@@ -323,6 +436,10 @@ int tl_render_timeline_frame_queue(tl_render *r, const tl_timeline *tl, long fra
                                    const tl_render_settings *settings, tl_scene *scene_out,
                                    tl_error *err)
 {
+    if (settings->layers)
+        return tl_error_set(err, TL_ERR_RUNTIME,
+                            "light layers are not queued: render the frame with "
+                            "tl_render_timeline_frame");
     tl_scene scene;
     int rc = draw_timeline_frame(r, tl, frame, settings, NULL, &scene, err);
     tl_display_settings display = display_of(&scene);

@@ -63,6 +63,12 @@ int tl_render_frame(tl_render *r, const tl_scene *scene, tl_frame *frame, tl_err
  * frame gets its aov plane and the passes' data are drawn). */
 int tl_render_frame_planes(tl_render *r, const tl_scene *scene, unsigned planes, tl_frame *frame,
                            tl_error *err);
+/* The same with the light layers in `layers` (bit k: tl_light_layer k)
+ * into the frame's layer planes: each shaded layer is the frame drawn
+ * again with that layer's light alone (so each costs about a frame), the
+ * glare's a display pass. */
+int tl_render_frame_layers(tl_render *r, const tl_scene *scene, unsigned planes, unsigned layers,
+                           tl_frame *frame, tl_error *err);
 
 /* The physical sky of a prepared frame, in the order its data flows: the
  * scene's atmosphere into the tables in `luts` (tl_prepare_sky_tables),
@@ -85,6 +91,7 @@ typedef struct tl_render_settings {
     int shutter_samples;       /* sub-frames when shutter_deg > 0 (0: 8) */
     const tl_camera *camera;   /* NULL: the timeline's; else this camera (the preview's) */
     unsigned planes;           /* TL_PLANE_* bits to read back (0: all); others keep old data */
+    unsigned layers;           /* light layers read back (tl_render_frame_layers); not queued */
 } tl_render_settings;
 
 /* The scene a frame is rendered from: the timeline at frame / fps with the
@@ -106,7 +113,9 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
  * GPU draws the next frame while this one's planes travel (tideline
  * render): the frame is drawn and its planes queued; tl_render_collect
  * fills `out` (allocated to size) with the oldest queued frame's. At most
- * two frames wait; the frames are tl_render_timeline_frame's. */
+ * two frames wait; the frames are tl_render_timeline_frame's. Light
+ * layers (settings->layers) are not queued: tl_render_timeline_frame
+ * reads them. */
 int tl_render_timeline_frame_queue(tl_render *r, const tl_timeline *tl, long frame,
                                    const tl_render_settings *settings, tl_scene *scene_out,
                                    tl_error *err);

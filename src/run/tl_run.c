@@ -92,12 +92,14 @@ static int write_frame_files(const run_state *s, long frame, const tl_scene *sce
         return tl_image_write(path, f, &opt, err);
     /* An EXR carries the camera as OpenEXR's standard attributes, and the
      * passes asked for. */
-    const char *object[TL_OBJECT_MAX];
-    for (int k = 0; k < cfg->timeline->object_count && k < TL_OBJECT_MAX; k++)
+    const char *object[TL_OBJECT_MAX], *model[TL_OBJECT_MAX];
+    for (int k = 0; k < cfg->timeline->object_count && k < TL_OBJECT_MAX; k++) {
         object[k] = cfg->timeline->objects[k].name;
+        model[k] = cfg->timeline->objects[k].model;
+    }
     tl_passes_frame info = {cfg->passes,        &scene->camera, object, cfg->timeline->object_count,
                             cfg->timeline->fps, scene,          NULL,   NULL,
-                            cfg->space,         cfg->working};
+                            cfg->space,         cfg->working,   model};
     /* The Vector pass: the scenes a frame before and after, none across a cut. */
     tl_scene prev, next;
     if (cfg->passes & TL_PASSES_VECTOR) {
@@ -193,10 +195,11 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
     if (cfg->pattern && frames->count > 0) {
         rc = tl_pattern_format(cfg->pattern, frames->frames[0], frames->count == 1, path,
                                sizeof path, err);
-        settings.planes |= tl_image_format_from_path(path) == TL_IMAGE_EXR
-                               ? TL_PLANE_COLOR | TL_PLANE_DEPTH |
+        const int exr = tl_image_format_from_path(path) == TL_IMAGE_EXR;
+        settings.planes |= exr ? TL_PLANE_COLOR | TL_PLANE_DEPTH |
                                      (tl_passes_need_aov(cfg->passes) ? TL_PLANE_AOV : 0u)
                                : TL_PLANE_DISPLAY;
+        settings.layers = exr ? tl_passes_light_layers(cfg->passes) : 0u;
     }
     if (cfg->movie) {
         settings.planes |= TL_PLANE_DISPLAY;
@@ -210,7 +213,7 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
     }
 
     /* The passes a complete frame holds (--skip-existing). */
-    char passes[256] = "";
+    char passes[TL_PASSES_NAMES_SIZE] = "";
     if (cfg->passes)
         tl_passes_format(cfg->passes | TL_PASSES_COMBINED, passes, sizeof passes);
     tl_frame frame = {0};
@@ -218,7 +221,8 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
     /* A frame with the passes' data holds 24 more floats a pixel, and its
      * writer as many again while it encodes: fewer writers by default. */
     int writers = cfg->writers ? cfg->writers : tl_writer_default_count();
-    if (!cfg->writers && tl_passes_need_aov(cfg->passes) && writers > TL_RUN_PASSES_WRITERS)
+    if (!cfg->writers && (tl_passes_need_aov(cfg->passes) || tl_passes_light_layers(cfg->passes)) &&
+        writers > TL_RUN_PASSES_WRITERS)
         writers = TL_RUN_PASSES_WRITERS;
     tl_writer_init(&writer, write_files, cfg->movie ? write_movie : NULL, &s, writers);
     report(&s, TL_RUN_STARTED, -1, "", 0, writer.count);
@@ -248,6 +252,23 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
         }
         double t0 = tl_clock_seconds();
         tl_scene scene;
+        if (settings.layers) {
+            /* Light layers redraw the frame: it is read back at once,
+             * not queued (tl_render_timeline_frame_queue). */
+            rc = tl_render_timeline_frame(render, cfg->timeline, n, &settings, &frame, &scene, err);
+            if (rc)
+                break;
+            if (i == 0 || tl_render_last_features(render) != last_features) {
+                last_features = tl_render_last_features(render);
+                report(&s, TL_RUN_FEATURES, n, path, last_features, 0);
+            }
+            long done;
+            rc = tl_writer_submit(&writer, &frame, n, &scene, cfg->pattern ? path : "", &done, err);
+            frame_written(&s, done, tl_writer_path(&writer));
+            s.result->drawn += !rc;
+            out->busy_seconds += tl_clock_seconds() - t0;
+            continue;
+        }
         rc = tl_render_timeline_frame_queue(render, cfg->timeline, n, &settings, &scene, err);
         if (rc)
             break;

@@ -13,18 +13,18 @@
 
 #include "timeline/tl_timeline.h"
 
-#define TL_PARSE_MAX_BYTES (16 * 1024 * 1024)
-#define TL_PARSE_MAX_LINE 4096
-#define TL_PARSE_MAX_KEYS 200000 /* key lines plus path points, whole file */
+#define TL_PARSE_MAX_BYTES  (16 * 1024 * 1024)
+#define TL_PARSE_MAX_LINE   4096
+#define TL_PARSE_MAX_KEYS   200000 /* key lines plus path points, whole file */
 #define TL_PARSE_MAX_ERRORS 20
 
 typedef struct tl_diag {
-    int line, column; /* 1-based; column 0: the whole line */
-    int length;       /* characters to underline (at least 1) */
-    char message[256];
-    char hint[160];   /* "did you mean 'x'?" or empty */
-    char text[200];   /* the source line (truncated) */
-    int warning;      /* a likely mistake, not an error: the file still loads */
+    int line, column;  /* 1-based; column 0: the whole line */
+    int length;        /* characters to underline (at least 1) */
+    char message[512]; /* room for a list of the valid names */
+    char hint[160];    /* "did you mean 'x'?" or empty */
+    char text[200];    /* the source line (truncated) */
+    int warning;       /* a likely mistake, not an error: the file still loads */
 } tl_diag;
 
 typedef struct tl_diags {

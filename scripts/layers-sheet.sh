@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The light layers' contact sheet: the hero frame of giant_wave.tl (the
+# boat on the wave's face, 10.4 s) rendered at 1280x720 with every light
+# layer, each a tile at half size, three across (docs/compositing.md shows
+# it): the display image, then each layer at the frame's exposure, sRGB
+# encoded and clipped (no tone curve, so a layer reads as its share of the
+# light). Needs oiiotool (openimageio-tools) and ffmpeg.
+#
+#   scripts/layers-sheet.sh [OUT.png] [TIME]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/lib/build.sh
+tl_build build -- tideline >/dev/null
+out=${1:-docs/images/light-layers.png}
+time=${2:-10.4}
+for tool in oiiotool ffmpeg python3; do
+  command -v $tool >/dev/null || { echo "layers-sheet: needs $tool (scripts/setup.sh)" >&2; exit 1; }
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+w=1280
+h=720
+tl=timelines/giant_wave.tl
+echo "layers-sheet: rendering $tl at ${time} s, ${w}x$h, every light layer" >&2
+build/tideline still $tl --time "$time" --size ${w}x$h --spp 4 \
+  --passes lights -o "$work/frame.exr" -o "$work/display.png"
+# The display's exposure: render.exposure times 2^-render.ev at that time.
+gain=$(build/tideline eval $tl --at "${time}s" --json | python3 -c \
+  'import json,sys; c=json.load(sys.stdin)["samples"][0]["channels"]; print(c["render.exposure"] * 2 ** -c["render.ev"])')
+half=(--resize $((w / 2))x$((h / 2)))
+oiiotool "$work/display.png" "${half[@]}" -o "$work/combined.png"
+names=(combined)
+for layer in sky reflection body glitter foam spray boat glare; do
+  oiiotool "$work/frame.exr" --ch ViewLayer.light_$layer.R,ViewLayer.light_$layer.G,ViewLayer.light_$layer.B \
+    --chnames R,G,B --mulc "$gain" --clamp:min=0:max=1 --colorconvert linear sRGB "${half[@]}" \
+    -d uint8 -o "$work/light_$layer.png"
+  names+=(light_$layer)
+done
+inputs=()
+for n in "${names[@]}"; do
+  ffmpeg -loglevel error -y -i "$work/$n.png" -vf \
+    "drawtext=text='$n':x=8:y=8:fontsize=22:fontcolor=white:box=1:boxcolor=black@0.6" \
+    "$work/label_$n.png" 2>/dev/null || cp "$work/$n.png" "$work/label_$n.png"
+  inputs+=(-i "$work/label_$n.png")
+done
+ffmpeg -loglevel error -y "${inputs[@]}" -filter_complex \
+  "[0][1][2]hstack=inputs=3[a];[3][4][5]hstack=inputs=3[b];[6][7][8]hstack=inputs=3[c];[a][b][c]vstack=inputs=3" \
+  "$out"
+echo "layers-sheet: wrote $out" >&2
