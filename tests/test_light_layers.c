@@ -156,10 +156,8 @@ static void check_file(const tl_frame *f, const tl_scene *scene)
 }
 
 /* `tideline render --passes lights` writes the layers into each frame
- * (drawn and read back one by one, not queued). At `draft` the frame is
- * drawn at a smaller size and upscaled, which is not linear: the layers
- * are scaled to add up all the same (layers_hold_sum); in the file, to
- * the half floats' rounding. */
+ * (drawn and read back one by one, not queued), and in the file they add
+ * up to Combined to the half floats' rounding. */
 static void test_render_command(void)
 {
     char dir[] = "/tmp/tideline-light-layers-XXXXXX";
@@ -168,7 +166,7 @@ static void test_render_command(void)
     snprintf(tl, sizeof tl, "%s/shot.tl", dir);
     snprintf(pattern, sizeof pattern, "%s/f_##.exr", dir);
     snprintf(second, sizeof second, "%s/f_02.exr", dir);
-    tl_test_write_file(tl, "tideline 1\nfps 24\nduration 1s\nsize 64x36\nquality draft\n"
+    tl_test_write_file(tl, "tideline 1\nfps 24\nduration 1s\nsize 64x36\nquality preview\n"
                            "set camera.position 0 4 0\nset camera.pitch -5deg\n"
                            "set sun.elevation 12deg\nset sun.azimuth 180deg\n");
     CHECK(tl_run(&(tl_run_opts){0}, "render", tl, "--frames", "1-2", "--passes", "lights", "-o",
@@ -190,7 +188,7 @@ static void test_render_command(void)
             sum += layer[k][i];
         worst = fmax(worst, fabs(sum - combined[i]) / fmax(combined[i], 1e-2));
     }
-    printf("render --passes lights at draft: the layers against Combined, worst %.2e relative\n",
+    printf("render --passes lights: the layers against Combined, worst %.2e relative\n",
            worst);
     CHECK(read && worst < 4e-3); /* eight half floats' rounding */
     free(combined);

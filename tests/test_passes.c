@@ -194,7 +194,7 @@ static void test_file(void)
     const tl_camera cam = {{100.0, 5.0, -40.0}, 0.4, -0.2, 0.0, 1.0};
     const char *names[2] = {"boat", "dinghy"};
     /* The first drawn with the built-in boat, the second with a model. */
-    const char *models[2] = {"", "/models/boats/dinghy.glb"};
+    const char *models[2] = {"", "/models/boats/din\"ghy.glb"}; /* a quote to escape */
     tl_passes_frame info = {TL_PASSES_ALL & ~(TL_PASSES_VECTOR | TL_PASSES_LIGHTS),
                             &cam,
                             names,
@@ -299,9 +299,9 @@ static void test_file(void)
           0);
     snprintf(material_want, sizeof material_want,
              "{\"sky\":\"%08x\",\"water\":\"%08x\",\"foam\":\"%08x\",\"builtin_boat\":\"%08x\","
-             "\"dinghy.glb\":\"%08x\"}",
+             "\"din\\\"ghy.glb\":\"%08x\"}",
              (unsigned)id_bits("sky"), (unsigned)id_bits("water"), (unsigned)id_bits("foam"),
-             (unsigned)id_bits("builtin_boat"), (unsigned)id_bits("dinghy.glb"));
+             (unsigned)id_bits("builtin_boat"), (unsigned)id_bits("din\"ghy.glb"));
     CHECK_STR_EQ(material_manifest, material_want);
 
     char text[1024];

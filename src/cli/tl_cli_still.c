@@ -113,7 +113,8 @@ typedef struct still_options {
     int has_passes;
     /* Kept from the timeline for the EXR: its objects' names and fps. */
     char object_names[TL_OBJECT_MAX][TL_OBJECT_NAME_MAX];
-    char object_models[TL_OBJECT_MAX][256]; /* their materials (tl_crypto_material_name) */
+    /* their materials (tl_crypto_material_name), as long as a model's path */
+    char object_models[TL_OBJECT_MAX][sizeof(((tl_object *)0)->model)];
     int objects;
     double fps;
     /* The Vector pass: the scenes a frame before and after. */

@@ -138,8 +138,16 @@ static int crypto_manifest(const tl_passes_frame *info, int materials, char *out
         if (seen)
             continue;
         tl_crypto_id(name, &bits);
-        n += (size_t)snprintf(out + n, n < size ? size - n : 0, "%s\"%s\":\"%08x\"",
-                              n > 1 ? "," : "", name, (unsigned)bits);
+        /* The name as a JSON string: quotes and backslashes escaped (a
+         * model's file name may hold them), control characters dropped. */
+        n += (size_t)snprintf(out + n, n < size ? size - n : 0, "%s\"", n > 1 ? "," : "");
+        for (const char *c = name; *c; c++) {
+            if ((unsigned char)*c < 0x20)
+                continue;
+            n += (size_t)snprintf(out + n, n < size ? size - n : 0, "%s%c",
+                                  *c == '"' || *c == '\\' ? "\\" : "", *c);
+        }
+        n += (size_t)snprintf(out + n, n < size ? size - n : 0, "\":\"%08x\"", (unsigned)bits);
     }
     n += (size_t)snprintf(out + n, n < size ? size - n : 0, "}");
     return n < size ? 0 : -1;
@@ -307,8 +315,10 @@ int tl_passes_write_exr(const char *path, const tl_frame *frame, const tl_passes
     int rc = TL_OK;
     if (!meta)
         rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: out of memory for the passes", path);
-    else if (crypto_manifest(info, 0, manifest[0], sizeof manifest[0]) ||
-             crypto_manifest(info, 1, manifest[1], sizeof manifest[1]))
+    else if (((passes & TL_PASSES_CRYPTOMATTE) &&
+              crypto_manifest(info, 0, manifest[0], sizeof manifest[0])) ||
+             ((passes & TL_PASSES_CRYPTO_MATERIAL) &&
+              crypto_manifest(info, 1, manifest[1], sizeof manifest[1])))
         rc = tl_error_set(err, TL_ERR_RUNTIME, "%s: the Cryptomatte's manifest is too long", path);
     if (!rc) {
         if (given)

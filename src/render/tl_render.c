@@ -222,7 +222,8 @@ static void layers_hold_sum(tl_frame *out, unsigned layers)
 /* The light layers in `layers` of the frame just drawn and read back, into
  * out's layer planes: the glare's from the frame as it stands, then each
  * shaded layer drawn again alone by `redraw` and its colour read back.
- * `upscaled`: the frame was drawn smaller than its output. */
+ * `upscaled`: the frame was drawn smaller than its output and its colour
+ * read back (layers_hold_sum scales them to it). */
 static int read_layers(tl_render *r, unsigned layers, const tl_display_settings *display,
                        redraw_fn redraw, void *ctx, int upscaled, tl_frame *out, tl_error *err)
 {
@@ -297,7 +298,9 @@ int tl_render_frame_layers(tl_render *r, const tl_scene *scene, unsigned planes,
         rc = tl_renderer_finish(r->renderer, &display, planes, frame, err);
     if (!rc)
         rc = read_layers(r, layers, &display, redraw_scene, &draw,
-                         u.width != u.out_width || u.height != u.out_height, frame, err);
+                         (planes & TL_PLANE_COLOR) &&
+                             (u.width != u.out_width || u.height != u.out_height),
+                         frame, err);
     return rc;
 }
 
@@ -423,8 +426,10 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
         const tl_display_settings display = display_of(&scene);
         int rw, rh;
         tl_prepare_render_size(&scene, &rw, &rh);
+        const unsigned planes = settings->planes ? settings->planes : TL_PLANES_ALL;
         rc = read_layers(r, settings->layers, &display, redraw_timeline_frame, &draw,
-                         rw != scene.width || rh != scene.height, out, err);
+                         (planes & TL_PLANE_COLOR) && (rw != scene.width || rh != scene.height),
+                         out, err);
     }
     if (!rc && scene_out)
         *scene_out = scene;
