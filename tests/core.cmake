@@ -153,6 +153,13 @@ add_test(NAME test_blender
   COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/test_blender.sh $<TARGET_FILE:tideline>
           ${PROJECT_SOURCE_DIR}/timelines ${CMAKE_CURRENT_SOURCE_DIR})
 set_tests_properties(test_blender PROPERTIES LABELS gl SKIP_RETURN_CODE 77)
+# The Blender exporter's round trip (tools/blender/tideline_export.py):
+# tideline eval against Blender's own evaluation at every frame (skipped,
+# 77, without blender).
+add_test(NAME test_blender_export
+  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/test_blender_export.sh $<TARGET_FILE:tideline>
+          ${PROJECT_SOURCE_DIR})
+set_tests_properties(test_blender_export PROPERTIES LABELS unit SKIP_RETURN_CODE 77)
 # Colour management: ACEScg against the ACES matrix through a file; an
 # OpenColorIO display's table against OpenColorIO's own transform.
 tl_add_test(test_color SOURCES test_color.c LIBS tideline_gl tl_ocio tl_passes LABELS gl)

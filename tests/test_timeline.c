@@ -902,6 +902,85 @@ static void test_boat_model(void)
     tl_timeline_free(&tl);
 }
 
+/* A camera as Blender gives it: its Euler orders, quaternion and axis
+ * angle turned into yaw, pitch and roll, with hand-worked cases (Blender's
+ * camera looks along its -Z: turned 90 deg about X it looks north, then
+ * about Z toward the west), and its lens by the sensor's fit. The Blender
+ * round trip (test_blender_export.sh) checks every mode against Blender. */
+static void test_blender_camera(void)
+{
+    tl_timeline tl;
+    tl_scene s;
+    if (parse_ok("tideline 1\nsize 1280x720\nset camera.rotation_mode xyz\n"
+                 "set camera.rotation 90deg 0 30deg\nset camera.focal_length 50\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.yaw, -30.0 * TL_DEG, 1e-12);
+        CHECK_NEAR(s.camera.pitch, 0.0, 1e-12);
+        CHECK_NEAR(s.camera.roll, 0.0, 1e-12);
+        /* 36 mm across 1280 px at 50 mm: tan(v / 2) = 18 / 50 * 720 / 1280 */
+        CHECK_NEAR(s.camera.vfov, 2.0 * atan(18.0 / 50.0 * 720.0 / 1280.0), 1e-12);
+        tl_timeline_free(&tl);
+    }
+    /* The same turn in the other order (Z first) is another view: ZYX
+     * with X 90 deg, Z 30 deg rolls the camera instead. */
+    if (parse_ok("tideline 1\nset camera.rotation_mode zyx\nset camera.rotation 90deg 0 30deg\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.yaw, 0.0, 1e-12);
+        CHECK_NEAR(s.camera.pitch, 0.0, 1e-12);
+        CHECK_NEAR(s.camera.roll, 30.0 * TL_DEG, 1e-12);
+        tl_timeline_free(&tl);
+    }
+    /* No rotation: looking straight down, north at the top of the frame. */
+    if (parse_ok("tideline 1\nset camera.rotation_mode quaternion\n", &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.pitch, -90.0 * TL_DEG, 1e-12);
+        double right[3], up[3], forward[3];
+        tl_scene_camera_basis(&s.camera, right, up, forward);
+        CHECK_NEAR(up[2], 1.0, 1e-12);
+        CHECK_NEAR(right[0], 1.0, 1e-12);
+        tl_timeline_free(&tl);
+    }
+    /* A quaternion is normalised; an axis-angle turn equals it. */
+    if (parse_ok("tideline 1\nset camera.rotation_mode quaternion\nset camera.quaternion_w 2\n"
+                 "set camera.quaternion 2 0 0\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.pitch, 0.0, 1e-12);
+        CHECK_NEAR(s.camera.yaw, 0.0, 1e-12);
+        tl_timeline_free(&tl);
+    }
+    if (parse_ok("tideline 1\nset camera.rotation_mode axis_angle\nset camera.axis_angle 90deg\n"
+                 "set camera.axis 5 0 0\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.pitch, 0.0, 1e-12);
+        CHECK_NEAR(s.camera.yaw, 0.0, 1e-12);
+        tl_timeline_free(&tl);
+    }
+    /* A tall frame: auto fits the width's value down the frame; vertical
+     * the sensor's height. */
+    if (parse_ok("tideline 1\nsize 720x1280\nset camera.focal_length 50\n", &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.vfov, 2.0 * atan(18.0 / 50.0), 1e-12);
+        tl_timeline_free(&tl);
+    }
+    if (parse_ok("tideline 1\nset camera.focal_length 50\nset camera.sensor_fit vertical\n"
+                 "set camera.sensor_height 20\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.vfov, 2.0 * atan(10.0 / 50.0), 1e-12);
+        tl_timeline_free(&tl);
+    }
+    /* `baked` is kept for check, and changes nothing else. */
+    if (parse_ok("tideline 1\nkey camera.fov linear baked\n  0f 50deg\n  1f 51deg\n", &tl)) {
+        const tl_track *tr = &tl.tracks[tl_channel_index(tl_channel_find("camera.fov"))];
+        CHECK(tr->baked && tr->state == TL_TRACK_KEYED);
+        tl_timeline_free(&tl);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (!tl_fixture_load(argc > 1 ? argv[1] : NULL))
@@ -911,6 +990,7 @@ int main(int argc, char **argv)
     test_default_set_key();
     test_extrapolation();
     test_blender_options();
+    test_blender_camera();
     test_shortest();
     test_cuts();
     test_look_at_boat();

@@ -125,13 +125,15 @@ void tl_cli_warn_outside(const char *command, const char *flag, const char *give
             tl_timeline_frame_count(tl) - 1, tl->fps, t < 0.0 ? "first" : "last");
 }
 
-static void list_tracks(const tl_timeline *tl, tl_track_state state, const char *label)
+/* The tracks in `state` (baked: only those an exporter baked). */
+static void list_tracks(const tl_timeline *tl, tl_track_state state, bool baked, const char *label)
 {
     int first = 1;
     for (int k = 0; k < tl->object_count; k++)
         for (int i = 0; i < tl_channel_count(); i++) {
             const tl_channel *ch = tl_channel_at(i);
-            if ((k > 0 && !tl_channel_is_object(ch)) || tl_timeline_track(tl, i, k)->state != state)
+            const tl_track *tr = tl_timeline_track(tl, i, k);
+            if ((k > 0 && !tl_channel_is_object(ch)) || tr->state != state || (baked && !tr->baked))
                 continue;
             if (k > 0) /* NAME.field */
                 printf("%s%s%s", first ? label : ", ", tl->objects[k].name, ch->name + 4);
@@ -163,8 +165,11 @@ static int check_one(const char *file, int strict)
                      : "ok (with warnings)");
     printf("  duration  %.6g s at %.6g fps = %ld frames, %dx%d, quality %s\n", tl.duration, tl.fps,
            tl_timeline_frame_count(&tl), tl.width, tl.height, tl.quality.name);
-    list_tracks(&tl, TL_TRACK_KEYED, "  keyed     ");
-    list_tracks(&tl, TL_TRACK_SET, "  set       ");
+    list_tracks(&tl, TL_TRACK_KEYED, false, "  keyed     ");
+    list_tracks(&tl, TL_TRACK_SET, false, "  set       ");
+    /* What an exporter could not carry as keys and sampled at every frame
+     * (docs/blender.md): the comment above each says why. */
+    list_tracks(&tl, TL_TRACK_KEYED, true, "  baked     ");
     const tl_path_track *paths[TL_OBJECT_MAX + 1] = {&tl.camera_path};
     const char *names[TL_OBJECT_MAX + 1] = {"camera"};
     for (int k = 0; k < tl.object_count; k++) {
@@ -173,8 +178,9 @@ static int check_one(const char *file, int strict)
     }
     for (int i = 0; i < tl.object_count + 1; i++)
         if (paths[i]->present)
-            printf("  path      %s: %zu points, %.6g m%s\n", names[i], paths[i]->path.count,
-                   paths[i]->path.length, paths[i]->path.constant_speed ? ", constant speed" : "");
+            printf("  path      %s: %zu points, %.6g m%s%s\n", names[i], paths[i]->path.count,
+                   paths[i]->path.length, paths[i]->path.constant_speed ? ", constant speed" : "",
+                   paths[i]->baked ? ", baked" : "");
     if (tl.object_count > 1) {
         printf("  objects   %d floating:", tl.object_count);
         for (int k = 0; k < tl.object_count; k++) {

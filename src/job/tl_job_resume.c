@@ -7,7 +7,6 @@
 #include "image/tl_atomic.h"
 #include "image/tl_image_io.h"
 #include "job/tl_job.h"
-#include "passes/tl_passes.h"
 
 int tl_job_frame_complete(const char *path, int width, int height, const char *passes,
                           const char *space)
@@ -21,7 +20,9 @@ int tl_job_frame_complete(const char *path, int width, int height, const char *p
     int ok = rc == TL_OK && f.width == width && f.height == height;
     tl_frame_free(&f);
     if (ok && tl_image_format_from_path(path) == TL_IMAGE_EXR) {
-        char got[TL_PASSES_NAMES_SIZE];
+        /* Room for far more than every pass's name (a longer attribute
+         * is an error, read as no passes). */
+        char got[4096];
         int layered = tl_exr_read_attr_string(path, "tideline/passes", got, sizeof got, &err) == 0;
         ok = passes && passes[0] ? layered && strcmp(got, passes) == 0 : !layered;
         char in[64];

@@ -22,6 +22,13 @@ void tl_scene_defaults(tl_scene *s)
     s->camera.roll = 0.0;
     /* The reference shader's projection: image plane at 1.5, half height 1. */
     s->camera.vfov = 2.0 * atan(1.0 / 1.5);
+    /* Blender's defaults: no rotation, axis +Y, a 36 x 24 mm sensor. */
+    s->rig = (tl_camera_rig){.rotation_mode = TL_ROTATION_YAW_PITCH_ROLL,
+                             .quat_w = 1.0,
+                             .axis = {0.0, 1.0, 0.0},
+                             .sensor_width = 36.0,
+                             .sensor_height = 24.0,
+                             .sensor_fit = TL_SENSOR_AUTO};
 
     s->sun.elevation = 10.0 * TL_DEG;
     s->sun.azimuth = -7.6 * TL_DEG;

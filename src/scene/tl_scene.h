@@ -20,6 +20,42 @@ typedef struct tl_camera {
     double vfov;             /* vertical field of view, radians, in (0, pi) */
 } tl_camera;
 
+/* How the camera's orientation is given: tideline's own yaw, pitch and
+ * roll, or Blender's rotation modes (its Euler orders, quaternion, axis
+ * and angle), so that a shot laid out in Blender keeps its curves. */
+typedef enum tl_rotation_mode {
+    TL_ROTATION_YAW_PITCH_ROLL,
+    TL_ROTATION_XYZ,
+    TL_ROTATION_XZY,
+    TL_ROTATION_YXZ,
+    TL_ROTATION_YZX,
+    TL_ROTATION_ZXY,
+    TL_ROTATION_ZYX,
+    TL_ROTATION_QUATERNION,
+    TL_ROTATION_AXIS_ANGLE,
+} tl_rotation_mode;
+
+/* Blender's sensor fit: which side of the frame the sensor spans. */
+typedef enum tl_sensor_fit {
+    TL_SENSOR_AUTO,
+    TL_SENSOR_HORIZONTAL,
+    TL_SENSOR_VERTICAL
+} tl_sensor_fit;
+
+/* The camera as a 3D package gives it (tl_scene_apply_rig turns it into
+ * tl_camera's yaw, pitch, roll and field of view). Rotations are in
+ * Blender's world axes (Z up, Y north) and its camera's (looking along its
+ * own -Z, +Y up). */
+typedef struct tl_camera_rig {
+    tl_rotation_mode rotation_mode;
+    double euler[3];                    /* X, Y, Z angles, radians, applied in the mode's order */
+    double quat_w, quat[3];             /* W, and X Y Z (normalised before use, as Blender does) */
+    double axis_angle, axis[3];         /* radians about the axis (normalised) */
+    double focal_length;                /* mm; 0: the field of view is camera.fov */
+    double sensor_width, sensor_height; /* mm */
+    tl_sensor_fit sensor_fit;
+} tl_camera_rig;
+
 typedef struct tl_sun {
     double elevation, azimuth; /* radians */
     double intensity;          /* peak radiance of the disc (reference: 210) */
@@ -227,6 +263,7 @@ typedef struct tl_scene {
     double ev;       /* exposure value in stops: each +1 halves the light (0) */
     double bloom;    /* share of the light spread into glare in the display image */
     tl_camera camera;
+    tl_camera_rig rig; /* the camera as Blender gives it (camera.rotation_mode, .focal_length) */
     tl_sun sun;
     tl_ocean ocean;
     tl_water water;
@@ -258,6 +295,15 @@ void tl_scene_defaults(tl_scene *scene);
 
 /* Unit vector toward the sun from elevation and azimuth. */
 void tl_scene_sun_direction(const tl_sun *sun, double out[3]);
+
+/* The camera's yaw, pitch and roll from a Blender rotation (rig's mode
+ * but yaw_pitch_roll), and its vertical field of view from a lens
+ * (rig's focal_length > 0) on a frame of width x height, as Blender fits
+ * the sensor. Nothing for what the rig leaves to tl_camera. */
+void tl_scene_apply_rig(const tl_camera_rig *rig, int width, int height, tl_camera *camera);
+/* The 3x3 rotation (row-major) of a rig's Blender rotation, in Blender's
+ * axes. */
+void tl_scene_rig_rotation(const tl_camera_rig *rig, double m[9]);
 
 /* Camera basis (right, up, forward), all unit vectors, from yaw/pitch/roll. */
 void tl_scene_camera_basis(const tl_camera *cam, double right[3], double up[3], double forward[3]);

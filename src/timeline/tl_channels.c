@@ -10,10 +10,16 @@
 
 static const char *const underwater_names[] = {"auto", "on", "off", NULL};
 static const char *const sky_model_names[] = {"physical", "seed", NULL};
+/* In tl_rotation_mode's order (Blender's names, lower case). */
+static const char *const rotation_mode_names[] = {
+    "yaw_pitch_roll", "xyz", "xzy", "yxz", "yzx", "zxy", "zyx", "quaternion", "axis_angle", NULL};
+static const char *const sensor_fit_names[] = {"auto", "horizontal", "vertical", NULL};
 
 /* Enum channels are read and written as int. */
 _Static_assert(sizeof(tl_underwater_mode) == sizeof(int), "enum channels are int-sized");
 _Static_assert(sizeof(tl_sky_model) == sizeof(int), "enum channels are int-sized");
+_Static_assert(sizeof(tl_rotation_mode) == sizeof(int), "enum channels are int-sized");
+_Static_assert(sizeof(tl_sensor_fit) == sizeof(int), "enum channels are int-sized");
 
 #define REAL(n, comps, unit, lo, hi, field, doc)                                                   \
     {                                                                                              \
@@ -37,6 +43,30 @@ static const tl_channel channels[] = {
     REAL("camera.roll", 1, TL_UNIT_ANGLE, -BIG, BIG, camera.roll, "roll about the view direction"),
     REAL("camera.fov", 1, TL_UNIT_ANGLE, 0.1 * TL_DEG, 179 * TL_DEG, camera.vfov,
          "vertical field of view"),
+    /* The camera as Blender gives it (docs/blender.md). */
+    {"camera.rotation_mode", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, TL_ROTATION_AXIS_ANGLE, true,
+     offsetof(tl_scene, rig.rotation_mode), rotation_mode_names,
+     "yaw_pitch_roll (camera.yaw, .pitch, .roll), or Blender's: xyz ... zyx (camera.rotation), "
+     "quaternion (camera.quaternion_w, camera.quaternion), axis_angle (camera.axis_angle, "
+     "camera.axis)"},
+    REAL("camera.rotation", 3, TL_UNIT_ANGLE, -BIG, BIG, rig.euler,
+         "Blender's Euler angles X Y Z (Blender's axes: Z up, Y north)"),
+    REAL("camera.quaternion_w", 1, TL_UNIT_NONE, -BIG, BIG, rig.quat_w,
+         "Blender's rotation quaternion's W"),
+    REAL("camera.quaternion", 3, TL_UNIT_NONE, -BIG, BIG, rig.quat,
+         "Blender's rotation quaternion's X Y Z"),
+    REAL("camera.axis_angle", 1, TL_UNIT_ANGLE, -BIG, BIG, rig.axis_angle,
+         "Blender's axis-angle rotation's angle"),
+    REAL("camera.axis", 3, TL_UNIT_NONE, -BIG, BIG, rig.axis,
+         "Blender's axis-angle rotation's axis"),
+    REAL("camera.focal_length", 1, TL_UNIT_NONE, 0.0, 1e5, rig.focal_length,
+         "lens in mm on camera.sensor (0: camera.fov gives the field of view)"),
+    REAL("camera.sensor", 1, TL_UNIT_NONE, 1e-3, 1e4, rig.sensor_width, "sensor width in mm"),
+    REAL("camera.sensor_height", 1, TL_UNIT_NONE, 1e-3, 1e4, rig.sensor_height,
+         "sensor height in mm (camera.sensor_fit vertical)"),
+    {"camera.sensor_fit", TL_CH_ENUM, 1, TL_UNIT_NONE, 0, TL_SENSOR_VERTICAL, true,
+     offsetof(tl_scene, rig.sensor_fit), sensor_fit_names,
+     "as Blender's: auto (the width across the longer side), horizontal, vertical"},
 
     REAL("sun.elevation", 1, TL_UNIT_ANGLE, -90 * TL_DEG, 90 * TL_DEG, sun.elevation,
          "sun above the horizon"),

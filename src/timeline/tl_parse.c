@@ -461,6 +461,7 @@ static void dir_key(parser *p, token *tok, int n)
     tl_curve_init(&shape);
     tl_ease_params ease = tl_key_make(0.0, 0.0, TL_INTERP_EASE).ease;
     int shortest = 0;
+    bool baked = false; /* keys an exporter sampled at every frame (tideline check lists them) */
     for (int i = 2; i < n; i++) {
         int got;
         if (tl_interp_from_name(tok[i].s, &interp)) {
@@ -472,6 +473,8 @@ static void dir_key(parser *p, token *tok, int n)
                    (got = tl_parse_ease_setting(p, ch, tok, n, &i, &ease)) != 0) {
             if (got < 0)
                 return;
+        } else if (strcmp(tok[i].s, "baked") == 0) {
+            baked = true;
         } else if (strcmp(tok[i].s, "shortest") == 0) {
             if (ch->unit != TL_UNIT_ANGLE) {
                 ERR_AT(&tok[i], "'shortest' applies to angle channels; %s is not one", ch->name);
@@ -479,9 +482,10 @@ static void dir_key(parser *p, token *tok, int n)
             }
             shortest = 1;
         } else {
-            static const char *const opts[] = {
-                "extrapolate", "before",   "after", "smoothing", "shortest",  "linear", "bezier",
-                "spline",      "constant", "step",  "back",      "amplitude", "period", NULL};
+            static const char *const opts[] = {"extrapolate", "before", "after",  "smoothing",
+                                               "shortest",    "linear", "bezier", "spline",
+                                               "constant",    "step",   "back",   "amplitude",
+                                               "period",      "baked",  NULL};
             tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, opts),
                           "unknown option '%s' for 'key'", tok[i].s);
             return;
@@ -493,6 +497,7 @@ static void dir_key(parser *p, token *tok, int n)
     if (!tr)
         return;
     tr->state = TL_TRACK_KEYED;
+    tr->baked = baked;
     for (int c = 0; c < ch->components; c++) {
         tl_curve *cv = &tr->curve[c];
         cv->before = shape.before;
@@ -517,8 +522,9 @@ static void dir_key(parser *p, token *tok, int n)
 
 static void dir_path(parser *p, token *tok, int n)
 {
-    if (expect_args(p, tok, n, 1, 2,
-                    "boat, camera or a floating object's name, then optionally constant-speed"))
+    if (expect_args(p, tok, n, 1, 3,
+                    "boat, camera or a floating object's name, then optionally constant-speed "
+                    "and baked"))
         return;
     tl_path_track *pt;
     int dims;
@@ -540,20 +546,26 @@ static void dir_path(parser *p, token *tok, int n)
                       tok[1].s);
         return;
     }
-    if (n == 3) {
-        if (strcmp(tok[2].s, "constant-speed") != 0) {
-            static const char *const opts[] = {"constant-speed", NULL};
-            tl_parse_diag(p, tok[2].col, tok[2].len, tl_suggest(tok[2].s, opts),
-                          "unknown path option '%s'", tok[2].s);
+    bool constant_speed = false, baked = false;
+    for (int i = 2; i < n; i++) {
+        if (strcmp(tok[i].s, "constant-speed") == 0) {
+            constant_speed = true;
+        } else if (strcmp(tok[i].s, "baked") == 0) {
+            baked = true;
+        } else {
+            static const char *const opts[] = {"constant-speed", "baked", NULL};
+            tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, opts),
+                          "unknown path option '%s'", tok[i].s);
             return;
         }
-        pt->path.constant_speed = true;
     }
     if (pt->present) {
         ERR_AT(&tok[1], "the %s already has a path on line %d", tok[1].s, pt->line);
         return;
     }
     pt->present = true;
+    pt->path.constant_speed = constant_speed;
+    pt->baked = baked;
     pt->line = p->line_no;
     p->block = BLOCK_PATH;
     p->block_line = p->line_no;

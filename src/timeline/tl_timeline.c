@@ -228,6 +228,8 @@ static void eval_scene(const tl_timeline *tl, double t, tl_scene *s, bool float_
             tl_channel_set_object(ch, s, k, v);
         }
     }
+    /* A camera given as Blender gives it: its rotation and lens. */
+    tl_scene_apply_rig(&s->rig, s->width, s->height, &s->camera);
 
     /* Each object rides its path; the giant wave may follow one. */
     for (int k = 0; k < tl->object_count; k++) {

@@ -22,6 +22,7 @@ typedef struct tl_track {
     double value[3];   /* TL_TRACK_SET */
     tl_curve curve[3]; /* TL_TRACK_KEYED: one per component */
     int line;          /* where it was set or keyed (0: default) */
+    bool baked;        /* `key ... baked`: sampled at every frame by an exporter */
 } tl_track;
 
 typedef enum tl_target { TL_TARGET_NONE, TL_TARGET_POINT, TL_TARGET_BOAT } tl_target;
@@ -37,6 +38,7 @@ typedef struct tl_link {
 
 typedef struct tl_path_track {
     bool present;
+    bool baked; /* `path ... baked`: a point at every frame, from an exporter */
     tl_path path;
     int line;
 } tl_path_track;
