@@ -1,15 +1,25 @@
 # Blender 3.4 imports the glTF `tideline export-camera` writes, and its
-# camera and boat stand where `tideline eval` says they are at a frame.
-# Run headless:
-#   blender -b --factory-startup --python blender_camera.py -- CAMERA.gltf EVAL.json FRAME
-# Prints "CAMERA <position error m> <view direction error rad> <lens error rad>
-# <the camera's own angle_y>"
-# and "BOAT <position error m> <heading error rad>"; exits non-zero on any failure.
+# camera and boat stand where `tideline eval` says they are at every frame
+# the eval JSON holds (`tideline eval --frames A-B --json`). Run headless:
+#   blender -b --factory-startup --python blender_camera.py -- CAMERA.gltf EVAL.json
+# Prints the worst over the frames: "CAMERA <position error m> <view
+# direction error rad> <lens error rad> <the camera's own angle_y at the
+# first frame>", "UP <error rad>" and "BOAT <position error m> <heading
+# error rad> <deck error rad>", each with "at FRAME" of its worst; exits
+# non-zero on any failure.
 import json
 import math
 import sys
 
 import bpy
+
+
+def angle(a, b):
+    """The angle between two vectors, exact for small angles too (acos of
+    a dot product of float vectors is noise below about 3e-4 rad)."""
+    a, b = tuple(a), tuple(b)
+    cross = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+    return math.atan2(math.sqrt(sum(c * c for c in cross)), sum(x * y for x, y in zip(a, b)))
 
 
 def blender_axes(v):
@@ -20,8 +30,8 @@ def blender_axes(v):
 
 def main():
     args = sys.argv[sys.argv.index("--") + 1:]
-    path, eval_path, frame = args[0], args[1], int(args[2])
-    sample = json.load(open(eval_path))["samples"][0]
+    path, eval_path = args[0], args[1]
+    samples = json.load(open(eval_path))["samples"]
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
     scene.render.fps = 24
@@ -33,8 +43,28 @@ def main():
     # Blender's importer puts glTF's time t at frame t * fps (+1 when its
     # scene starts at frame 1: it shifts to the scene's first frame).
     start = min(int(fc.range()[0]) for a in bpy.data.actions for fc in a.fcurves)
-    scene.frame_set(start + frame)
+    worst = {}
 
+    def note(what, value, frame):
+        if what not in worst or value > worst[what][0]:
+            worst[what] = (value, frame)
+
+    for sample in samples:
+        frame = sample["frame"]
+        scene.frame_set(start + frame)
+        measure(sample, frame, cam, boat, note)
+    angle_y = cam.data.angle_y
+    scene.frame_set(start + samples[0]["frame"])
+    for what in ("CAMERA", "UP", "BOAT"):
+        keys = [k for k in worst if k.startswith(what + " ")]
+        if keys:
+            keys.sort()
+            print(what, " ".join("%.6g" % worst[k][0] for k in keys),
+                  "at", " ".join(str(worst[k][1]) for k in keys))
+    print("FRAMES", len(samples), "ANGLE_Y %.6f" % angle_y)
+
+
+def measure(sample, frame, cam, boat, note):
     ch = sample["channels"]
     p = ch["camera.position"]
     yaw, pitch = math.radians(ch["camera.yaw"]), math.radians(ch["camera.pitch"])
@@ -52,17 +82,19 @@ def main():
     up = tuple(math.cos(roll) * u - math.sin(roll) * r for u, r in zip(up0, right0))
     want_up = blender_axes(up)
     got_up = m.col[1].xyz.normalized()
-    dup = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_up, want_up)))))
-    print("UP %.6f" % dup)
+    dup = angle(got_up, want_up)
+    note("UP 0", dup, frame)
     dp = math.dist(tuple(got_p), want_p)
-    df = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_f.normalized(), want_f)))))
+    df = angle(got_f, want_f)
     # glTF animates no lens: the camera has frame 0's, and the lens of
     # every frame rides along as extras, which Blender keeps as a custom
     # property of the camera.
     keys = cam.data.get("tideline_yfov_per_frame")
     lens = keys[frame] if keys is not None else float("nan")
     dfov = abs(lens - math.radians(ch["camera.fov"]))
-    print("CAMERA %.6f %.6f %.6f %.6f" % (dp, df, dfov, cam.data.angle_y))
+    note("CAMERA 0 position", dp, frame)
+    note("CAMERA 1 direction", df, frame)
+    note("CAMERA 2 lens", dfov, frame)
     if boat is not None:
         b = sample["boat"]
         heading = math.radians(b["heading"])
@@ -82,8 +114,10 @@ def main():
              -v[0] * math.sin(heading) + v[2] * math.cos(heading))
         want_deck = blender_axes(v)
         got_deck = boat.matrix_world.col[2].xyz.normalized()  # glTF +y: Blender's +z
-        dd = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(got_deck, want_deck)))))
-        print("BOAT %.6f %.6f %.6f" % (db, min(dh, 2 * math.pi - dh), dd))
+        dd = angle(got_deck, want_deck)
+        note("BOAT 0 position", db, frame)
+        note("BOAT 1 heading", min(dh, 2 * math.pi - dh), frame)
+        note("BOAT 2 deck", dd, frame)
 
 
 try:

@@ -78,6 +78,8 @@ def add_boat(scene, name, prop=None):
 
 def reference(scene, boats):
     """What Blender evaluates at every frame."""
+    W = scene.render.resolution_x * scene.render.resolution_percentage // 100
+    H = scene.render.resolution_y * scene.render.resolution_percentage // 100
     frames = []
     depsgraph = bpy.context.evaluated_depsgraph_get()
     for f in range(scene.frame_start, scene.frame_end + 1):
@@ -92,7 +94,9 @@ def reference(scene, boats):
             "vfov": 2.0 * math.atan(1.0 / proj[1][1]),
             "boats": {name: list(ob.matrix_world.translation) for name, ob in boats},
         }
-        suns = [o for o in scene.objects if o.type == "LIGHT" and o.data.type == "SUN"]
+        suns = [o for o in scene.objects
+                if o.type == "LIGHT" and o.data.type == "SUN" and not o.hide_render]
+        suns.sort(key=lambda o: o.name.lower() != "sun")  # the exporter's choice first
         if suns:
             sample["sun"] = list((suns[0].matrix_world.to_3x3() @ Vector((0.0, 0.0, 1.0))).normalized())
         frames.append(sample)
@@ -170,8 +174,53 @@ scene = fresh_scene()
 cam = add_camera(scene, "Cam", "ZXY")
 key(cam, "location", 1, (0.0, 0.0, 4.0))
 key(cam, "rotation_euler", 1, (math.radians(70), 0.3, 0.2))
-key(cam, "rotation_euler", 48, (math.radians(100), -0.2, 1.2), "BACK", "AUTO")
+key(cam, "rotation_euler", 24, (math.radians(100), -0.2, 1.2), "BACK", "AUTO")
+key(cam, "rotation_euler", 48, (math.radians(80), 0.1, 0.7))
 export("zxy", scene)
+
+# 3b. The render size and rate as Blender computes them: a portrait frame
+# at 50 % (odd sizes: integer division), 30000/1001 fps, a horizontal
+# sensor fit, the YZX order; a lens shift (reported, not carried).
+scene = fresh_scene()
+scene.render.resolution_x, scene.render.resolution_y = 1083, 1923
+scene.render.resolution_percentage = 50
+scene.render.fps, scene.render.fps_base = 30, 1.001
+cam = add_camera(scene, "Cam", "YZX")
+cam.data.sensor_fit = "HORIZONTAL"
+cam.data.shift_x = 0.1
+key(cam, "location", 1, (0.0, -5.0, 3.0))
+key(cam, "location", 48, (3.0, 2.0, 5.0))
+key(cam, "rotation_euler", 1, (math.radians(80), 0.2, 0.4))
+key(cam, "rotation_euler", 48, (math.radians(95), -0.3, -0.5))
+export("formats", scene)
+
+# 3c. Animation Blender layers over the action: an action pushed into an
+# NLA strip, a muted F-curve (the property's value holds), a boat in an
+# excluded collection (not rendered: not exported), a hidden sun lamp
+# named sun (the visible one is the sun).
+scene = fresh_scene()
+cam = add_camera(scene, "Cam")
+key(cam, "rotation_euler", 1, (math.radians(80), 0.0, 0.0))
+key(cam, "rotation_euler", 48, (math.radians(90), 0.0, math.radians(30)))
+key(cam, "location", 1, (0.0, -10.0, 3.0))
+key(cam, "location", 48, (6.0, -2.0, 4.0))
+cam.animation_data.action.fcurves.find("location", index=0).mute = True
+cam.location.x = 2.5
+track = cam.animation_data.nla_tracks.new()
+track.strips.new("layout", 1, cam.animation_data.action)
+cam.animation_data.action = None
+hidden = bpy.data.collections.new("Hidden")
+scene.collection.children.link(hidden)
+ghost = bpy.data.objects.new("boat", None)
+hidden.objects.link(ghost)
+key(ghost, "location", 1, (0.0, 0.0, 0.0))
+bpy.context.view_layer.layer_collection.children["Hidden"].exclude = True
+add_sun(scene, False).name = "Sunlight"
+off = bpy.data.objects.new("sun", bpy.data.lights.new("sun2", "SUN"))
+scene.collection.objects.link(off)
+off.hide_render = True
+off.rotation_euler = (0.0, 0.0, 0.0)
+export("layered", scene)
 
 # 4. Baked: a Noise modifier on the camera's height.
 scene = fresh_scene()

@@ -28,7 +28,7 @@ check() { # what, then a command that must succeed
 blender -b --factory-startup --python "$repo/tests/blender_export_scenes.py" -- \
   "$repo/tools/blender" "$work" >"$work/blender.txt" 2>&1 || true
 grep -E '^(EXPORTED|REFUSED|REPORT)|Error|Traceback' "$work/blender.txt" || tail -20 "$work/blender.txt"
-for scene in keys quaternion axis_angle zxy noise cut; do
+for scene in keys quaternion axis_angle zxy formats layered noise cut; do
   check "$scene: exported" test -f "$work/$scene.tl"
   check "$scene: tideline check reads it, without a warning" \
     sh -c "'$tideline' check --strict '$work/$scene.tl' >/dev/null"
@@ -44,6 +44,15 @@ check "keys: the camera's curves are keys, not baked" \
 check "keys: a free handle is written where Blender has it" grep -q 'right free 6f' "$work/keys.tl"
 check "keys: the eased key keeps its easing" grep -q 'ease-in-out-sine' "$work/keys.tl"
 check "zxy: the back easing keeps its overshoot" grep -q 'ease-out-back back 1.70158' "$work/zxy.tl"
+# Blender's render size and rate: 1083x1923 at 50 % is 541x961.
+check "formats: the size as Blender renders it" grep -qx 'size 541x961' "$work/formats.tl"
+check "formats: 30000/1001 fps" grep -q '^fps 29.9700' "$work/formats.tl"
+check "formats: the lens shift reported as left out" \
+  grep -q "REPORT formats not carried over: camera 'Cam''s lens shift" "$work/blender.txt"
+check "layered: NLA strips baked, saying so" grep -q '^# baked: camera.position (NLA strips animate it)' \
+  "$work/layered.tl"
+check "layered: a boat in an excluded collection is not exported" \
+  sh -c "! grep -q '^path boat' '$work/layered.tl'"
 "$tideline" check "$work/noise.tl" >"$work/check_noise.txt"
 check "noise: check lists the baked channel" grep -q '^  baked     camera.position$' "$work/check_noise.txt"
 check "noise: the .tl says why" grep -q '^# baked: camera.position (its F-curve has a noise modifier)' \

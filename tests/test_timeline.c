@@ -959,6 +959,22 @@ static void test_blender_camera(void)
         CHECK_NEAR(s.camera.yaw, 0.0, 1e-12);
         tl_timeline_free(&tl);
     }
+    /* Blender's degenerate cases: a zero quaternion normalises to (0, 1, 0,
+     * 0), half a turn about X (looking straight up); a zero axis turns
+     * nothing (looking straight down). */
+    if (parse_ok("tideline 1\nset camera.rotation_mode quaternion\nset camera.quaternion_w 0\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.pitch, 90.0 * TL_DEG, 1e-12);
+        tl_timeline_free(&tl);
+    }
+    if (parse_ok("tideline 1\nset camera.rotation_mode axis_angle\nset camera.axis_angle 40deg\n"
+                 "set camera.axis 0 0 0\n",
+                 &tl)) {
+        tl_timeline_eval(&tl, 0.0, &s);
+        CHECK_NEAR(s.camera.pitch, -90.0 * TL_DEG, 1e-12);
+        tl_timeline_free(&tl);
+    }
     /* A tall frame: auto fits the width's value down the frame; vertical
      * the sensor's height. */
     if (parse_ok("tideline 1\nsize 720x1280\nset camera.focal_length 50\n", &tl)) {

@@ -46,8 +46,8 @@ void tl_scene_rig_rotation(const tl_camera_rig *rig, double m[9])
     case TL_ROTATION_QUATERNION: {
         double w = rig->quat_w, x = rig->quat[0], y = rig->quat[1], z = rig->quat[2];
         double n = sqrt(w * w + x * x + y * y + z * z);
-        if (!(n > 0.0)) { /* Blender turns a zero quaternion into no rotation */
-            w = 1.0, x = y = z = 0.0, n = 1.0;
+        if (!(n > 0.0)) { /* Blender normalises a zero quaternion to (0, 1, 0, 0) */
+            w = 0.0, x = 1.0, y = z = 0.0, n = 1.0;
         }
         quat_rotation(w / n, x / n, y / n, z / n, m);
         return;
@@ -55,10 +55,10 @@ void tl_scene_rig_rotation(const tl_camera_rig *rig, double m[9])
     case TL_ROTATION_AXIS_ANGLE: {
         double x = rig->axis[0], y = rig->axis[1], z = rig->axis[2];
         double n = sqrt(x * x + y * y + z * z);
-        if (!(n > 0.0)) { /* no axis: no rotation */
-            x = 0.0, y = 1.0, z = 0.0, n = 1.0;
-        }
-        double h = 0.5 * rig->axis_angle, s = sin(h) / n;
+        double h = n > 0.0 ? 0.5 * rig->axis_angle : 0.0; /* no axis: no rotation, as Blender */
+        if (!(n > 0.0))
+            n = 1.0;
+        double s = sin(h) / n;
         quat_rotation(cos(h), x * s, y * s, z * s, m);
         return;
     }

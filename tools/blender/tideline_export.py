@@ -53,7 +53,10 @@ class ExportError(Exception):
 
 def num(v):
     """A number as tideline reads it back exactly."""
-    return repr(float(v)) if v != int(v) or abs(v) > 1e15 else str(int(v))
+    v = float(v)
+    if not math.isfinite(v):
+        raise ExportError("a value is not a finite number (%r)" % v)
+    return repr(v) if v != int(v) or abs(v) > 1e15 else str(int(v))
 
 
 def blender_to_tideline(v):
@@ -83,14 +86,38 @@ class Channel:
         return any(d.data_path == self.path and d.array_index in self.indices for d in self.anim.drivers)
 
 
+def layered(anim):
+    """Why an owner's animation is more than its action's F-curves, or None."""
+    if anim is None:
+        return None
+    if any(not t.mute and len(t.strips) for t in anim.nla_tracks):
+        return "NLA strips animate it"
+    if anim.action and (anim.action_influence != 1.0 or anim.action_blend_type != "REPLACE"):
+        return "its action is blended"
+    return None
+
+
+def animated(ob):
+    """Whether anything moves an object (its action, NLA, drivers, a parent
+    or constraints)."""
+    anim = ob.animation_data
+    return bool(anim and (anim.action or anim.drivers or layered(anim))) \
+        or ob.parent is not None or len(ob.constraints) > 0
+
+
 def why_not_exact(channel, curves, frame_start):
     """None when the F-curves can be written as tideline keys, else why not."""
     if channel.driven():
         return "a driver sets it"
+    why = layered(channel.anim)
+    if why:
+        return why
     present = [c for c in curves if c is not None]
     if not present:
         return None
     for c in present:
+        if c.mute:
+            return "its F-curve is muted"
         if c.modifiers:
             return "its F-curve has a %s modifier" % c.modifiers[0].type.lower().replace("_", " ")
         if c.extrapolation not in ("CONSTANT", "LINEAR"):
@@ -230,9 +257,30 @@ def camera_cuts(scene):
     return bound
 
 
+def rendered_objects(scene):
+    """The objects a render of the scene shows: in its view layer (not in an
+    excluded collection) and not hidden from renders."""
+    layer = scene.view_layers[0] if scene.view_layers else None
+    if bpy.context.scene == scene and bpy.context.view_layer:
+        layer = bpy.context.view_layer
+    if layer is None:
+        return [ob for ob in scene.objects if not ob.hide_render]
+    layer.update()  # objects linked by a script join the layer's list here
+    return [ob for ob in layer.objects if not ob.hide_render]
+
+
 def export(scene, path):
     """Writes the scene as a timeline at `path`; returns the report's lines
-    (what was baked). Raises ExportError."""
+    (what was baked, what was left out). Raises ExportError. The scene's
+    current frame is where it was."""
+    current = scene.frame_current
+    try:
+        return export_frames(scene, path)
+    finally:
+        scene.frame_set(current)
+
+
+def export_frames(scene, path):
     w = Writer(scene)
     camera = scene.camera
     if camera is None or camera.type != "CAMERA":
@@ -245,12 +293,16 @@ def export(scene, path):
            % (bpy.app.version_string, scene.name, w.start, w.end),
            "fps %s" % num(w.fps),
            "duration %sf" % num(w.end - w.start + 1),
-           "size %dx%d" % (round(scene.render.resolution_x * scene.render.resolution_percentage / 100),
-                           round(scene.render.resolution_y * scene.render.resolution_percentage / 100))]
+           # Blender's render size: the percentage in integer arithmetic.
+           "size %dx%d" % (scene.render.resolution_x * scene.render.resolution_percentage // 100,
+                           scene.render.resolution_y * scene.render.resolution_percentage // 100)]
 
+    if scene.render.pixel_aspect_x != scene.render.pixel_aspect_y:
+        raise ExportError("the scene's pixels are not square (pixel aspect %g:%g): tideline's are"
+                          % (scene.render.pixel_aspect_x, scene.render.pixel_aspect_y))
     # Boats first: `boat NAME` declares a floating object before anything names it.
     boats = []
-    for ob in scene.objects:
+    for ob in rendered_objects(scene):
         mark = ob.get("tideline_boat")
         if mark is None and ob.name != "boat":
             continue
@@ -258,7 +310,7 @@ def export(scene, path):
         if ob.type in ("CAMERA", "LIGHT"):
             raise ExportError("object '%s' is a %s: a boat is a mesh or an empty"
                               % (ob.name, ob.type.lower()))
-        if not NAME.match(name) or name in GROUPS:
+        if not NAME.fullmatch(name) or name in GROUPS:
             raise ExportError("object '%s': '%s' is not a tideline boat name (letters, digits "
                               "and _, starting with a letter, at most 31, not a channel group)"
                               % (ob.name, name))
@@ -279,9 +331,12 @@ def export(scene, path):
     for name, ob in boats:
         write_boat(w, scene, name, ob)
     scene.frame_set(w.start)
+    notes = ["baked %s: %s" % (name, why) for name, why in w.baked]
+    if camera.data.shift_x or camera.data.shift_y:
+        notes.append("not carried over: camera '%s''s lens shift" % camera.name)
     with open(path, "w", encoding="ascii", errors="replace") as f:
         f.write("\n".join(out + w.lines) + "\n")
-    return ["baked %s: %s" % (name, why) for name, why in w.baked]
+    return notes
 
 
 def exact_transform(ob):
@@ -293,7 +348,14 @@ def exact_transform(ob):
     if any(ob.delta_location) or any(ob.delta_rotation_euler) or tuple(ob.delta_scale) != (1, 1, 1) \
             or tuple(ob.delta_rotation_quaternion) != (1, 0, 0, 0):
         return "it has delta transforms"
-    return None
+    anim = ob.animation_data
+    curves = anim.action.fcurves if anim and anim.action else []
+    paths = {c.data_path for c in curves} | ({d.data_path for d in anim.drivers} if anim else set())
+    if any(p.startswith("delta_") for p in paths):
+        return "its delta transforms are animated"
+    if "rotation_mode" in paths:
+        return "its rotation mode is animated"
+    return layered(anim)
 
 
 def write_camera(w, scene, camera):
@@ -350,9 +412,21 @@ def bake_camera_transform(w, scene, why, camera_at, cuts=()):
 
 def write_lens(w, scene, camera, cuts=(), camera_at=None):
     data = camera.data
-    w.set("camera.sensor", num(data.sensor_width))
-    w.set("camera.sensor_height", num(data.sensor_height))
+    anim = data.animation_data
+    keyed = {c.data_path for c in anim.action.fcurves} if anim and anim.action else set()
+    if anim:
+        keyed |= {d.data_path for d in anim.drivers}
+    if "sensor_fit" in keyed:
+        raise ExportError("camera '%s''s sensor fit is animated: tideline's is one setting"
+                          % camera.name)
     w.set("camera.sensor_fit", data.sensor_fit.lower())
+    for path, name in (("sensor_width", "camera.sensor"), ("sensor_height", "camera.sensor_height")):
+        if path in keyed or layered(anim):
+            ch = Channel(name, anim, path, (0,), (getattr(data, path),))
+            ch.anim_owner = data
+            w.channel(ch)
+        else:
+            w.set(name, num(getattr(data, path)))
     if camera_at is not None:
         def lens(f):
             scene.frame_set(f)
@@ -399,13 +473,11 @@ def sun_direction(sun):
 
 
 def write_sun(w, scene):
-    suns = [ob for ob in scene.objects if ob.type == "LIGHT" and ob.data.type == "SUN"]
+    suns = [ob for ob in rendered_objects(scene) if ob.type == "LIGHT" and ob.data.type == "SUN"]
     if not suns:
         return
     sun = next((s for s in suns if s.name.lower() == "sun"), suns[0])
-    animated = bool(sun.animation_data and (sun.animation_data.action or sun.animation_data.drivers)) \
-        or sun.parent is not None or len(sun.constraints)
-    if not animated:
+    if not animated(sun):
         scene.frame_set(w.start)
         elevation, azimuth = sun_direction(sun)
         w.set("sun.elevation", num(elevation) + "rad")
@@ -434,9 +506,7 @@ def write_boat(w, scene, name, ob):
         scene.frame_set(f)
         p = ob.matrix_world.translation
         return p[0], p[1]
-    animated = bool(ob.animation_data and (ob.animation_data.action or ob.animation_data.drivers)) \
-        or ob.parent is not None or len(ob.constraints)
-    if not animated:
+    if not animated(ob):
         x, z = where(w.start)
         w.lines.append("path %s" % name)
         w.lines.append("  0f %s %s" % (num(x), num(z)))
@@ -455,11 +525,12 @@ class EXPORT_OT_tideline(bpy.types.Operator, ExportHelper):
     bl_idname = "export_scene.tideline"
     bl_label = "Export tideline timeline"
     filename_ext = ".tl"
+    filter_glob: bpy.props.StringProperty(default="*.tl", options={"HIDDEN"})
 
     def execute(self, context):
         try:
             report = export(context.scene, self.filepath)
-        except ExportError as e:
+        except Exception as e:  # ExportError says why; anything else is named
             self.report({"ERROR"}, "tideline: %s" % e)
             return {"CANCELLED"}
         for line in report:
@@ -493,6 +564,9 @@ def main(argv):
         report = export(bpy.context.scene, args[0])
     except ExportError as e:
         print("tideline_export: error: %s" % e, file=sys.stderr)
+        return 1
+    except Exception as e:  # a bug or a scene not foreseen: still a failure
+        print("tideline_export: error: %s: %s" % (type(e).__name__, e), file=sys.stderr)
         return 1
     for line in report:
         print("tideline_export: %s" % line)
