@@ -14,6 +14,13 @@
     defined(TL_FEATURE_GIANT_CAUSTICS)
 #include "caustics.glsl"
 #endif
+// The crest line, before giant.glsl (which includes it too: a file is
+// expanded once, the first time, whatever #if it is under): outside the
+// wave's rectangle it is all of the wave the program has, which the water
+// in front of the wave mirrors (water.glsl, TL_GIANT_MIRROR).
+#if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_GIANT_MIRROR)
+#include "giant_crest.glsl"
+#endif
 #ifdef TL_FEATURE_GIANT_WAVE
 #include "giant.glsl"
 #endif

@@ -57,6 +57,11 @@
 //           the input's third float: its signed distance in the
 //           cross-section, the lumps' factor and roughness at that angle
 //                  (tl_giant_lip_distance, tl_giant_lip_lump)
+//   mode 24: how much of the sky in the direction whose x and z are the
+//           input's third and fourth floats (y upward, unit) the water at
+//           camera-relative (x, z) sees past the giant wave's crest, at the
+//           surface's height there, for rays spread by 0.1 rad
+//                                            (tl_giant_clear)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -176,6 +181,11 @@ void main()
         result.x = foam_detail(vec2(p.x, 0.37 * p.x), p.y);
     else if (u_probe_mode == 23)
         result.x = giant_short_wave_gain(giant_sample(p));
+    else if (u_probe_mode == 24) {
+        vec2 flat_dir = input4.zw;
+        vec3 dir = vec3(flat_dir.x, sqrt(max(1.0 - dot(flat_dir, flat_dir), 0.0)), flat_dir.y);
+        result.x = giant_clear(p, surface_height(p, u_probe_octaves, 0.0), dir, 0.1);
+    }
 #endif
 #ifdef TL_FEATURE_GIANT_LIP
     else if (u_probe_mode == 10 || u_probe_mode == 11) {

@@ -172,6 +172,19 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 
     float fresnel;
     vec3 reflection = water_sky_reflection(ray, n, slope_var, sunlit, fresnel);
+    // The share of the mirrored sky the giant wave leaves in view: in front
+    // of it a ray mirrored toward it meets its face, not the bright sky near
+    // a sun low behind it (the trough ahead of a backlit wave shone with a
+    // pale sheen band, judges). The edge is as soft as the mirrored rays of
+    // the pixel's normals spread (TL_GIANT_MIRROR_SPREAD of the slopes'
+    // deviation, at least TL_GIANT_MIRROR_SPREAD_MIN radians): the mean
+    // normal's alone drew a hard, speckled edge.
+    float sky_seen = 1.0;
+#if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_GIANT_MIRROR)
+    sky_seen = giant_clear(hit.xz, hit.y, normalize(reflect(ray, n)),
+                           TL_GIANT_MIRROR_SPREAD * sqrt(2.0 * slope_var) +
+                               TL_GIANT_MIRROR_SPREAD_MIN);
+#endif
 #ifdef TL_FEATURE_FOG
     // The sky the water mirrors is seen through the fog above it too.
     vec3 r = normalize(reflect(ray, n));
@@ -201,7 +214,12 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     // sand seen through it stands for the rest.
     scattering *= 1.0 - exp(-2.0 * u_water_fall * max(hit.y + u_floor_depth, 0.0));
 #endif
-    vec3 color = fresnel * reflection + layer_emit(TL_LIGHT_BODY, scattering);
+    // Where the wave hides the sky the water mirrors its face: water that
+    // scatters light as this water does, and mirrors the sky at a face's
+    // Fresnel factor (TL_GIANT_FACE_FRESNEL; seen from the sea in front,
+    // the face is met about half-way to grazing).
+    vec3 face = layer_emit(TL_LIGHT_REFLECTION, scattering) + TL_GIANT_FACE_FRESNEL * reflection;
+    vec3 color = fresnel * mix(face, reflection, sky_seen) + layer_emit(TL_LIGHT_BODY, scattering);
 #ifdef TL_FEATURE_SEA_FLOOR
     color += (1.0 - fresnel) *
              layer_emit(TL_LIGHT_BODY, floor_through_surface(ray, n, hit, dist, slope_var));

@@ -540,6 +540,80 @@ static void test_sun_shadow(tl_renderer *r)
     }
 }
 
+/* What the water mirrors past the crest (giant_clear, probe mode 24, rays
+ * spread by 0.1 rad) against its double mirror: along the centre line
+ * from 40 m behind the crest to 120 m in front of a 20 m wave, in twelve
+ * directions around and at 3 to 30 degrees up, within 0.02; and what it
+ * must be: 30 m in front of the crest, a ray toward the wave 5 degrees up
+ * meets the crest (it sees under a twentieth of the sky), one away from it
+ * sees all of it. */
+static void test_mirror_clear(tl_renderer *r)
+{
+    const double cam[3] = {3.0, 6.0, -4.0};
+    enum { N = 96 };
+    tl_scene s;
+    wave_scene(&s, 20.0, 10.0, cam);
+    s.giant.fade = 1.0;
+    tl_waves w;
+    tl_giant g;
+    tl_frame_uniforms u;
+    prepare_wave(&s, &w, &g, &u);
+    double crest = g.fade * g.curl / g.k;
+    float in[4 * N], gpu[4 * N];
+    double dirs[N][3];
+    for (int i = 0; i < N; i++) {
+        double at = crest - 40.0 + 160.0 * (i % 24) / 23.0;
+        double el = (3.0 + 27.0 * ((i * 7) % 11) / 10.0) * M_PI / 180.0;
+        double az = 2.0 * M_PI * (i % 12) / 12.0 + 0.1;
+        if (i == N - 2 || i == N - 1) { /* toward the wave and away, 30 m in front */
+            at = crest + 30.0;
+            el = 5.0 * M_PI / 180.0;
+            az = 0.0;
+        }
+        double toward = i == N - 2 ? -1.0 : 1.0; /* the wave lies toward -dir */
+        double flat[2] = {cos(az) * g.dir[0] - sin(az) * g.across[0],
+                          cos(az) * g.dir[1] - sin(az) * g.across[1]};
+        if (i >= N - 2) {
+            flat[0] = toward * g.dir[0];
+            flat[1] = toward * g.dir[1];
+        }
+        dirs[i][0] = cos(el) * flat[0];
+        dirs[i][1] = sin(el);
+        dirs[i][2] = cos(el) * flat[1];
+        in[4 * i + 0] = (float)(g.origin[0] + g.dir[0] * at - cam[0]);
+        in[4 * i + 1] = (float)(g.origin[1] + g.dir[1] * at - cam[2]);
+        in[4 * i + 2] = (float)dirs[i][0];
+        in[4 * i + 3] = (float)dirs[i][2];
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_probe4(r, &u, 24, in, N, s.quality.march_octaves, gpu, &err) == 0);
+    double worst = 0.0, least = 1.0, most = 0.0, toward = 1.0, away = 0.0;
+    for (int i = 0; i < N; i++) {
+        double x = cam[0] + (double)in[4 * i], z = cam[2] + (double)in[4 * i + 1];
+        double y = tl_waves_surface_height(&w, &g, x, z, s.time, s.quality.march_octaves,
+                                           s.quality.giant_iterations);
+        /* the direction as the GPU has it: y from the float x and z */
+        double fx = in[4 * i + 2], fz = in[4 * i + 3];
+        const double dir[3] = {fx, sqrt(fmax(1.0 - fx * fx - fz * fz, 0.0)), fz};
+        double cpu = tl_giant_clear(&g, x, z, y, dir, 0.1);
+        worst = fmax(worst, fabs(cpu - gpu[4 * i]));
+        least = fmin(least, gpu[4 * i]);
+        most = fmax(most, gpu[4 * i]);
+        if (i == N - 2)
+            toward = gpu[4 * i];
+        if (i == N - 1)
+            away = gpu[4 * i];
+    }
+    printf("mirrored sky past the crest: |gpu-cpu| <= %.4f over %d rays (%.3f .. %.3f); 30 m in "
+           "front, toward the wave %.3f, away %.3f\n",
+           worst, N, least, most, toward, away);
+    CHECK(worst <= 0.02);
+    CHECK(least < 0.05 && most > 0.99); /* the rays span hidden and clear */
+    CHECK(toward < 0.05);
+    CHECK(away > 0.99);
+}
+
 /* The small waves' steepening on the wave (probe mode 23) against its
  * double mirror, along the centre line from 60 m behind the crest to 60 m
  * in front, at (x, z) and time t: within 1e-4; 1 in the trough ahead and
@@ -794,6 +868,7 @@ int main(void)
     test_crest_caustics_probe(r, 1e4, -7e3, 1e5);
     test_lip_facing(r);
     test_sun_shadow(r);
+    test_mirror_clear(r);
     test_short_wave_gain(r, 3.0, -4.0, 10.0);
     test_short_wave_gain(r, 1e4, -7e3, 1e5);
     test_trail_aerated(r);

@@ -123,6 +123,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_GIANT_TRAIL_RAGGED %.17g\n"
         "#define TL_GIANT_TRAIL_RAGGED_CELL %.17g\n"
         "#define TL_GIANT_LIP_HIGH %.17g\n"
+        "#define TL_GIANT_MIRROR_SPREAD %.17g\n"
+        "#define TL_GIANT_MIRROR_SPREAD_MIN %.17g\n"
+        "#define TL_GIANT_FACE_FRESNEL %.17g\n"
         "#define TL_SPRAY_SIGMA %.17g\n"
         "#define TL_SPRAY_FROM %.17g\n"
         "#define TL_SPRAY_FULL %.17g\n"
@@ -202,19 +205,21 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_GIANT_LIP_COLLAPSE, TL_GIANT_LIP_SWELL,
         TL_GIANT_LIP_LUMP, TL_GIANT_LIP_LUMP_CELL, TL_GIANT_LIP_TEAR, TL_GIANT_LIP_ROUGHEN,
         TL_GIANT_LIP_LOW, TL_GIANT_SHORT_WAVE_GAIN_MAX, TL_GIANT_TRAIL_RAGGED,
-        TL_GIANT_TRAIL_RAGGED_CELL, TL_GIANT_LIP_HIGH, TL_SPRAY_SIGMA, TL_SPRAY_FROM, TL_SPRAY_FULL,
-        TL_SPRAY_LANDING_RADIUS, TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_AHEAD, TL_SPRAY_SPLASH_GROW,
-        TL_SPRAY_BOW_GAIN, TL_SPRAY_LANDING_GAIN, TL_SPRAY_LANDING_MEAN, TL_BOW_SPRAY_TORN_MEAN,
-        TL_BOW_SPRAY_END, TL_BOW_SPRAY_REACH, TL_SPRAY_REACHES, TL_SPRAY_LIFT, TL_SPRAY_RISE,
-        TL_WAKE_POINTS, TL_WAKE_GROUP, TL_WAKE_GROUPS, TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL,
-        TL_QUALITY_MARCH_RELAX, TL_COLOR_SHAPER_LO, TL_COLOR_SHAPER_HI, TL_QUALITY_GIANT_STEP_COST,
-        TL_MIRROR_SHIFT, TL_MIRROR_STREAK, TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER,
-        TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE, TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT,
-        TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA, TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN,
-        TL_OBJECT_MAX, TL_FRAME_AOV_OBJECTS, TL_GIANT_MATTE_SHARE, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR,
-        TL_CAUSTIC_PEAK, TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_CREST_REACH, TL_CAUSTIC_SUN_SPREAD,
-        TL_CAUSTIC_FOLD, TL_CAUSTIC_FINE_BLUR, TL_CAUSTIC_FINE_SHARE, TL_CAUSTIC_FINE_GAP,
-        TL_SHAFT_RANGE, TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD,
+        TL_GIANT_TRAIL_RAGGED_CELL, TL_GIANT_LIP_HIGH, TL_GIANT_MIRROR_SPREAD,
+        TL_GIANT_MIRROR_SPREAD_MIN, TL_GIANT_FACE_FRESNEL, TL_SPRAY_SIGMA, TL_SPRAY_FROM,
+        TL_SPRAY_FULL, TL_SPRAY_LANDING_RADIUS, TL_SPRAY_SPLASH_RISE, TL_SPRAY_SPLASH_AHEAD,
+        TL_SPRAY_SPLASH_GROW, TL_SPRAY_BOW_GAIN, TL_SPRAY_LANDING_GAIN, TL_SPRAY_LANDING_MEAN,
+        TL_BOW_SPRAY_TORN_MEAN, TL_BOW_SPRAY_END, TL_BOW_SPRAY_REACH, TL_SPRAY_REACHES,
+        TL_SPRAY_LIFT, TL_SPRAY_RISE, TL_WAKE_POINTS, TL_WAKE_GROUP, TL_WAKE_GROUPS,
+        TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, TL_QUALITY_MARCH_RELAX, TL_COLOR_SHAPER_LO,
+        TL_COLOR_SHAPER_HI, TL_QUALITY_GIANT_STEP_COST, TL_MIRROR_SHIFT, TL_MIRROR_STREAK,
+        TL_BOAT_SHADOW_SIZE, TL_BOAT_SHADOW_SCATTER, TL_BOAT_CONTACT_LINE, TL_BOAT_BOW_WAVE,
+        TL_MESH_WATERLINE_STATIONS, TL_KELVIN_HEIGHT, TL_KELVIN_FROUDE, TL_MESH_MIN_ALPHA,
+        TL_MESH_WET_LOW, TL_MESH_WET_HIGH, TL_MESH_WET_DARKEN, TL_OBJECT_MAX, TL_FRAME_AOV_OBJECTS,
+        TL_GIANT_MATTE_SHARE, TL_CAUSTIC_STEP, TL_CAUSTIC_BLUR, TL_CAUSTIC_PEAK,
+        TL_CAUSTIC_MIN_DOWN, TL_CAUSTIC_CREST_REACH, TL_CAUSTIC_SUN_SPREAD, TL_CAUSTIC_FOLD,
+        TL_CAUSTIC_FINE_BLUR, TL_CAUSTIC_FINE_SHARE, TL_CAUSTIC_FINE_GAP, TL_SHAFT_RANGE,
+        TL_PARTICLE_CELL, TL_PARTICLE_RANGE, TL_PARTICLE_NEAR, TL_PARTICLE_PERIOD,
         TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY,
         TL_PARTICLE_PIXEL_SPREAD, TL_PARTICLE_MAX_CELLS, TL_PARTICLE_FOCUS, TL_PARTICLE_PUPIL,
         TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
@@ -253,14 +258,15 @@ static GLuint ocean_program(tl_renderer *r, const tl_frame_uniforms *u, unsigned
     int fits = tl_renderer_defines(features, defines, sizeof defines) == 0;
     size_t n = strlen(defines);
     int more = snprintf(defines + n, sizeof defines - n,
-                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s%s%s",
+                        "#define TL_MARCH_OCTAVES %d\n#define TL_NORMAL_OCTAVES %d\n%s%s%s%s%s%s%s",
                         key.march_octaves, key.normal_octaves,
                         features & TL_PASS_PREPASS ? "#define TL_MARCH_PREPASS 1\n" : "",
                         features & TL_PASS_HINTED ? "#define TL_MARCH_HINT 1\n" : "",
                         features & TL_PASS_SKY ? "#define TL_SKY_ONLY 1\n" : "",
                         features & TL_PASS_MIRROR ? "#define TL_BOAT_MIRROR 1\n" : "",
                         features & TL_PASS_AOV ? "#define TL_PASS_AOV 1\n" : "",
-                        features & TL_PASS_LAYERS ? "#define TL_PASS_LAYERS 1\n" : "");
+                        features & TL_PASS_LAYERS ? "#define TL_PASS_LAYERS 1\n" : "",
+                        features & TL_PASS_GIANT_MIRROR ? "#define TL_GIANT_MIRROR 1\n" : "");
     if (!fits || more < 0 || (size_t)more >= sizeof defines - n) {
         tl_error_set(err, TL_ERR_RUNTIME, "the ocean program's #defines do not fit in %d bytes",
                      TL_DEFINES_SIZE);
@@ -647,8 +653,13 @@ static int draw_passes(tl_renderer *r, const tl_frame_uniforms *u, float weight,
     unsigned lean = features & ~(unsigned)(TL_FEATURE_GIANT_WAVE | TL_FEATURE_GIANT_BREAK |
                                            TL_FEATURE_GIANT_LIP | TL_FEATURE_GIANT_SPRAY |
                                            TL_FEATURE_GIANT_GLOW);
-    if (features & TL_FEATURE_GIANT_WAVE)
+    if (features & TL_FEATURE_GIANT_WAVE) {
         memcpy(rect, u->plan.giant_rect, sizeof rect);
+        /* The water around the rectangle still mirrors the wave's face
+         * where its crest hides the sky: the crest line, with the break's
+         * settling as the wave's program has it. */
+        lean |= TL_PASS_GIANT_MIRROR | (features & TL_FEATURE_GIANT_BREAK);
+    }
     int rc = TL_OK;
     const int scope = tl_renderer_prepass_scope(u, features, rect);
     if (scope != TL_PREPASS_NONE) {

@@ -66,6 +66,10 @@ enum {
     TL_PASS_AOV = 1u << 26,
     TL_PASS_LAYERS = 1u << 25
 };
+/* The lean program of a frame with the giant wave: its crest line alone,
+ * which the water outside the wave's rectangle mirrors (a #define: an
+ * enumerator must fit an int). */
+#define TL_PASS_GIANT_MIRROR (1u << 31)
 /* The scene target's attachments: radiance, distance, and with the
  * compositing passes the normal and foam, the covers, and the objects'
  * covers in four (tl_frame.h's aov plane, in that order). */

@@ -423,6 +423,12 @@ double tl_giant_height(const tl_giant *g, double x, double z, int iterations)
 
 double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const double sun[3])
 {
+    return tl_giant_clear(g, x, z, y, sun, 0.0);
+}
+
+double tl_giant_clear(const tl_giant *g, double x, double z, double y, const double sun[3],
+                      double spread)
+{
     double flat = hypot(sun[0], sun[2]);
     if (!g->active || !(sun[1] > 0.0) || flat < 1e-4)
         return 1.0;
@@ -442,7 +448,7 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
     double ray_height = y + dist * sun[1] / flat;
     /* The penumbra: the sun's half degree over the distance, and the thin
      * lip near the top of a tall crest, through which light still comes. */
-    double soft = 0.3 + 0.01 * dist + 0.08 * crest_height;
+    double soft = 0.3 + (0.01 + spread) * dist + 0.08 * crest_height;
     double x01 = fmin(fmax((ray_height - crest_height + soft) / (2.0 * soft), 0.0), 1.0);
     /* No crest, no shadow: where the width mask has let the crest down
      * to the sea's mean level, the penumbra alone darkened the troughs

@@ -355,11 +355,27 @@ int tl_giant_lip_heights(const tl_giant *g, double x, double z, double floor, do
 double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, double amount,
                               double foam_compression, double foam_trail);
 
-/* How much of the sun (unit direction `sun`, toward it) a point at world
- * (x, z) and height y sees past the wave's crest: 0 in its shadow, 1 in
- * the open, soft in between. The crest is the line where s0 = 0, at
- * s = bow + lambda·curl/k and lambda·amplitude high; the ray toward the sun is
- * followed to it. shaders/giant.glsl's giant_sunlit is the same rule. */
+/* How much of the sky in unit direction `dir` a point at world (x, z) and
+ * height y sees past the wave's crest: 0 where the crest hides it, 1 in
+ * the open, soft in between over a penumbra that widens with the distance
+ * and by `spread` (radians, the spread of the rays the point stands for)
+ * times the distance. The crest is the line where s0 = 0, at s = bow +
+ * lambda·curl/k and lambda·amplitude high; the ray is followed to it.
+ * shaders/giant.glsl's giant_clear is the same rule. */
+double tl_giant_clear(const tl_giant *g, double x, double z, double y, const double dir[3],
+                      double spread);
+
+/* How much of the sun (unit direction `sun`, toward it) a point sees past
+ * the crest: its shadow, tl_giant_clear toward the sun with no spread
+ * (giant_sunlit). */
 double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const double sun[3]);
+
+/* The water mirrors the sky through tl_giant_clear along its mirrored ray,
+ * spread by this many times the slopes' deviation and at least
+ * TL_GIANT_MIRROR_SPREAD_MIN radians; where the crest hides the sky it
+ * mirrors the face, at TL_GIANT_FACE_FRESNEL. */
+#define TL_GIANT_MIRROR_SPREAD     2.0
+#define TL_GIANT_MIRROR_SPREAD_MIN 0.05
+#define TL_GIANT_FACE_FRESNEL      0.05
 
 #endif
