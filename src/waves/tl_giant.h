@@ -374,8 +374,8 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
  * spread by this many times the slopes' deviation and at least
  * TL_GIANT_MIRROR_SPREAD_MIN radians; where the crest hides the sky it
  * mirrors the face, at TL_GIANT_FACE_FRESNEL. */
-#define TL_GIANT_MIRROR_SPREAD     2.0
-#define TL_GIANT_MIRROR_SPREAD_MIN 0.05
+#define TL_GIANT_MIRROR_SPREAD     3.0
+#define TL_GIANT_MIRROR_SPREAD_MIN 0.25
 #define TL_GIANT_FACE_FRESNEL      0.05
 
 #endif
