@@ -82,6 +82,7 @@ static void test_bad_flags(void)
     EXPECT_USAGE("--fov: '0' is outside (0, 180) degrees", "still", "--fov", "0", "-o", png);
     EXPECT_USAGE("--fov: '180' is outside (0, 180) degrees", "still", "--fov", "180", "-o", png);
     EXPECT_USAGE("--exposure: '-1' is negative", "still", "--exposure", "-1", "-o", png);
+    EXPECT_USAGE("--ev: '30' is outside -20..20 stops", "still", "--ev", "30", "-o", png);
     EXPECT_USAGE("--quality: unknown quality preset 'ultra'", "still", "--quality", "ultra", "-o",
                  png);
     EXPECT_USAGE("look-at target coincides with the camera", "still", "--look-at", "0,1.5,0", "-o",
@@ -143,6 +144,41 @@ static void test_still_dither(void)
     tl_frame_free(&off);
     unlink(a);
     unlink(b);
+}
+
+/* still --ev: a stop more halves the light the display shows (a darker
+ * frame), and it combines with --exposure as exposure x 2^-ev: --exposure
+ * 4 --ev 0 is --exposure 2 --ev -1, pixel for pixel. */
+static void test_still_ev(void)
+{
+    const char *a = in_dir(0, "ev_a.png"), *b = in_dir(1, "ev_b.png"), *c = in_dir(2, "ev_c.png");
+    CHECK(run(NULL, "still", "--size", "48x27", "--exposure", "4", "--ev", "0", "-o", a, NULL) ==
+          0);
+    CHECK(run(NULL, "still", "--size", "48x27", "--exposure", "2", "--ev", "-1", "-o", b, NULL) ==
+          0);
+    CHECK(run(NULL, "still", "--size", "48x27", "--exposure", "2", "--ev", "1", "-o", c, NULL) ==
+          0);
+    tl_frame fa = {0}, fb = {0}, fc = {0};
+    tl_error err;
+    CHECK(tl_png_read(a, &fa, NULL, &err) == 0);
+    CHECK(tl_png_read(b, &fb, NULL, &err) == 0);
+    CHECK(tl_png_read(c, &fc, NULL, &err) == 0);
+    double same = 0.0, bright = 0.0, dark = 0.0;
+    for (size_t i = 0; fa.display && fb.display && fc.display && i < 48 * 27 * 4; i++) {
+        same = fmax(same, fabs((double)fa.display[i] - fb.display[i]));
+        bright += fa.display[i];
+        dark += fc.display[i];
+    }
+    printf("still --ev: --exposure 4 --ev 0 against --exposure 2 --ev -1 differ by %.3g; "
+           "--ev 1's mean %.3f of --ev -1's\n",
+           same, dark / fmax(bright, 1e-9));
+    CHECK(fa.display && same == 0.0 && dark < 0.8 * bright);
+    tl_frame_free(&fa);
+    tl_frame_free(&fb);
+    tl_frame_free(&fc);
+    unlink(a);
+    unlink(b);
+    unlink(c);
 }
 
 static void test_bad_outputs(void)
@@ -394,6 +430,7 @@ int main(int argc, char **argv)
     test_help_and_version();
     test_bad_flags();
     test_still_dither();
+    test_still_ev();
     test_bad_outputs();
     test_runtime_failures();
     test_success();

@@ -72,7 +72,11 @@ static const char usage[] =
     "  --fov DEG              vertical field of view, 0 < DEG < 180 (default 67.38)\n"
     "  --sun-elevation DEG    sun above the horizon (default 10)\n"
     "  --sun-azimuth DEG      sun compass direction (default -7.6)\n"
-    "  --exposure E           linear exposure before tonemapping (default 2)\n"
+    "  --exposure E           linear exposure before tonemapping (default 2; replaces\n"
+    "                         render.exposure)\n"
+    "  --ev STOPS             exposure compensation, -20..20: +1 halves the light\n"
+    "                         (replaces render.ev); the display multiplies the light\n"
+    "                         by exposure x 2^-ev before the tonemap (EXR: untouched)\n"
     "  --quality PRESET       draft, preview, final (default), reference, seed\n"
     "  --spp N                stratified samples per pixel (1..1024; default: the preset's)\n"
     "  --shader-dir DIR       load shaders from DIR instead of the built-in copies\n"
@@ -100,7 +104,7 @@ typedef struct still_options {
     int has_frame;
     tl_scene values; /* holds the flag values; only fields with has_ set count */
     int has_size, has_camera, has_yaw, has_pitch, has_roll, has_fov, has_sun_elevation,
-        has_sun_azimuth, has_exposure, has_quality;
+        has_sun_azimuth, has_exposure, has_ev, has_quality;
     const char *outputs[MAX_OUTPUTS];
     int output_count;
     double look_at[3];
@@ -198,6 +202,12 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
             if (!rc && s->exposure < 0.0)
                 rc = tl_error_set(err, TL_ERR_USAGE, "--exposure: '%s' is negative", a.value);
             o->has_exposure = 1;
+        } else if (tl_args_match(&a, "--ev", NULL, true, err)) {
+            rc = a.value ? tl_args_double(a.flag, a.value, &s->ev, err) : TL_ERR_USAGE;
+            if (!rc && !(fabs(s->ev) <= 20.0))
+                rc =
+                    tl_error_set(err, TL_ERR_USAGE, "--ev: '%s' is outside -20..20 stops", a.value);
+            o->has_ev = 1;
         } else if (tl_args_match(&a, "--quality", NULL, true, err)) {
             rc = a.value ? tl_quality_preset(a.value, &s->quality, err) : TL_ERR_USAGE;
             if (rc && a.value)
@@ -261,6 +271,8 @@ static void apply_flags(const still_options *o, tl_scene *scene)
         scene->sun.azimuth = v->sun.azimuth;
     if (o->has_exposure)
         scene->exposure = v->exposure;
+    if (o->has_ev)
+        scene->ev = v->ev;
     if (o->has_quality)
         scene->quality = v->quality;
     if (o->spp)

@@ -13,8 +13,8 @@
 
 #include <stdbool.h>
 
-#define TL_EASE_BACK_OVERSHOOT 1.70158
-#define TL_EASE_ELASTIC_PERIOD 0.3        /* fraction of the duration, in and out */
+#define TL_EASE_BACK_OVERSHOOT        1.70158
+#define TL_EASE_ELASTIC_PERIOD        0.3 /* fraction of the duration, in and out */
 #define TL_EASE_ELASTIC_PERIOD_IN_OUT 0.45
 /* What Blender gives an inserted key (keyframing's defaults): amplitude in
  * value units, period in frames. */
@@ -35,12 +35,7 @@ typedef enum tl_ease_family {
     TL_EASE_FAMILY_COUNT
 } tl_ease_family;
 
-typedef enum tl_ease_dir {
-    TL_EASE_IN,
-    TL_EASE_OUT,
-    TL_EASE_IN_OUT,
-    TL_EASE_DIR_COUNT
-} tl_ease_dir;
+typedef enum tl_ease_dir { TL_EASE_IN, TL_EASE_OUT, TL_EASE_IN_OUT, TL_EASE_DIR_COUNT } tl_ease_dir;
 
 /* Eased progress at u. An out-of-range family or direction gives u. */
 double tl_ease(tl_ease_family family, tl_ease_dir dir, double u);
@@ -65,6 +60,8 @@ bool tl_ease_from_name(const char *name, tl_ease_family *family, tl_ease_dir *di
 
 /* The canonical name ("ease-in-out-sine"), or NULL when out of range. */
 const char *tl_ease_name(tl_ease_family family, tl_ease_dir dir);
+/* How many names tl_ease_name gives. */
+#define TL_EASE_NAME_COUNT (TL_EASE_FAMILY_COUNT * TL_EASE_DIR_COUNT)
 
 /* "sine", "quad", ...; NULL when out of range. */
 const char *tl_ease_family_name(tl_ease_family family);

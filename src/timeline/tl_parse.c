@@ -24,6 +24,20 @@ static const char *const key_words[] = {
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
     "ease-out-sine", "ease-in-out-sine", "back",    "amplitude", "period", NULL};
 
+/* `list` (NULL-terminated) and every easing's name, into `out` (room for
+ * both), for "did you mean". */
+static const char *const *with_ease_names(const char *const *list, const char **out)
+{
+    int n = 0;
+    for (; list[n]; n++)
+        out[n] = list[n];
+    for (int f = 0; f < TL_EASE_FAMILY_COUNT; f++)
+        for (int d = 0; d < TL_EASE_DIR_COUNT; d++)
+            out[n++] = tl_ease_name((tl_ease_family)f, (tl_ease_dir)d);
+    out[n] = NULL;
+    return out;
+}
+
 static int parse_time(parser *p, const token *t, double *out)
 {
     return tl_parse_quantity(p, t, TL_UNIT_TIME, out);
@@ -111,12 +125,32 @@ static int count_key(parser *p, const token *t)
 }
 
 /* `TIME [cut] V... [interp] [handle type] [left DT V...] [right DT V...]` */
+/* A unit word standing alone after a number from tok[first] on (`0.004 m`):
+ * reported at the space, with the number and unit written together. */
+static int unit_after_space(parser *p, const token *tok, int n, int first)
+{
+    static const char *const units[] = {"m", "s", "ms", "f", "deg", "rad", NULL};
+    for (int i = first + 1; i < n; i++)
+        for (int u = 0; units[u]; u++) {
+            const token *num = &tok[i - 1];
+            char last = num->len > 0 ? num->s[num->len - 1] : '\0';
+            if (strcmp(tok[i].s, units[u]) != 0 || !(isdigit((unsigned char)last) || last == '.'))
+                continue;
+            int gap = num->col + num->len;
+            tl_parse_diag(p, gap, tok[i].col - gap, NULL,
+                          "a unit goes right after its number, without a space: '%.*s%s'", num->len,
+                          num->s, tok[i].s);
+            return 1;
+        }
+    return 0;
+}
+
 static void key_line(parser *p, token *tok, int n)
 {
     const tl_channel *ch = p->block_ch;
     int i = 0;
     double t;
-    if (count_key(p, &tok[0]) || parse_time(p, &tok[i++], &t)) {
+    if (unit_after_space(p, tok, n, 0) || count_key(p, &tok[0]) || parse_time(p, &tok[i++], &t)) {
         p->block_failed = 1;
         return;
     }
@@ -174,7 +208,9 @@ static void key_line(parser *p, token *tok, int n)
             p->block_failed = 1;
             return;
         } else {
-            tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, key_words),
+            const char *words[sizeof key_words / sizeof key_words[0] + TL_EASE_NAME_COUNT];
+            tl_parse_diag(p, tok[i].col, tok[i].len,
+                          tl_suggest(tok[i].s, with_ease_names(key_words, words)),
                           "unknown key option '%s'", tok[i].s);
             p->block_failed = 1;
             return;
@@ -374,6 +410,8 @@ static void dir_set(parser *p, token *tok, int n)
     const tl_channel *ch = lookup_channel(p, &tok[1], &object);
     if (!ch)
         return;
+    if (unit_after_space(p, tok, n, 2))
+        return;
     if (n - 2 != ch->components) {
         tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
                       tok[1].s, ch->components, ch->components > 1 ? "s" : "", n - 2);
@@ -485,8 +523,10 @@ static void dir_key(parser *p, token *tok, int n)
             static const char *const opts[] = {"extrapolate", "before", "after",  "smoothing",
                                                "shortest",    "linear", "bezier", "spline",
                                                "constant",    "step",   "back",   "amplitude",
-                                               "period",      "baked",  NULL};
-            tl_parse_diag(p, tok[i].col, tok[i].len, tl_suggest(tok[i].s, opts),
+                                               "period",      "baked",  "ease",   NULL};
+            const char *words[sizeof opts / sizeof opts[0] + TL_EASE_NAME_COUNT];
+            tl_parse_diag(p, tok[i].col, tok[i].len,
+                          tl_suggest(tok[i].s, with_ease_names(opts, words)),
                           "unknown option '%s' for 'key'", tok[i].s);
             return;
         }
@@ -822,6 +862,33 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
                       "the file is UTF-16 (byte-order mark 0x%02x 0x%02x); save it "
                       "as UTF-8 or ASCII",
                       (unsigned char)text[0], (unsigned char)text[1]);
+        p.stopped = 1;
+    }
+    /* A file that is not text (a program, an image, a .blend) is told so
+     * once, where its binary data begins, instead of an error a line.
+     * Binary: control bytes that no text editor writes (NUL, and the C0
+     * codes but tab, line and form feeds and carriage return), four or more
+     * in its first 4 KiB; fewer are stray bytes, each an error at its line. */
+    size_t first_binary = length, binary = 0;
+    for (size_t i = 0; i < length && i < 4096 && !p.stopped; i++) {
+        unsigned char c = (unsigned char)text[i];
+        if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') ||
+            c == 0x7f) {
+            if (first_binary == length)
+                first_binary = i;
+            binary++;
+        }
+    }
+    if (binary >= 4) {
+        size_t line_start = 0;
+        p.line_no = 1;
+        for (size_t i = 0; i < first_binary; i++)
+            if (text[i] == '\n') {
+                p.line_no++;
+                line_start = i + 1;
+            }
+        tl_parse_diag(&p, (int)(first_binary - line_start) + 1, 1, NULL,
+                      "not a timeline (binary data at byte %zu)", first_binary);
         p.stopped = 1;
     }
     while (pos < length && !p.stopped) {

@@ -133,8 +133,14 @@ int tl_parse_channel_value(parser *p, const tl_channel *ch, const token *t, doub
                 *out = i;
                 return 0;
             }
-        tl_parse_diag(p, t->col, t->len, tl_suggest(t->s, ch->names), "%s has no value '%s'",
-                      ch->name, t->s);
+        char values[256];
+        size_t used = 0;
+        values[0] = '\0';
+        for (int i = 0; ch->names[i] && used < sizeof values; i++)
+            used += (size_t)snprintf(values + used, sizeof values - used, "%s%s", i ? ", " : "",
+                                     ch->names[i]);
+        tl_parse_diag(p, t->col, t->len, tl_suggest(t->s, ch->names),
+                      "%s has no value '%s' (values: %s)", ch->name, t->s, values);
         return 1;
     }
     double v;
