@@ -364,8 +364,16 @@ static void test_papercuts(void)
     CHECK_STR_CONTAINS(out_text, "warn.tl: ok (with warnings)\n");
     CHECK_STR_CONTAINS(out_text, "warn.tl:3:18: warning: camera.pitch 0.2 is read as degrees");
     CHECK_STR_CONTAINS(out_text, "radians");
-    CHECK_STR_CONTAINS(out_text, "warn.tl:4:1: warning: camera.yaw has keys past the end of the "
-                                 "timeline (2 s), the last at 5 s");
+    CHECK_STR_CONTAINS(out_text, "warn.tl:6:3: warning: key at 5 s lies past the end of the "
+                                 "timeline (2 s)\n");
+    /* A bare number that fits as frames: the warning says what it would be. */
+    const char *frames = in_dir(4, "frames.tl");
+    tl_test_write_file(frames, "tideline 1\nfps 24\nduration 10s\nkey camera.fov\n  0s 50\n"
+                               "  192 40\n  200 30\n");
+    CHECK(run(NULL, "check", frames, NULL) == 0);
+    CHECK_STR_CONTAINS(out_text, "frames.tl:6:3: warning: key at 192 s lies past the end of the "
+                                 "timeline (10 s); 192 is read as seconds: 192f is frame 192 = 8 s");
+    CHECK(strstr(out_text, "frames.tl:7") == NULL); /* once a channel */
     CHECK(run(NULL, "check", "--strict", good, warn, NULL) == 1);
     CHECK_STR_CONTAINS(out_text, "warn.tl: failed (--strict");
     CHECK(run(NULL, "check", good, bad, warn, NULL) == 1); /* the worst file wins */

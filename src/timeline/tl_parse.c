@@ -145,6 +145,28 @@ static int unit_after_space(parser *p, const token *tok, int n, int first)
     return 0;
 }
 
+/* The first key of a block past the timeline's end, at its own line and
+ * column (a warning): a bare number that fits as frames was likely meant
+ * as frames, and the warning says what it would be. The end-of-file check
+ * (tl_parse_check_times) leaves the channel alone then. */
+static void warn_past_end(parser *p, const token *time, double t)
+{
+    const tl_timeline *tl = p->tl;
+    char hint[160] = "";
+    int bare = 1;
+    for (int k = 0; k < time->len; k++)
+        bare &= isdigit((unsigned char)time->s[k]) != 0;
+    if (bare && t / tl->fps <= tl->duration)
+        snprintf(hint, sizeof hint, "; %s is read as seconds: %sf is frame %s = %.6g s", time->s,
+                 time->s, time->s, t / tl->fps);
+    p->warning = 1;
+    tl_parse_diag(p, time->col, time->len, NULL,
+                  "key at %.6g s lies past the end of the timeline (%.6g s)%s", t, tl->duration,
+                  hint);
+    p->warning = 0;
+    p->block_track->past_end = true;
+}
+
 static void key_line(parser *p, token *tok, int n)
 {
     const tl_channel *ch = p->block_ch;
@@ -154,6 +176,8 @@ static void key_line(parser *p, token *tok, int n)
         p->block_failed = 1;
         return;
     }
+    if (p->saw_duration && t > p->tl->duration * (1.0 + 1e-12) && !p->block_track->past_end)
+        warn_past_end(p, &tok[0], t);
     int cut = 0;
     if (i < n && strcmp(tok[i].s, "cut") == 0) {
         cut = 1;
@@ -661,6 +685,7 @@ static void dir_header(parser *p, token *tok, int n)
             return;
         }
         tl->duration = dur;
+        p->saw_duration = 1;
     } else if (strcmp(d, "size") == 0) {
         if (expect_args(p, tok, n, 1, 1, "WIDTHxHEIGHT"))
             return;

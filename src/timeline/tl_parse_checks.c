@@ -93,7 +93,7 @@ void tl_parse_check_times(parser *p)
         if (object > 0 && !tl_channel_is_object(tl_channel_at(i)))
             continue;
         const tl_track *tr = tl_timeline_track(tl, i, object);
-        if (tr->state != TL_TRACK_KEYED)
+        if (tr->state != TL_TRACK_KEYED || tr->past_end)
             continue;
         char label[96];
         if (object > 0)

@@ -23,6 +23,7 @@ typedef struct tl_track {
     tl_curve curve[3]; /* TL_TRACK_KEYED: one per component */
     int line;          /* where it was set or keyed (0: default) */
     bool baked;        /* `key ... baked`: sampled at every frame by an exporter */
+    bool past_end;     /* a key past the end was warned about at its line */
 } tl_track;
 
 typedef enum tl_target { TL_TARGET_NONE, TL_TARGET_POINT, TL_TARGET_BOAT } tl_target;
