@@ -174,6 +174,39 @@ static void test_six_frames(void)
     rm_rf(again);
 }
 
+/* Every -o is written: a PNG and an EXR (with its passes) of each frame.
+ * --skip-existing renders a frame again when any of its files is missing,
+ * and the same pattern twice is a usage error. */
+static void test_several_outputs(void)
+{
+    char out[256], png[600], exr[600], f[600];
+    in_dir(out, sizeof out, "both");
+    snprintf(png, sizeof png, "%s/p/f_####.png", out);
+    snprintf(exr, sizeof exr, "%s/e/f_####.exr", out);
+    CHECK(tl_run(NULL, "render", six_path, "-o", png, "-o", exr, "--passes", "depth", "--frames",
+                 "1-3", "-q", NULL) == 0);
+    for (int i = 1; i <= 3; i++) {
+        snprintf(f, sizeof f, "%s/p/f_%04d.png", out, i);
+        CHECK(exists(f));
+        snprintf(f, sizeof f, "%s/e/f_%04d.exr", out, i);
+        CHECK(exists(f));
+    }
+    float *depth = NULL;
+    int w = 0, h = 0;
+    tl_error err;
+    CHECK(tl_exr_read_channel(f, "ViewLayer.Depth.Z", &w, &h, &depth, &err) == 0 && w > 0);
+    free(depth);
+    snprintf(f, sizeof f, "%s/e/f_0002.exr", out);
+    CHECK(unlink(f) == 0);
+    CHECK(tl_run(NULL, "render", six_path, "-o", png, "-o", exr, "--passes", "depth", "--frames",
+                 "1-3", "--skip-existing", NULL) == 0);
+    CHECK_STR_CONTAINS(tl_run_output, "1 frame written, 2 skipped");
+    CHECK(exists(f));
+    CHECK(tl_run(NULL, "render", six_path, "-o", png, "-o", png, NULL) == 2);
+    CHECK_STR_CONTAINS(tl_run_output, "is given twice");
+    rm_rf(out);
+}
+
 static void test_selection(void)
 {
     char out[256], pattern[600], f[600];
@@ -484,6 +517,7 @@ int main(int argc, char **argv)
     if (files) {
         test_six_frames();
         test_selection();
+        test_several_outputs();
         test_full_disk();
     }
     if (runs) {

@@ -45,7 +45,9 @@ static const char usage[] =
     "A frame's time is frame / fps; the same frame is identical on every run.\n"
     "\n"
     "Options:\n"
-    "  -o, --output PATTERN   frame files (needs '#' when rendering several frames)\n"
+    "  -o, --output PATTERN   frame files (needs '#' when rendering several frames);\n"
+    "                         up to 4, each frame written to every one (-o f_####.png\n"
+    "                         -o f_####.exr)\n"
     "  --frames SPEC          frames to render: 0-239, 5, 1-3,5,7-20:2 (default: all)\n"
     "  --chunk I/N            render only chunk I (0-based) of N even chunks of the\n"
     "                         selected frames (render farms: --chunk $TASK/$COUNT)\n"
@@ -85,9 +87,14 @@ static const char usage[] =
     "130 interrupted (SIGINT/SIGTERM; completed frames are kept, none is partial;\n"
     "    a --movie is discarded, never left short).\n";
 
+/* The most -o patterns a run writes (a PNG and an EXR of each frame, ...). */
+#define MAX_PATTERNS 4
+
 typedef struct render_options {
     const char *timeline;
-    const char *pattern;
+    const char *pattern;                /* the first -o */
+    const char *more[MAX_PATTERNS - 1]; /* the other -o's */
+    int more_count;
     const char *frames;
     const char *chunk;
     const char *movie;
@@ -140,7 +147,14 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
         } else if (tl_args_match(&a, "--skip-existing", NULL, false, err)) {
             o->skip_existing = 1;
         } else if (tl_args_match(&a, "--output", "-o", true, err)) {
-            o->pattern = a.value;
+            if (!a.value)
+                continue;
+            if (!o->pattern)
+                o->pattern = a.value;
+            else if (o->more_count < MAX_PATTERNS - 1)
+                o->more[o->more_count++] = a.value;
+            else
+                return tl_error_set(err, TL_ERR_USAGE, "-o: at most %d patterns", MAX_PATTERNS);
         } else if (tl_args_match(&a, "--frames", NULL, true, err)) {
             o->frames = a.value;
         } else if (tl_args_match(&a, "--chunk", NULL, true, err)) {
@@ -319,26 +333,42 @@ int tl_cli_render(int argc, char **argv)
     rc = tl_frame_list_parse(o.frames, tl_timeline_frame_count(&tl), "--frames", &frames, &err);
     if (!rc && o.chunk)
         rc = tl_frame_list_chunk(&frames, o.chunk, "--chunk", &err);
-    if (!rc && o.pattern && frames.count > 1 && !tl_pattern_has_frame(o.pattern))
-        rc = tl_error_set(&err, TL_ERR_USAGE,
-                          "-o %s has no '#' for the frame number, and this run writes %zu "
-                          "frames (e.g. -o shot_####.exr)",
-                          o.pattern, frames.count);
+    /* Every -o: a frame number where several frames are written, a known
+     * format, a writable place; no two name the same files. */
+    const char *patterns[MAX_PATTERNS] = {o.pattern};
+    int pattern_count = o.pattern ? 1 : 0;
+    for (int k = 0; k < o.more_count; k++)
+        patterns[pattern_count++] = o.more[k];
     char path[4096] = "";
-    if (!rc && o.pattern && frames.count > 0) {
-        rc = tl_pattern_format(o.pattern, frames.frames[0], frames.count == 1, path, sizeof path,
-                               &err);
-        if (!rc && tl_image_format_from_path(path) == TL_IMAGE_UNKNOWN)
-            rc = tl_error_set(&err, TL_ERR_USAGE, "-o %s: unknown image format (use .exr or .png)",
-                              o.pattern);
-        if (!rc)
-            rc = tl_cli_make_parent_dirs(path, &err);
-        if (!rc && tl_image_check_writable(path, &err))
-            rc = TL_ERR_USAGE;
+    int any_exr = 0, any_png = 0;
+    for (int k = 0; !rc && k < pattern_count; k++) {
+        const char *pat = patterns[k];
+        if (frames.count > 1 && !tl_pattern_has_frame(pat))
+            rc = tl_error_set(&err, TL_ERR_USAGE,
+                              "-o %s has no '#' for the frame number, and this run writes %zu "
+                              "frames (e.g. -o shot_####.exr)",
+                              pat, frames.count);
+        char p[4096] = "";
+        if (!rc && frames.count > 0) {
+            rc = tl_pattern_format(pat, frames.frames[0], frames.count == 1, p, sizeof p, &err);
+            if (!rc && tl_image_format_from_path(p) == TL_IMAGE_UNKNOWN)
+                rc = tl_error_set(&err, TL_ERR_USAGE,
+                                  "-o %s: unknown image format (use .exr or .png)", pat);
+            if (!rc)
+                rc = tl_cli_make_parent_dirs(p, &err);
+            if (!rc && tl_image_check_writable(p, &err))
+                rc = TL_ERR_USAGE;
+            any_exr |= tl_image_format_from_path(p) == TL_IMAGE_EXR;
+            any_png |= tl_image_format_from_path(p) == TL_IMAGE_PNG;
+            for (int j = 0; !rc && j < k; j++)
+                if (strcmp(patterns[j], pat) == 0)
+                    rc = tl_error_set(&err, TL_ERR_USAGE, "-o %s is given twice", pat);
+        }
+        if (k == 0)
+            memcpy(path, p, sizeof path);
     }
     const unsigned passes = o.has_passes ? o.passes : tl.passes;
-    if (!rc && o.has_passes && passes &&
-        (!o.pattern || tl_image_format_from_path(path) != TL_IMAGE_EXR))
+    if (!rc && o.has_passes && passes && !any_exr)
         rc = tl_error_set(&err, TL_ERR_USAGE,
                           "--passes: the passes are layers of EXR frames; give -o PATTERN.exr");
     if (!rc && o.movie) {
@@ -349,9 +379,7 @@ int tl_cli_render(int argc, char **argv)
     if (!rc && o.shader_dir && (rc = tl_shader_lib_from_dir(&lib, o.shader_dir, &err)))
         tl_error_prefix(&err, "--shader-dir");
     if (!rc)
-        rc = tl_cli_color_prepare(
-            &o.color, tl.working_space,
-            o.movie || (o.pattern && tl_image_format_from_path(path) == TL_IMAGE_PNG), &err);
+        rc = tl_cli_color_prepare(&o.color, tl.working_space, o.movie || any_png, &err);
     if (rc) {
         tl_cli_color_free(&o.color);
         tl_cli_print_error("render", &err);
@@ -361,10 +389,15 @@ int tl_cli_render(int argc, char **argv)
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
-    if (o.pattern && frames.count > 0) {
+    for (int k = 0; k < pattern_count && frames.count > 0; k++) {
         /* A process killed mid-write (SIGKILL, a node lost) leaves its
          * hidden temporary behind; a resumed run ends with the files alone. */
-        int removed = tl_job_remove_stale_temporaries(o.pattern, &frames, path);
+        char p[4096];
+        tl_error ignored;
+        if (tl_pattern_format(patterns[k], frames.frames[0], frames.count == 1, p, sizeof p,
+                              &ignored))
+            continue;
+        int removed = tl_job_remove_stale_temporaries(patterns[k], &frames, p);
         if (removed && !o.quiet)
             fprintf(stderr,
                     "tideline render: removed %d temporary file%s left by an interrupted run\n",
@@ -399,6 +432,8 @@ int tl_cli_render(int argc, char **argv)
                          .settings = settings,
                          .frames = &frames,
                          .pattern = o.pattern,
+                         .more_patterns = o.more,
+                         .more_count = o.more_count,
                          .movie = movie,
                          .image = {.png_bits = o.png_bits,
                                    .no_dither = !o.dither,

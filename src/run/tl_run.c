@@ -119,7 +119,43 @@ static int write_files(void *ctx, long n, const tl_scene *scene, const tl_frame 
                        const char *path, tl_error *err)
 {
     const run_state *s = ctx;
-    return s->cfg->pattern ? write_frame_files(s, n, scene, f, path, err) : TL_OK;
+    if (!s->cfg->pattern)
+        return TL_OK;
+    int rc = write_frame_files(s, n, scene, f, path, err);
+    const int single = s->cfg->frames->count == 1;
+    for (int k = 0; !rc && k < s->cfg->more_count; k++) {
+        char more[4096];
+        rc = tl_pattern_format(s->cfg->more_patterns[k], n, single, more, sizeof more, err);
+        if (!rc)
+            rc = write_frame_files(s, n, scene, f, more, err);
+    }
+    return rc;
+}
+
+/* The planes a frame file at `path` is made from. */
+static unsigned planes_for(const char *path, unsigned passes)
+{
+    return tl_image_format_from_path(path) == TL_IMAGE_EXR
+               ? TL_PLANE_COLOR | TL_PLANE_DEPTH | (tl_passes_need_aov(passes) ? TL_PLANE_AOV : 0u)
+               : TL_PLANE_DISPLAY;
+}
+
+/* Whether frame n is complete in every pattern (--skip-existing). */
+static int frame_complete(const tl_run_config *cfg, long n, const char *path, int width, int height,
+                          const char *passes)
+{
+    const char *space = tl_color_working_name(cfg->space);
+    if (!tl_job_frame_complete(path, width, height, passes, space))
+        return 0;
+    for (int k = 0; k < cfg->more_count; k++) {
+        char more[4096];
+        tl_error err;
+        if (tl_pattern_format(cfg->more_patterns[k], n, cfg->frames->count == 1, more, sizeof more,
+                              &err) ||
+            !tl_job_frame_complete(more, width, height, passes, space))
+            return 0;
+    }
+    return 1;
 }
 
 /* A frame of the movie: one at a time, in frame order, dithered as 8-bit
@@ -195,10 +231,15 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
     if (cfg->pattern && frames->count > 0) {
         rc = tl_pattern_format(cfg->pattern, frames->frames[0], frames->count == 1, path,
                                sizeof path, err);
-        const int exr = tl_image_format_from_path(path) == TL_IMAGE_EXR;
-        settings.planes |= exr ? TL_PLANE_COLOR | TL_PLANE_DEPTH |
-                                     (tl_passes_need_aov(cfg->passes) ? TL_PLANE_AOV : 0u)
-                               : TL_PLANE_DISPLAY;
+        int exr = tl_image_format_from_path(path) == TL_IMAGE_EXR;
+        settings.planes |= planes_for(path, cfg->passes);
+        for (int k = 0; !rc && k < cfg->more_count; k++) {
+            char more[4096];
+            rc = tl_pattern_format(cfg->more_patterns[k], frames->frames[0], frames->count == 1,
+                                   more, sizeof more, err);
+            settings.planes |= planes_for(more, cfg->passes);
+            exr |= tl_image_format_from_path(more) == TL_IMAGE_EXR;
+        }
         settings.layers = exr ? tl_passes_light_layers(cfg->passes) : 0u;
     }
     if (cfg->movie) {
@@ -236,7 +277,7 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
         if (rc)
             break;
         if (cfg->skip_existing && cfg->pattern &&
-            tl_job_frame_complete(path, width, height, passes, tl_color_working_name(cfg->space))) {
+            frame_complete(cfg, n, path, width, height, passes)) {
             /* The frames in flight are reported first: progress stays in order. */
             rc = submit_pending(&s, render, &writer, &pending, &frame, err);
             for (int k = 0; !rc && k < writer.count; k++) {

@@ -50,7 +50,12 @@ typedef struct tl_run_config {
     const char *timeline_path;   /* recorded in every frame's metadata */
     tl_render_settings settings; /* `planes` is the run's: what the outputs use */
     const tl_frame_list *frames;
-    const char *pattern;    /* frame files ('#'s: the frame number), or NULL */
+    const char *pattern; /* frame files ('#'s: the frame number), or NULL */
+    /* More frame files: each frame is written to every pattern (a PNG and
+     * an EXR, say); a frame counts as there for --skip-existing when all
+     * are. Reports name `pattern`'s file. */
+    const char *const *more_patterns;
+    int more_count;
     tl_movie *movie;        /* an open movie that takes every frame in order, or NULL */
     tl_image_options image; /* PNG bits, dither, compression (metadata: the run's) */
     unsigned passes;        /* EXR frames: the compositing passes (TL_PASSES_*; 0: none) */
