@@ -390,7 +390,13 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
                                                             GL_RGBA32F, GL_RGBA32F};
     const GLenum display_formats[3] = {GL_RGBA32F, GL_RGBA32F, GL_R32F};
     const int attachments = r->want_aov ? TL_SCENE_AOV_ATTACHMENTS : TL_SCENE_PLAIN_ATTACHMENTS;
-    int rc = tl_renderer_target_ensure(&r->scene, width, height, attachments, scene_formats, err);
+    /* A new size is checked against the device first (once a size). */
+    int rc = r->scene.width == width && r->scene.height == height &&
+                     r->display.width == out_width && r->display.height == out_height
+                 ? TL_OK
+                 : tl_renderer_check_size(width, height, out_width, out_height, r->want_aov, err);
+    if (!rc)
+        rc = tl_renderer_target_ensure(&r->scene, width, height, attachments, scene_formats, err);
     if (!rc)
         rc = tl_renderer_target_ensure(&r->display, out_width, out_height, 3, display_formats, err);
     if (rc)

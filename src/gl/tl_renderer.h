@@ -72,6 +72,14 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
  * distance nearest. */
 int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int out_height,
                       tl_error *err);
+/* Whether a frame drawn at width x height into an output of out_width x
+ * out_height (with the passes' data: aov) fits the device: each side
+ * within what the driver reports (GL_MAX_TEXTURE_SIZE, the viewport's
+ * limit) and its float framebuffers within the device's memory (NVIDIA's
+ * count, or the machine's for a CPU renderer). A usage error naming the
+ * limit otherwise: refused before any drawing, not after a long wait. */
+int tl_renderer_check_size(int width, int height, int out_width, int out_height, int aov,
+                           tl_error *err);
 /* Whether the frames begun from now on carry the compositing passes' data
  * (the normal, the foam, the covers of the sky, the water, the giant wave
  * and each floating object: tl_frame.h's aov plane), read back with
