@@ -12,6 +12,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 mkdir -p out
+echo "render: a still of the default ocean -> out/ocean.png, out/ocean.exr"
 build/tideline still -o out/ocean.png -o out/ocean.exr
+echo "render: timelines/giant_wave.tl -> out/giant_wave/ (PNG frames) and out/giant_wave.mp4"
 build/tideline render timelines/giant_wave.tl -o out/giant_wave/giant_wave_####.png \
   --movie out/giant_wave.mp4 --size 854x480 "$@"

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets tideline up on Debian 12: installs the Debian packages that are
-# missing (quietly; nothing when all are present), then configures and
-# builds into build/. Safe to run any number of times.
+# missing (saying which; apt's own output hidden), then configures and
+# builds into build/, saying what it does at each step (a first build
+# takes minutes on two cores: silent, it looked hung). Safe to run any
+# number of times.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -39,8 +41,12 @@ if ((${#missing[@]})); then
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
     apt-get install -y -qq -o DPkg::Lock::Timeout=300 --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "setup: the ${#packages[@]} Debian packages tideline uses are installed"
 fi
 
 source scripts/lib/build.sh
+echo "setup: building tideline in build/ (minutes the first time on two cores; the log: build/build.log)"
 tl_build build
 test -x build/tideline
+echo "setup: built build/tideline"
