@@ -116,7 +116,16 @@ static void expect_model_error(const char *model, const char *why)
         CHECK_STR_CONTAINS(tl_run_output, "boat.tl:5:16: error: boat model ");
         CHECK_STR_CONTAINS(tl_run_output, model);
         CHECK_STR_CONTAINS(tl_run_output, why);
-        CHECK(strchr(tl_run_output, '\n') == tl_run_output + strlen(tl_run_output) - 1);
+        /* Then the timeline's line, and a caret under the model's path. */
+        char shown[1400];
+        snprintf(shown, sizeof shown, "\n     5 | set boat.model %s\n       |                ^",
+                 model);
+        CHECK_STR_CONTAINS(tl_run_output, shown);
+        CHECK(strstr(tl_run_output, "^~") != NULL);
+        int lines = 0;
+        for (const char *c = tl_run_output; *c; c++)
+            lines += *c == '\n';
+        CHECK(lines == 3);               /* the error, the line, the caret */
         CHECK(tl_dir_entries(dir) == 1); /* the timeline only: no image */
     }
     CHECK(run("check", tl, NULL) == 1);

@@ -23,9 +23,7 @@ int tl_cli_passes(const char *flag, const char *value, unsigned *passes, tl_erro
 
 void tl_cli_print_error(const char *command, const tl_error *err)
 {
-    if (err->file[0] && err->line > 0)
-        fprintf(stderr, "%s:%d:%d: error: %s\n", err->file, err->line, err->column, err->message);
-    else
+    if (!tl_error_write_located(stderr, err))
         fprintf(stderr, "tideline %s: %s\n", command, err->message);
 }
 

@@ -66,3 +66,42 @@ void tl_error_prefix(tl_error *err, const char *fmt, ...)
     memcpy(err->message, prefix, plen);
     err->message[plen + mlen] = '\0';
 }
+
+int tl_error_write_located(FILE *out, const tl_error *err)
+{
+    if (!err || !err->file[0] || err->line <= 0)
+        return 0;
+    fprintf(out, "%s:%d:%d: error: %s\n", err->file, err->line, err->column, err->message);
+    FILE *f = err->column > 0 ? fopen(err->file, "rb") : NULL;
+    if (!f)
+        return 1;
+    char text[4097];
+    int line = 0, found = 0;
+    while (!found && fgets(text, sizeof text, f)) {
+        size_t n = strlen(text);
+        int whole = n > 0 && text[n - 1] == '\n';
+        if (++line == err->line)
+            found = 1;
+        while (!whole && !found && fgets(text, sizeof text, f)) { /* the rest of a long line */
+            n = strlen(text);
+            whole = n > 0 && text[n - 1] == '\n';
+        }
+    }
+    fclose(f);
+    if (!found)
+        return 1;
+    text[strcspn(text, "\r\n")] = '\0';
+    size_t len = strlen(text), col = (size_t)err->column - 1;
+    if (col > len)
+        return 1;
+    /* The source line as printed, tabs kept so that the caret lines up. */
+    fprintf(out, "%6d | %s\n       | ", err->line, text);
+    for (size_t i = 0; i < col; i++)
+        fputc(text[i] == '\t' ? '\t' : ' ', out);
+    size_t word = strcspn(text + col, " \t");
+    fputc('^', out);
+    for (size_t i = 1; i < word; i++)
+        fputc('~', out);
+    fputc('\n', out);
+    return 1;
+}

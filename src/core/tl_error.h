@@ -7,6 +7,7 @@
 #define TL_ERROR_H
 
 #include <stdarg.h>
+#include <stdio.h>
 
 #define TL_ERROR_MSG_MAX  1024
 #define TL_ERROR_PATH_MAX 512
@@ -36,6 +37,12 @@ int tl_error_setv(tl_error *err, tl_status status, const char *fmt, va_list ap);
 /* Like tl_error_set, and records a source location. */
 int tl_error_set_at(tl_error *err, tl_status status, const char *file, int line, int column,
                     const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+
+/* Writes an error with a source location as the timeline's diagnostics
+ * look: `FILE:LINE:COLUMN: error: MESSAGE`, then the line and a caret
+ * under the word at the column (the line read again from the file; left
+ * out when it cannot be). Nothing when err has no location (returns 0). */
+int tl_error_write_located(FILE *out, const tl_error *err);
 
 /* Prepends "context: " to an existing message (e.g. a file name). */
 void tl_error_prefix(tl_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

@@ -88,9 +88,7 @@ void tl_cutscene_report(FILE *stream, const char *program, const tl_diags *diags
     }
     if (!err || err->status == TL_OK)
         return;
-    if (err->file[0] && err->line > 0)
-        fprintf(stream, "%s:%d:%d: error: %s\n", err->file, err->line, err->column, err->message);
-    else
+    if (!tl_error_write_located(stream, err))
         fprintf(stream, "%s: %s\n", program, err->message);
 }
 
