@@ -176,7 +176,7 @@ static void test_six_frames(void)
 
 /* Every -o is written: a PNG and an EXR (with its passes) of each frame.
  * --skip-existing renders a frame again when any of its files is missing,
- * and the same pattern twice is a usage error. */
+ * and two patterns naming the same files are a usage error. */
 static void test_several_outputs(void)
 {
     char out[256], png[600], exr[600], f[600];
@@ -203,7 +203,7 @@ static void test_several_outputs(void)
     CHECK_STR_CONTAINS(tl_run_output, "1 frame written, 2 skipped");
     CHECK(exists(f));
     CHECK(tl_run(NULL, "render", six_path, "-o", png, "-o", png, NULL) == 2);
-    CHECK_STR_CONTAINS(tl_run_output, "is given twice");
+    CHECK_STR_CONTAINS(tl_run_output, "name the same file");
     rm_rf(out);
 }
 

@@ -989,6 +989,11 @@ static void test_blender_camera(void)
         CHECK_NEAR(s.camera.vfov, 2.0 * atan(10.0 / 50.0), 1e-12);
         tl_timeline_free(&tl);
     }
+    /* Control bytes in comments (a terminal's colour codes pasted in) do
+     * not make a timeline binary. */
+    if (parse_ok("tideline 1\n# \x1b[1mbold\x1b[0m \x1b[2m\x1b[3m\x1b[4m\nset camera.fov 50\n",
+                 &tl))
+        tl_timeline_free(&tl);
     /* `baked` is kept for check, and changes nothing else. */
     if (parse_ok("tideline 1\nkey camera.fov linear baked\n  0f 50deg\n  1f 51deg\n", &tl)) {
         const tl_track *tr = &tl.tracks[tl_channel_index(tl_channel_find("camera.fov"))];

@@ -6,6 +6,7 @@
  * frame in flight, and the exit status is 0 only when every requested frame
  * exists. */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -90,6 +91,26 @@ static const char usage[] =
 /* The most -o patterns a run writes (a PNG and an EXR of each frame, ...). */
 #define MAX_PATTERNS 4
 
+/* Whether two paths name one file: the same name in the same folder (the
+ * folders exist by now: tl_cli_make_parent_dirs). */
+static int same_file(const char *a, const char *b)
+{
+    char dir[2][4096], real[2][PATH_MAX];
+    const char *base[2];
+    const char *path[2] = {a, b};
+    for (int k = 0; k < 2; k++) {
+        const char *slash = strrchr(path[k], '/');
+        snprintf(dir[k], sizeof dir[k], "%.*s", slash ? (int)(slash - path[k]) : 1,
+                 slash ? path[k] : ".");
+        if (slash == path[k])
+            snprintf(dir[k], sizeof dir[k], "/");
+        base[k] = slash ? slash + 1 : path[k];
+        if (!realpath(dir[k], real[k]))
+            return strcmp(a, b) == 0;
+    }
+    return strcmp(real[0], real[1]) == 0 && strcmp(base[0], base[1]) == 0;
+}
+
 typedef struct render_options {
     const char *timeline;
     const char *pattern;                /* the first -o */
@@ -147,13 +168,11 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
         } else if (tl_args_match(&a, "--skip-existing", NULL, false, err)) {
             o->skip_existing = 1;
         } else if (tl_args_match(&a, "--output", "-o", true, err)) {
-            if (!a.value)
-                continue;
-            if (!o->pattern)
+            if (a.value && !o->pattern)
                 o->pattern = a.value;
-            else if (o->more_count < MAX_PATTERNS - 1)
+            else if (a.value && o->more_count < MAX_PATTERNS - 1)
                 o->more[o->more_count++] = a.value;
-            else
+            else if (a.value)
                 return tl_error_set(err, TL_ERR_USAGE, "-o: at most %d patterns", MAX_PATTERNS);
         } else if (tl_args_match(&a, "--frames", NULL, true, err)) {
             o->frames = a.value;
@@ -360,9 +379,23 @@ int tl_cli_render(int argc, char **argv)
                 rc = TL_ERR_USAGE;
             any_exr |= tl_image_format_from_path(p) == TL_IMAGE_EXR;
             any_png |= tl_image_format_from_path(p) == TL_IMAGE_PNG;
-            for (int j = 0; !rc && j < k; j++)
-                if (strcmp(patterns[j], pat) == 0)
-                    rc = tl_error_set(&err, TL_ERR_USAGE, "-o %s is given twice", pat);
+            /* The same files by another name: f.png and ./f.png, or
+             * f_##.png and f_###.png from frame 100 on. */
+            for (int j = 0; !rc && j < k; j++) {
+                const long ends[2] = {frames.frames[0], frames.frames[frames.count - 1]};
+                for (int e = 0; !rc && e < 2; e++) {
+                    char mine[4096], theirs[4096];
+                    tl_error ignored;
+                    if (!tl_pattern_format(pat, ends[e], frames.count == 1, mine, sizeof mine,
+                                           &ignored) &&
+                        !tl_pattern_format(patterns[j], ends[e], frames.count == 1, theirs,
+                                           sizeof theirs, &ignored) &&
+                        same_file(mine, theirs))
+                        rc = tl_error_set(&err, TL_ERR_USAGE,
+                                          "-o %s and -o %s name the same file %s", patterns[j], pat,
+                                          mine);
+                }
+            }
         }
         if (k == 0)
             memcpy(path, p, sizeof path);

@@ -94,7 +94,11 @@ int tl_error_write_located(FILE *out, const tl_error *err)
     size_t len = strlen(text), col = (size_t)err->column - 1;
     if (col > len)
         return 1;
-    /* The source line as printed, tabs kept so that the caret lines up. */
+    /* The source line as printed, tabs kept so that the caret lines up,
+     * bytes a terminal would act on shown as '?' (as tl_diags_write). */
+    for (size_t i = 0; i < len; i++)
+        if (((unsigned char)text[i] < 0x20 && text[i] != '\t') || (unsigned char)text[i] >= 0x7f)
+            text[i] = '?';
     fprintf(out, "%6d | %s\n       | ", err->line, text);
     for (size_t i = 0; i < col; i++)
         fputc(text[i] == '\t' ? '\t' : ' ', out);

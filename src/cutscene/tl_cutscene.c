@@ -84,7 +84,9 @@ void tl_cutscene_report(FILE *stream, const char *program, const tl_diags *diags
 {
     if (diags && diags->count) {
         tl_diags_write(diags, stream);
-        return;
+        /* Warnings alone: the failure came after the parse (a boat model). */
+        if (diags->errors > 0)
+            return;
     }
     if (!err || err->status == TL_OK)
         return;

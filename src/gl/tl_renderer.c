@@ -392,7 +392,8 @@ int tl_renderer_begin(tl_renderer *r, int width, int height, int out_width, int 
     const int attachments = r->want_aov ? TL_SCENE_AOV_ATTACHMENTS : TL_SCENE_PLAIN_ATTACHMENTS;
     /* A new size is checked against the device first (once a size). */
     int rc = r->scene.width == width && r->scene.height == height &&
-                     r->display.width == out_width && r->display.height == out_height
+                     r->scene.attachments == attachments && r->display.width == out_width &&
+                     r->display.height == out_height
                  ? TL_OK
                  : tl_renderer_check_size(width, height, out_width, out_height, r->want_aov, err);
     if (!rc)

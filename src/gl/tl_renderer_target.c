@@ -24,7 +24,6 @@ static double device_memory(void)
     if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
         GLint kib = 0;
         glGetIntegerv(0x9048 /* GL_GPU_MEMORY_INFO_TOTAL_AVAILABLE_MEMORY_NVX */, &kib);
-        glGetError();
         if (kib > 0)
             return (double)kib * 1024.0;
     }
@@ -39,8 +38,9 @@ int tl_renderer_check_size(int width, int height, int out_width, int out_height,
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &most);
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
     int side = most;
-    if (viewport[0] > 0 && viewport[0] < side)
-        side = viewport[0];
+    for (int k = 0; k < 2; k++)
+        if (viewport[k] > 0 && viewport[k] < side)
+            side = viewport[k];
     int big = width > out_width ? width : out_width,
         tall = height > out_height ? height : out_height;
     if (side > 0 && (big > side || tall > side))
@@ -56,8 +56,9 @@ int tl_renderer_check_size(int width, int height, int out_width, int out_height,
         GLint got = 0;
         glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA32F, sizes[k][0], sizes[k][1], 0, GL_RGBA,
                      GL_FLOAT, NULL);
+        /* Within GL_MAX_TEXTURE_SIZE (checked above) a proxy that does not
+         * fit raises no GL error: none is left pending. */
         glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &got);
-        glGetError();
         if (got == 0)
             return tl_error_set(err, TL_ERR_USAGE,
                                 "a %dx%d frame is larger than the GPU holds: the driver cannot "

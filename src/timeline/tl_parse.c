@@ -684,8 +684,12 @@ static void dir_header(parser *p, token *tok, int n)
             ERR_AT(&tok[1], "duration %s is outside (0, 1e7 s]", tok[1].s);
             return;
         }
+        if (p->saw_duration) { /* keys before it were checked against the first */
+            ERR_AT(&tok[0], "'duration' is given twice (first on line %d)", p->saw_duration);
+            return;
+        }
         tl->duration = dur;
-        p->saw_duration = 1;
+        p->saw_duration = p->line_no;
     } else if (strcmp(d, "size") == 0) {
         if (expect_args(p, tok, n, 1, 1, "WIDTHxHEIGHT"))
             return;
@@ -874,7 +878,9 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
     size_t pos = 0;
     /* Windows editors start UTF-8 files with a byte-order mark: skip it, so
      * that columns on line 1 count from the first visible character. */
+    size_t bom = 0; /* bytes skipped: offsets in messages count the file's */
     if (length >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) {
+        bom = 3;
         text += 3;
         length -= 3;
         p.source = text;
@@ -891,14 +897,21 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
     }
     /* A file that is not text (a program, an image, a .blend) is told so
      * once, where its binary data begins, instead of an error a line.
-     * Binary: control bytes that no text editor writes (NUL, and the C0
-     * codes but tab, line and form feeds and carriage return), four or more
-     * in its first 4 KiB; fewer are stray bytes, each an error at its line. */
+     * Binary: control bytes that no text editor writes (NUL, DEL and the C0
+     * codes but tab, line feed, vertical tab, form feed and carriage
+     * return), outside comments (which may hold anything), four or more in
+     * its first 4 KiB; fewer are stray bytes, each an error at its line. */
     size_t first_binary = length, binary = 0;
+    int comment = 0;
     for (size_t i = 0; i < length && i < 4096 && !p.stopped; i++) {
         unsigned char c = (unsigned char)text[i];
-        if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') ||
-            c == 0x7f) {
+        if (c == '\n')
+            comment = 0;
+        else if (c == '#')
+            comment = 1;
+        if (!comment &&
+            ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') ||
+             c == 0x7f)) {
             if (first_binary == length)
                 first_binary = i;
             binary++;
@@ -913,7 +926,7 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
                 line_start = i + 1;
             }
         tl_parse_diag(&p, (int)(first_binary - line_start) + 1, 1, NULL,
-                      "not a timeline (binary data at byte %zu)", first_binary);
+                      "not a timeline (binary data at byte %zu)", first_binary + bom);
         p.stopped = 1;
     }
     while (pos < length && !p.stopped) {

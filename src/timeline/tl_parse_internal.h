@@ -54,7 +54,7 @@ typedef struct parser {
     size_t key_count, key_cap;
     int block_failed;
     int first_key_line;              /* the first `key` block: fps must come before it */
-    int saw_duration;                /* a `duration` line came: keys past it warn at once */
+    int saw_duration;                /* the `duration` line (0: none yet): keys past it warn */
     tl_ease_params block_ease;       /* back, amplitude, period (frames) from the `key` line */
     char buf[TL_PARSE_MAX_LINE + 1]; /* the current line, split into tokens */
 } parser;
