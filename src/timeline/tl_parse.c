@@ -24,20 +24,6 @@ static const char *const key_words[] = {
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
     "ease-out-sine", "ease-in-out-sine", "back",    "amplitude", "period", NULL};
 
-/* `list` (NULL-terminated) and every easing's name, into `out` (room for
- * both), for "did you mean". */
-static const char *const *with_ease_names(const char *const *list, const char **out)
-{
-    int n = 0;
-    for (; list[n]; n++)
-        out[n] = list[n];
-    for (int f = 0; f < TL_EASE_FAMILY_COUNT; f++)
-        for (int d = 0; d < TL_EASE_DIR_COUNT; d++)
-            out[n++] = tl_ease_name((tl_ease_family)f, (tl_ease_dir)d);
-    out[n] = NULL;
-    return out;
-}
-
 static int parse_time(parser *p, const token *t, double *out)
 {
     return tl_parse_quantity(p, t, TL_UNIT_TIME, out);
@@ -125,59 +111,18 @@ static int count_key(parser *p, const token *t)
 }
 
 /* `TIME [cut] V... [interp] [handle type] [left DT V...] [right DT V...]` */
-/* A unit word standing alone after a number from tok[first] on (`0.004 m`):
- * reported at the space, with the number and unit written together. */
-static int unit_after_space(parser *p, const token *tok, int n, int first)
-{
-    static const char *const units[] = {"m", "s", "ms", "f", "deg", "rad", NULL};
-    for (int i = first + 1; i < n; i++)
-        for (int u = 0; units[u]; u++) {
-            const token *num = &tok[i - 1];
-            char last = num->len > 0 ? num->s[num->len - 1] : '\0';
-            if (strcmp(tok[i].s, units[u]) != 0 || !(isdigit((unsigned char)last) || last == '.'))
-                continue;
-            int gap = num->col + num->len;
-            tl_parse_diag(p, gap, tok[i].col - gap, NULL,
-                          "a unit goes right after its number, without a space: '%.*s%s'", num->len,
-                          num->s, tok[i].s);
-            return 1;
-        }
-    return 0;
-}
-
-/* The first key of a block past the timeline's end, at its own line and
- * column (a warning): a bare number that fits as frames was likely meant
- * as frames, and the warning says what it would be. The end-of-file check
- * (tl_parse_check_times) leaves the channel alone then. */
-static void warn_past_end(parser *p, const token *time, double t)
-{
-    const tl_timeline *tl = p->tl;
-    char hint[160] = "";
-    int bare = 1;
-    for (int k = 0; k < time->len; k++)
-        bare &= isdigit((unsigned char)time->s[k]) != 0;
-    if (bare && t / tl->fps <= tl->duration)
-        snprintf(hint, sizeof hint, "; %s is read as seconds: %sf is frame %s = %.6g s", time->s,
-                 time->s, time->s, t / tl->fps);
-    p->warning = 1;
-    tl_parse_diag(p, time->col, time->len, NULL,
-                  "key at %.6g s lies past the end of the timeline (%.6g s)%s", t, tl->duration,
-                  hint);
-    p->warning = 0;
-    p->block_track->past_end = true;
-}
-
 static void key_line(parser *p, token *tok, int n)
 {
     const tl_channel *ch = p->block_ch;
     int i = 0;
     double t;
-    if (unit_after_space(p, tok, n, 0) || count_key(p, &tok[0]) || parse_time(p, &tok[i++], &t)) {
+    if (tl_parse_unit_after_space(p, tok, n, 0) || count_key(p, &tok[0]) ||
+        parse_time(p, &tok[i++], &t)) {
         p->block_failed = 1;
         return;
     }
     if (p->saw_duration && t > p->tl->duration * (1.0 + 1e-12) && !p->block_track->past_end)
-        warn_past_end(p, &tok[0], t);
+        tl_parse_warn_past_end(p, &tok[0], t);
     int cut = 0;
     if (i < n && strcmp(tok[i].s, "cut") == 0) {
         cut = 1;
@@ -234,7 +179,7 @@ static void key_line(parser *p, token *tok, int n)
         } else {
             const char *words[sizeof key_words / sizeof key_words[0] + TL_EASE_NAME_COUNT];
             tl_parse_diag(p, tok[i].col, tok[i].len,
-                          tl_suggest(tok[i].s, with_ease_names(key_words, words)),
+                          tl_suggest(tok[i].s, tl_parse_with_ease_names(key_words, words)),
                           "unknown key option '%s'", tok[i].s);
             p->block_failed = 1;
             return;
@@ -434,7 +379,7 @@ static void dir_set(parser *p, token *tok, int n)
     const tl_channel *ch = lookup_channel(p, &tok[1], &object);
     if (!ch)
         return;
-    if (unit_after_space(p, tok, n, 2))
+    if (tl_parse_unit_after_space(p, tok, n, 2))
         return;
     if (n - 2 != ch->components) {
         tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
@@ -550,7 +495,7 @@ static void dir_key(parser *p, token *tok, int n)
                                                "period",      "baked",  "ease",   NULL};
             const char *words[sizeof opts / sizeof opts[0] + TL_EASE_NAME_COUNT];
             tl_parse_diag(p, tok[i].col, tok[i].len,
-                          tl_suggest(tok[i].s, with_ease_names(opts, words)),
+                          tl_suggest(tok[i].s, tl_parse_with_ease_names(opts, words)),
                           "unknown option '%s' for 'key'", tok[i].s);
             return;
         }
@@ -785,46 +730,6 @@ static void directive(parser *p, token *tok, int n)
 
 /* ---- lines ---- */
 
-/* Splits `buf` (a copy of the line) into tokens; returns the count, or -1
- * after reporting a bad byte or too many tokens. */
-static int tokenize(parser *p, char *buf, size_t len, token *tok)
-{
-    int n = 0;
-    size_t i = 0;
-    while (i < len) {
-        unsigned char c = (unsigned char)buf[i];
-        if (c == '#')
-            break;
-        if (c == ' ' || c == '\t' || c == '\r') {
-            buf[i++] = '\0';
-            continue;
-        }
-        if (c < 0x20 || c >= 0x7f) {
-            tl_parse_diag(p, (int)i + 1, 1, NULL,
-                          "unexpected byte 0x%02x (outside comments a timeline is plain ASCII)", c);
-            return -1;
-        }
-        if (n == MAX_TOKENS) {
-            tl_parse_diag(p, (int)i + 1, 1, NULL, "more than %d words on one line", MAX_TOKENS);
-            return -1;
-        }
-        tok[n].s = buf + i;
-        tok[n].col = (int)i + 1;
-        while (i < len && buf[i] != ' ' && buf[i] != '\t' && buf[i] != '\r' && buf[i] != '#' &&
-               (unsigned char)buf[i] >= 0x20 && (unsigned char)buf[i] < 0x7f)
-            i++;
-        tok[n].len = (int)(buf + i - tok[n].s);
-        n++;
-        if (i < len && buf[i] == '#') {
-            buf[i] = '\0';
-            break;
-        }
-    }
-    if (i <= len)
-        buf[i < len ? i : len] = '\0';
-    return n;
-}
-
 static void parse_line(parser *p, const char *text, size_t len)
 {
     char *buf = p->buf;
@@ -840,7 +745,7 @@ static void parse_line(parser *p, const char *text, size_t len)
     }
     memcpy(buf, text, len);
     buf[len] = '\0';
-    int n = tokenize(p, buf, len, tok);
+    int n = tl_parse_tokenize(p, buf, len, tok);
     if (n <= 0)
         return;
     int indented = text[0] == ' ' || text[0] == '\t';
@@ -896,39 +801,9 @@ int tl_timeline_parse_text(const char *name, const char *text, size_t length, tl
         p.stopped = 1;
     }
     /* A file that is not text (a program, an image, a .blend) is told so
-     * once, where its binary data begins, instead of an error a line.
-     * Binary: control bytes that no text editor writes (NUL, DEL and the C0
-     * codes but tab, line feed, vertical tab, form feed and carriage
-     * return), outside comments (which may hold anything), four or more in
-     * its first 4 KiB; fewer are stray bytes, each an error at its line. */
-    size_t first_binary = length, binary = 0;
-    int comment = 0;
-    for (size_t i = 0; i < length && i < 4096 && !p.stopped; i++) {
-        unsigned char c = (unsigned char)text[i];
-        if (c == '\n')
-            comment = 0;
-        else if (c == '#')
-            comment = 1;
-        if (!comment &&
-            ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') ||
-             c == 0x7f)) {
-            if (first_binary == length)
-                first_binary = i;
-            binary++;
-        }
-    }
-    if (binary >= 4) {
-        size_t line_start = 0;
-        p.line_no = 1;
-        for (size_t i = 0; i < first_binary; i++)
-            if (text[i] == '\n') {
-                p.line_no++;
-                line_start = i + 1;
-            }
-        tl_parse_diag(&p, (int)(first_binary - line_start) + 1, 1, NULL,
-                      "not a timeline (binary data at byte %zu)", first_binary + bom);
-        p.stopped = 1;
-    }
+     * once, where its binary data begins, instead of an error a line. */
+    if (!p.stopped)
+        tl_parse_check_binary(&p, text, length, bom);
     while (pos < length && !p.stopped) {
         const char *eol = memchr(text + pos, '\n', length - pos);
         size_t len = eol ? (size_t)(eol - (text + pos)) : length - pos;

@@ -3,6 +3,7 @@
  * tl_parse.c to keep it readable. */
 #include "tl_parse_internal.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -138,4 +139,26 @@ void tl_parse_check_times(parser *p)
         tl_parse_diag_at_line(p, paths[i]->line, NULL, "%s", msg);
     }
     p->warning = 0;
+}
+
+/* The first key of a block past the timeline's end, at its own line and
+ * column (a warning): a bare number that fits as frames was likely meant
+ * as frames, and the warning says what it would be. The end-of-file check
+ * (tl_parse_check_times) leaves the channel alone then. */
+void tl_parse_warn_past_end(parser *p, const token *time, double t)
+{
+    const tl_timeline *tl = p->tl;
+    char hint[160] = "";
+    int bare = 1;
+    for (int k = 0; k < time->len; k++)
+        bare &= isdigit((unsigned char)time->s[k]) != 0;
+    if (bare && t / tl->fps <= tl->duration)
+        snprintf(hint, sizeof hint, "; %s is read as seconds: %sf is frame %s = %.6g s", time->s,
+                 time->s, time->s, t / tl->fps);
+    p->warning = 1;
+    tl_parse_diag(p, time->col, time->len, NULL,
+                  "key at %.6g s lies past the end of the timeline (%.6g s)%s", t, tl->duration,
+                  hint);
+    p->warning = 0;
+    p->block_track->past_end = true;
 }

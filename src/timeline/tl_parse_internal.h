@@ -64,6 +64,34 @@ void tl_parse_diag(parser *p, int col, int len, const char *hint, const char *fm
     __attribute__((format(printf, 5, 6)));
 #define ERR_AT(tok, ...) tl_parse_diag(p, (tok)->col, (tok)->len, NULL, __VA_ARGS__)
 
+/* ---- tl_parse_lex.c ---- */
+
+/* A file that is not text: four or more control bytes no text editor
+ * writes (NUL, DEL and the C0 codes but tab, line feed, vertical tab, form
+ * feed and carriage return), outside comments (which may hold anything),
+ * in its first 4 KiB, reported once where they begin ("not a timeline
+ * (binary data at byte N)"; `bom`: bytes skipped before `text`) and the
+ * parse stopped. Fewer are stray bytes, each an error at its line. */
+void tl_parse_check_binary(parser *p, const char *text, size_t length, size_t bom);
+/* Splits `buf` (a copy of the line) into tokens; returns the count, or -1
+ * after reporting a bad byte or too many tokens. */
+int tl_parse_tokenize(parser *p, char *buf, size_t len, token *tok);
+/* A unit word standing alone after a number from tok[first] on (`0.004 m`),
+ * reported at the space; 1 when found. */
+int tl_parse_unit_after_space(parser *p, const token *tok, int n, int first);
+
+/* ---- tl_parse_checks.c (the key past the end, at its line) ---- */
+
+/* The first key of a block past the timeline's end, warned about at its
+ * own line and column (with what a bare number would be as frames). */
+void tl_parse_warn_past_end(parser *p, const token *time, double t);
+
+/* ---- tl_parse_keys.c (suggestions) ---- */
+
+/* `list` (NULL-terminated) and every easing's name, into `out` (room for
+ * both and the NULL), for "did you mean". */
+const char *const *tl_parse_with_ease_names(const char *const *list, const char **out);
+
 /* ---- tl_parse_diag.c ---- */
 
 /* A diagnostic about an earlier line (a key found bad when its block

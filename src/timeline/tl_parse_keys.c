@@ -166,3 +166,17 @@ int tl_parse_curve_option(parser *p, token *tok, int n, int *i, tl_curve *shape)
     }
     return 1;
 }
+
+/* `list` (NULL-terminated) and every easing's name, into `out` (room for
+ * both), for "did you mean". */
+const char *const *tl_parse_with_ease_names(const char *const *list, const char **out)
+{
+    int n = 0;
+    for (; list[n]; n++)
+        out[n] = list[n];
+    for (int f = 0; f < TL_EASE_FAMILY_COUNT; f++)
+        for (int d = 0; d < TL_EASE_DIR_COUNT; d++)
+            out[n++] = tl_ease_name((tl_ease_family)f, (tl_ease_dir)d);
+    out[n] = NULL;
+    return out;
+}
