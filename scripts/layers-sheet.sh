@@ -11,6 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/build.sh
+source scripts/lib/sheet.sh
 tl_build build -- tideline >/dev/null
 out=${1:-docs/images/light-layers.png}
 time=${2:-10.4}
@@ -38,14 +39,5 @@ for layer in sky reflection body glitter foam spray boat glare; do
     --chnames R,G,B "${tone[@]}" -o "$work/light_$layer.png"
   names+=(light_$layer)
 done
-inputs=()
-for n in "${names[@]}"; do
-  ffmpeg -loglevel error -y -i "$work/$n.png" -vf \
-    "drawtext=text='$n':x=8:y=8:fontsize=22:fontcolor=white:box=1:boxcolor=black@0.6" \
-    "$work/label_$n.png" 2>/dev/null || cp "$work/$n.png" "$work/label_$n.png"
-  inputs+=(-i "$work/label_$n.png")
-done
-ffmpeg -loglevel error -y "${inputs[@]}" -filter_complex \
-  "[0][1][2]hstack=inputs=3[a];[3][4][5]hstack=inputs=3[b];[6][7][8]hstack=inputs=3[c];[a][b][c]vstack=inputs=3" \
-  "$out"
+tl_grid "$out" 3 "$work" "${names[@]}"
 echo "layers-sheet: wrote $out" >&2

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The compositing passes' contact sheet: the hero frame of giant_wave.tl
 # (the boat on the wave's face, 10.4 s) rendered at 1280x720 with every
-# pass, each layer a tile at half size, four across (docs/compositing.md
+# pass it tiles (the light layers: scripts/layers-sheet.sh), each layer a tile at half size, four across (docs/compositing.md
 # shows it). Needs oiiotool (openimageio-tools) and ffmpeg; the
 # Cryptomatte's tile is Blender's own view of it (its Cryptomatte node's
 # Pick output), so it needs blender too.
@@ -10,6 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/build.sh
+source scripts/lib/sheet.sh
 tl_build build -- tideline >/dev/null
 out=${1:-docs/images/passes-sheet.png}
 time=${2:-10.4}
@@ -20,9 +21,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 w=1280
 h=720
-echo "passes-sheet: rendering giant_wave.tl at ${time} s, ${w}x$h, every pass" >&2
+echo "passes-sheet: rendering giant_wave.tl at ${time} s, ${w}x$h, the passes it tiles" >&2
 build/tideline still timelines/giant_wave.tl --time "$time" --size ${w}x$h --spp 4 \
-  --passes all -o "$work/frame.exr" -o "$work/display.png"
+  --passes normal,position,depth,masks,cryptomatte -o "$work/frame.exr" -o "$work/display.png"
 f="$work/frame.exr"
 L=ViewLayer
 half=(--resize $((w / 2))x$((h / 2)))
@@ -54,15 +55,5 @@ oiiotool "$work/pick.png" "${half[@]}" -o "$work/cryptomatte.png"
 tile rank1 $(gray $L.CryptoObject00.a) --mulc 2 --clamp:max=1
 names=(combined normal position depth mask_water mask_foam mask_giant mask_boat mask_sky
   mask_underwater cryptomatte rank1)
-inputs=()
-for n in "${names[@]}"; do
-  # The layer's name on the tile.
-  ffmpeg -loglevel error -y -i "$work/$n.png" -vf \
-    "drawtext=text='$n':x=8:y=8:fontsize=22:fontcolor=white:box=1:boxcolor=black@0.6" \
-    "$work/label_$n.png" 2>/dev/null || cp "$work/$n.png" "$work/label_$n.png"
-  inputs+=(-i "$work/label_$n.png")
-done
-ffmpeg -loglevel error -y "${inputs[@]}" -filter_complex \
-  "[0][1][2][3]hstack=inputs=4[a];[4][5][6][7]hstack=inputs=4[b];[8][9][10][11]hstack=inputs=4[c];[a][b][c]vstack=inputs=3" \
-  "$out"
+tl_grid "$out" 4 "$work" "${names[@]}"
 echo "passes-sheet: wrote $out" >&2

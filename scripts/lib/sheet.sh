@@ -36,3 +36,27 @@ tl_sheet() {
   ((rc == 0)) && echo "$label: $out"
   return $rc
 }
+
+# tl_grid OUT COLUMNS DIR NAME...: tiles DIR/NAME.png, each labelled with
+# its NAME at the top left, COLUMNS across in the order given, into the PNG
+# OUT (the count a multiple of COLUMNS). For the sheets whose tiles are
+# layers of one frame (scripts/passes-sheet.sh, scripts/layers-sheet.sh).
+tl_grid() {
+  local out=$1 columns=$2 dir=$3
+  shift 3
+  local names=("$@") inputs=() filter="" rows="" i n
+  for n in "${names[@]}"; do
+    ffmpeg -loglevel error -y -i "$dir/$n.png" -vf \
+      "drawtext=text='$n':x=8:y=8:fontsize=22:fontcolor=white:box=1:boxcolor=black@0.6" \
+      "$dir/label_$n.png" 2>/dev/null || cp "$dir/$n.png" "$dir/label_$n.png"
+    inputs+=(-i "$dir/label_$n.png")
+  done
+  for ((i = 0; i < ${#names[@]}; i += columns)); do
+    local row=""
+    for ((n = i; n < i + columns; n++)); do row+="[$n]"; done
+    filter+="${row}hstack=inputs=$columns[r$i];"
+    rows+="[r$i]"
+  done
+  filter+="${rows}vstack=inputs=$((${#names[@]} / columns))"
+  ffmpeg -loglevel error -y "${inputs[@]}" -filter_complex "$filter" "$out"
+}
