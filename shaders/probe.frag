@@ -36,7 +36,8 @@
 //           streak y                                     (tl_mesh_wetness)
 //   mode 16: the Kelvin wake's slope at x metres behind the boat, y across,
 //           speed z m/s, footprint w m, the frame's hull length
-//           (tl_kelvin_slope)
+//           (tl_kelvin_slope); z: how white its crests are there
+//           (tl_kelvin_whitecap)
 //   mode 17: the normal a normal map's texel (x y z) gives the normal
 //           normalize(0.3, 0.9, -0.2) with the tangent (1, 0, 0.4), its
 //           tilt scaled by |w|, the bitangent's side the sign of w
@@ -123,9 +124,12 @@ void main()
     }
 #endif
 #ifdef TL_FEATURE_WAKE
-    else if (u_probe_mode == 16)
+    else if (u_probe_mode == 16) {
         result.xy = wake_kelvin_slope(input4.x, input4.y, input4.z, u_objects[0].wake_params.w,
                                       input4.w);
+        result.z =
+            wake_kelvin_whitecap(input4.x, input4.y, input4.z, u_objects[0].wake_params.w);
+    }
 #endif
     else if (u_probe_mode == 13) {
         vec3 v = vec3(sin(input4.x), cos(input4.x), 0.0);

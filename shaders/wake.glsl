@@ -1,8 +1,9 @@
 // The floating objects' wakes (TL_FEATURE_WAKE): foam along where each
 // was, from its past positions (u_objects[o].wake, filled on the CPU from
 // its path, so every frame renders alone): a turbulent band behind the
-// hull that widens slowly, and the two arms of the Kelvin wedge
-// (half-angle 19.47 deg), both fading with age. The wake's data is the
+// hull that widens slowly and fades with age, the Kelvin wedge's waves
+// (half-angle 19.47 deg) and the whitecaps on their crests along its
+// arms near the boat. The wake's data is the
 // objects' uniform block's (objects.glsl, src/prepare/tl_prepare.h).
 
 // The Kelvin wake's waves (src/waves/tl_kelvin.c, tl_kelvin_slope, holds
@@ -25,7 +26,8 @@ vec2 wake_kelvin_slope(float behind, float across, float speed, float length,
     float distance = sqrt(behind * behind + across * across);
     float wavelength = 2.0 * TL_PI / k0;
     float height = TL_KELVIN_HEIGHT * length * f * f * sqrt(wavelength / (wavelength + distance));
-    height *= (1.0 + 0.8 * (1.0 - smoothstep(0.0, 0.3, c))) * smoothstep(0.0, 0.04, c);
+    height *= (1.0 + TL_KELVIN_CUSP_GAIN * (1.0 - smoothstep(0.0, 0.3, c))) *
+              smoothstep(0.0, 0.04, c);
     height *= smoothstep(0.0, length, behind);
     float root = sqrt(c);
     vec2 slope = vec2(0.0);
@@ -45,6 +47,32 @@ vec2 wake_kelvin_slope(float behind, float across, float speed, float length,
     return slope;
 }
 
+// Where the Kelvin waves break (tl_kelvin_whitecap): in [0, 1], on the
+// crests along the cusp line, where the two systems meet and the waves
+// are steepest, over the first few hull lengths of a boat fast enough
+// (the Froude factor squared, as the height). The crests come where the
+// height, cos(phase), is near its top: short white bars in echelon along
+// each arm, as a boat's wake shows them.
+float wake_kelvin_whitecap(float behind, float across, float speed, float length)
+{
+    if (!(behind > 0.0) || !(speed > 0.1) || !(length > 0.0))
+        return 0.0;
+    const float g = 9.81;
+    float k0 = g / (speed * speed);
+    float r = abs(across) / behind;
+    float c = 1.0 - 8.0 * r * r;
+    if (c <= 0.0 || r < 1.0e-9)
+        return 0.0;
+    float f = min(speed / sqrt(g * length) / TL_KELVIN_FROUDE, 1.0);
+    float cusp = (1.0 - smoothstep(0.0, TL_KELVIN_WHITECAP_CUSP, c)) * smoothstep(0.0, 0.04, c);
+    float t = (1.0 + sqrt(c)) / (4.0 * r);
+    float secant = sqrt(1.0 + t * t);
+    float phase = k0 * (behind + abs(across) * t) * secant;
+    return f * f * cusp * smoothstep(0.0, length, behind) *
+           exp(-behind / (TL_KELVIN_WHITECAP_LENGTHS * length)) *
+           smoothstep(0.75, 0.98, cos(phase));
+}
+
 // Foam cover in [0, 1] at p; `footprint`: the water a pixel covers there
 // (metres, 0: no level of detail). Out: the foam's thickness, the
 // bubbles under it (foam_aerated), and the slope the Kelvin wake's waves
@@ -52,13 +80,15 @@ vec2 wake_kelvin_slope(float behind, float across, float speed, float length,
 // Object o's wake at p: its cover (before its strength), where on its
 // path the texture hangs (along, across; metres) and the Kelvin waves'
 // slope there.
-float wake_cover(int o, vec2 p, float footprint, out vec2 path, out vec2 waves)
+float wake_cover(int o, vec2 p, float footprint, out vec2 path, out vec2 waves, out float caps)
 {
     const float tan_kelvin = 0.35355; // tan(19.47 deg) = 1 / sqrt(8)
     float half_beam = u_objects[o].wake_params.x, cover = 0.0;
+    float hull = u_objects[o].wake_params.w;
     path = vec2(0.0);
     // The nearest segment p lies beside: where the Kelvin waves are taken.
     float near = 1.0e30, kelvin_behind = 0.0, kelvin_across = 0.0, kelvin_speed = 0.0;
+    float kelvin_fade = 0.0, kelvin_along = 0.0;
     vec2 kelvin_track = vec2(0.0), kelvin_side = vec2(0.0);
     // Only the segments of the groups whose circles hold p (the CPU sizes
     // them to the foam's reach): the loop's bounds differ per pixel, so it
@@ -89,22 +119,24 @@ float wake_cover(int o, vec2 p, float footprint, out vec2 path, out vec2 waves)
             continue;
         float age = mix(w0.z, w1.z, u);
         float fade = exp(-age / u_objects[o].wake_params.y);
-        float band = d / (1.3 * half_beam * (1.0 + 0.06 * behind));
+        // The churned water behind the stern: a band about the beam wide
+        // that spreads as the root of the distance (turbulence widens
+        // slowly; the wedge's arms are waves, not foam).
+        float band = d / (half_beam * (1.0 + TL_WAKE_SPREAD * sqrt(behind / hull)));
         float turbulent = exp(-band * band);
-        // The arms are lines beside the path: only where the point lies
-        // beside this segment (not around its ends).
-        float edge = (d - arm) / (0.08 * arm + 0.5);
-        float beside = along >= 0.0 && along <= 1.0 ? 1.0 : 0.0;
-        float arms = 0.6 * beside * exp(-edge * edge) * smoothstep(0.0, 2.0 * half_beam, behind);
         // Only a boat under way churns the water white (tl_scene.h,
         // TL_WAKE_SPEED_NONE: the CPU turns the feature off when none can).
         float speed = (w1.w - w0.w) / max(w1.z - w0.z, 1.0e-3);
         float churn = smoothstep(TL_WAKE_SPEED_NONE, TL_WAKE_SPEED_FULL, speed);
-        float here = fade * max(turbulent, arms) * churn;
-        if (beside > 0.0 && d < near) {
+        float here = fade * turbulent * churn;
+        // The Kelvin waves are taken beside the nearest segment p lies
+        // beside (not around its ends).
+        if (along >= 0.0 && along <= 1.0 && d < near) {
             near = d;
             kelvin_behind = behind;
             kelvin_speed = speed;
+            kelvin_fade = fade * churn;
+            kelvin_along = mix(object_wake_along(o, k), object_wake_along(o, k + 1), u);
             kelvin_track = ab / sqrt(len2); // toward where the boat was
             kelvin_side = vec2(-kelvin_track.y, kelvin_track.x);
             kelvin_across = dot(p - a, kelvin_side);
@@ -115,9 +147,12 @@ float wake_cover(int o, vec2 p, float footprint, out vec2 path, out vec2 waves)
             path = vec2(mix(object_wake_along(o, k), object_wake_along(o, k + 1), u), side * d);
         }
     }
-    vec2 s = wake_kelvin_slope(kelvin_behind, kelvin_across, kelvin_speed,
-                               u_objects[o].wake_params.w, footprint);
+    vec2 s = wake_kelvin_slope(kelvin_behind, kelvin_across, kelvin_speed, hull, footprint);
     waves = s.x * kelvin_track + s.y * kelvin_side;
+    // The arms' breaking crests.
+    caps = kelvin_fade * wake_kelvin_whitecap(kelvin_behind, kelvin_across, kelvin_speed, hull);
+    if (caps > cover)
+        path = vec2(kelvin_along, kelvin_across);
     return cover;
 }
 
@@ -129,7 +164,7 @@ float wake_cover(int o, vec2 p, float footprint, out vec2 path, out vec2 waves)
 float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
                 out float aerated, out vec2 waves)
 {
-    float cover = 0.0;
+    float cover = 0.0, caps = 0.0, densest = 0.0;
     vec2 path = vec2(0.0);
     waves = vec2(0.0);
     for (int o = 0; o < u_object_count; o++) {
@@ -137,17 +172,20 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
         if (!(strength > 0.0))
             continue;
         vec2 at, slope;
-        float c = strength * wake_cover(o, p, footprint, at, slope);
+        float object_caps;
+        float c = strength * wake_cover(o, p, footprint, at, slope, object_caps);
         waves += slope;
-        if (c > cover) {
-            cover = c;
+        cover = max(cover, c);
+        caps = max(caps, strength * object_caps);
+        if (max(c, strength * object_caps) > densest) {
+            densest = max(c, strength * object_caps);
             // Each object's texture a kilometre along from the last's.
             path = at + vec2(1000.0 * float(o), 0.0);
         }
     }
     thickness = 0.0;
     aerated = 0.0;
-    if (cover <= 0.0)
+    if (cover <= 0.0 && caps <= 0.0)
         return 0.0; // most of the sea: none of the texture below
     // The texture hangs on the path and the world, where the boat left
     // it, not where it is now: first, streaks of coverage 6 m along the
@@ -190,7 +228,17 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
              (0.55 + 0.45 * foam_noise(world * 1.7 + vec2(8.2, 2.9)));
     aerated *= 0.7 + 0.6 * clamp(web - 0.2, 0.0, 0.5);
     thickness = max(thickness, 0.4 * veins);
-    return max(patches, 0.85 * veins);
+    // Foam thins as it ages and toward the band's edges: greyer and more
+    // of the water through it, not only fewer patches (at one opacity to
+    // the end the old wake read as paper cut-outs).
+    float fresh = TL_WAKE_OLD_OPACITY + (1.0 - TL_WAKE_OLD_OPACITY) * smoothstep(0.05, 0.6, cover);
+    thickness *= fresh;
+    // The arms' whitecaps: the crest's bar frayed by the world's lace and
+    // the pixel's detail, thin and grey at its ends.
+    float cap = smoothstep(0.2, 0.45, caps * (0.2 + 1.0 * foam_lace(world * 1.7) + 0.6 * detail));
+    thickness = max(thickness, 0.6 * cap);
+    aerated = max(aerated, 0.5 * caps);
+    return max(max(patches, 0.85 * veins) * fresh, cap);
 }
 
 #ifdef TL_FEATURE_GIANT_WAVE

@@ -344,7 +344,14 @@ static void test_kelvin(tl_renderer *r)
         double behind = 1.0 + 60.0 * rand() / RAND_MAX;
         in[4 * i] = (float)behind;
         in[4 * i + 1] = (float)(behind * (1.2 * rand() / RAND_MAX - 0.6)); /* out past the wedge */
-        in[4 * i + 2] = (float)(1.0 + 6.0 * rand() / RAND_MAX);
+        if (i % 4 == 1) { /* near a cusp line, where the crests break */
+            behind = length * (1.0 + 2.0 * rand() / RAND_MAX);
+            in[4 * i] = (float)behind;
+            in[4 * i + 1] =
+                (float)(behind * (i % 8 == 1 ? 1.0 : -1.0) * (0.3 + 0.05 * rand() / RAND_MAX));
+        }
+        in[4 * i + 2] =
+            (float)((i % 4 == 1 ? 4.0 : 1.0) + (i % 4 == 1 ? 3.0 : 6.0) * rand() / RAND_MAX);
         in[4 * i + 3] = i % 2 ? 0.0f : (float)(0.2 * rand() / RAND_MAX);
     }
     tl_error err;
@@ -354,8 +361,8 @@ static void test_kelvin(tl_renderer *r)
         CHECK(0);
         return;
     }
-    double worst = 0.0, largest = 0.0;
-    int outside = 0, outside_zero = 1;
+    double worst = 0.0, largest = 0.0, worst_cap = 0.0;
+    int outside = 0, outside_zero = 1, capped = 0;
     for (int i = 0; i < N; i++) {
         double want[2];
         tl_kelvin_slope(in[4 * i], in[4 * i + 1], in[4 * i + 2], length, in[4 * i + 3], want);
@@ -363,6 +370,9 @@ static void test_kelvin(tl_renderer *r)
             worst = fmax(worst, fabs(out[4 * i + c] - want[c]));
             largest = fmax(largest, fabs(want[c]));
         }
+        double cap = tl_kelvin_whitecap(in[4 * i], in[4 * i + 1], in[4 * i + 2], length);
+        worst_cap = fmax(worst_cap, fabs(out[4 * i + 2] - cap));
+        capped += cap > 0.05;
         double ratio = in[4 * i + 1] / in[4 * i];
         if (ratio * ratio > 1.0 / 8.0) {
             outside++;
@@ -389,10 +399,35 @@ static void test_kelvin(tl_renderer *r)
            "outside the wedge, all flat: %d; crest spacing on the track %.3f m (2 pi U^2 / g = "
            "%.3f)\n",
            N, worst, largest, outside, outside_zero, spacing, 2.0 * M_PI * 16.0 / 9.81);
+    printf("Kelvin whitecaps: GPU against CPU, worst %.2g; %d of %d points white\n", worst_cap,
+           capped, N);
+    CHECK(worst_cap < 2e-3);
     CHECK(worst < 2e-3 * fmax(largest, 0.01));
     CHECK(largest > 0.01);
     CHECK(outside > 10 && outside_zero);
     CHECK_NEAR(spacing, 2.0 * M_PI * 16.0 / 9.81, 0.02);
+    CHECK(capped > 3);
+
+    /* The whitecaps: bars along each cusp line near the boat (white on
+     * part of the line, not all of it), none on the track or far behind. */
+    long white = 0, samples = 0;
+    double brightest = 0.0, on_track = 0.0, far = 0.0;
+    for (double b = length; b <= 3.0 * length; b += 0.01) {
+        double cap = tl_kelvin_whitecap(b, b * 0.34, 4.0, length);
+        brightest = fmax(brightest, cap);
+        white += cap > 0.1;
+        samples++;
+        on_track = fmax(on_track, tl_kelvin_whitecap(b, 0.0, 4.0, length));
+        far = fmax(far,
+                   tl_kelvin_whitecap(b + 20.0 * length, (b + 20.0 * length) * 0.34, 4.0, length));
+    }
+    printf("Kelvin whitecaps along the cusp line 1-3 hull lengths behind: brightest %.2f, white "
+           "on %.2f of it; on the track %.2g; 20 lengths on %.2g\n",
+           brightest, (double)white / samples, on_track, far);
+    CHECK(brightest > 0.3);
+    CHECK(white > samples / 20 && white < samples / 2);
+    CHECK(on_track == 0.0);
+    CHECK(far < 0.01);
 }
 
 int main(void)

@@ -212,6 +212,12 @@ typedef struct tl_giant_wave {
 #define TL_WAKE_SPEED_NONE 0.3
 #define TL_WAKE_SPEED_FULL 2.0
 #define TL_WAKE_LEAST      0.05
+/* The churned band behind the stern: 1 half-beam wide (e-fold) at the
+ * stern, wider by 1 + TL_WAKE_SPREAD sqrt(behind / hull length) (turbulence
+ * widens slowly; the wedge's arms are waves, not foam). Its foam thins as
+ * it ages, to TL_WAKE_OLD_OPACITY of a fresh patch's opacity. */
+#define TL_WAKE_SPREAD      0.6
+#define TL_WAKE_OLD_OPACITY 0.15
 
 /* The most floating objects a scene holds: the boat and 15 declared with
  * `boat NAME` (each has its own slot in the ocean pass's uniform block,

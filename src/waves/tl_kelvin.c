@@ -30,7 +30,8 @@ void tl_kelvin_slope(double behind, double across, double speed, double length, 
      * past a wavelength; taller near the cusp, where the two systems
      * meet, and faded in just inside it. */
     double height = TL_KELVIN_HEIGHT * length * f * f * sqrt(wavelength / (wavelength + distance));
-    height *= (1.0 + 0.8 * (1.0 - smoothstep(0.0, 0.3, c))) * smoothstep(0.0, 0.04, c);
+    height *=
+        (1.0 + TL_KELVIN_CUSP_GAIN * (1.0 - smoothstep(0.0, 0.3, c))) * smoothstep(0.0, 0.04, c);
     /* Faded in over the hull's length behind the stern. */
     height *= smoothstep(0.0, length, behind);
     double root = sqrt(c);
@@ -57,4 +58,25 @@ void tl_kelvin_slope(double behind, double across, double speed, double length, 
         slope[0] -= a * k0 * secant;
         slope[1] -= a * k0 * secant * t;
     }
+}
+
+double tl_kelvin_whitecap(double behind, double across, double speed, double length)
+{
+    if (!(behind > 0.0) || !(speed > 0.1) || !(length > 0.0))
+        return 0.0;
+    const double g = 9.81;
+    double k0 = g / (speed * speed);
+    double r = fabs(across) / behind;
+    double c = 1.0 - 8.0 * r * r;
+    if (c <= 0.0 || r < 1e-9)
+        return 0.0;
+    double f = fmin(speed / sqrt(g * length) / TL_KELVIN_FROUDE, 1.0);
+    double cusp = (1.0 - smoothstep(0.0, TL_KELVIN_WHITECAP_CUSP, c)) * smoothstep(0.0, 0.04, c);
+    /* The divergent waves' phase; their height goes as its cosine. */
+    double t = (1.0 + sqrt(c)) / (4.0 * r);
+    double secant = sqrt(1.0 + t * t);
+    double phase = k0 * (behind + fabs(across) * t) * secant;
+    return f * f * cusp * smoothstep(0.0, length, behind) *
+           exp(-behind / (TL_KELVIN_WHITECAP_LENGTHS * length)) *
+           smoothstep(0.75, 0.98, cos(phase));
 }
