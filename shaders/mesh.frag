@@ -115,8 +115,22 @@ void main()
         from_below += water_floor_up(depth, -1.0);
         mirrored_below += water_floor_up(depth, min(r.y, 0.0));
 #endif
-        vec3 ambient = mix(from_below, from_above, 0.5 + 0.5 * n.y);
-        vec3 env = r.y > 0.0 ? from_above : mirrored_below;
+        // The light from above comes through Snell's window, high overhead:
+        // a face turned down sees little of it (the hull's bottom is dark,
+        // its sides and keel lighter, so its form shows); the light from
+        // below is even, as the lower hemisphere's share.
+        vec3 ambient = from_above * optics_window_share(n.y, u_water_ior) +
+                       from_below * (0.5 - 0.5 * n.y);
+        // A mirrored ray sees the window's light (its radiance the even
+        // light's over sin^2 of its half-angle: the same irradiance from a
+        // narrower cone) only inside it, blurred by the roughness; past
+        // its edge the surface mirrors the water below. Paint against
+        // water reflects a tenth of what it does in air.
+        float s = 1.0 / u_water_ior;
+        float edge = sqrt(1.0 - s * s), blur = 0.05 + 0.5 * roughness;
+        float in_window = smoothstep(edge - blur, edge + blur, r.y);
+        vec3 env = mix(mirrored_below, from_above / (s * s), in_window);
+        f0 = mix(vec3(TL_MESH_F0_UNDER_WATER), base, metallic);
         color = material_brdf(n, v, -u_sun_water, base, roughness, metallic) * sun +
                 (diffuse_color * ambient + env * material_env_brdf(f0, roughness, nv)) * occlusion;
     } else

@@ -43,6 +43,24 @@ float optics_fresnel_rough(float cos_i, float n1, float n2, float spread)
 // The spread of the facets a view through the surface meets: the slope
 // variance the normal leaves out, and at least a share of `pixel` (the
 // angle a pixel spans, radians).
+// The share of the light through Snell's window (a cone of half-angle
+// asin(1 / ior) about the zenith, seen from under the water) that falls on
+// a face whose normal's y is ny, against one facing straight up: cos of the
+// tilt while the whole cone is in view, none once the face has turned
+// past its edge, and between, ((ny + s) / (1 + s))^2 with s = 1 / ior (the
+// spherical cap's irradiance, as sphere lights' horizon is handled; it
+// meets cos tilt where the cone starts to set, within 0.02). A hull's
+// faces turned down see little of the bright window, its sides more
+// (tl_optics_window_share).
+float optics_window_share(float ny, float ior)
+{
+    float s = 1.0 / ior;
+    if (ny >= s)
+        return ny;
+    float t = max(ny + s, 0.0) / (1.0 + s);
+    return t * t;
+}
+
 float optics_facet_spread(float slope_var, float pixel)
 {
     float least = TL_WINDOW_PIXEL_SPREAD * pixel;

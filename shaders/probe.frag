@@ -63,6 +63,9 @@
 //           camera-relative (x, z) sees past the giant wave's crest, at the
 //           surface's height there, for rays spread by 0.1 rad
 //                                            (tl_giant_clear)
+//   mode 25: the share of Snell's window's light on a face under the
+//           water whose normal's y is x, for the index y
+//                                          (tl_optics_window_share)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -109,6 +112,8 @@ void main()
         result.x = surface_height(p, u_probe_octaves, 0.0);
     else if (u_probe_mode == 1)
         result.x = optics_fresnel(p.x, p.y, 1.0);
+    else if (u_probe_mode == 25)
+        result.x = optics_window_share(p.x, p.y);
 #ifdef TL_FEATURE_UNDERWATER
     else if (u_probe_mode == 2)
         result.xyz = optics_water_transmittance(p.x);

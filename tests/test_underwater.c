@@ -70,6 +70,51 @@ static void test_fresnel(tl_renderer *r)
     CHECK_NEAR(tl_optics_snell_window(1.333) / TL_DEG, 48.6, 0.05);
 }
 
+/* The light through Snell's window on a face under the water, by its
+ * tilt: the GPU against the CPU, and both against the cone's irradiance
+ * summed over its directions (the closed form is an approximation). */
+static void test_window_share(tl_renderer *r)
+{
+    enum { N = 41 };
+    tl_scene s;
+    tl_scene_defaults(&s);
+    tl_frame_uniforms u;
+    prepare(&s, &u);
+    float in[2 * N], out[4 * N];
+    for (int i = 0; i < N; i++) {
+        in[2 * i] = (float)(-1.0 + 2.0 * i / (N - 1));
+        in[2 * i + 1] = 1.333f;
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_probe(r, &u, 25, in, N, 1, out, &err) == 0);
+    double cone = tl_optics_snell_window(1.333), worst_gpu = 0.0, worst_sum = 0.0;
+    for (int i = 0; i < N; i++) {
+        double ny = in[2 * i], nx = sqrt(fmax(1.0 - ny * ny, 0.0));
+        double cpu = tl_optics_window_share(ny, 1.333);
+        worst_gpu = fmax(worst_gpu, fabs(out[4 * i] - cpu));
+        /* The cone's directions, even in solid angle, cosine-weighted on
+         * the face, against a face turned up. */
+        double sum = 0.0, up = 0.0;
+        for (int a = 0; a < 200; a++)
+            for (int b = 0; b < 200; b++) {
+                double cos_t = 1.0 - (1.0 - cos(cone)) * (a + 0.5) / 200.0;
+                double sin_t = sqrt(1.0 - cos_t * cos_t), phi = 2.0 * M_PI * (b + 0.5) / 200.0;
+                sum += fmax(nx * sin_t * cos(phi) + ny * cos_t, 0.0);
+                up += cos_t;
+            }
+        worst_sum = fmax(worst_sum, fabs(cpu - sum / up));
+        if (ny < -0.76)
+            CHECK(cpu == 0.0 && out[4 * i] == 0.0f);
+    }
+    printf("Snell's window on a tilted face: |GPU - CPU| <= %.2g, |CPU - the cone summed| <= %.3f; "
+           "a side %.3f, a face 45 deg down %.4f\n",
+           worst_gpu, worst_sum, tl_optics_window_share(0.0, 1.333),
+           tl_optics_window_share(-sqrt(0.5), 1.333));
+    CHECK(worst_gpu <= 1e-6);
+    CHECK(worst_sum <= 0.03);
+}
+
 /* Snell's window: 5 m under a flat sea, looking straight up with a wide
  * lens; the bright window's edge sits at 48.6 deg from the zenith, and
  * outside it no pixel carries the sky's light. */
@@ -478,6 +523,7 @@ int main(void)
     if (!r)
         return 1;
     test_fresnel(r);
+    test_window_share(r);
     test_snell_window(r);
     test_water_transmittance(r);
     test_fog_transmittance(r);

@@ -147,6 +147,11 @@ int tl_mesh_outline_contains(const tl_mesh_outline *o, const double p[3]);
 /* GGX's least alpha (roughness squared): a perfect mirror would show the
  * sun as a point a sample wide. A documented clamp. */
 #define TL_MESH_MIN_ALPHA 0.002
+/* A dielectric's reflectance at normal incidence in the water, not air:
+ * ((1.5 - 1.333) / (1.5 + 1.333))^2 for paint of index 1.5 (0.04 in air).
+ * At 0.04 a hull seen from below mirrored the bright water above as one
+ * even sheen that hid its form. */
+#define TL_MESH_F0_UNDER_WATER 0.0035
 /* The hull is wet up to TL_MESH_WET_LOW metres above its design waterline
  * and dry from TL_MESH_WET_HIGH, where spray and the waves reach. */
 #define TL_MESH_WET_LOW  0.1

@@ -29,6 +29,15 @@ double tl_optics_snell_window(double n)
     return asin(1.0 / n);
 }
 
+double tl_optics_window_share(double ny, double ior)
+{
+    double s = 1.0 / ior;
+    if (ny >= s)
+        return ny;
+    double t = fmax(ny + s, 0.0) / (1.0 + s);
+    return t * t;
+}
+
 void tl_optics_water_extinction(const tl_water *w, double sigma[3])
 {
     for (int c = 0; c < 3; c++) {

@@ -34,6 +34,14 @@ double tl_optics_fresnel_rough(double cos_i, double n1, double n2, double spread
  * asin(1 / n) radians (48.6° for water). */
 double tl_optics_snell_window(double n);
 
+/* The share of the light through Snell's window (a cone of half-angle
+ * asin(1 / ior) about the zenith) that falls on a face under the water
+ * whose normal's y is ny, against a face turned straight up: ny while the
+ * whole cone is in view (ny >= 1 / ior), else ((ny + s) / (1 + s))^2 with
+ * s = 1 / ior, none once the face has turned past the cone's edge
+ * (shaders/optics.glsl, optics_window_share). */
+double tl_optics_window_share(double ny, double ior);
+
 /* Extinction per metre of the water body, R G B. With
  * water.color_distance > 0: -ln(color_at_distance) / color_distance (the
  * colour white light takes after that distance; seed 003's "colour at
