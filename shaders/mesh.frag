@@ -11,6 +11,8 @@
 #include "sky.glsl"
 #include "optics.glsl"
 #include "material.glsl"
+#include "foam_noise.glsl"
+#include "hull_wash.glsl"
 #ifdef TL_FEATURE_BOAT_SHADOW
 #include "boat_shadow.glsl"
 #endif
@@ -156,6 +158,15 @@ void main()
                        roughness);
         color = material_brdf(n, v, u_sun_dir, base, roughness, metallic) * sunlight +
                 (diffuse_color * ambient + env * material_env_brdf(f0, roughness, nv)) * occlusion;
+        // The water at the waterline and the bow wave up the stem: a sheet
+        // of sea over the paint (its own colour, the sky mirrored at the
+        // paint's gloss), and white foam in it lit as the water's is (the
+        // sun wrapped a little round, as through a froth).
+        float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / u_resolution.y;
+        vec2 wash = hull_wash(u_object, v_world, footprint);
+        vec3 film = sea + env * material_env_brdf(vec3(0.02), 0.05, nv);
+        vec3 froth = 0.8 * (sunlight * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / TL_PI + ambient);
+        color = mix(mix(color, film, TL_MESH_WASH_FILM * wash.x), froth, wash.y);
     }
     color += emission * u_lights;
     if (any(isnan(color)) || any(isinf(color)))

@@ -66,12 +66,16 @@
 //   mode 25: the share of Snell's window's light on a face under the
 //           water whose normal's y is x, for the index y
 //                                          (tl_optics_window_share)
+//   mode 26: the white water's cover on a hull x metres above the water
+//           plane at y along its waterline (1 at the stem), speed z m/s,
+//           the lace w              (tl_mesh_wash_cover, tl_mesh_wash_top)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
 #include "optics.glsl"
 #include "foam.glsl"
 #include "material.glsl"
+#include "hull_wash.glsl"
 #if defined(TL_FEATURE_CAUSTICS) || defined(TL_FEATURE_GIANT_CAUSTICS)
 #include "caustics.glsl"
 #endif
@@ -145,6 +149,8 @@ void main()
         result.xyz = material_env_brdf(vec3(0.04, 0.5, 0.9), p.y, p.x);
     else if (u_probe_mode == 15)
         result.x = material_wetness(p.x, p.y);
+    else if (u_probe_mode == 26)
+        result.x = hull_wash_cover(input4.x, hull_wash_top(input4.y, input4.z), input4.w);
 #ifdef TL_FEATURE_CAUSTICS
     else if (u_probe_mode == 19)
         result.x = caustic_focus(p, input4.z, input4.w, true);

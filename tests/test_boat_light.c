@@ -75,23 +75,28 @@ static void test_material_probe(tl_renderer *r)
     }
     tl_error err;
     tl_error_clear(&err);
-    float env_in[N * 4], wet_in[N * 4];
+    float env_in[N * 4], wet_in[N * 4], wash_in[N * 4], wash[N * 4];
     for (int i = 0; i < N; i++) {
         env_in[4 * i] = (float)i / (N - 1);                  /* cos */
         env_in[4 * i + 1] = (float)((i * 37) % N) / (N - 1); /* roughness */
         wet_in[4 * i] = (float)(0.8 * i / (N - 1));          /* metres above */
         wet_in[4 * i + 1] = (float)((i * 11) % N) / (N - 1);
         env_in[4 * i + 2] = env_in[4 * i + 3] = wet_in[4 * i + 2] = wet_in[4 * i + 3] = 0.0f;
+        wash_in[4 * i] = (float)(-0.4 + 1.4 * ((i * 29) % N) / (N - 1)); /* metres above */
+        wash_in[4 * i + 1] = (float)i / (N - 1);                         /* along */
+        wash_in[4 * i + 2] = (float)(8.0 * ((i * 13) % N) / (N - 1));    /* speed */
+        wash_in[4 * i + 3] = (float)((i * 7) % N) / (N - 1);             /* lace */
     }
     int rc = tl_renderer_probe4(r, &u, 13, in, N, u.octaves, brdf, &err) ||
              tl_renderer_probe4(r, &u, 14, env_in, N, u.octaves, env, &err) ||
-             tl_renderer_probe4(r, &u, 15, wet_in, N, u.octaves, wet, &err);
+             tl_renderer_probe4(r, &u, 15, wet_in, N, u.octaves, wet, &err) ||
+             tl_renderer_probe4(r, &u, 26, wash_in, N, u.octaves, wash, &err);
     if (rc) {
         fprintf(stderr, "probe: %s\n", err.message);
         CHECK(0);
         return;
     }
-    double worst = 0.0, worst_env = 0.0, worst_wet = 0.0;
+    double worst = 0.0, worst_env = 0.0, worst_wet = 0.0, worst_wash = 0.0;
     const double base[3] = {0.8, 0.4, 0.1}, up[3] = {0.0, 1.0, 0.0};
     const double f0[3] = {0.04, 0.5, 0.9};
     for (int i = 0; i < N; i++) {
@@ -109,10 +114,22 @@ static void test_material_probe(tl_renderer *r)
         }
         worst_wet =
             fmax(worst_wet, fabs(wet[4 * i] - tl_mesh_wetness(wet_in[4 * i], wet_in[4 * i + 1])));
+        double top = tl_mesh_wash_top(wash_in[4 * i + 1], wash_in[4 * i + 2]);
+        worst_wash =
+            fmax(worst_wash,
+                 fabs(wash[4 * i] - tl_mesh_wash_cover(wash_in[4 * i], top, wash_in[4 * i + 3])));
     }
     printf("materials, GPU against CPU over %d inputs: BRDF %.2g (relative), environment %.2g, "
-           "wetness %.2g\n",
-           N, worst, worst_env, worst_wet);
+           "wetness %.2g, wash %.2g\n",
+           N, worst, worst_env, worst_wet, worst_wash);
+    CHECK(worst_wash < 1e-5);
+    /* The wash: a line at rest; at 6 m/s the bow wave climbs the stem to
+     * TL_MESH_BOW_CLIMB of U^2 / 2g over the line, and not amidships. */
+    CHECK_NEAR(tl_mesh_wash_top(1.0, 0.0), TL_MESH_WASH_LINE, 1e-12);
+    CHECK_NEAR(tl_mesh_wash_top(1.0, 6.0), TL_MESH_WASH_LINE + TL_MESH_BOW_CLIMB * 36.0 / 19.62,
+               1e-12);
+    CHECK_NEAR(tl_mesh_wash_top(0.4, 6.0), TL_MESH_WASH_LINE, 1e-12);
+    CHECK(tl_mesh_wash_cover(0.0, 0.5, 0.5) == 1.0 && tl_mesh_wash_cover(0.7, 0.5, 1.0) == 0.0);
     CHECK(worst < 1e-3);
     CHECK(worst_env < 1e-5);
     CHECK(worst_wet < 1e-5);
@@ -441,6 +458,77 @@ static void test_bow_wave(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&still);
 }
 
+/* Beside the bow at 5 m/s against drifting: the bow wave's water climbs
+ * the hull's forward half (a sheet of sea darkens the white paint, foam in
+ * it whitens it), and the aft half keeps its paint (the wash line's
+ * texture moves with the path there, brighter and darker alike). */
+static void test_bow_wash(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.sun.elevation = 35.0 * M_PI / 180.0;
+    s.sun.azimuth = 100.0 * M_PI / 180.0;
+    s.camera.position[0] = 9.0;
+    s.camera.position[1] = 1.5;
+    s.camera.position[2] = 0.0;
+    const double target[3] = {0.0, 0.2, 0.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    s.boat.wake_step = 0.5;
+    tl_scene drifting = s, none = s;
+    none.boat.enabled = false;
+    for (int k = 0; k < TL_WAKE_POINTS; k++) {
+        s.boat.wake_path[k][1] = -2.5 * k; /* 5 m/s */
+        drifting.boat.wake_path[k][1] = none.boat.wake_path[k][1] = 0.0;
+    }
+    tl_frame under_way, still, empty;
+    if (render(r, &s, &under_way))
+        return;
+    if (render(r, &drifting, &still) || render(r, &none, &empty)) {
+        tl_frame_free(&under_way);
+        return;
+    }
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    const double stem[3] = {0.0, 0.0, 0.5}, transom[3] = {0.0, 0.0, -0.5};
+    double w[3];
+    int sx = 0, sy = 0, tx = 0, ty = 0;
+    project(&s, &u, stem, w, &sx, &sy);
+    project(&s, &u, transom, w, &tx, &ty);
+    int mid = (sx + tx) / 2, forward_sign = sx > tx ? 1 : -1;
+    long fore = 0, fore_whiter = 0, fore_changed = 0, aft = 0, aft_changed = 0;
+    double aft_change = 0.0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            size_t i = (size_t)y * s.width + x;
+            if (!(under_way.depth[i] < empty.depth[i] - 0.2 &&
+                  still.depth[i] < empty.depth[i] - 0.2))
+                continue;
+            double d = luminance(pixel(&under_way, x, y)) - luminance(pixel(&still, x, y));
+            if ((x - mid) * forward_sign > 0) {
+                fore++;
+                fore_whiter += d > 0.05;
+                fore_changed += fabs(d) > 0.05;
+            } else {
+                aft++;
+                aft_change += d;
+                aft_changed += fabs(d) > 0.05;
+            }
+        }
+    printf("bow wash at 5 m/s, from beside: of %ld hull pixels forward, %ld changed against "
+           "drifting, %ld whiter; aft, of %ld, %ld changed, mean change %.4f\n",
+           fore, fore_changed, fore_whiter, aft, aft_changed, aft ? aft_change / aft : 0.0);
+    CHECK(fore > 500 && aft > 500);
+    CHECK(fore_changed > 4 * aft_changed + 50);
+    CHECK(fore_whiter > 50);
+    CHECK(aft > 0 && fabs(aft_change / aft) < 0.01);
+    tl_frame_free(&under_way);
+    tl_frame_free(&still);
+    tl_frame_free(&empty);
+}
+
 /* The bow's spray: compiled in only where the water rises against the bow
  * fast enough; its density on the GPU against the CPU's; drawn, it whitens
  * the water around the stem and nothing beyond the sheet's sphere. */
@@ -642,6 +730,7 @@ int main(void)
     test_hull_from_below(r, &boat);
     test_hull_above(r, &boat);
     test_bow_wave(r, &boat);
+    test_bow_wash(r, &boat);
     test_boat_far(r, &boat);
     test_bow_spray(r, &boat);
     tl_mesh_free(&boat);

@@ -161,6 +161,21 @@ int tl_mesh_outline_contains(const tl_mesh_outline *o, const double p[3]);
  * b = sign * n x t), its tilt scaled by `scale` (glTF's normal map). */
 void tl_mesh_normal_map(const double n[3], const double t[4], const double texel[3], double scale,
                         double out[3]);
+/* The white water on a hull at the waterline (shaders/hull_wash.glsl): a
+ * wash TL_MESH_WASH_LINE metres high all round, and the bow wave climbing
+ * the stem to TL_MESH_BOW_CLIMB of the stagnation height U^2 / 2g (a fine
+ * bow parts the water below that). */
+#define TL_MESH_WASH_LINE 0.06
+#define TL_MESH_BOW_CLIMB 0.35
+/* How much of the sea's own colour the sheet of water lays over the
+ * paint (the rest: the paint seen through it). */
+#define TL_MESH_WASH_FILM 0.6
+/* How high the wash reaches above the water plane (m) at `along` (0 at
+ * the waterline's aft end, 1 at the stem) for a hull at `speed` m/s. */
+double tl_mesh_wash_top(double along, double speed);
+/* Its cover at `height` m above the plane under the top `top`, the edge
+ * moved by `lace` in [0, 1]. */
+double tl_mesh_wash_cover(double height, double top, double lace);
 /* How much darker wet gloss paint is (a rough, porous surface: half). */
 #define TL_MESH_WET_DARKEN 0.15
 /* BRDF x cos(l) of a surface with normal n (facing v) for light from l

@@ -56,6 +56,18 @@ static double smoothstep(double e0, double e1, double x)
     return t * t * (3.0 - 2.0 * t);
 }
 
+double tl_mesh_wash_top(double along, double speed)
+{
+    return TL_MESH_WASH_LINE +
+           TL_MESH_BOW_CLIMB * speed * speed / (2.0 * 9.81) * smoothstep(0.5, 0.97, along);
+}
+
+double tl_mesh_wash_cover(double height, double top, double lace)
+{
+    double edge = top * (0.75 + 0.5 * lace);
+    return (1.0 - smoothstep(0.7 * edge, edge, height)) * smoothstep(-edge, -0.5 * edge, height);
+}
+
 double tl_mesh_wetness(double height, double streak)
 {
     double top = TL_MESH_WET_LOW + (TL_MESH_WET_HIGH - TL_MESH_WET_LOW) * streak;

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdint.h>
 
-/* shaders/foam.glsl's foam_hash: the same integers, so the same noise. */
+/* shaders/foam_noise.glsl's foam_hash: the same integers, so the same noise. */
 static double hash(int32_t x, int32_t y)
 {
     uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u;
