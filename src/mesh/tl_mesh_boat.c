@@ -15,7 +15,7 @@
 #include "tl_mesh.h"
 #include "tl_mesh_soup.h"
 
-#define STATIONS 48 /* sections from the transom to the stem */
+#define STATIONS 64 /* sections from the transom to the stem */
 
 /* The boot stripe straddles the design waterline, as a real boot top
  * does: the band the water alternately wets and leaves, so that the red
@@ -78,6 +78,15 @@ static const double CREASE_DEG[PART_COUNT] = {
     [P_DECK] = 20,   [P_RAIL] = 80,     [P_BOX] = 1,     [P_TUBE] = 70,
 };
 
+/* Station i's u: closer together toward the stem, where the sections
+ * narrow and turn fastest (evenly spaced, the bow's flare showed flat
+ * facets in a close-up). */
+static double station_u(int i)
+{
+    double t = (double)i / STATIONS;
+    return 1.0 - pow(1.0 - t, 1.5);
+}
+
 static double smooth01(double a, double b, double x)
 {
     double t = fmin(fmax((x - a) / (b - a), 0.0), 1.0);
@@ -96,7 +105,10 @@ static lines lines_at(double u)
     if (u < 0.45)
         l.beam = 0.128 + 0.034 * sin(0.5 * M_PI * u / 0.45);
     else
-        l.beam = 0.162 * pow(fmax(0.0, 1.0 - pow((u - 0.45) / 0.55, 2.2)), 0.55);
+        /* To a stem with a finite entry (33 deg each side at the sheer):
+         * a root of this with its infinite slope at the stem drew a round
+         * tub's nose, seen bow-on. */
+        l.beam = 0.162 * fmax(0.0, 1.0 - pow((u - 0.45) / 0.55, 2.2));
     l.chine_beam = l.beam * (0.88 - 0.1 * u);
     l.sheer = 0.1 + 0.07 * u * u;
     l.chine = -0.015 + 0.075 * pow(fmax(0.0, (u - 0.5) / 0.5), 1.7);
@@ -164,7 +176,7 @@ static void hull(tl_mesh_soup *s)
 {
     static double bottom[STATIONS + 1][BOTTOM_ROWS][3], side[STATIONS + 1][SIDE_ROWS][3];
     for (int i = 0; i <= STATIONS; i++)
-        section((double)i / STATIONS, bottom[i], side[i]);
+        section(station_u(i), bottom[i], side[i]);
     for (int sx = 0; sx < 2; sx++)
         for (int i = 0; i < STATIONS; i++) {
             for (int r = 0; r + 1 < BOTTOM_ROWS; r++) {
@@ -249,7 +261,7 @@ static void deck(tl_mesh_soup *s)
     enum { ACROSS = 4 };
     double prev_deck[ACROSS + 1][3], prev_edge[2][2][3], prev_rail[2][5][3];
     for (int i = 0; i <= STATIONS; i++) {
-        double u = (double)i / STATIONS;
+        double u = station_u(i);
         lines l = lines_at(u);
         double inner = fmax(l.beam - BULWARK_IN, 0.0), y = l.sheer - BULWARK;
         double z = hull_z(u, l.sheer);
@@ -293,7 +305,7 @@ static void deck(tl_mesh_soup *s)
                 tl_mesh_soup_quad(s, prev_edge[sx][0], edge[sx][0], edge[sx][1], prev_edge[sx][1],
                                   BULWARK_INSIDE, P_BOX, outboard);
                 /* The cap, from the inner top edge to the sheer. */
-                double a[3] = {sign * lines_at((double)(i - 1) / STATIONS).beam,
+                double a[3] = {sign * lines_at(station_u(i - 1)).beam,
                                prev_edge[sx][1][1], prev_edge[sx][1][2]};
                 double b[3] = {sign * l.beam, l.sheer, z};
                 double under[3] = {sign * inner, l.sheer - 1.0, z};
