@@ -39,6 +39,7 @@ enum {
     ROOF,
     DOOR,
     GLASS,
+    FRAME, /* the windows' frames */
     STEEL,
     LAMP_PORT,
     LAMP_STARBOARD,
@@ -63,7 +64,8 @@ static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
     /* Glass over the wheelhouse's dim interior: its diffuse is what shows
      * through (by day a fraction of the light outside, a warm lamp inside
      * with boat.lights), the gloss the sky's reflection. */
-    [GLASS] = {{0.036f, 0.030f, 0.021f}, 0.05f, 0.0f, 0.1f},
+    [GLASS] = {{0.016f, 0.015f, 0.013f}, 0.05f, 0.0f, 0.1f},
+    [FRAME] = {{0.05f, 0.05f, 0.05f}, 0.4f, 0.0f, 0.0f}, /* black rubber and paint */
     [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
     [LAMP_PORT] = {{0.80f, 0.03f, 0.02f}, 0.1f, 0.0f, 60.0f},
     [LAMP_STARBOARD] = {{0.02f, 0.80f, 0.15f}, 0.1f, 0.0f, 60.0f},
@@ -305,8 +307,8 @@ static void deck(tl_mesh_soup *s)
                 tl_mesh_soup_quad(s, prev_edge[sx][0], edge[sx][0], edge[sx][1], prev_edge[sx][1],
                                   BULWARK_INSIDE, P_BOX, outboard);
                 /* The cap, from the inner top edge to the sheer. */
-                double a[3] = {sign * lines_at(station_u(i - 1)).beam,
-                               prev_edge[sx][1][1], prev_edge[sx][1][2]};
+                double a[3] = {sign * lines_at(station_u(i - 1)).beam, prev_edge[sx][1][1],
+                               prev_edge[sx][1][2]};
                 double b[3] = {sign * l.beam, l.sheer, z};
                 double under[3] = {sign * inner, l.sheer - 1.0, z};
                 tl_mesh_soup_quad(s, prev_edge[sx][1], edge[sx][1], b, a, WOOD, P_BOX, under);
@@ -397,13 +399,13 @@ static void tube(tl_mesh_soup *s, const double a[3], const double b[3], double r
     }
 }
 
-/* A quad on a plane, a hair out from it along `out`: a window pane. */
-static void pane(tl_mesh_soup *s, const double corner[3], const double du[3], const double dv[3],
-                 const double out[3], int material)
+/* A quad on a plane, `lift` out from it along `out`. */
+static void flat_quad(tl_mesh_soup *s, const double corner[3], const double du[3],
+                      const double dv[3], const double out[3], double lift, int material)
 {
     double q[4][3], in[3];
     for (int k = 0; k < 3; k++) {
-        double o = corner[k] + 0.0015 * out[k];
+        double o = corner[k] + lift * out[k];
         q[0][k] = o;
         q[1][k] = o + du[k];
         q[2][k] = o + du[k] + dv[k];
@@ -411,6 +413,27 @@ static void pane(tl_mesh_soup *s, const double corner[3], const double du[3], co
         in[k] = o + 0.5 * (du[k] + dv[k]) - out[k];
     }
     tl_mesh_soup_quad(s, q[0], q[1], q[2], q[3], material, P_BOX, in);
+}
+
+/* A window pane a hair out from its wall, in a frame a little wider all
+ * round (without, the glass read as a flat card stuck on the wall). The
+ * door's panel is a pane without a frame. */
+#define FRAME_WIDTH 0.004
+static void pane(tl_mesh_soup *s, const double corner[3], const double du[3], const double dv[3],
+                 const double out[3], int material)
+{
+    if (material == GLASS) {
+        double lu = sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]);
+        double lv = sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+        double fc[3], fu[3], fv[3];
+        for (int k = 0; k < 3; k++) {
+            fu[k] = du[k] * (1.0 + 2.0 * FRAME_WIDTH / lu);
+            fv[k] = dv[k] * (1.0 + 2.0 * FRAME_WIDTH / lv);
+            fc[k] = corner[k] - du[k] * FRAME_WIDTH / lu - dv[k] * FRAME_WIDTH / lv;
+        }
+        flat_quad(s, fc, fu, fv, out, 0.001, FRAME);
+    }
+    flat_quad(s, corner, du, dv, out, 0.0015, material);
 }
 
 /* The wheelhouse: walls with a raked front, windows all round, a door
