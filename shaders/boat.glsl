@@ -60,23 +60,47 @@ bool boat_contains(vec3 p)
 }
 
 // The sample's radiance and distance after the hulls: `water` at `dist`
-// (TL_SKY_DEPTH for the sky) along `ray`.
+// (TL_SKY_DEPTH for the sky) along `ray`. At one sample a pixel the hulls'
+// pass holds u_mesh_scale^2 of them (quality.mesh_scale; with more, each
+// sample's pass draws the hulls at its offset and this is 1): the pixel
+// averages them, each the hull where the hull is nearer (or the water
+// point lies inside it) and the water elsewhere, so its edges and paint
+// lines are antialiased. The distance is the nearest hull any saw.
 vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 {
-    ivec2 px = ivec2(gl_FragCoord.xy);
-    float hull = texelFetch(u_boat_distance, px, 0).r;
-    if (hull >= TL_SKY_DEPTH)
-        return water;
-    bool inside = dist < TL_SKY_DEPTH && boat_contains(vec3(0.0, u_cam_height, 0.0) + ray * dist);
-    if (hull < dist || inside) {
-        dist = hull;
+    int count = max(u_mesh_scale, 1);
+    ivec2 first = ivec2(gl_FragCoord.xy) * count;
+    bool inside = false, asked = false;
+    vec3 sum = vec3(0.0);
+    float nearest = TL_SKY_DEPTH;
+    for (int j = 0; j < count; j++)
+        for (int i = 0; i < count; i++) {
+            ivec2 at = first + ivec2(i, j);
+            float hull = texelFetch(u_boat_distance, at, 0).r;
+            bool covers = false;
+            if (hull < TL_SKY_DEPTH) {
+                if (!asked) { // the outline test once a pixel, where a hull is
+                    asked = true;
+                    inside = dist < TL_SKY_DEPTH &&
+                             boat_contains(vec3(0.0, u_cam_height, 0.0) + ray * dist);
+                }
+                covers = hull < dist || inside;
+            }
+            if (covers) {
+                if (hull < nearest) {
+                    nearest = hull;
 #ifdef TL_PASS_AOV
-        vec4 surface = texelFetch(u_boat_surface, px, 0);
-        aov_surface(surface.xyz, AOV_OBJECT + int(surface.w + 0.5) - 1);
+                    vec4 surface = texelFetch(u_boat_surface, at, 0);
+                    aov_surface(surface.xyz, AOV_OBJECT + int(surface.w + 0.5) - 1);
 #endif
-        return layer_emit(TL_LIGHT_BOAT, texelFetch(u_boat_color, px, 0).rgb);
-    }
-    return water;
+                }
+                sum += layer_emit(TL_LIGHT_BOAT, texelFetch(u_boat_color, at, 0).rgb);
+            } else
+                sum += water;
+        }
+    if (nearest < TL_SKY_DEPTH)
+        dist = nearest;
+    return sum / float(count * count);
 }
 
 // Metres from the water point p (camera-relative x z, absolute y) out to

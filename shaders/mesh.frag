@@ -100,7 +100,7 @@ void main()
         // depths looking down.
         vec3 sun = water_sun_at(depth) * u_sunlit;
 #ifdef TL_FEATURE_CAUSTICS
-        float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / u_resolution.y;
+        float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / (u_resolution.y * float(max(u_mesh_scale, 1)));
         sun *= caustic_light(v_world.xz, depth, footprint);
 #endif
         // From above: the sky's light and the share of the sun the water
@@ -162,7 +162,7 @@ void main()
         // of sea over the paint (its own colour, the sky mirrored at the
         // paint's gloss), and white foam in it lit as the water's is (the
         // sun wrapped a little round, as through a froth).
-        float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / u_resolution.y;
+        float footprint = length(v_world - u_eye) * 2.0 * u_tan_half_vfov / (u_resolution.y * float(max(u_mesh_scale, 1)));
         vec2 wash = hull_wash(u_object, v_world, footprint);
         vec3 film = sea + env * material_env_brdf(vec3(0.02), 0.05, nv);
         vec3 froth = 0.8 * (sunlight * (0.3 + 0.7 * max(dot(n, u_sun_dir), 0.0)) / TL_PI + ambient);

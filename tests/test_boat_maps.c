@@ -53,6 +53,9 @@ static void quad_scene(tl_scene *s, const tl_mesh *m, double sun_azimuth)
     s->width = 200;
     s->height = 150;
     s->time = 3.0;
+    /* A texel's value at a pixel's centre: one sample a pixel (2 x 2
+     * blends the checker's squares along their edges). */
+    s->quality.mesh_scale = 1;
     s->boat.enabled = true;
     s->boat.scale = 1.0;
     s->boat.size = 2.0;

@@ -256,13 +256,14 @@ static void draw_elements(const gpu_mesh *g, GLuint program)
     }
 }
 
-/* Draws every object in view into `t` (cleared first): directly, or each
- * mirrored in its water plane and clipped to what stands above it. */
+/* Draws every object in view into `t` (cleared first), `scale` samples a
+ * pixel along each axis: directly, or each mirrored in its water plane and
+ * clipped to what stands above it. */
 static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
-                        int mirrored)
+                        int mirrored, int scale)
 {
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
-    glViewport(0, 0, u->width, u->height);
+    glViewport(0, 0, u->width * scale, u->height * scale);
     const float zero[4] = {0, 0, 0, 0};
     const float sky[4] = {TL_FRAME_SKY_DEPTH, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
@@ -395,7 +396,12 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
 {
     /* With the compositing passes the hull's normal and object too. */
     const GLenum formats[3] = {GL_RGBA32F, GL_R32F, GL_RGBA32F};
-    int rc = tl_renderer_target_ensure_depth(&r->boat, u->width, u->height,
+    /* The hulls at n x n samples a pixel (quality.mesh_scale): the ocean
+     * pass composites each over the water (boat_composite), so their
+     * silhouettes and paint lines are antialiased. The mirror image is
+     * smeared by the ripples anyway: one sample. */
+    int scale = u->mesh_scale > 1 ? u->mesh_scale : 1;
+    int rc = tl_renderer_target_ensure_depth(&r->boat, u->width * scale, u->height * scale,
                                              tl_renderer_aov_on(r) ? 3 : 2, formats, 1, err);
     if (!rc)
         rc = tl_renderer_target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
@@ -447,8 +453,8 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, *program);
-    draw_meshes(r, *program, &r->boat, u, 0);
-    draw_meshes(r, *program, &r->mirror, u, 1);
+    draw_meshes(r, *program, &r->boat, u, 0, scale);
+    draw_meshes(r, *program, &r->mirror, u, 1, 1);
     glDisable(GL_DEPTH_TEST);
     return tl_renderer_check("drawing the boat", err);
 }

@@ -578,8 +578,12 @@ static void prepare_objects(const tl_scene *s, const tl_giant *giant, tl_frame_u
             u->features |= TL_FEATURE_WAKE;
         u->object_count++;
     }
-    if (u->features & TL_FEATURE_BOAT)
+    if (u->features & TL_FEATURE_BOAT) {
         prepare_view_proj(s, u);
+        /* With several samples a pixel each sample's pass draws the hulls
+         * at its own offset (tl_prepare_boat_sample): one sample each. */
+        u->mesh_scale = s->quality.spp > 1 || s->quality.mesh_scale < 1 ? 1 : s->quality.mesh_scale;
+    }
     if (u->features & TL_FEATURE_WAKE) {
         u->world_offset[0] = (float)wrap65536(s->camera.position[0]);
         u->world_offset[1] = (float)wrap65536(s->camera.position[2]);

@@ -261,6 +261,7 @@ typedef struct tl_frame_uniforms {
     float caustics;           /* underwater.caustics (TL_FEATURE_CAUSTICS) */
     float shafts;             /* underwater.shafts (TL_FEATURE_SHAFTS) */
     int shaft_steps;          /* quality.shaft_steps (TL_FEATURE_SHAFTS) */
+    int mesh_scale;           /* quality.mesh_scale (TL_FEATURE_BOAT): the hulls' target's n */
     float particles;          /* underwater.particles (TL_FEATURE_PARTICLES) */
     float particle_offset[3]; /* the camera wrapped every TL_PARTICLE_PERIOD m */
     float floor_depth;        /* ocean.floor_depth (TL_FEATURE_SEA_FLOOR) */

@@ -114,6 +114,7 @@
     X(FLOAT, caustics, 0, TL_FEATURE_CAUSTICS, "underwater.caustics: their strength") \
     X(FLOAT, shafts, 0, TL_FEATURE_SHAFTS, "underwater.shafts: their strength") \
     X(INT, shaft_steps, 0, TL_FEATURE_SHAFTS, "quality.shaft_steps: their samples along a ray") \
+    X(INT, mesh_scale, 0, TL_FEATURE_BOAT, "quality.mesh_scale: the hulls' target holds n x n samples a pixel") \
     X(FLOAT, particles, 0, TL_FEATURE_PARTICLES, "underwater.particles: motes per cubic metre") \
     X(VEC3, particle_offset, 0, TL_FEATURE_PARTICLES, "camera x y z wrapped every TL_PARTICLE_PERIOD m: the motes' grid") \
     X(FLOAT, floor_depth, 0, TL_FEATURE_SEA_FLOOR, "metres from the mean surface down to the sea floor") \

@@ -23,6 +23,7 @@ int tl_run_quality_meta(const tl_quality *q, tl_meta *out)
         {"tideline/giant_iterations", TL_META_INT, NULL, 0, q->giant_iterations, NULL},
         {"tideline/spray_step", TL_META_DOUBLE, NULL, q->spray_step, 0, NULL},
         {"tideline/shaft_steps", TL_META_INT, NULL, 0, q->shaft_steps, NULL},
+        {"tideline/mesh_scale", TL_META_INT, NULL, 0, q->mesh_scale, NULL},
         {"tideline/refine_steps", TL_META_INT, NULL, 0, q->refine_steps, NULL},
         {"tideline/polish", TL_META_INT, NULL, 0, q->polish, NULL},
         {"tideline/lod", TL_META_INT, NULL, 0, q->lod, NULL},

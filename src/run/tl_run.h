@@ -83,7 +83,7 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
 /* The effective quality knobs (the preset's name and every value) as
  * image metadata entries, so that a frame records how it was made.
  * Returns the count, TL_RUN_QUALITY_META. */
-#define TL_RUN_QUALITY_META 24
+#define TL_RUN_QUALITY_META 25
 int tl_run_quality_meta(const tl_quality *q, tl_meta *out);
 
 #endif

@@ -34,6 +34,7 @@ typedef struct tl_quality {
     int giant_iterations;  /* Newton steps inverting the giant wave's horizontal map */
     double spray_step;     /* metres of a ray in the giant wave's spray per step of its march */
     int shaft_steps;       /* samples of the light shafts along a ray under water (0: none) */
+    int mesh_scale;        /* the hulls' pass: n x n samples a pixel (1: one, its edges aliased) */
     int refine_steps;      /* secant steps toward the surface after the march hits */
     bool lod;              /* fade octaves finer than the pixel's footprint to their mean */
     bool analytic_normals; /* the wave sum's exact gradient instead of finite differences */
