@@ -37,6 +37,7 @@ uniform float u_prepass_scale; // the block a prepass ray stands for, in pixels
 #endif
 #ifdef TL_FEATURE_BOAT
 #include "boat.glsl"
+#include "lamps.glsl"
 #endif
 #ifdef TL_FEATURE_BOAT_SHADOW
 #include "boat_shadow.glsl"

@@ -43,6 +43,20 @@ float optics_fresnel_rough(float cos_i, float n1, float n2, float spread)
 // The spread of the facets a view through the surface meets: the slope
 // variance the normal leaves out, and at least a share of `pixel` (the
 // angle a pixel spans, radians).
+// A lamp's glint in a mirror: how much of its radiance a mirrored ray at
+// cos `cos_to` from its centre sees, for a lamp of angular radius `size`:
+// a Gaussian disc widened to at least TL_LAMP_GLINT_MIN radians, its
+// radiance scaled down to keep its light (a facet's glint of a lamp a few
+// centimetres wide is far under a pixel and would flicker frame to frame;
+// the ripples' normals spread the glints into the column a lamp draws on a
+// choppy sea) (tl_optics_lamp_glint).
+float optics_lamp_glint(float cos_to, float size)
+{
+    float spread = max(size, TL_LAMP_GLINT_MIN);
+    float angle2 = 2.0 * max(1.0 - cos_to, 0.0); // its angle squared, near the centre
+    return (size * size) / (spread * spread) * exp(-angle2 / (spread * spread));
+}
+
 // The share of the light through Snell's window (a cone of half-angle
 // asin(1 / ior) about the zenith, seen from under the water) that falls on
 // a face whose normal's y is ny, against one facing straight up: cos of the

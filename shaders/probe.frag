@@ -69,6 +69,8 @@
 //   mode 26: the white water's cover on a hull x metres above the water
 //           plane at y along its waterline (1 at the stem), speed z m/s,
 //           the lace w              (tl_mesh_wash_cover, tl_mesh_wash_top)
+//   mode 27: a lamp's glint at cos x from its centre, its angular radius y
+//                                            (tl_optics_lamp_glint)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -118,6 +120,8 @@ void main()
         result.x = optics_fresnel(p.x, p.y, 1.0);
     else if (u_probe_mode == 25)
         result.x = optics_window_share(p.x, p.y);
+    else if (u_probe_mode == 27)
+        result.x = optics_lamp_glint(p.x, p.y);
 #ifdef TL_FEATURE_UNDERWATER
     else if (u_probe_mode == 2)
         result.xyz = optics_water_transmittance(p.x);

@@ -69,7 +69,8 @@ vec3 water_facing(vec3 ray, vec3 n)
 // sqrt(2·slope_var) around n's match that spread's mean and variance.
 // *fresnel gets the mean Fresnel factor; the result is the reflection it
 // weights. `sunlit`: the share of the sun that reaches the water there.
-vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out float fresnel)
+vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, vec3 hit,
+                          out float fresnel)
 {
 #ifdef TL_FEATURE_FILTERED_SHADING
     float radius = sqrt(2.0 * slope_var);
@@ -85,7 +86,11 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out f
         float fk = optics_schlick(ray, nk);
         vec3 r = normalize(reflect(ray, nk));
         r.y = abs(r.y); // reflections never look into the water
-        sum += fk * sky_reflected(r, sunlit);
+        vec3 seen = sky_reflected(r, sunlit);
+#ifdef TL_FEATURE_BOAT
+        seen += lamps_mirrored(hit, r);
+#endif
+        sum += fk * seen;
         fresnel_sum += fk;
     }
     fresnel = fresnel_sum / 3.0;
@@ -94,7 +99,11 @@ vec3 water_sky_reflection(vec3 ray, vec3 n, float slope_var, float sunlit, out f
     fresnel = optics_schlick(ray, n);
     vec3 r = normalize(reflect(ray, n));
     r.y = abs(r.y); // reflections never look into the water
-    return sky_reflected(r, sunlit);
+    vec3 seen = sky_reflected(r, sunlit);
+#ifdef TL_FEATURE_BOAT
+    seen += lamps_mirrored(hit, r);
+#endif
+    return seen;
 #endif
 }
 
@@ -171,7 +180,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #endif
 
     float fresnel;
-    vec3 reflection = water_sky_reflection(ray, n, slope_var, sunlit, fresnel);
+    vec3 reflection = water_sky_reflection(ray, n, slope_var, sunlit, hit, fresnel);
     // The share of the mirrored sky the giant wave leaves in view: in front
     // of it a ray mirrored toward it meets its face, not the bright sky near
     // a sun low behind it (the trough ahead of a backlit wave shone with a

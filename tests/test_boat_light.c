@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "mesh/tl_mesh.h"
+#include "optics/tl_optics.h"
 #include "tl_gl_test.h"
 #include "waves/tl_bow_spray.h"
 
@@ -529,6 +530,103 @@ static void test_bow_wash(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&empty);
 }
 
+/* The lamps: the built-in boat's four (masthead and stern white, red to
+ * port at -x, green to starboard), their glint in the water on the GPU as
+ * on the CPU and carrying the lamp's light (its integral over the sky is
+ * the lamp's disc, pi size^2, however widened); at dusk with boat.lights
+ * on, the water beside the boat takes their light and the hull's pixels
+ * are the ones the lamps themselves change. */
+static void test_lamp_glints(tl_renderer *r, const tl_mesh *m)
+{
+    float where[TL_MESH_LAMPS][4], light[TL_MESH_LAMPS][4];
+    int count = tl_mesh_lamps(m, where, light);
+    int red = 0, green = 0, white = 0;
+    for (int k = 0; k < count; k++) {
+        if (light[k][0] > 5.0 * light[k][1] && where[k][0] < 0.0f)
+            red++;
+        else if (light[k][1] > 3.0 * light[k][0] && where[k][0] > 0.0f)
+            green++;
+        else if (light[k][0] > 0.5 * light[k][1] && light[k][1] > 0.5 * light[k][0])
+            white++;
+    }
+    printf("lamps of the built-in boat: %d (red to port %d, green to starboard %d, white %d)\n",
+           count, red, green, white);
+    CHECK(count == 4 && red == 1 && green == 1 && white == 2);
+
+    enum { N = 32 };
+    tl_scene s;
+    boat_at_origin(&s);
+    tl_frame_uniforms u;
+    gl_test_prepare(r, &s, &u);
+    float in[2 * N], out[4 * N];
+    for (int i = 0; i < N; i++) {
+        in[2 * i] = (float)cos(0.04 * i / N);          /* up to 0.04 rad off its centre */
+        in[2 * i + 1] = (float)(i % 2 ? 0.004 : 0.03); /* under and over the least spread */
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_probe(r, &u, 27, in, N, 1, out, &err) == 0);
+    double worst = 0.0;
+    for (int i = 0; i < N; i++)
+        worst = fmax(worst, fabs(out[4 * i] - tl_optics_lamp_glint(in[2 * i], in[2 * i + 1])));
+    /* Its light over the sky, for a lamp under and over the least spread. */
+    double carried[2];
+    const double sizes[2] = {0.004, 0.03};
+    for (int k = 0; k < 2; k++) {
+        double sum = 0.0, step = 1e-5;
+        for (double a = 0.5 * step; a < 0.3; a += step)
+            sum += tl_optics_lamp_glint(cos(a), sizes[k]) * 2.0 * M_PI * sin(a) * step;
+        carried[k] = sum / (M_PI * sizes[k] * sizes[k]);
+    }
+    printf("lamp glints: GPU against CPU %.2g; light carried against the lamp's disc %.4f (4 mrad) "
+           "%.4f (30 mrad)\n",
+           worst, carried[0], carried[1]);
+    CHECK(worst < 1e-5);
+    CHECK_NEAR(carried[0], 1.0, 0.01);
+    CHECK_NEAR(carried[1], 1.0, 0.01);
+
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    boat_at_origin(&s);
+    s.sun.elevation = -2.0 * M_PI / 180.0;
+    s.camera.position[0] = 14.0;
+    s.camera.position[1] = 2.0;
+    s.camera.position[2] = -6.0;
+    const double target[3] = {0.0, 0.5, 0.0};
+    tl_scene_camera_look_at(&s.camera, target, NULL);
+    tl_scene lit = s, none = s;
+    s.boat.lights = 0.0;
+    lit.boat.lights = 1.0;
+    none.boat.enabled = false;
+    tl_frame dark, bright, empty;
+    if (render(r, &s, &dark))
+        return;
+    if (render(r, &lit, &bright) || render(r, &none, &empty)) {
+        tl_frame_free(&dark);
+        return;
+    }
+    long water = 0, hull = 0, lit_water = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            size_t i = (size_t)y * s.width + x;
+            bool on_hull = bright.depth[i] < empty.depth[i] - 0.2;
+            double d = luminance(pixel(&bright, x, y)) - luminance(pixel(&dark, x, y));
+            if (on_hull) {
+                hull++;
+                continue;
+            }
+            water++;
+            lit_water += d > 1e-3 + 0.1 * luminance(pixel(&dark, x, y));
+        }
+    printf("lamps at dusk: %ld of %ld water pixels lit by them (over a tenth brighter)\n",
+           lit_water, water);
+    CHECK(hull > 300);
+    CHECK(lit_water > 100);
+    CHECK(lit_water < water / 2);
+    tl_frame_free(&dark);
+    tl_frame_free(&bright);
+    tl_frame_free(&empty);
+}
+
 /* The bow's spray: compiled in only where the water rises against the bow
  * fast enough; its density on the GPU against the CPU's; drawn, it whitens
  * the water around the stem and nothing beyond the sheet's sphere. */
@@ -731,6 +829,7 @@ int main(void)
     test_hull_above(r, &boat);
     test_bow_wave(r, &boat);
     test_bow_wash(r, &boat);
+    test_lamp_glints(r, &boat);
     test_boat_far(r, &boat);
     test_bow_spray(r, &boat);
     tl_mesh_free(&boat);

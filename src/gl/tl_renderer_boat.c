@@ -2,6 +2,7 @@
  * the GPU, the sun's shadow map of each, the lit hulls and their distance,
  * and their mirror images in the water, for the ocean pass to composite
  * (shaders/boat.glsl); the uniform block the ocean pass reads them from. */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -135,6 +136,7 @@ static int upload_mesh(gpu_mesh *g, GLuint vao, const tl_mesh *mesh, tl_error *e
     glBindVertexArray(vao);
     g->indices = (GLsizei)mesh->index_count;
     tl_mesh_outline_of(mesh, &g->outline);
+    g->lamp_count = tl_mesh_lamps(mesh, g->lamp, g->lamp_light);
     int rc = tl_mesh_has_maps(mesh) ? upload_maps(g, mesh, err) : TL_OK;
     if (rc) {
         drop_mesh(g);
@@ -209,6 +211,20 @@ int tl_renderer_upload_objects(tl_renderer *r, const tl_frame_uniforms *u, tl_er
         b->outline_z[1] = o->waterline_z[1];
         b->outline_z[2] = o->plan_z[0];
         b->outline_z[3] = o->plan_z[1];
+        /* Its lamps, camera-relative, lit by boat.lights (the model matrix
+         * is column-major, its scale uniform). */
+        const float *mm = u->object_pass[i].model;
+        float scale = sqrtf(mm[0] * mm[0] + mm[1] * mm[1] + mm[2] * mm[2]);
+        memset(b->lamp, 0, sizeof b->lamp);
+        memset(b->lamp_light, 0, sizeof b->lamp_light);
+        for (int k = 0; k < g->lamp_count && u->object_pass[i].lights > 0.0f; k++) {
+            const float *p = g->lamp[k];
+            for (int c = 0; c < 3; c++) {
+                b->lamp[k][c] = mm[c] * p[0] + mm[4 + c] * p[1] + mm[8 + c] * p[2] + mm[12 + c];
+                b->lamp_light[k][c] = g->lamp_light[k][c] * u->object_pass[i].lights;
+            }
+            b->lamp[k][3] = p[3] * scale;
+        }
     }
     glBindBuffer(GL_UNIFORM_BUFFER, r->objects_ubo);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, (GLsizeiptr)((size_t)u->object_count * sizeof *objects),

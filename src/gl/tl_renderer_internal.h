@@ -130,6 +130,9 @@ typedef struct gpu_mesh {
     /* Its outline (tl_mesh_outline_of): the water's contact foam follows
      * its waterline, and its plan keeps the sea out of it. */
     tl_mesh_outline outline;
+    /* Its lamps (tl_mesh_lamps), model units: the water mirrors them. */
+    int lamp_count;
+    float lamp[TL_MESH_LAMPS][4], lamp_light[TL_MESH_LAMPS][4];
 } gpu_mesh;
 
 struct tl_renderer {

@@ -497,3 +497,88 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
         tl_mesh_free(out);
     return rc;
 }
+
+int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[TL_MESH_LAMPS][4])
+{
+    enum { MOST = 32 };
+    double first[MOST][3], sum[MOST][3], glow[MOST][3], reach[MOST];
+    int members[MOST], count = 0;
+    double length = 0.0;
+    for (int k = 0; k < 3; k++)
+        length = fmax(length, (double)m->bounds_max[k] - m->bounds_min[k]);
+    const double gather = TL_MESH_LAMP_GATHER * length;
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        double emission = m->surface[4 * v + 3];
+        if (!(emission > 0.0))
+            continue;
+        const float *p = m->positions + 3 * v, *c = m->colors + 3 * v;
+        int at = -1;
+        for (int i = 0; i < count && at < 0; i++) {
+            double d2 = 0.0;
+            for (int k = 0; k < 3; k++)
+                d2 += (p[k] - first[i][k]) * (p[k] - first[i][k]);
+            if (d2 <= gather * gather)
+                at = i;
+        }
+        if (at < 0) {
+            if (count == MOST)
+                continue; /* past the most clusters: a model of many lamps keeps the first */
+            at = count++;
+            members[at] = 0;
+            for (int k = 0; k < 3; k++) {
+                first[at][k] = p[k];
+                sum[at][k] = glow[at][k] = 0.0;
+            }
+        }
+        members[at]++;
+        for (int k = 0; k < 3; k++) {
+            sum[at][k] += p[k];
+            glow[at][k] += c[k] * emission;
+        }
+    }
+    /* Centres and radiance, then each cluster's radius. */
+    for (int i = 0; i < count; i++) {
+        for (int k = 0; k < 3; k++) {
+            sum[i][k] /= members[i];
+            glow[i][k] /= members[i];
+        }
+        reach[i] = 0.0;
+    }
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        if (!(m->surface[4 * v + 3] > 0.0))
+            continue;
+        const float *p = m->positions + 3 * v;
+        for (int i = 0; i < count; i++) {
+            double d2 = 0.0;
+            for (int k = 0; k < 3; k++)
+                d2 += (p[k] - sum[i][k]) * (p[k] - sum[i][k]);
+            if (d2 <= 4.0 * gather * gather)
+                reach[i] = fmax(reach[i], sqrt(d2));
+        }
+    }
+    /* The brightest TL_MESH_LAMPS (by luminance), in that order. */
+    int kept = 0;
+    int used[MOST] = {0};
+    while (kept < TL_MESH_LAMPS) {
+        int best = -1;
+        double best_y = 0.0;
+        for (int i = 0; i < count; i++) {
+            double y = 0.2126 * glow[i][0] + 0.7152 * glow[i][1] + 0.0722 * glow[i][2];
+            if (!used[i] && y > best_y) {
+                best = i;
+                best_y = y;
+            }
+        }
+        if (best < 0)
+            break;
+        used[best] = 1;
+        for (int k = 0; k < 3; k++) {
+            where[kept][k] = (float)sum[best][k];
+            light[kept][k] = (float)glow[best][k];
+        }
+        where[kept][3] = (float)reach[best];
+        light[kept][3] = 0.0f;
+        kept++;
+    }
+    return kept;
+}

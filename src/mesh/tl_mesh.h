@@ -136,6 +136,16 @@ typedef struct tl_mesh_outline {
     float top; /* the mesh's highest y */
 } tl_mesh_outline;
 void tl_mesh_outline_of(const tl_mesh *m, tl_mesh_outline *out);
+
+/* The lamps of a mesh: its emissive vertices gathered into clusters (a
+ * vertex within TL_MESH_LAMP_GATHER of the mesh's length of a cluster's
+ * first joins it), the TL_MESH_LAMPS brightest kept. Each: its centre
+ * and radius (model units) in `where`, its radiance at full boat.lights
+ * (colour x emission, linear r g b; w unused) in `light`. The water
+ * mirrors them (shaders/lamps.glsl). Returns how many. */
+#define TL_MESH_LAMPS       4
+#define TL_MESH_LAMP_GATHER 0.03
+int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[TL_MESH_LAMPS][4]);
 /* Whether model point p is inside the hull: below its top, and within
  * the waterline's half width at or below y = 0, widening linearly to the
  * plan's at the plan's height (the flare) above. The CPU mirror of

@@ -29,6 +29,13 @@ double tl_optics_snell_window(double n)
     return asin(1.0 / n);
 }
 
+double tl_optics_lamp_glint(double cos_to, double size)
+{
+    double spread = fmax(size, TL_LAMP_GLINT_MIN);
+    double angle2 = 2.0 * fmax(1.0 - cos_to, 0.0);
+    return (size * size) / (spread * spread) * exp(-angle2 / (spread * spread));
+}
+
 double tl_optics_window_share(double ny, double ior)
 {
     double s = 1.0 / ior;

@@ -34,6 +34,14 @@ double tl_optics_fresnel_rough(double cos_i, double n1, double n2, double spread
  * asin(1 / n) radians (48.6° for water). */
 double tl_optics_snell_window(double n);
 
+/* A lamp's glint in a mirror: the share of its radiance a mirrored ray at
+ * cos `cos_to` from its centre sees, for a lamp of angular radius `size`
+ * (radians): a Gaussian disc exp(-angle^2 / spread^2) widened to
+ * spread = max(size, TL_LAMP_GLINT_MIN), times (size / spread)^2 so that
+ * it carries the lamp's light (shaders/optics.glsl, optics_lamp_glint). */
+#define TL_LAMP_GLINT_MIN 0.015
+double tl_optics_lamp_glint(double cos_to, double size);
+
 /* The share of the light through Snell's window (a cone of half-angle
  * asin(1 / ior) about the zenith) that falls on a face under the water
  * whose normal's y is ny, against a face turned straight up: ny while the

@@ -133,6 +133,11 @@ typedef struct tl_object_uniforms {
      * absolute) and amount (0: none); heading, unit (x, z), and radius. */
     float bow_spray[4];
     float bow_spray_shape[4];
+    /* Its lamps (tl_mesh_lamps, filled by the renderer, which has the
+     * mesh): camera-relative centre and radius (m); radiance r g b times
+     * boat.lights (0: dark). The water mirrors them. */
+    float lamp[TL_MESH_LAMPS][4];
+    float lamp_light[TL_MESH_LAMPS][4];
 } tl_object_uniforms;
 
 /* A floating object's mesh pass, beside its uniforms. */
