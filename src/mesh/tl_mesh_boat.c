@@ -67,8 +67,11 @@ static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
     [GLASS] = {{0.016f, 0.015f, 0.013f}, 0.05f, 0.0f, 0.1f},
     [FRAME] = {{0.05f, 0.05f, 0.05f}, 0.4f, 0.0f, 0.0f}, /* black rubber and paint */
     [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
-    [LAMP_PORT] = {{0.80f, 0.03f, 0.02f}, 0.1f, 0.0f, 60.0f},
-    [LAMP_STARBOARD] = {{0.02f, 0.80f, 0.15f}, 0.1f, 0.0f, 60.0f},
+    /* The side lights' lenses are dark coloured glass by day (a pale
+     * saturated diffuse read as a sticker), bright when lit: the same
+     * radiance as before, colour x emission. */
+    [LAMP_PORT] = {{0.08f, 0.003f, 0.002f}, 0.1f, 0.0f, 600.0f},
+    [LAMP_STARBOARD] = {{0.002f, 0.08f, 0.015f}, 0.1f, 0.0f, 600.0f},
     [LAMP_WHITE] = {{0.80f, 0.78f, 0.70f}, 0.1f, 0.0f, 60.0f},
 };
 
