@@ -16,6 +16,7 @@ uniform mat4 u_view_proj;
 uniform mat4 u_boat_model;
 uniform mat4 u_mirror;       // identity, or the reflection about the water plane
 uniform float u_clip_height; // camera-relative y of the water plane (reflection pass)
+uniform float u_clip_sign;   // 1 keeps what stands above it, -1 what lies below
 
 out vec3 v_world; // camera-relative metres, before any mirror
 out vec3 v_normal;
@@ -41,6 +42,6 @@ void main()
 #endif
     float scale = length(u_boat_model[0].xyz);
     v_wet = vec2(a_position.y, a_position.z + 0.7 * a_position.x) * scale;
-    gl_ClipDistance[0] = world.y - u_clip_height;
+    gl_ClipDistance[0] = u_clip_sign * (world.y - u_clip_height);
     gl_Position = u_view_proj * (u_mirror * world);
 }

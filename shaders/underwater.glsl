@@ -62,6 +62,38 @@ vec3 underwater_below(vec3 origin, vec3 ray, bool direct, out float dist)
     return water_inscatter(depth, ray, TL_SKY_DEPTH);
 }
 
+#ifdef TL_FEATURE_BOAT
+uniform sampler2D u_boat_underside;          // the hulls below the water mirrored in the
+                                             // surface's underside, alpha = covered
+uniform sampler2D u_boat_underside_distance; // the mirrored path's length from the eye
+
+// What the surface's underside mirrors at the water point `hit` (camera-
+// relative x z, y absolute), `t` along the view ray, its normal n: the
+// depths seen along the mirrored ray `down` (`water`), or a hull's part
+// below the water mirrored in the surface (the mesh pass drew it from the
+// eye's mirror image), dimmed on its way from the surface with the water's
+// light between; looked up where the pixel is, shifted by the facet's slope
+// as the reflection from above is (boat_reflect). Without it the hull's
+// upper part, hidden from an eye just under the surface by the surface's
+// underside, left a band of water between the boat above the waterline
+// and its keel below.
+vec3 boat_underside(vec3 water, vec3 n, vec3 hit, vec3 down, float t)
+{
+    vec2 size = vec2(textureSize(u_boat_underside, 0));
+    vec2 shift = n.xz * 0.15;
+    shift *= min(1.0, TL_MIRROR_SHIFT / max(length(shift), 1.0e-6));
+    ivec2 at = ivec2(clamp(gl_FragCoord.xy + shift * size.y, vec2(0.0), size - 1.0));
+    vec4 hull = texelFetch(u_boat_underside, at, 0);
+    if (!(hull.a > 0.0))
+        return water;
+    float beyond = max(texelFetch(u_boat_underside_distance, at, 0).r - t, 0.0);
+    vec3 seen = layer_emit(TL_LIGHT_REFLECTION, hull.rgb / hull.a) *
+                    optics_water_transmittance(beyond) +
+                water_inscatter(max(-hit.y, 0.0), down, beyond);
+    return mix(water, seen, min(hull.a, 1.0));
+}
+#endif
+
 // Radiance along a ray seen from under the water; *dist is the distance to
 // the surface, or TL_SKY_DEPTH for the depths.
 vec3 trace_underwater(vec3 ray, out float dist)
@@ -122,7 +154,11 @@ vec3 trace_underwater(vec3 ray, out float dist)
     vec3 down = reflect(ray, -n);
     down.y = -abs(down.y);
     float mirrored;
-    vec3 surface = (1.0 - fresnel) * through + fresnel * underwater_below(hit, down, false, mirrored);
+    vec3 depths = underwater_below(hit, down, false, mirrored);
+#ifdef TL_FEATURE_BOAT
+    depths = boat_underside(depths, n, hit, down, t);
+#endif
+    vec3 surface = (1.0 - fresnel) * through + fresnel * depths;
 #if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_FEATURE_WAKE)
     // Foam on the surface seen from below (the giant wave's and the
     // wake's): it hides Snell's window and glows with the daylight it lets

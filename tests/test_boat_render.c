@@ -201,6 +201,58 @@ static void test_mesh_scale(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&fine);
 }
 
+/* From just under the surface, level with the boat: between the keel and
+ * the surface the eye sees the surface's underside, which mirrors the
+ * hull's part below the water (total internal reflection). Where the ray
+ * ends on the surface in both frames, the frame with the boat differs from
+ * the one without over a band above the hull, and only there. */
+static void test_underside_mirror(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_scene(&s);
+    s.quality.mesh_scale = 1;
+    s.boat.pitch = s.boat.roll = 0.0;
+    s.boat.heading = 0.0;
+    s.ocean.depth = 0.3; /* a low chop: the underside mirrors */
+    s.camera.position[0] = 9.0;
+    s.camera.position[1] = -0.35;
+    s.camera.position[2] = 0.0;
+    s.camera.yaw = -90.0 * M_PI / 180.0;
+    s.camera.pitch = 2.0 * M_PI / 180.0;
+    tl_scene none = s;
+    none.boat.enabled = false;
+    tl_frame with, without;
+    if (render(r, &s, &with))
+        return;
+    if (render(r, &none, &without)) {
+        tl_frame_free(&with);
+        return;
+    }
+    long mirrored = 0, surface = 0;
+    for (int y = 0; y < s.height; y++)
+        for (int x = 0; x < s.width; x++) {
+            size_t i = (size_t)y * s.width + x;
+            /* The ray ends on the surface in both (not on the hull, not in
+             * the depths). */
+            if (!(with.depth[i] < 1e5f && fabsf(with.depth[i] - without.depth[i]) < 0.01f))
+                continue;
+            surface++;
+            double seen = luminance(with.color + 4 * i), bare = luminance(without.color + 4 * i);
+            mirrored += fabs(seen - bare) > 0.05 * bare;
+        }
+    printf("from under the surface: %ld of %ld pixels of the surface's underside changed by the "
+           "hull mirrored in it\n",
+           mirrored, surface);
+    CHECK(surface > 1000);
+    CHECK(mirrored > 50);
+    CHECK(mirrored < surface / 2);
+    tl_frame_free(&with);
+    tl_frame_free(&without);
+}
+
 /* A boat that came round a bend at 6 m/s, seen from above its stern: its
  * wake curves away in front of the camera, thick with foam. */
 static void wake_scene(tl_scene *s)
@@ -752,6 +804,7 @@ int main(int argc, char **argv)
     test_pitched_deck(r, &builtin);
     test_hull_antialiased(r, &builtin);
     test_mesh_scale(r, &builtin);
+    test_underside_mirror(r, &builtin);
     test_wake_groups(r, &builtin);
     test_wake_swept(r, &builtin, argv[2]);
     test_mirror_rect(r, &builtin);

@@ -332,6 +332,7 @@ void tl_renderer_destroy(tl_renderer *r)
     tl_renderer_target_free(&r->display);
     tl_renderer_target_free(&r->boat);
     tl_renderer_target_free(&r->mirror);
+    tl_renderer_target_free(&r->underside);
     tl_renderer_target_free(&r->glare);
     for (int i = 0; i < TL_PREPASS_LEVELS; i++)
         tl_renderer_target_free(&r->hint[i]);

@@ -272,12 +272,18 @@ static void draw_elements(const gpu_mesh *g, GLuint program)
     }
 }
 
+/* How draw_meshes draws: as seen, mirrored in each object's water plane
+ * and clipped to what stands above it (the reflection seen from above),
+ * or mirrored and clipped to what lies below (seen from under the water
+ * in the surface's underside). */
+enum { DRAW_DIRECT, DRAW_MIRROR_ABOVE, DRAW_MIRROR_BELOW };
+
 /* Draws every object in view into `t` (cleared first), `scale` samples a
- * pixel along each axis: directly, or each mirrored in its water plane and
- * clipped to what stands above it. */
+ * pixel along each axis, as `how` says. */
 static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const tl_frame_uniforms *u,
-                        int mirrored, int scale)
+                        int how, int scale)
 {
+    const int mirrored = how != DRAW_DIRECT;
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo);
     glViewport(0, 0, u->width * scale, u->height * scale);
     const float zero[4] = {0, 0, 0, 0};
@@ -304,6 +310,7 @@ static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const t
         glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
         /* The direct pass clips nothing, whatever the clip-distance state. */
         glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
+        glUniform1f(tl_renderer_loc(program, "u_clip_sign"), how == DRAW_MIRROR_BELOW ? -1.0f : 1.0f);
         glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_model"), 1, GL_FALSE, pass->model);
         glUniform1i(tl_renderer_loc(program, "u_object"), i);
         glUniform1i(tl_renderer_loc(program, "u_scene_object"), pass->object);
@@ -421,6 +428,9 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
                                              tl_renderer_aov_on(r) ? 3 : 2, formats, 1, err);
     if (!rc)
         rc = tl_renderer_target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
+    const int under = (u->features & TL_FEATURE_UNDERWATER) != 0;
+    if (!rc && under)
+        rc = tl_renderer_target_ensure_depth(&r->underside, u->width, u->height, 2, formats, 1, err);
     if (rc)
         return rc;
     glEnable(GL_DEPTH_TEST);
@@ -469,8 +479,10 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
     glUniformMatrix4fv(tl_renderer_loc(*program, "u_view_proj"), 1, GL_FALSE, u->view_proj);
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, *program);
-    draw_meshes(r, *program, &r->boat, u, 0, scale);
-    draw_meshes(r, *program, &r->mirror, u, 1, 1);
+    draw_meshes(r, *program, &r->boat, u, DRAW_DIRECT, scale);
+    draw_meshes(r, *program, &r->mirror, u, DRAW_MIRROR_ABOVE, 1);
+    if (under)
+        draw_meshes(r, *program, &r->underside, u, DRAW_MIRROR_BELOW, 1);
     glDisable(GL_DEPTH_TEST);
     return tl_renderer_check("drawing the boat", err);
 }
@@ -491,6 +503,16 @@ void tl_renderer_bind_boat(const tl_renderer *r, GLuint program, unsigned featur
         glBindTexture(GL_TEXTURE_2D, r->boat.tex[2]);
         glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
         glUniform1i(tl_renderer_loc(program, "u_boat_surface"), TL_UNIT_BOAT_SURFACE);
+    }
+    if (features & TL_FEATURE_UNDERWATER) {
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_UNDERSIDE);
+        glBindTexture(GL_TEXTURE_2D, r->underside.tex[0]);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_BOAT_UNDERSIDE_DISTANCE);
+        glBindTexture(GL_TEXTURE_2D, r->underside.tex[1]);
+        glActiveTexture(GL_TEXTURE0 + TL_UNIT_INPUT);
+        glUniform1i(tl_renderer_loc(program, "u_boat_underside"), TL_UNIT_BOAT_UNDERSIDE);
+        glUniform1i(tl_renderer_loc(program, "u_boat_underside_distance"),
+                    TL_UNIT_BOAT_UNDERSIDE_DISTANCE);
     }
     if (features & TL_FEATURE_BOAT_SHADOW)
         bind_shadow(r, program);

@@ -44,6 +44,8 @@ enum {
     TL_UNIT_BOAT_SHADOW = 6,       /* the objects' shadow maps (the mesh pass's too) */
     TL_UNIT_MESH_MAPS = 7,         /* the mesh pass's maps, 7 to 11 in tl_mesh_map order */
     TL_UNIT_BOAT_SURFACE = 12,     /* the ocean's with the passes: the hull's normal and object */
+    TL_UNIT_BOAT_UNDERSIDE = 13,   /* under water: the hull mirrored in the surface's underside, */
+    TL_UNIT_BOAT_UNDERSIDE_DISTANCE = 14, /* its path's length */
     TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
     TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
     TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
@@ -158,6 +160,9 @@ struct tl_renderer {
     target display;  /* at the output size: tonemapped RGBA32F, colour RGBA32F, distance R32F */
     target boat;   /* the lit hull RGBA32F + its distance R32F + depth (+ its normal and object) */
     target mirror; /* the hull reflected in the water RGBA32F + depth */
+    /* Under water: the hulls' part below the water mirrored in the
+     * surface's underside RGBA32F + its path's length R32F + depth. */
+    target underside;
     /* The march prepass's distances R32F, level i at 1 / 2^(i+1) of the
      * render size (tl_renderer_prepass.c). */
     target hint[TL_PREPASS_LEVELS];
