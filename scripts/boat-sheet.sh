@@ -16,4 +16,4 @@ tl_sheet "${1:-docs/images/boat-sheet.png}" "${2:-final}" "boat sheet" \
   scripts/boat-shots/side.tl:1 scripts/boat-shots/bow_wave.tl:2 \
   scripts/boat-shots/shadows.tl:1 scripts/boat-shots/wake.tl:8.33 \
   timelines/dive.tl:6.25 scripts/boat-shots/lights.tl:1 \
-  timelines/rescue.tl:6 timelines/rescue.tl:11
+  scripts/boat-shots/deck.tl:2 timelines/rescue.tl:11
