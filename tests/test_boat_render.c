@@ -144,6 +144,35 @@ static void test_depth(tl_renderer *r, const tl_mesh *m, const char *name, tl_sc
     tl_frame_free(&without);
 }
 
+/* Over the pixels where frames a and b differ, their summed radiance
+ * error against `ref` (4x their size) box-filtered down: into *err_a and
+ * *err_b. Returns how many pixels differ. */
+static int box_errors(const tl_frame *ref, const tl_frame *a, const tl_frame *b, double *err_a,
+                      double *err_b)
+{
+    int pixels = 0;
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++) {
+            double box[3] = {0, 0, 0};
+            for (int j = 0; j < 4; j++)
+                for (int i = 0; i < 4; i++)
+                    for (int c = 0; c < 3; c++)
+                        box[c] +=
+                            ref->color[((size_t)(4 * y + j) * ref->width + 4 * x + i) * 4 + c] /
+                            16.0;
+            size_t at = ((size_t)y * a->width + x) * 4;
+            int differ = 0;
+            for (int c = 0; c < 3; c++)
+                differ |= fabs(a->color[at + c] - b->color[at + c]) > 1e-5f;
+            for (int c = 0; differ && c < 3; c++) {
+                *err_a += fabs(a->color[at + c] - box[c]);
+                *err_b += fabs(b->color[at + c] - box[c]);
+            }
+            pixels += differ;
+        }
+    return pixels;
+}
+
 /* At one sample a pixel, the hulls' pass at 2 x 2 samples a pixel
  * (quality.mesh_scale 2, `final`'s) comes closer to the frame rendered at
  * 4x the size and box-filtered down than one sample (mesh_scale 1) over
@@ -172,25 +201,7 @@ static void test_mesh_scale(tl_renderer *r, const tl_mesh *m)
         return;
     }
     double err_one = 0.0, err_two = 0.0;
-    int pixels = 0;
-    for (int y = 0; y < s.height; y++)
-        for (int x = 0; x < s.width; x++) {
-            double box[3] = {0, 0, 0};
-            for (int j = 0; j < 4; j++)
-                for (int i = 0; i < 4; i++)
-                    for (int c = 0; c < 3; c++)
-                        box[c] +=
-                            ref.color[((size_t)(4 * y + j) * big.width + 4 * x + i) * 4 + c] / 16.0;
-            size_t at = ((size_t)y * s.width + x) * 4;
-            int differ = 0;
-            for (int c = 0; c < 3; c++)
-                differ |= fabs(one.color[at + c] - fine.color[at + c]) > 1e-5f;
-            for (int c = 0; differ && c < 3; c++) {
-                err_one += fabs(one.color[at + c] - box[c]);
-                err_two += fabs(fine.color[at + c] - box[c]);
-            }
-            pixels += differ;
-        }
+    int pixels = box_errors(&ref, &one, &fine, &err_one, &err_two);
     printf("the hulls' pass at 2x2 samples against 4x the size, box-filtered, over the %d pixels "
            "where it differs from one sample: one %.3f, 2x2 %.3f (summed radiance error)\n",
            pixels, err_one, err_two);
@@ -739,25 +750,7 @@ static void test_hull_antialiased(tl_renderer *r, const tl_mesh *m)
                                 TL_PLANES_ALL, &each, &err);
     CHECK(rc == 0);
     double err_one = 0.0, err_each = 0.0;
-    int pixels = 0;
-    for (int y = 0; y < s.height; y++)
-        for (int x = 0; x < s.width; x++) {
-            double box[3] = {0, 0, 0};
-            for (int j = 0; j < 4; j++)
-                for (int i = 0; i < 4; i++)
-                    for (int c = 0; c < 3; c++)
-                        box[c] +=
-                            ref.color[((size_t)(4 * y + j) * big.width + 4 * x + i) * 4 + c] / 16.0;
-            size_t at = ((size_t)y * s.width + x) * 4;
-            int hull = 0; /* the two differ only where the hull is */
-            for (int c = 0; c < 3; c++)
-                hull |= fabs(one.color[at + c] - each.color[at + c]) > 1e-5f;
-            for (int c = 0; hull && c < 3; c++) {
-                err_one += fabs(one.color[at + c] - box[c]);
-                err_each += fabs(each.color[at + c] - box[c]);
-            }
-            pixels += hull;
-        }
+    int pixels = box_errors(&ref, &one, &each, &err_one, &err_each); /* they differ at the hull */
     printf("16 samples against 4x the size, box-filtered, over the %d pixels where they differ: "
            "one pass %.3f, a pass per sample %.3f (summed radiance error)\n",
            pixels, err_one, err_each);
