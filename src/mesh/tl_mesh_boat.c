@@ -331,6 +331,18 @@ static void deck(tl_mesh_soup *s)
             double e[3] = {l.beam, l.sheer, z}, f[3] = {-l.beam, l.sheer, z};
             double down[3] = {0.0, l.sheer - 1.0, z};
             tl_mesh_soup_quad(s, d, c, e, f, WOOD, P_BOX, down);
+            /* The rub rail's ends at the transom, closed (open, they read
+             * as a cut tube): a fan over its half-round. */
+            for (int sx = 0; sx < 2; sx++) {
+                double mid[3] = {0, 0, 0};
+                for (int k = 0; k < 5; k++)
+                    for (int c3 = 0; c3 < 3; c3++)
+                        mid[c3] += rail[sx][k][c3] / 5.0;
+                double forward[3] = {mid[0], mid[1], mid[2] + 1.0};
+                for (int k = 0; k < 4; k++)
+                    tl_mesh_soup_triangle(s, mid, rail[sx][k], rail[sx][k + 1], WOOD, P_BOX,
+                                          forward);
+            }
         }
         memcpy(prev_deck, dk, sizeof dk);
         memcpy(prev_edge, edge, sizeof edge);
