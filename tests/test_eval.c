@@ -379,6 +379,18 @@ static void test_objects(void)
     CHECK(run("check", file, NULL) == 0);
     CHECK(strstr(out_text, "objects   2 floating: boat (built-in boat), rescue (built-in boat)") !=
           NULL);
+    /* One boat with a model: check names the file it loads and its real
+     * length (the skiff is 4 units long, at 1.5 m a unit). */
+    char skiff[512], text_file[1024];
+    snprintf(skiff, sizeof skiff, "%s/../tests/meshes/skiff.gltf", timelines);
+    snprintf(text_file, sizeof text_file,
+             "tideline 1\nduration 2s\npath boat\n  0s 0 0\n  2s 0 4\nset boat.model %s\n"
+             "set boat.model_scale 1.5\n",
+             skiff);
+    snprintf(file, sizeof file, "%s/skiff.tl", dir);
+    tl_test_write_file(file, text_file);
+    CHECK(run("check", file, NULL) == 0);
+    CHECK(strstr(out_text, "objects   1 floating: boat (skiff.gltf, 6 m long)") != NULL);
 }
 
 int main(int argc, char **argv)

@@ -181,14 +181,24 @@ static int check_one(const char *file, int strict)
             printf("  path      %s: %zu points, %.6g m%s%s\n", names[i], paths[i]->path.count,
                    paths[i]->path.length, paths[i]->path.constant_speed ? ", constant speed" : "",
                    paths[i]->baked ? ", baked" : "");
-    if (tl.object_count > 1) {
+    /* The floating objects and the models they load (named whenever one
+     * loads a file, with its real length once loaded). */
+    bool models = false;
+    for (int k = 0; k < tl.object_count; k++)
+        models |= tl.objects[k].model[0] != '\0';
+    if (tl.object_count > 1 || models) {
         printf("  objects   %d floating:", tl.object_count);
         for (int k = 0; k < tl.object_count; k++) {
             const tl_object *o = &tl.objects[k];
             const char *slash = strrchr(o->model, '/');
-            printf("%s %s (%s%s)", k ? "," : "", o->name,
-                   o->model[0] ? (slash ? slash + 1 : o->model) : "built-in boat",
-                   o->path.present ? "" : ", no path: not drawn");
+            printf("%s %s (%s", k ? "," : "", o->name,
+                   o->model[0] ? (slash ? slash + 1 : o->model) : "built-in boat");
+            if (o->model[0] && o->bounds_known) {
+                tl_scene at_start;
+                tl_timeline_eval(&tl, 0.0, &at_start);
+                printf(", %.3g m long", tl_scene_object_const(&at_start, k)->length);
+            }
+            printf("%s)", o->path.present ? "" : ", no path: not drawn");
         }
         printf("\n");
     }
