@@ -39,7 +39,8 @@ enum {
     ROOF,
     DOOR,
     GLASS,
-    FRAME, /* the windows' frames */
+    FRAME,  /* the windows' frames */
+    BRONZE, /* the propeller */
     STEEL,
     LAMP_PORT,
     LAMP_STARBOARD,
@@ -66,6 +67,7 @@ static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
      * with boat.lights), the gloss the sky's reflection. */
     [GLASS] = {{0.016f, 0.015f, 0.013f}, 0.05f, 0.0f, 0.1f},
     [FRAME] = {{0.05f, 0.05f, 0.05f}, 0.4f, 0.0f, 0.0f}, /* black rubber and paint */
+    [BRONZE] = {{0.78f, 0.50f, 0.28f}, 0.35f, 1.0f, 0.0f},
     [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
     /* The side lights' lenses are dark coloured glass by day (a pale
      * saturated diffuse read as a sticker), bright when lit: the same
@@ -229,11 +231,15 @@ static void hull(tl_mesh_soup *s)
     }
 }
 
-/* The keel and skeg: a thin fin under the bottom's root, from just ahead
- * of the transom to the forefoot, where it fairs into the stem. */
+/* The keel ends this far aft (u), leaving the aperture where the propeller
+ * turns ahead of the rudder. */
+#define KEEL_AFT 0.09
+
+/* The keel and skeg: a thin fin under the bottom's root, from ahead of
+ * the propeller's aperture to the forefoot, where it fairs into the stem. */
 static void keel(tl_mesh_soup *s)
 {
-    const double half = 0.006, u0 = 0.04, u1 = 0.95;
+    const double half = 0.006, u0 = KEEL_AFT, u1 = 0.95;
     const int n = 24;
     double prev[4][3];
     for (int i = 0; i <= n; i++) {
@@ -411,6 +417,45 @@ static void tube(tl_mesh_soup *s, const double a[3], const double b[3], double r
         for (int k = 0; k < 3; k++)
             axis_pt[k] = a[k] + d[k] * along;
         tl_mesh_soup_quad(s, q[0], q[1], q[2], q[3], material, P_TUBE, axis_pt);
+    }
+}
+
+/* Aft of the keel: the rudder hung behind the propeller's aperture, the
+ * shoe that carries its foot from the keel, and a three-bladed propeller
+ * on a hub at the keel's aft end (from below a hull read as a board cut
+ * square at its aft end). All within the hull's length. */
+static void running_gear(tl_mesh_soup *s)
+{
+    lines keel_end = lines_at(KEEL_AFT);
+    const double bottom = keel_end.keel, root = keel_end.root;
+    const double z_keel = hull_z(KEEL_AFT, bottom);
+    const double rudder_z0 = -0.495, rudder_z1 = rudder_z0 + 0.036;
+    const double rudder_top = lines_at(0.02).root;
+    box(s, (double[]){-0.002, bottom + 0.002, rudder_z0},
+        (double[]){0.002, rudder_top + 0.004, rudder_z1}, ANTIFOULING);
+    box(s, (double[]){-0.004, bottom, rudder_z0}, (double[]){0.004, bottom + 0.005, z_keel},
+        ANTIFOULING);
+    /* The propeller: a hub on the shaft's line and three blades pitched
+     * 35 degrees, between the keel's end and the rudder. */
+    const double hub[3] = {0.0, 0.5 * (bottom + root) - 0.005, 0.5 * (z_keel + rudder_z1)};
+    const double hub_a[3] = {hub[0], hub[1], hub[2] + 0.008},
+                 hub_b[3] = {hub[0], hub[1], hub[2] - 0.008};
+    tube(s, hub_a, hub_b, 0.004, 8, BRONZE);
+    const double reach = 0.8 * (0.5 * (root - bottom)), chord = 0.011, pitch = 35.0 * M_PI / 180.0;
+    for (int b = 0; b < 3; b++) {
+        double a = 2.0 * M_PI * b / 3.0 + 0.4;
+        double radial[3] = {cos(a), sin(a), 0.0}, round[3] = {-sin(a), cos(a), 0.0};
+        /* The blade's chord, turned out of the disc's plane by the pitch. */
+        double across[3] = {round[0] * cos(pitch), round[1] * cos(pitch), sin(pitch)};
+        double q[4][3];
+        for (int k = 0; k < 3; k++) {
+            q[0][k] = hub[k] + 0.004 * radial[k] - 0.5 * chord * across[k];
+            q[1][k] = hub[k] + reach * radial[k] - 0.3 * chord * across[k];
+            q[2][k] = hub[k] + reach * radial[k] + 0.3 * chord * across[k];
+            q[3][k] = hub[k] + 0.004 * radial[k] + 0.5 * chord * across[k];
+        }
+        double behind[3] = {hub[0], hub[1], hub[2] - 1.0};
+        tl_mesh_soup_quad(s, q[0], q[1], q[2], q[3], BRONZE, P_BOX, behind);
     }
 }
 
@@ -593,6 +638,7 @@ int tl_mesh_builtin_boat(tl_mesh *out, const double topsides[3], const double ca
         f->material = y < BOOT_BOTTOM ? ANTIFOULING : (y < BOOT_TOP ? BOOT_STRIPE : TOPSIDES);
     }
     keel(&s);
+    running_gear(&s);
     deck(&s);
     /* The wheelhouse stands on the deck at u = 0.4, the mast before it. */
     lines l = lines_at(0.4);
