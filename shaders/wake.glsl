@@ -215,14 +215,18 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     // Between the patches the churned water is a web of foam: veins along
     // the middle contours of a lace drawn out along the path, wider where
     // the wash is dense (as the giant wave's trail; patches alone read as
-    // milky sheets with soft edges). A vein narrower than the pixel is
-    // drawn a pixel wide and as much fainter, so it cannot flicker.
+    // milky sheets with soft edges), their width varying along the path
+    // and broken into lengths (one width, all joined, read as contour
+    // lines). A vein narrower than the pixel is drawn a pixel wide and as
+    // much fainter, so it cannot flicker.
     float web = 0.8 * foam_lace(path * vec2(0.7, 4.0)) + 0.2 * foam_lace(world * 6.0) +
                 0.15 * detail;
-    float half_width = mix(0.008, 0.025, density);
+    float half_width = mix(0.008, 0.025, density) *
+                       (0.25 + 1.5 * foam_noise(path * vec2(0.15, 0.6) + vec2(7.3, 1.9)));
     float drawn = max(half_width, 0.2 * footprint);
     float veins = (1.0 - smoothstep(drawn, 2.0 * drawn, abs(web - 0.5))) * (half_width / drawn) *
                   smoothstep(0.0, 0.5, cover);
+    veins *= smoothstep(0.3, 0.55, foam_lace(path * vec2(0.6, 4.0) + vec2(9.1, 2.2)) + 0.5 * detail);
     // Broken into drifts, brighter and fainter, as a web of foam ages.
     veins *= smoothstep(0.25, 0.55, foam_noise(world * 0.45 + vec2(3.3, 1.7)) + 0.3 * density) *
              (0.55 + 0.45 * foam_noise(world * 1.7 + vec2(8.2, 2.9)));
