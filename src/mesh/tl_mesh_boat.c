@@ -281,7 +281,9 @@ static void deck(tl_mesh_soup *s)
             double x = inner * (2.0 * k / ACROSS - 1.0);
             double r = inner > 0.0 ? x / inner : 0.0;
             dk[k][0] = x;
-            dk[k][1] = y + 0.005 * (1.0 - r * r);
+            /* The camber runs out toward the stem, where the deck narrows
+             * to a point (kept whole, it rose there into a ridge). */
+            dk[k][1] = y + 0.005 * (1.0 - r * r) * (1.0 - smooth01(0.85, 1.0, u));
             dk[k][2] = z;
         }
         for (int sx = 0; sx < 2; sx++) {
@@ -296,7 +298,9 @@ static void deck(tl_mesh_soup *s)
                                               {0.008, -0.011},
                                               {0.006, -0.005},
                                               {-0.001, -0.003}};
-            double rail_beam = l.beam * (1.0 - 0.25 * smooth01(0.9, 1.0, u));
+            /* On the hull's sheer to the stem (drawn inboard there, with
+             * the bow's finer entry it showed through the bulwark). */
+            double rail_beam = l.beam;
             for (int k = 0; k < 5; k++) {
                 double grow = smooth01(1.0, 0.96, u); /* the rail ends at the stem */
                 rail[sx][k][0] = sign * (rail_beam + prof[k][0] * grow);
