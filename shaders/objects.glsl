@@ -21,7 +21,7 @@ struct Floating {
     vec4 bow_spray;                    // camera-relative centre (y absolute), amount (0: none)
     vec4 bow_spray_shape;              // heading, unit (x, z), and radius
     vec4 lamp[TL_MESH_LAMPS];          // its lamps: camera-relative centre, radius (m)
-    vec4 lamp_light[TL_MESH_LAMPS];    // their radiance times boat.lights (0: dark)
+    vec4 lamp_light[TL_MESH_LAMPS];    // their radiance times boat.lights (0: dark); w its side
 };
 
 layout(std140) uniform tl_objects

@@ -530,23 +530,24 @@ static void test_bow_wash(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&empty);
 }
 
-/* The lamps: the built-in boat's four (masthead and stern white, red to
- * port at -x, green to starboard), their glint in the water on the GPU as
- * on the CPU and carrying the lamp's light (its integral over the sky is
- * the lamp's disc, pi size^2, however widened); at dusk with boat.lights
- * on, the water beside the boat takes their light and the hull's pixels
- * are the ones the lamps themselves change. */
+/* The lamps: the built-in boat's four (masthead and stern white, all
+ * round; red to port at -x and green to starboard, each to its side), their glint in the water on
+ * the GPU as on the CPU and carrying the lamp's light (its integral over the sky is the lamp's
+ * disc, pi size^2, however widened); at dusk with boat.lights on, the water beside the boat takes
+ * their light and the hull's pixels are the ones the lamps themselves change. */
 static void test_lamp_glints(tl_renderer *r, const tl_mesh *m)
 {
     float where[TL_MESH_LAMPS][4], light[TL_MESH_LAMPS][4];
     int count = tl_mesh_lamps(m, where, light);
     int red = 0, green = 0, white = 0;
     for (int k = 0; k < count; k++) {
-        if (light[k][0] > 5.0 * light[k][1] && where[k][0] < 0.0f)
+        /* The side lights shine to their own side only (w). */
+        if (light[k][0] > 5.0 * light[k][1] && where[k][0] < 0.0f && light[k][3] == -1.0f)
             red++;
-        else if (light[k][1] > 3.0 * light[k][0] && where[k][0] > 0.0f)
+        else if (light[k][1] > 3.0 * light[k][0] && where[k][0] > 0.0f && light[k][3] == 1.0f)
             green++;
-        else if (light[k][0] > 0.5 * light[k][1] && light[k][1] > 0.5 * light[k][0])
+        else if (light[k][0] > 0.5 * light[k][1] && light[k][1] > 0.5 * light[k][0] &&
+                 light[k][3] == 0.0f)
             white++;
     }
     printf("lamps of the built-in boat: %d (red to port %d, green to starboard %d, white %d)\n",

@@ -224,6 +224,7 @@ int tl_renderer_upload_objects(tl_renderer *r, const tl_frame_uniforms *u, tl_er
                 b->lamp_light[k][c] = g->lamp_light[k][c] * u->object_pass[i].lights;
             }
             b->lamp[k][3] = p[3] * scale;
+            b->lamp_light[k][3] = g->lamp_light[k][3];
         }
     }
     glBindBuffer(GL_UNIFORM_BUFFER, r->objects_ubo);
@@ -310,7 +311,8 @@ static void draw_meshes(tl_renderer *r, GLuint program, const target *t, const t
         glUniform3f(tl_renderer_loc(program, "u_eye"), 0.0f, mirrored ? 2 * h : 0.0f, 0.0f);
         /* The direct pass clips nothing, whatever the clip-distance state. */
         glUniform1f(tl_renderer_loc(program, "u_clip_height"), mirrored ? h : -1.0e30f);
-        glUniform1f(tl_renderer_loc(program, "u_clip_sign"), how == DRAW_MIRROR_BELOW ? -1.0f : 1.0f);
+        glUniform1f(tl_renderer_loc(program, "u_clip_sign"),
+                    how == DRAW_MIRROR_BELOW ? -1.0f : 1.0f);
         glUniformMatrix4fv(tl_renderer_loc(program, "u_boat_model"), 1, GL_FALSE, pass->model);
         glUniform1i(tl_renderer_loc(program, "u_object"), i);
         glUniform1i(tl_renderer_loc(program, "u_scene_object"), pass->object);
@@ -430,7 +432,8 @@ int tl_renderer_draw_boat(tl_renderer *r, const tl_frame_uniforms *u, int reuse,
         rc = tl_renderer_target_ensure_depth(&r->mirror, u->width, u->height, 1, formats, 1, err);
     const int under = (u->features & TL_FEATURE_UNDERWATER) != 0;
     if (!rc && under)
-        rc = tl_renderer_target_ensure_depth(&r->underside, u->width, u->height, 2, formats, 1, err);
+        rc =
+            tl_renderer_target_ensure_depth(&r->underside, u->width, u->height, 2, formats, 1, err);
     if (rc)
         return rc;
     glEnable(GL_DEPTH_TEST);

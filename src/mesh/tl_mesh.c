@@ -501,7 +501,7 @@ int tl_mesh_load(const char *path, tl_mesh *out, tl_error *err)
 int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[TL_MESH_LAMPS][4])
 {
     enum { MOST = 32 };
-    double first[MOST][3], sum[MOST][3], glow[MOST][3], reach[MOST];
+    double first[MOST][3], sum[MOST][3], glow[MOST][3], lo[MOST][3], hi[MOST][3];
     int members[MOST], count = 0;
     double length = 0.0;
     for (int k = 0; k < 3; k++)
@@ -526,7 +526,7 @@ int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[T
             at = count++;
             members[at] = 0;
             for (int k = 0; k < 3; k++) {
-                first[at][k] = p[k];
+                first[at][k] = lo[at][k] = hi[at][k] = p[k];
                 sum[at][k] = glow[at][k] = 0.0;
             }
         }
@@ -534,27 +534,21 @@ int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[T
         for (int k = 0; k < 3; k++) {
             sum[at][k] += p[k];
             glow[at][k] += c[k] * emission;
+            lo[at][k] = fmin(lo[at][k], p[k]);
+            hi[at][k] = fmax(hi[at][k], p[k]);
         }
     }
-    /* Centres and radiance, then each cluster's radius. */
+    /* Centres and radiance; each lamp's size is the radius of the disc of
+     * its box's mean projected area (a quarter of its surface: Cauchy),
+     * not its half diagonal, which took half again its light. */
+    double radius[MOST];
     for (int i = 0; i < count; i++) {
         for (int k = 0; k < 3; k++) {
             sum[i][k] /= members[i];
             glow[i][k] /= members[i];
         }
-        reach[i] = 0.0;
-    }
-    for (size_t v = 0; v < m->vertex_count; v++) {
-        if (!(m->surface[4 * v + 3] > 0.0))
-            continue;
-        const float *p = m->positions + 3 * v;
-        for (int i = 0; i < count; i++) {
-            double d2 = 0.0;
-            for (int k = 0; k < 3; k++)
-                d2 += (p[k] - sum[i][k]) * (p[k] - sum[i][k]);
-            if (d2 <= 4.0 * gather * gather)
-                reach[i] = fmax(reach[i], sqrt(d2));
-        }
+        double a = hi[i][0] - lo[i][0], b = hi[i][1] - lo[i][1], c = hi[i][2] - lo[i][2];
+        radius[i] = sqrt(2.0 * (a * b + b * c + c * a) / (4.0 * M_PI));
     }
     /* The brightest TL_MESH_LAMPS (by luminance), in that order. */
     int kept = 0;
@@ -576,8 +570,13 @@ int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[T
             where[kept][k] = (float)sum[best][k];
             light[kept][k] = (float)glow[best][k];
         }
-        where[kept][3] = (float)reach[best];
-        light[kept][3] = 0.0f;
+        where[kept][3] = (float)radius[best];
+        /* A side light shines to its own side only (port or starboard,
+         * ahead to abaft the beam): a lamp well off the centre line is
+         * taken as one, w its side (-1: -x, 1: +x; 0: all round). */
+        double half_beam = 0.5 * ((double)m->bounds_max[0] - m->bounds_min[0]);
+        light[kept][3] =
+            fabs(sum[best][0]) > 0.3 * half_beam ? (sum[best][0] < 0.0 ? -1.0f : 1.0f) : 0.0f;
         kept++;
     }
     return kept;

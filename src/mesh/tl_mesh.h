@@ -140,9 +140,12 @@ void tl_mesh_outline_of(const tl_mesh *m, tl_mesh_outline *out);
 /* The lamps of a mesh: its emissive vertices gathered into clusters (a
  * vertex within TL_MESH_LAMP_GATHER of the mesh's length of a cluster's
  * first joins it), the TL_MESH_LAMPS brightest kept. Each: its centre
- * and radius (model units) in `where`, its radiance at full boat.lights
- * (colour x emission, linear r g b; w unused) in `light`. The water
- * mirrors them (shaders/lamps.glsl). Returns how many. */
+ * and size (model units; the radius of the disc of its bounding box's mean
+ * projected area) in `where`, its radiance at full boat.lights (colour x
+ * emission, linear r g b) and w its side for a side light (-1 port, at -x;
+ * 1 starboard; 0 all round: a lamp within 0.3 of the half beam of the
+ * centre line) in `light`. The water mirrors them (shaders/lamps.glsl).
+ * Returns how many. */
 #define TL_MESH_LAMPS       4
 #define TL_MESH_LAMP_GATHER 0.03
 int tl_mesh_lamps(const tl_mesh *m, float where[TL_MESH_LAMPS][4], float light[TL_MESH_LAMPS][4]);

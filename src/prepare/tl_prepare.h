@@ -135,7 +135,8 @@ typedef struct tl_object_uniforms {
     float bow_spray_shape[4];
     /* Its lamps (tl_mesh_lamps, filled by the renderer, which has the
      * mesh): camera-relative centre and radius (m); radiance r g b times
-     * boat.lights (0: dark). The water mirrors them. */
+     * boat.lights (0: dark) and a side light's side (model x: -1, 1; 0 all
+     * round). The water mirrors them. */
     float lamp[TL_MESH_LAMPS][4];
     float lamp_light[TL_MESH_LAMPS][4];
 } tl_object_uniforms;
