@@ -34,7 +34,9 @@ vec2 hull_wash(int o, vec3 world, float footprint)
     vec2 span = u_objects[o].outline_z.xy;
     float along = (m.z - span.x) / max(span.y - span.x, 1.0e-6);
     float per_metre = length(u_objects[o].to_model[0].xyz);
-    float height = world.y - u_objects[o].hull.y;
+    // Above the water beside it (the CPU's heights along each side): the
+    // wash rides the waves running along the hull, not a level plane.
+    float height = world.y - object_wash_water(o, m.z, m.x);
     float top = hull_wash_top(along, u_objects[o].hull.z);
     if (height > 1.5 * top || height < -top)
         return vec2(0.0);
@@ -44,5 +46,5 @@ vec2 hull_wash(int o, vec3 world, float footprint)
     float sheet = hull_wash_cover(height, top, clamp(lace, 0.0, 1.0));
     // The foam in it: streaks where the lace is thick, fuller low down.
     float streaks = foam_lace(flow * vec2(0.8, 9.0) + vec2(7.1, 2.3)) + 0.5 * foam_detail(flow * 3.0, footprint);
-    return vec2(sheet, sheet * smoothstep(0.45, 0.7, streaks + 0.3 * sheet));
+    return vec2(sheet, sheet * smoothstep(0.5, 0.75, streaks + 0.15 * sheet));
 }

@@ -22,6 +22,8 @@ struct Floating {
     vec4 bow_spray_shape;              // heading, unit (x, z), and radius
     vec4 lamp[TL_MESH_LAMPS];          // its lamps: camera-relative centre, radius (m)
     vec4 lamp_light[TL_MESH_LAMPS];    // their radiance times boat.lights (0: dark); w its side
+    vec4 wash_water[TL_WASH_STATIONS / 2]; // the water's height along its sides: port, starboard
+    vec4 wash_z;                       // the stations' model z from x to y
 };
 
 layout(std140) uniform tl_objects
@@ -49,4 +51,20 @@ float object_plan_y(int o, int i)
 float object_wake_along(int o, int k)
 {
     return u_objects[o].wake_along[k >> 2][k & 3];
+}
+
+// Object o's water height (camera-relative y) beside its hull at model z
+// on its port (model x < 0) or starboard side, between the CPU's stations
+// (tl_prepare_wash_water).
+float object_wash_water(int o, float z, float x)
+{
+    vec2 span = u_objects[o].wash_z.xy;
+    float f = clamp((z - span.x) / max(span.y - span.x, 1.0e-6), 0.0, 1.0) *
+              float(TL_WASH_STATIONS - 1);
+    int i = min(int(f), TL_WASH_STATIONS - 2);
+    float t = f - float(i);
+    i += x < 0.0 ? 0 : TL_WASH_STATIONS;
+    float a = u_objects[o].wash_water[i >> 2][i & 3];
+    float b = u_objects[o].wash_water[(i + 1) >> 2][(i + 1) & 3];
+    return mix(a, b, t);
 }

@@ -523,7 +523,7 @@ static void test_bow_wash(tl_renderer *r, const tl_mesh *m)
            fore, fore_changed, fore_whiter, aft, aft_changed, aft ? aft_change / aft : 0.0);
     CHECK(fore > 500 && aft > 500);
     CHECK(fore_changed > 4 * aft_changed + 50);
-    CHECK(fore_whiter > 50);
+    CHECK(fore_whiter > 20); /* the foam in streaks in it */
     CHECK(aft > 0 && fabs(aft_change / aft) < 0.01);
     tl_frame_free(&under_way);
     tl_frame_free(&still);

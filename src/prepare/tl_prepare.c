@@ -551,7 +551,8 @@ static int prepare_wake(const tl_scene *s, const tl_boat *b, tl_object_uniforms 
 /* The floating objects: each one whose hull, mirror image or wake is in
  * view takes the next slot of the ocean pass's block and the mesh pass;
  * the others cost nothing. */
-static void prepare_objects(const tl_scene *s, const tl_giant *giant, tl_frame_uniforms *u)
+static void prepare_objects(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
+                            tl_frame_uniforms *u)
 {
     for (int k = 0; k < s->objects && k < TL_OBJECT_MAX; k++) {
         const tl_boat *b = tl_scene_object_const(s, k);
@@ -570,6 +571,7 @@ static void prepare_objects(const tl_scene *s, const tl_giant *giant, tl_frame_u
         if (pass->drawn) {
             u->features |= TL_FEATURE_BOAT;
             prepare_bow_spray(s, b, k, o, u);
+            tl_prepare_wash_water(s, w, giant, b, pass->model, o);
         } else {
             pass->shadow_size = 0;
             o->hull[3] = -1.0f;
@@ -905,7 +907,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, w, &giant, u);
-    prepare_objects(s, &giant, u);
+    prepare_objects(s, w, &giant, u);
     prepare_water_body(s, w, &giant, u);
     prepare_fog(s, u);
     prepare_sky(s, u);

@@ -56,6 +56,10 @@ typedef enum tl_feature {
 
 #define TL_FEATURE_COUNT 25
 
+/* Stations a side where the CPU takes the water's height along a hull (a
+ * multiple of 4: the uniform block packs them four to a vec4). */
+#define TL_WASH_STATIONS 16
+
 /* The lens: each pixel's point on an image plane this far ahead of the
  * camera decides whether it sees from above or below the water when the
  * camera is at the surface (TL_FEATURE_WATERLINE), metres. */
@@ -139,6 +143,11 @@ typedef struct tl_object_uniforms {
      * round). The water mirrors them. */
     float lamp[TL_MESH_LAMPS][4];
     float lamp_light[TL_MESH_LAMPS][4];
+    /* The water's height (camera-relative y) along its sides: port (-x)
+     * then starboard, TL_WASH_STATIONS each from its model's least z to
+     * its most (tl_prepare_wash_water). */
+    float wash_water[2 * TL_WASH_STATIONS];
+    float wash_z[4]; /* the stations' model z from x to y; unused x 2 */
 } tl_object_uniforms;
 
 /* A floating object's mesh pass, beside its uniforms. */

@@ -21,4 +21,12 @@ void tl_prepare_wake_rect(const tl_scene *s, tl_frame_uniforms *u);
 void tl_prepare_mirror_rect(const tl_scene *s, const double corner[8][3], double water,
                             tl_frame_uniforms *u);
 
+/* The water's height along an object's sides, into o->wash_water
+ * (tl_prepare_wash.c): the surface (ocean and giant wave) at
+ * TL_WASH_STATIONS points along each side of its model's bounds, placed by
+ * `model` (model -> camera-relative world, column-major), camera-relative;
+ * the hull's wash rides on it. */
+void tl_prepare_wash_water(const tl_scene *s, const tl_waves *w, const tl_giant *giant,
+                           const tl_boat *b, const float model[16], tl_object_uniforms *o);
+
 #endif
