@@ -5,19 +5,20 @@
 // the envelope in double (tl_mesh_wash_top, tl_mesh_wash_cover). Needs
 // objects.glsl and foam_noise.glsl.
 
-// How high the wash reaches above the water plane (m) at `along` (0 at the
-// waterline's aft end, 1 at the stem) for a hull at `speed` m/s: the line
-// plus a share of the stagnation height U^2 / 2g over the forward part.
+// How high the wash reaches above the water beside the hull (m) at
+// `along` (0 at the waterline's aft end, 1 at the stem) for a hull at
+// `speed` m/s: the line plus a share of the stagnation height U^2 / 2g
+// over the forward part.
 float hull_wash_top(float along, float speed)
 {
     return TL_MESH_WASH_LINE +
            TL_MESH_BOW_CLIMB * speed * speed / (2.0 * 9.81) * smoothstep(0.5, 0.97, along);
 }
 
-// The wash's cover at `height` m above the water plane under a top `top`
-// (m), its edge moved up and down by `lace` in [0, 1]: full below 0.7 of
-// the ragged top, none above it, and none a top's height under the plane
-// (the sea hides the hull there but in a trough).
+// The wash's cover at `height` m above the water beside the hull under a
+// top `top` (m), its edge moved up and down by `lace` in [0, 1]: full
+// below 0.7 of the ragged top, none above it, and none a top's height
+// under the water (the sea hides the hull there but in a trough).
 float hull_wash_cover(float height, float top, float lace)
 {
     float edge = top * (0.75 + 0.5 * lace);
@@ -45,6 +46,7 @@ vec2 hull_wash(int o, vec3 world, float footprint)
     float lace = foam_lace(flow * vec2(1.5, 6.0)) + 0.6 * foam_detail(flow * 2.0, footprint);
     float sheet = hull_wash_cover(height, top, clamp(lace, 0.0, 1.0));
     // The foam in it: streaks where the lace is thick, fuller low down.
-    float streaks = foam_lace(flow * vec2(0.8, 9.0) + vec2(7.1, 2.3)) + 0.5 * foam_detail(flow * 3.0, footprint);
+    float streaks = foam_lace(flow * vec2(0.8, 9.0) + vec2(7.1, 2.3)) +
+                    0.5 * foam_detail(flow * 3.0, footprint);
     return vec2(sheet, sheet * smoothstep(0.5, 0.75, streaks + 0.15 * sheet));
 }

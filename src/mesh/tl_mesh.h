@@ -183,10 +183,11 @@ void tl_mesh_normal_map(const double n[3], const double t[4], const double texel
 /* How much of the sea's own colour the sheet of water lays over the
  * paint (the rest: the paint seen through it). */
 #define TL_MESH_WASH_FILM 0.6
-/* How high the wash reaches above the water plane (m) at `along` (0 at
- * the waterline's aft end, 1 at the stem) for a hull at `speed` m/s. */
+/* How high the wash reaches above the water beside the hull (m) at
+ * `along` (0 at the waterline's aft end, 1 at the stem) for a hull at
+ * `speed` m/s. */
 double tl_mesh_wash_top(double along, double speed);
-/* Its cover at `height` m above the plane under the top `top`, the edge
+/* Its cover at `height` m above that water under the top `top`, the edge
  * moved by `lace` in [0, 1]. */
 double tl_mesh_wash_cover(double height, double top, double lace);
 /* How much darker wet gloss paint is (a rough, porous surface: half). */
