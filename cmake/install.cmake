@@ -7,7 +7,7 @@
 # relative to themselves.
 set(CMAKE_INSTALL_LIBDIR lib)
 set(CMAKE_INSTALL_INCLUDEDIR include)
-set(tl_installed core scene metrics waves mesh optics sky prepare shader color image passes timeline cutscene
+set(tl_installed core scene metrics waves mesh optics sky prepare shader color audio image passes timeline cutscene
     job movie gl render)
 set(tl_libs "")
 foreach(m IN LISTS tl_installed)

@@ -18,6 +18,7 @@ packages=(
   libglfw3-dev                     # windows (the live preview)
   libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
   libstb-dev                       # boat textures: PNG and JPEG decoding (stb_image)
+  libsndfile1-dev                  # the soundtrack: WAV, FLAC and Ogg decoding
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
   xvfb xauth                       # a virtual display for the preview's tests
   gnuplot-nox                      # tideline bench --plot

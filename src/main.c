@@ -13,6 +13,7 @@ static const char usage[] =
     "Commands:\n"
     "  render    render a timeline's frames headless to EXR/PNG files and movies\n"
     "  still     render one frame headless to EXR and/or PNG\n"
+    "  movie     make a movie (with the soundtrack) from frames rendered earlier\n"
     "  preview   play a timeline in a window and follow the file as it is edited\n"
     "  check     validate a timeline and summarise it\n"
     "  eval      print a timeline's channel values at a time or frames\n"
@@ -59,6 +60,8 @@ int main(int argc, char **argv)
         return tl_cli_eval(argc - 1, argv + 1);
     if (strcmp(cmd, "bench") == 0)
         return tl_cli_bench(argc - 1, argv + 1);
+    if (strcmp(cmd, "movie") == 0)
+        return tl_cli_movie(argc - 1, argv + 1);
     if (strcmp(cmd, "compare") == 0)
         return tl_cli_compare(argc - 1, argv + 1);
     if (strcmp(cmd, "export-camera") == 0)

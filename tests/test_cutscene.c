@@ -170,6 +170,37 @@ static void test_bad_models(void)
     unlink(tl);
 }
 
+/* A soundtrack missing or undecodable: at the `audio` line, naming the
+ * file and why, before any frame (still, render and movie alike). */
+static void test_bad_audio(void)
+{
+    char tl[1200], png[1200], text[1200], mp4[1200];
+    snprintf(tl, sizeof tl, "%s/sound.tl", dir);
+    snprintf(png, sizeof png, "%s/x.png", dir);
+    snprintf(mp4, sizeof mp4, "%s/x.mp4", dir);
+    snprintf(text, sizeof text, "%s/noise.wav", dir);
+    tl_test_write_file(text, "RIFF but not really a sound\n");
+    const char *cases[2][3] = {
+        {"gone.wav", "sound.tl:2:7: error: sound file '", "gone.wav': No such file"},
+        {"noise.wav", "sound.tl:2:7: error: sound file '", "noise.wav' cannot be decoded"}};
+    for (int k = 0; k < 2; k++) {
+        snprintf(text, sizeof text, "tideline 1\naudio %s 1s\n", cases[k][0]);
+        tl_test_write_file(tl, text);
+        CHECK(run("still", tl, "-o", png, NULL) == 1);
+        CHECK_STR_CONTAINS(tl_run_output, cases[k][1]);
+        CHECK_STR_CONTAINS(tl_run_output, cases[k][2]);
+        CHECK_STR_CONTAINS(tl_run_output, "\n     2 | audio ");
+        CHECK(run("render", tl, "--movie", mp4, NULL) == 1);
+        CHECK_STR_CONTAINS(tl_run_output, cases[k][2]);
+        CHECK(run("check", tl, NULL) == 1);
+        CHECK_STR_CONTAINS(tl_run_output, cases[k][2]);
+        CHECK(access(png, F_OK) != 0 && access(mp4, F_OK) != 0);
+    }
+    snprintf(text, sizeof text, "%s/noise.wav", dir);
+    unlink(text);
+    unlink(tl);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 4 || !mkdtemp(dir))
@@ -180,6 +211,7 @@ int main(int argc, char **argv)
     test_floating();
     test_frame_alone();
     test_bad_models();
+    test_bad_audio();
     rmdir(dir);
     TEST_END();
 }

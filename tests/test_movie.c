@@ -32,7 +32,7 @@ static int encode(const char *path, double fps, int frames, tl_error *err)
 {
     uint8_t rgb[W * H * 3];
     tl_movie *m = NULL;
-    int rc = tl_movie_open(&m, path, W, H, fps, err);
+    int rc = tl_movie_open(&m, path, W, H, fps, NULL, err);
     for (int f = 0; !rc && f < frames; f++) {
         make_frame(rgb, f);
         rc = tl_movie_write(m, rgb, err);
@@ -42,28 +42,6 @@ static int encode(const char *path, double fps, int frames, tl_error *err)
         return rc;
     }
     return tl_movie_finish(m, err);
-}
-
-/* Runs a shell command and returns its output (NUL-terminated), or NULL. */
-static char *run(const char *cmd, size_t *len)
-{
-    FILE *fp = popen(cmd, "r");
-    if (!fp)
-        return NULL;
-    size_t cap = 1 << 16, n = 0;
-    char *buf = malloc(cap + 1);
-    size_t got;
-    while (buf && (got = fread(buf + n, 1, cap - n, fp)) > 0)
-        n += got;
-    int status = pclose(fp);
-    if (!buf || status != 0) {
-        free(buf);
-        return NULL;
-    }
-    buf[n] = '\0';
-    if (len)
-        *len = n;
-    return buf;
 }
 
 /* The value of "key=value" on its own line, or "" when missing. */
@@ -89,7 +67,7 @@ static void probe(const char *path, const char *codec, const char *pix_fmt, cons
              "stream=width,height,r_frame_rate,nb_read_frames,codec_name,pix_fmt "
              "-of default=nw=1 '%s'",
              path);
-    char *out = run(cmd, NULL);
+    char *out = tl_test_output(cmd, NULL);
     CHECK(out != NULL);
     if (!out)
         return;
@@ -122,7 +100,7 @@ static void check_first_frame(const char *path)
     snprintf(cmd, sizeof cmd,
              "ffmpeg -v error -i '%s' -frames:v 1 -f rawvideo -pix_fmt rgb24 - </dev/null", path);
     size_t len = 0;
-    uint8_t *got = (uint8_t *)run(cmd, &len);
+    uint8_t *got = (uint8_t *)tl_test_output(cmd, &len);
     CHECK(got != NULL && len == W * H * 3);
     if (!got || len != W * H * 3) {
         free(got);
@@ -230,7 +208,7 @@ static void test_abort(void)
 
     /* A new movie aborted half-way: nothing left. */
     tl_movie *m = NULL;
-    CHECK(tl_movie_open(&m, fresh, W, H, 24, &err) == 0);
+    CHECK(tl_movie_open(&m, fresh, W, H, 24, NULL, &err) == 0);
     others_in_dir("clip.mp4", others, sizeof others);
     CHECK(strstr(others, ".fresh.mp4.tmp-") != NULL); /* encoding into a hidden temporary */
     for (int f = 0; m && f < 5; f++)
@@ -246,7 +224,7 @@ static void test_abort(void)
     char *before = read_file(mp4, &before_len);
     CHECK(before != NULL && before_len > 0);
     m = NULL;
-    CHECK(tl_movie_open(&m, mp4, W, H, 24, &err) == 0);
+    CHECK(tl_movie_open(&m, mp4, W, H, 24, NULL, &err) == 0);
     for (int f = 0; m && f < 3; f++)
         CHECK(tl_movie_write(m, rgb, &err) == 0);
     tl_movie_abort(m);
@@ -313,7 +291,7 @@ static void test_ffmpeg_fails(void)
     CHECK(tl_movie_check(fresh, W, H, &err) == TL_ERR_RUNTIME);
     CHECK_STR_CONTAINS(err.message, "Debian package 'ffmpeg'");
     tl_movie *m = NULL;
-    CHECK(tl_movie_open(&m, fresh, W, H, 24, &err) != 0 && m == NULL);
+    CHECK(tl_movie_open(&m, fresh, W, H, 24, NULL, &err) != 0 && m == NULL);
     unsetenv("TIDELINE_FFMPEG");
 
     /* Without the variable: found on PATH, or not at all. */
@@ -354,7 +332,7 @@ static void test_check(void)
     CHECK_STR_CONTAINS(err.message, "missing");
     CHECK_STR_CONTAINS(err.message, "does not exist");
     tl_movie *m = NULL;
-    CHECK(tl_movie_open(&m, path, W, H, 24, &err) != 0 && m == NULL);
+    CHECK(tl_movie_open(&m, path, W, H, 24, NULL, &err) != 0 && m == NULL);
 
     CHECK(tl_movie_codec_from_path("a/b.MP4") == TL_MOVIE_H264);
     CHECK(tl_movie_codec_from_path("b.mov") == TL_MOVIE_PRORES);

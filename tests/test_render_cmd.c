@@ -370,6 +370,97 @@ static void test_movie(void)
     rm_rf(out);
 }
 
+static char *frame_sums(const char *movie)
+{
+    char cmd[1400];
+    snprintf(cmd, sizeof cmd, "ffmpeg -v error -i '%s' -map 0:v -f framemd5 - | grep -v '^#'",
+             movie);
+    return tl_test_output(cmd, NULL);
+}
+
+static int same_pictures(const char *a, const char *b)
+{
+    char *x = frame_sums(a), *y = frame_sums(b);
+    int same = x && y && strlen(x) > 100 && strcmp(x, y) == 0;
+    free(x);
+    free(y);
+    return same;
+}
+
+/* A farm's movie: chunks write the frames, `tideline movie` assembles
+ * them (refusing while one is missing); `render --movie --skip-existing`
+ * makes the same movie from the frames on disk; the soundtrack goes in at
+ * its offset, cut to the frames. */
+static void test_movie_from_frames(void)
+{
+    char out[256], pattern[600], direct[600], farm[600], resumed[600], exr[600];
+    in_dir(out, sizeof out, "farm");
+    snprintf(pattern, sizeof pattern, "%s/f_####.png", out);
+    snprintf(exr, sizeof exr, "%s/f_####.exr", out);
+    snprintf(direct, sizeof direct, "%s/direct.mp4", out);
+    snprintf(farm, sizeof farm, "%s/farm.mp4", out);
+    snprintf(resumed, sizeof resumed, "%s/resumed.mp4", out);
+    CHECK(tl_run(NULL, "render", six_path, "--movie", direct, "-q", NULL) == 0);
+
+    CHECK(tl_run(NULL, "render", six_path, "-o", pattern, "--chunk", "0/2", "-q", NULL) == 0);
+    CHECK(tl_run(NULL, "render", six_path, "-o", pattern, "--chunk", "1/2", "--movie", farm,
+                 NULL) == 2);
+    CHECK_STR_CONTAINS(tl_run_output, "once every chunk is done, make the movie with "
+                                      "'tideline movie PATTERN.png");
+    CHECK(tl_run(NULL, "movie", pattern, "-o", farm, "--timeline", six_path, NULL) == 1);
+    CHECK_STR_CONTAINS(tl_run_output, "f_0003.png' is missing (and 2 more of the 6 frames are)");
+    CHECK(!exists(farm));
+    CHECK(tl_run(NULL, "render", six_path, "-o", pattern, "--chunk", "1/2", "-q", NULL) == 0);
+    CHECK(tl_run(NULL, "movie", pattern, "-o", farm, "--timeline", six_path, "-q", NULL) == 0);
+    CHECK_STR_CONTAINS(tl_run_output, "wrote");
+    CHECK(same_pictures(direct, farm));
+
+    /* Resumed: every frame is on disk, the movie is made from them. */
+    CHECK(tl_run(NULL, "render", six_path, "-o", pattern, "--movie", resumed, "--skip-existing",
+                 NULL) == 0);
+    CHECK_STR_CONTAINS(tl_run_output, "0 frames written, 6 skipped");
+    CHECK(same_pictures(direct, resumed));
+    CHECK(tl_run(NULL, "render", six_path, "-o", exr, "--movie", resumed, "--skip-existing",
+                 NULL) == 2);
+    CHECK_STR_CONTAINS(tl_run_output, "give -o PATTERN.png too");
+
+    /* The soundtrack: a tone placed 0.1 s into the timeline. */
+    char tone[600], timeline[600], text[1200], mov[600], cmd[1600];
+    snprintf(tone, sizeof tone, "%s/tone.wav", out);
+    snprintf(cmd, sizeof cmd,
+             "ffmpeg -v error -f lavfi -i 'sine=frequency=300:sample_rate=48000:duration=1' "
+             "-y '%s'",
+             tone);
+    CHECK(system(cmd) == 0);
+    in_dir(timeline, sizeof timeline, "farm/sound.tl");
+    snprintf(text, sizeof text, "%saudio tone.wav 0.1s\n", six_frames);
+    write_text(timeline, text);
+    CHECK(tl_run(NULL, "check", timeline, NULL) == 0);
+    CHECK_STR_CONTAINS(tl_run_output, "audio     tone.wav: 1.000 s, 48000 Hz, 1 channel, from "
+                                      "0.1 s on the timeline");
+    snprintf(mov, sizeof mov, "%s/sound.mov", out);
+    CHECK(tl_run(NULL, "render", timeline, "--movie", mov, "-q", NULL) == 0);
+    snprintf(cmd, sizeof cmd, "ffmpeg -v error -i '%s' -map 0:a -f s16le -ac 1 -", mov);
+    size_t len = 0;
+    short *pcm = (short *)tl_test_output(cmd, &len);
+    CHECK(pcm != NULL && len / 2 == 6 * 48000 / 24); /* the six frames' 0.25 s */
+    if (pcm && len / 2 == 6 * 48000 / 24) {
+        int silent = 1, loud = 0;
+        for (int i = 0; i < 4800; i++) /* the first 0.1 s */
+            silent &= pcm[i] == 0;
+        for (int i = 4800; i < 12000; i++)
+            loud |= abs(pcm[i]) > 2000; /* lavfi's sine peaks at 1/8 */
+        CHECK(silent && loud);
+    }
+    free(pcm);
+    /* Frames 3-5 alone: the sound from 0.125 s, with no silence. */
+    CHECK(tl_run(NULL, "render", timeline, "--frames", "3-5", "--movie", mov, "-q", NULL) == 0);
+    pcm = (short *)tl_test_output(cmd, &len);
+    CHECK(pcm != NULL && len / 2 == 3 * 48000 / 24 && abs(pcm[100]) + abs(pcm[101]) > 0);
+    free(pcm);
+    rm_rf(out);
+}
+
 /* Starts a long render, interrupts it once the first frame exists, then
  * resumes it; the result equals an uninterrupted run byte for byte. */
 static void test_interrupt_and_resume(void)
@@ -523,6 +614,7 @@ int main(int argc, char **argv)
     if (runs) {
         test_motion_blur();
         test_movie();
+        test_movie_from_frames();
         test_interrupt_and_resume();
         test_bad_input();
     }

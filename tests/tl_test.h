@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int tl_test_failures = 0;
@@ -63,6 +64,37 @@ static inline void tl_test_write_file(const char *path, const char *text)
         fputs(text, f);
         fclose(f);
     }
+}
+
+/* Runs a shell command and returns its standard output (NUL-terminated,
+ * malloc'd; its length in *len when len is not NULL), or NULL when it
+ * could not run or exited non-zero. */
+static inline char *tl_test_output(const char *cmd, size_t *len)
+{
+    FILE *fp = popen(cmd, "r");
+    if (!fp)
+        return NULL;
+    size_t cap = 1 << 16, n = 0, got;
+    char *buf = malloc(cap + 1);
+    while (buf && (got = fread(buf + n, 1, cap - n, fp)) > 0) {
+        n += got;
+        if (n == cap) {
+            char *more = realloc(buf, 2 * cap + 1);
+            if (!more)
+                break;
+            buf = more;
+            cap *= 2;
+        }
+    }
+    int status = pclose(fp);
+    if (!buf || status != 0) {
+        free(buf);
+        return NULL;
+    }
+    buf[n] = '\0';
+    if (len)
+        *len = n;
+    return buf;
 }
 
 /* Ends main(): prints a summary and returns the process status. */

@@ -12,6 +12,7 @@ int tl_cli_check(int argc, char **argv);
 int tl_cli_eval(int argc, char **argv);
 int tl_cli_preview(int argc, char **argv);
 int tl_cli_compare(int argc, char **argv);
+int tl_cli_movie(int argc, char **argv);
 int tl_cli_bench(int argc, char **argv);
 int tl_cli_export_camera(int argc, char **argv);
 

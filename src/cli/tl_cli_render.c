@@ -26,6 +26,7 @@
 #include "job/tl_job.h"
 #include "job/tl_writer.h"
 #include "movie/tl_movie.h"
+#include "movie/tl_movie_frames.h"
 #include "prepare/tl_prepare.h"
 #include "render/tl_render.h"
 #include "run/tl_run.h"
@@ -59,7 +60,10 @@ static const char usage[] =
     "                         frame interval; never blurs across a camera cut)\n"
     "  --shutter-samples N    sub-frames averaged for motion blur (default 8)\n"
     "  --movie FILE           also encode a movie with ffmpeg: .mp4 (H.264, yuv420p)\n"
-    "                         or .mov (ProRes 422 HQ), at the timeline's fps\n"
+    "                         or .mov (ProRes 422 HQ), at the timeline's fps, with the\n"
+    "                         timeline's `audio` (AAC in .mp4, PCM in .mov) cut to the\n"
+    "                         frames; with --skip-existing made from the PNG frames on\n"
+    "                         disk once all exist (with --chunk: see tideline movie)\n"
     "  --png-bits 8|16        PNG bit depth (default 8)\n"
     "  --png-compression N    zlib level 1 (fast, the default) .. 9 (smallest files)\n"
     "  --dither on|off        8-bit PNGs and movies: dither to the code below or above\n"
@@ -229,11 +233,12 @@ static int parse(int argc, char **argv, render_options *o, int *help, tl_error *
     if (!o->pattern && !o->movie)
         return tl_error_set(err, TL_ERR_USAGE,
                             "nothing to write: give -o PATTERN and/or --movie FILE");
-    if (o->movie && (o->chunk || o->skip_existing))
+    if (o->movie && o->chunk)
         return tl_error_set(err, TL_ERR_USAGE,
-                            "--movie encodes every selected frame in one run; it cannot be "
-                            "combined with --%s",
-                            o->chunk ? "chunk" : "skip-existing");
+                            "--movie cannot be combined with --chunk: a chunk renders part of "
+                            "the frames; once every chunk is done, make the movie with "
+                            "'tideline movie PATTERN.png -o %s --timeline %s'",
+                            o->movie, o->timeline ? o->timeline : "TIMELINE.tl");
     return TL_OK;
 }
 
@@ -404,6 +409,22 @@ int tl_cli_render(int argc, char **argv)
     if (!rc && o.has_passes && passes && !any_exr)
         rc = tl_error_set(&err, TL_ERR_USAGE,
                           "--passes: the passes are layers of EXR frames; give -o PATTERN.exr");
+    /* --movie with --skip-existing: the movie is made from the PNG frames
+     * on disk once they all exist, so a resumed run ends with it too. */
+    const char *movie_frames = NULL;
+    for (int k = 0; k < pattern_count && !movie_frames; k++) {
+        char p[4096];
+        tl_error ignored;
+        if (frames.count > 0 &&
+            !tl_pattern_format(patterns[k], frames.frames[0], frames.count == 1, p, sizeof p,
+                               &ignored) &&
+            tl_image_format_from_path(p) == TL_IMAGE_PNG)
+            movie_frames = patterns[k];
+    }
+    if (!rc && o.movie && o.skip_existing && !movie_frames)
+        rc = tl_error_set(&err, TL_ERR_USAGE,
+                          "--movie with --skip-existing makes the movie from the PNG frames on "
+                          "disk: give -o PATTERN.png too");
     if (!rc && o.movie) {
         rc = tl_cli_make_parent_dirs(o.movie, &err);
         if (!rc && tl_movie_check(o.movie, width, height, &err))
@@ -447,8 +468,17 @@ int tl_cli_render(int argc, char **argv)
     if (!rc && o.verbose)
         fprintf(stderr, "tideline render: %s\ntideline render: display: %s\n",
                 tl_render_describe(render), tl_cli_color_describe(&o.color));
-    if (!rc && o.movie)
-        rc = tl_movie_open(&movie, o.movie, width, height, tl.fps, &err);
+    tl_movie_sound sound = {0}, *soundtrack = NULL;
+    if (tl.audio[0] && frames.count > 0) {
+        sound = (tl_movie_sound){.path = tl.audio,
+                                 .start = tl_timeline_frame_time(&tl, frames.frames[0]) -
+                                          tl.audio_offset,
+                                 .duration = (double)frames.count / tl.fps,
+                                 .sample_rate = tl.audio_rate};
+        soundtrack = &sound;
+    }
+    if (!rc && o.movie && !o.skip_existing)
+        rc = tl_movie_open(&movie, o.movie, width, height, tl.fps, soundtrack, &err);
 
     struct sigaction sa, old_int, old_term;
     memset(&sa, 0, sizeof sa);
@@ -494,6 +524,21 @@ int tl_cli_render(int argc, char **argv)
         else
             tl_movie_abort(movie); /* a movie missing frames is not kept */
         movie = NULL;
+    }
+    if (!rc && !interrupted && o.movie && o.skip_existing) {
+        if (!o.quiet)
+            fprintf(stderr, "tideline render: encoding %s from the %zu frames on disk\n", o.movie,
+                    frames.count);
+        tl_movie_frames job = {.pattern = movie_frames,
+                               .frames = frames.frames,
+                               .count = frames.count,
+                               .movie = o.movie,
+                               .fps = tl.fps,
+                               .sound = soundtrack,
+                               .dither = o.dither,
+                               .stop = &stop_signal};
+        rc = tl_movie_from_frames(&job, &err);
+        interrupted = stop_signal != 0;
     }
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);

@@ -202,6 +202,12 @@ static int check_one(const char *file, int strict)
         }
         printf("\n");
     }
+    if (tl.audio[0]) {
+        const char *slash = strrchr(tl.audio, '/');
+        printf("  audio     %s: %.3f s, %d Hz, %d channel%s, from %.6g s on the timeline\n",
+               slash ? slash + 1 : tl.audio, tl.audio_duration, tl.audio_rate, tl.audio_channels,
+               tl.audio_channels == 1 ? "" : "s", tl.audio_offset);
+    }
     if (tl.camera_look.target == TL_TARGET_BOAT)
         printf("  link      camera looks at %s + %g %g %g\n", object_name(&tl, &tl.camera_look),
                tl.camera_look.offset[0], tl.camera_look.offset[1], tl.camera_look.offset[2]);

@@ -1,1 +1,1 @@
-tl_module(cutscene SOURCES tl_cutscene.c DEPS core mesh timeline)
+tl_module(cutscene SOURCES tl_cutscene.c DEPS audio core mesh timeline)

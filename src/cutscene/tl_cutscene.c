@@ -1,5 +1,7 @@
 #include "cutscene/tl_cutscene.h"
 
+#include "audio/tl_audio.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -54,6 +56,24 @@ static int load_model(const char *path, tl_timeline *tl, int k, tl_models *model
     return TL_OK;
 }
 
+/* The soundtrack is opened now, so that a missing or undecodable file
+ * stops the run at its line before any frame renders. */
+static int probe_audio(const char *path, tl_timeline *tl, tl_error *err)
+{
+    tl_audio_info info;
+    int rc = tl_audio_probe(tl->audio, &info, err);
+    if (rc) {
+        char message[sizeof err->message];
+        snprintf(message, sizeof message, "%s", err->message);
+        return tl_error_set_at(err, err->status, path, tl->audio_line, tl->audio_column, "%s",
+                               message);
+    }
+    tl->audio_duration = info.duration;
+    tl->audio_rate = info.sample_rate;
+    tl->audio_channels = info.channels;
+    return TL_OK;
+}
+
 void tl_models_free(tl_models *models)
 {
     for (int i = 0; i < models->count; i++)
@@ -70,6 +90,8 @@ int tl_cutscene_load(const char *path, tl_cutscene *out, tl_diags *diags, tl_err
     for (int k = 0; k < out->timeline.object_count && !rc; k++)
         if (out->timeline.objects[k].path.present)
             rc = load_model(path, &out->timeline, k, &out->models, err);
+    if (!rc && out->timeline.audio[0])
+        rc = probe_audio(path, &out->timeline, err);
     if (rc) {
         tl_models_free(&out->models);
         tl_timeline_free(&out->timeline);

@@ -1,7 +1,7 @@
 /* tl_cutscene: a timeline with everything it references, loaded as one.
  *
- * A timeline names files of its own (the boat's model today; textures and
- * sound later). Programs that render a timeline load it through here, so
+ * A timeline names files of its own: the floating objects' models (and
+ * their textures) and the soundtrack. Programs that render a timeline load it through here, so
  * that a library user draws the same frame as `tideline still`: the CLI's
  * commands and examples/render_frame.c both do.
  *

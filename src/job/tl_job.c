@@ -1,6 +1,8 @@
 #include "job/tl_job.h"
 
 #include <ctype.h>
+#include <dirent.h>
+#include <errno.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -402,5 +404,59 @@ int tl_pattern_format(const char *pattern, long frame, int single_frame, char *o
                             "output name for frame %ld from '%s' is longer than %zu bytes", frame,
                             pattern, out_size - 1);
     }
+    return TL_OK;
+}
+
+int tl_pattern_scan(const char *pattern, long *first, long *last, tl_error *err)
+{
+    if (!tl_pattern_has_frame(pattern))
+        return tl_error_set(err, TL_ERR_USAGE,
+                            "'%s' has no '#' for the frame number (e.g. out/shot_####.png)",
+                            pattern ? pattern : "");
+    const char *name = file_name(pattern);
+    const char *run_end = NULL;
+    for (const char *c = name; *c; c++)
+        if (*c == '#')
+            run_end = c + 1;
+    const char *run = run_end;
+    while (run > name && run[-1] == '#')
+        run--;
+    size_t prefix = (size_t)(run - name), width = (size_t)(run_end - run);
+    size_t suffix = strlen(run_end);
+    char dir[4096];
+    if (name == pattern)
+        snprintf(dir, sizeof dir, ".");
+    else if (snprintf(dir, sizeof dir, "%.*s", (int)(name - pattern), pattern) >= (int)sizeof dir)
+        return tl_error_set(err, TL_ERR_USAGE, "'%s': path too long", pattern);
+    DIR *d = opendir(dir);
+    if (!d)
+        return tl_error_set(err, TL_ERR_RUNTIME, "'%s': cannot read the folder '%s': %s", pattern,
+                            dir, strerror(errno));
+    long lo = LONG_MAX, hi = -1;
+    for (struct dirent *e; (e = readdir(d)) != NULL;) {
+        const char *f = e->d_name;
+        size_t len = strlen(f);
+        /* prefix, at least `width` digits, suffix: what tl_pattern_format writes */
+        if (len < prefix + width + suffix || strncmp(f, name, prefix) != 0 ||
+            strcmp(f + len - suffix, run_end) != 0)
+            continue;
+        size_t digits = len - prefix - suffix;
+        if (digits > 18)
+            continue;
+        long v = 0;
+        size_t i = 0;
+        for (; i < digits && f[prefix + i] >= '0' && f[prefix + i] <= '9'; i++)
+            v = v * 10 + (f[prefix + i] - '0');
+        /* A wider number never starts with 0 (the run pads, it does not cut). */
+        if (i != digits || (digits > width && f[prefix] == '0'))
+            continue;
+        lo = v < lo ? v : lo;
+        hi = v > hi ? v : hi;
+    }
+    closedir(d);
+    if (hi < 0)
+        return tl_error_set(err, TL_ERR_RUNTIME, "no frames match '%s'", pattern);
+    *first = lo;
+    *last = hi;
     return TL_OK;
 }

@@ -41,6 +41,10 @@ int tl_frame_list_chunk(tl_frame_list *list, const char *spec, const char *flag,
 int tl_pattern_has_frame(const char *pattern);
 int tl_pattern_format(const char *pattern, long frame, int single_frame, char *out, size_t out_size,
                       tl_error *err);
+/* The lowest and highest frame numbers among the files in the pattern's
+ * folder that it names (its '#' run as digits, as tl_pattern_format
+ * writes them); fails when the pattern has no '#' or names no file. */
+int tl_pattern_scan(const char *pattern, long *first, long *last, tl_error *err);
 
 /* Resuming a run (--skip-existing): 1 when `path` holds a complete,
  * readable frame of width x height and, for an EXR, the run's compositing

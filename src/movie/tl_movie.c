@@ -224,7 +224,7 @@ static int ffmpeg_failed(tl_movie *m, tl_error *err)
 }
 
 int tl_movie_open(tl_movie **out, const char *path, int width, int height, double fps,
-                  tl_error *err)
+                  const tl_movie_sound *sound, tl_error *err)
 {
     *out = NULL;
     int rc = tl_movie_check(path, width, height, err);
@@ -234,6 +234,9 @@ int tl_movie_open(tl_movie **out, const char *path, int width, int height, doubl
     if (tl_movie_frame_rate(fps, &num, &den))
         return tl_error_set(err, TL_ERR_USAGE, "'%s': frame rate %g is outside 0.001-10000 fps",
                             path, fps);
+    if (sound && !(sound->duration > 0.0 && sound->sample_rate > 0 && isfinite(sound->start)))
+        return tl_error_set(err, TL_ERR_USAGE, "'%s': the soundtrack's placement is not valid",
+                            path);
     char ffmpeg[4096];
     rc = tl_movie_find_ffmpeg(ffmpeg, sizeof ffmpeg, err);
     if (rc)
@@ -252,27 +255,48 @@ int tl_movie_open(tl_movie **out, const char *path, int width, int height, doubl
         return rc;
     }
 
-    char size[64], rate[64];
+    char size[64], rate[64], seek[64], audio_filter[128], length[64];
     snprintf(size, sizeof size, "%dx%d", width, height);
     snprintf(rate, sizeof rate, "%ld/%ld", num, den);
     int h264 = tl_movie_codec_from_path(path) == TL_MOVIE_H264;
-    char *argv[40];
+    char *argv[64];
     int argc = 0;
-    const char *head[] = {ffmpeg,       "-hide_banner", "-loglevel", "error", "-nostats", "-y",
-                          "-f",         "rawvideo",     "-pix_fmt",  "rgb24", "-s",       size,
-                          "-framerate", rate,           "-i",        "-"};
-    const char *x264[] = {"-c:v",    "libx264", "-pix_fmt",  "yuv420p",    "-crf", "18",
-                          "-preset", "medium",  "-movflags", "+faststart", "-f",   "mp4"};
-    const char *prores[] = {"-c:v",     "prores_ks",   "-profile:v", "3",
-                            "-pix_fmt", "yuv422p10le", "-f",         "mov"};
-    for (size_t i = 0; i < sizeof head / sizeof *head; i++)
-        argv[argc++] = (char *)head[i];
+#define ARGS(...)                                                                                  \
+    do {                                                                                           \
+        const char *list_[] = {__VA_ARGS__};                                                       \
+        for (size_t i_ = 0; i_ < sizeof list_ / sizeof *list_; i_++)                               \
+            argv[argc++] = (char *)list_[i_];                                                      \
+    } while (0)
+    ARGS(ffmpeg, "-hide_banner", "-loglevel", "error", "-nostats", "-y", "-f", "rawvideo",
+         "-pix_fmt", "rgb24", "-s", size, "-framerate", rate, "-i", "-");
+    if (sound) {
+        /* The file from `start` seconds in; a negative start is silence
+         * first, delayed to the sample. The sound is padded with silence
+         * and the movie cut to the frames' length (-t), so that the audio
+         * stream is exactly as long as the picture. */
+        if (sound->start > 0.0) {
+            snprintf(seek, sizeof seek, "%.9f", sound->start);
+            ARGS("-ss", seek);
+        }
+        ARGS("-i", sound->path, "-map", "0:v:0", "-map", "1:a:0");
+        long long delay = sound->start < 0.0 ? llround(-sound->start * sound->sample_rate) : 0;
+        if (delay > 0)
+            snprintf(audio_filter, sizeof audio_filter, "adelay=delays=%lldS:all=1,apad", delay);
+        else
+            snprintf(audio_filter, sizeof audio_filter, "apad");
+        snprintf(length, sizeof length, "%.9f", sound->duration);
+        ARGS("-af", audio_filter, "-t", length);
+        if (h264)
+            ARGS("-c:a", "aac", "-b:a", "256k");
+        else
+            ARGS("-c:a", "pcm_s24le");
+    }
     if (h264)
-        for (size_t i = 0; i < sizeof x264 / sizeof *x264; i++)
-            argv[argc++] = (char *)x264[i];
+        ARGS("-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", "-preset", "medium",
+             "-movflags", "+faststart", "-f", "mp4");
     else
-        for (size_t i = 0; i < sizeof prores / sizeof *prores; i++)
-            argv[argc++] = (char *)prores[i];
+        ARGS("-c:v", "prores_ks", "-profile:v", "3", "-pix_fmt", "yuv422p10le", "-f", "mov");
+#undef ARGS
     argv[argc++] = m->out.tmp_path;
     argv[argc] = NULL;
 

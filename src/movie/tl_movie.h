@@ -39,10 +39,23 @@ int tl_movie_frame_rate(double fps, long *num, long *den);
 
 typedef struct tl_movie tl_movie;
 
+/* A soundtrack muxed into the movie: AAC (256 kb/s) in .mp4, 24-bit PCM in
+ * .mov, ffmpeg reading the file itself. */
+typedef struct tl_movie_sound {
+    const char *path;
+    /* Seconds into the file at the movie's first frame; negative: the movie
+     * starts with that much silence, delayed to the sample. */
+    double start;
+    /* The movie's length in seconds (its frames / fps): the sound is cut to
+     * it, or padded with silence. */
+    double duration;
+    int sample_rate; /* the file's, for the delay in samples */
+} tl_movie_sound;
+
 /* Starts ffmpeg for `path`. fps may be fractional (23.976 is passed to ffmpeg
- * as an exact rational, 24000/1001). */
+ * as an exact rational, 24000/1001). `sound` may be NULL (no audio). */
 int tl_movie_open(tl_movie **out, const char *path, int width, int height, double fps,
-                  tl_error *err);
+                  const tl_movie_sound *sound, tl_error *err);
 /* Writes one frame: width*height*3 bytes of RGB, top row first. Fails if
  * ffmpeg has died (message includes its exit status). */
 int tl_movie_write(tl_movie *m, const uint8_t *rgb, tl_error *err);

@@ -16,9 +16,9 @@
 #include "color/tl_color.h"
 #include "passes/tl_passes.h"
 
-static const char *const directives[] = {"tideline", "fps",           "duration", "size", "quality",
-                                         "passes",   "working_space", "set",      "key",  "path",
-                                         "look",     "follow",        "boat",     NULL};
+static const char *const directives[] = {
+    "tideline", "fps",  "duration", "size", "quality", "passes", "working_space", "set", "key",
+    "path",     "look", "follow",   "boat", "audio",   NULL};
 static const char *const key_words[] = {
     "cut",           "constant",         "step",    "linear",    "bezier", "spline", "auto-clamped",
     "auto",          "vector",           "aligned", "free",      "left",   "right",  "ease-in-sine",
@@ -339,9 +339,9 @@ static tl_track *claim_track(parser *p, const tl_channel *ch, int object, const 
     return tr;
 }
 
-/* `set NAME.model PATH` (`boat.model` for the boat): one word, relative to
- * the timeline's folder. The file is loaded by the commands that need it
- * (check, eval, still, render), which report its errors at this line. */
+/* `set NAME.model PATH` (`boat.model` for the boat): the file is loaded
+ * by the commands that need it (check, eval, still, render), which report
+ * its errors at this line. */
 static void set_object_model(parser *p, token *tok, int n, int object)
 {
     if (n != 3) {
@@ -353,14 +353,8 @@ static void set_object_model(parser *p, token *tok, int n, int object)
         ERR_AT(&tok[1], "%s is already set on line %d", tok[1].s, o->model_line);
         return;
     }
-    const char *slash = strrchr(p->name, '/');
-    int dir_len = tok[2].s[0] == '/' || !slash ? 0 : (int)(slash - p->name) + 1;
-    int len = snprintf(o->model, sizeof o->model, "%.*s%s", dir_len, p->name, tok[2].s);
-    if (len < 0 || (size_t)len >= sizeof o->model) {
-        o->model[0] = '\0';
-        ERR_AT(&tok[2], "%s: the path is too long", tok[1].s);
+    if (tl_parse_file_path(p, &tok[2], tok[1].s, o->model, sizeof o->model))
         return;
-    }
     o->model_line = p->line_no;
     o->model_column = tok[2].col;
 }
@@ -723,6 +717,8 @@ static void directive(parser *p, token *tok, int n)
         tl_parse_dir_follow(p, tok, n);
     else if (strcmp(d, "boat") == 0)
         dir_boat(p, tok, n);
+    else if (strcmp(d, "audio") == 0)
+        tl_parse_dir_audio(p, tok, n);
     else
         tl_parse_diag(p, tok[0].col, tok[0].len, tl_suggest(d, directives),
                       "unknown directive '%s'", d);

@@ -116,6 +116,13 @@ void tl_parse_dir_look(parser *p, token *tok, int n);
 /* `follow camera|giant.center boat [+ offset]`. */
 void tl_parse_dir_follow(parser *p, token *tok, int n);
 
+/* ---- tl_parse_files.c: lines that name files ---- */
+/* Token t's path, relative to the timeline's folder, into out; 1 after
+ * reporting one too long for it (`what` names the line's setting). */
+int tl_parse_file_path(parser *p, const token *t, const char *what, char *out, size_t size);
+/* `audio PATH [OFFSET]`: the soundtrack, its start at timeline time OFFSET. */
+void tl_parse_dir_audio(parser *p, token *tok, int n);
+
 /* ---- tl_parse_checks.c: the whole timeline, once read ---- */
 
 /* Conflicts between what drives the camera, and links to a missing boat. */

@@ -90,6 +90,15 @@ typedef struct tl_timeline {
      * declared with `boat NAME`, in order. */
     tl_object objects[TL_OBJECT_MAX];
     int object_count;
+    /* The `audio PATH [OFFSET]` line: the soundtrack ("" = none), resolved
+     * against the timeline's folder; its first sample plays at timeline
+     * time audio_offset (negative: the file starts before the timeline). */
+    char audio[1024];
+    double audio_offset;
+    int audio_line, audio_column;
+    /* The file as tl_cutscene_load found it (0 until then). */
+    double audio_duration;
+    int audio_rate, audio_channels;
 } tl_timeline;
 
 /* Object k's track of channel `channel` (a tl_channel_index): its own for

@@ -1,0 +1,1 @@
+tl_module(audio SOURCES tl_audio.c DEPS core EXTERNAL PkgConfig::SNDFILE)
