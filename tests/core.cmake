@@ -163,3 +163,6 @@ set_tests_properties(test_blender_export PROPERTIES LABELS unit SKIP_RETURN_CODE
 # Colour management: ACEScg against the ACES matrix through a file; an
 # OpenColorIO display's table against OpenColorIO's own transform.
 tl_add_test(test_color SOURCES test_color.c LIBS tideline_gl tl_ocio tl_passes LABELS gl)
+# Auto exposure through the binary (render.exposure auto).
+tl_add_test(test_auto_exposure SOURCES test_auto_exposure.c LIBS tideline_core
+  ARGS $<TARGET_FILE:tideline> ${PROJECT_SOURCE_DIR}/timelines LABELS gl)

@@ -301,6 +301,7 @@ typedef struct preview {
     int refined;        /* samples per pixel the paused frame holds so far (0: not refining) */
     long *shot_starts;  /* the first frame of each shot (cuts), for the title */
     int shots;
+    tl_meter_cache meters; /* auto exposure's, for this version of the timeline */
 } preview;
 
 /* The shots: a new one starts at every frame a cut falls before. */
@@ -355,6 +356,7 @@ static int load(preview *p)
     p->problem[0] = '\0';
     p->version++;
     p->broken = 0;
+    tl_meter_cache_reset(&p->meters);
     find_shots(p);
     return 0;
 }
@@ -429,7 +431,8 @@ static void save_frame(preview *p)
         if (!stamp_of(exr).exists && !stamp_of(png).exists)
             break;
     }
-    tl_render_settings settings = {.quality = &p->quality, .camera = p->free_cam ? &p->cam : NULL};
+    tl_render_settings settings = {
+        .quality = &p->quality, .camera = p->free_cam ? &p->cam : NULL, .meter = &p->meters};
     if (p->o->has_size) {
         settings.width = p->o->width;
         settings.height = p->o->height;
@@ -710,7 +713,8 @@ int tl_cli_preview(int argc, char **argv)
                 break;
             continue;
         }
-        tl_render_settings settings = {.quality = &p.quality, .camera = p.free_cam ? &p.cam : NULL};
+        tl_render_settings settings = {
+            .quality = &p.quality, .camera = p.free_cam ? &p.cam : NULL, .meter = &p.meters};
         settings.width = (int)fmax(16.0, floor(width * p.scale + 0.5));
         settings.height = (int)fmax(9.0, floor(height * p.scale + 0.5));
         int sharp = settings.width == width && settings.height == height;

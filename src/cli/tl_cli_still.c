@@ -72,8 +72,9 @@ static const char usage[] =
     "  --fov DEG              vertical field of view, 0 < DEG < 180 (default 67.38)\n"
     "  --sun-elevation DEG    sun above the horizon (default 10)\n"
     "  --sun-azimuth DEG      sun compass direction (default -7.6)\n"
-    "  --exposure E           linear exposure before tonemapping (default 2; replaces\n"
-    "                         render.exposure)\n"
+    "  --exposure E|auto      linear exposure before tonemapping (default 2; replaces\n"
+    "                         render.exposure and turns the meter off), or auto: the\n"
+    "                         metered exposure (render.exposure auto)\n"
     "  --ev STOPS             exposure compensation, -20..20: +1 halves the light\n"
     "                         (replaces render.ev); the display multiplies the light\n"
     "                         by exposure x 2^-ev before the tonemap (EXR: untouched)\n"
@@ -126,6 +127,12 @@ typedef struct still_options {
     int has_prev, has_next;
     tl_cli_color color; /* --working-space, --ocio, --display, --view */
     int timeline_space; /* the timeline's `working_space` */
+    int exposure_auto;  /* --exposure auto */
+    /* The timeline (or the defaults' when none is given), kept for the
+     * auto exposure's meters; freed by tl_cli_still. */
+    tl_timeline tl;
+    int have_tl;
+    double time;
 } still_options;
 
 static int parse(int argc, char **argv, still_options *o, int *help, tl_error *err)
@@ -198,10 +205,14 @@ static int parse(int argc, char **argv, still_options *o, int *help, tl_error *e
             rc = a.value ? tl_args_angle(a.flag, a.value, &s->sun.azimuth, err) : TL_ERR_USAGE;
             o->has_sun_azimuth = 1;
         } else if (tl_args_match(&a, "--exposure", NULL, true, err)) {
-            rc = a.value ? tl_args_double(a.flag, a.value, &s->exposure, err) : TL_ERR_USAGE;
-            if (!rc && s->exposure < 0.0)
-                rc = tl_error_set(err, TL_ERR_USAGE, "--exposure: '%s' is negative", a.value);
-            o->has_exposure = 1;
+            /* The last one counts: a number, or `auto` (the meter's). */
+            o->exposure_auto = a.value && strcmp(a.value, "auto") == 0;
+            o->has_exposure = !o->exposure_auto;
+            if (!o->exposure_auto) {
+                rc = a.value ? tl_args_double(a.flag, a.value, &s->exposure, err) : TL_ERR_USAGE;
+                if (!rc && s->exposure < 0.0)
+                    rc = tl_error_set(err, TL_ERR_USAGE, "--exposure: '%s' is negative", a.value);
+            }
         } else if (tl_args_match(&a, "--ev", NULL, true, err)) {
             rc = a.value ? tl_args_double(a.flag, a.value, &s->ev, err) : TL_ERR_USAGE;
             if (!rc && !(fabs(s->ev) <= 20.0))
@@ -269,8 +280,12 @@ static void apply_flags(const still_options *o, tl_scene *scene)
         scene->sun.elevation = v->sun.elevation;
     if (o->has_sun_azimuth)
         scene->sun.azimuth = v->sun.azimuth;
-    if (o->has_exposure)
+    if (o->has_exposure) { /* a fixed exposure: the meter is off */
         scene->exposure = v->exposure;
+        scene->auto_exposure = 0.0;
+    }
+    if (o->exposure_auto)
+        scene->auto_exposure = 1.0;
     if (o->has_ev)
         scene->ev = v->ev;
     if (o->has_quality)
@@ -290,6 +305,7 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
         if (tl_cli_load_timeline("still", o->timeline, &tl, models))
             return -1; /* diagnostics already printed */
         have_timeline = 1;
+        o->have_tl = 1;
         fps = tl.fps;
         if (!o->has_passes)
             o->passes = tl.passes;
@@ -329,6 +345,7 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
     if (rc) {
         if (have_timeline)
             tl_timeline_free(&tl);
+        o->have_tl = 0;
         return rc;
     }
 
@@ -355,8 +372,11 @@ static int build_scene(still_options *o, tl_scene *scene, tl_models *models, tl_
             *(k ? &o->has_next : &o->has_prev) = 1;
         }
     }
+    o->time = t;
     if (have_timeline)
-        tl_timeline_free(&tl);
+        o->tl = tl;                             /* the meters' (tl_cli_still frees it) */
+    else if (!rc && scene->auto_exposure > 0.0) /* --exposure auto over the defaults */
+        o->have_tl = (rc = tl_timeline_init(&o->tl, err)) == TL_OK;
     return rc ? rc : tl_scene_validate(scene, err);
 }
 
@@ -403,6 +423,8 @@ int tl_cli_still(int argc, char **argv)
         tl_cli_color_free(&o.color);
         tl_cli_print_error("still", &err);
         tl_models_free(&models);
+        if (o.have_tl)
+            tl_timeline_free(&o.tl);
         return rc == TL_ERR_RUNTIME ? 1 : 2;
     }
 
@@ -422,6 +444,13 @@ int tl_cli_still(int argc, char **argv)
     if (!rc && isatty(STDERR_FILENO))
         tl_render_set_progress(render, still_progress_update, &progress);
     const unsigned planes = TL_PLANES_ALL | (tl_passes_need_aov(o.passes) ? TL_PLANE_AOV : 0u);
+    /* Auto exposure meters the timeline's scene; from a camera the flags
+     * moved, with that camera. */
+    const int moved =
+        o.has_camera || o.has_yaw || o.has_pitch || o.has_roll || o.has_fov || o.has_look_at;
+    if (!rc && o.have_tl)
+        rc = tl_render_meter_exposure(render, &o.tl, o.time, moved ? &scene.camera : NULL, NULL,
+                                      &scene, &err);
     if (!rc)
         rc = tl_render_frame_layers(render, &scene, planes, tl_passes_light_layers(o.passes),
                                     &frame, &err);
@@ -478,6 +507,8 @@ int tl_cli_still(int argc, char **argv)
     tl_frame_free(&frame);
     tl_render_close(render);
     tl_cli_color_free(&o.color);
+    if (o.have_tl)
+        tl_timeline_free(&o.tl);
     if (rc) {
         tl_cli_print_error("still", &err);
         return rc == TL_ERR_USAGE ? 2 : 1;

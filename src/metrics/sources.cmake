@@ -1,1 +1,1 @@
-tl_module(metrics SOURCES tl_metrics.c EXTERNAL ${MATH_LIB})
+tl_module(metrics SOURCES tl_metrics.c tl_exposure.c EXTERNAL ${MATH_LIB})

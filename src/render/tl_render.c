@@ -346,12 +346,16 @@ static int show_or_read(tl_render *r, const tl_scene *scene, const tl_render_set
 /* Frame `frame` of `tl` drawn, its sub-frames accumulated, but not yet
  * shown or read back; its scene in *scene. */
 static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
-                               const tl_render_settings *settings, tl_frame *out, tl_scene *scene,
-                               tl_error *err)
+                               const tl_render_settings *settings, int meter, tl_frame *out,
+                               tl_scene *scene, tl_error *err)
 {
     double t = tl_timeline_frame_time(tl, frame);
     tl_render_frame_scene(tl, t, settings, scene);
-    int rc = tl_scene_validate(scene, err);
+    int rc = meter
+                 ? tl_render_meter_exposure(r, tl, t, settings->camera, settings->meter, scene, err)
+                 : TL_OK;
+    if (!rc)
+        rc = tl_scene_validate(scene, err);
     if (!rc && out)
         rc = ensure_frame(out, scene->width, scene->height, settings->planes, err);
     int rw, rh;
@@ -406,7 +410,7 @@ static int redraw_timeline_frame(tl_render *r, void *ctx, tl_error *err)
 {
     const timeline_draw *d = ctx;
     tl_scene scene;
-    return draw_timeline_frame(r, d->tl, d->frame, &d->settings, NULL, &scene, err);
+    return draw_timeline_frame(r, d->tl, d->frame, &d->settings, 0, NULL, &scene, err);
 }
 
 int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
@@ -416,7 +420,7 @@ int tl_render_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
     double t0 = tl_clock_seconds();
     r->render_seconds = r->readback_seconds = 0.0;
     tl_scene scene;
-    int rc = draw_timeline_frame(r, tl, frame, settings, out, &scene, err);
+    int rc = draw_timeline_frame(r, tl, frame, settings, 1, out, &scene, err);
     if (!rc)
         rc = show_or_read(r, &scene, settings, out, err);
     if (!rc && out && settings->layers) {
@@ -446,7 +450,7 @@ int tl_render_timeline_frame_queue(tl_render *r, const tl_timeline *tl, long fra
                             "light layers are not queued: render the frame with "
                             "tl_render_timeline_frame");
     tl_scene scene;
-    int rc = draw_timeline_frame(r, tl, frame, settings, NULL, &scene, err);
+    int rc = draw_timeline_frame(r, tl, frame, settings, 1, NULL, &scene, err);
     tl_display_settings display = display_of(&scene);
     if (!rc)
         rc = tl_renderer_finish_begin(r->renderer, &display,
@@ -479,8 +483,19 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
     tl_render_settings pass = *settings;
     pass.spp = samples;
     tl_scene scene;
-    tl_render_frame_scene(tl, tl_timeline_frame_time(tl, frame), &pass, &scene);
-    int rc = tl_scene_validate(&scene, err);
+    const double t = tl_timeline_frame_time(tl, frame);
+    tl_render_frame_scene(tl, t, &pass, &scene);
+    /* Metered before the first sample only: the meters' drawing would
+     * overwrite the running mean; the later samples keep its exposure. */
+    int rc = TL_OK;
+    if (sample == 0) {
+        rc = tl_render_meter_exposure(r, tl, t, settings->camera, settings->meter, &scene, err);
+        r->refine_exposure = scene.exposure;
+    } else {
+        scene.exposure = r->refine_exposure;
+    }
+    if (!rc)
+        rc = tl_scene_validate(&scene, err);
     if (!rc && out)
         rc = ensure_frame(out, scene.width, scene.height, 0, err);
     int rw, rh;

@@ -82,6 +82,21 @@ struct tl_frame_uniforms;
 int tl_render_prepare_sky(struct tl_renderer *renderer, const tl_scene *scene,
                           struct tl_sky_luts *luts, struct tl_frame_uniforms *u, tl_error *err);
 
+/* Auto exposure's meters already taken (tl_exposure.h), kept by a caller
+ * that renders many frames of one timeline so that consecutive frames
+ * share them: zeroed (tl_meter_cache_reset) before the first frame and
+ * whenever the timeline changes. The camera they were taken from is
+ * part of the key (a new one resets it). */
+#define TL_METER_CACHE 64
+typedef struct tl_meter_cache {
+    int count, next;
+    double time[TL_METER_CACHE];
+    double value[TL_METER_CACHE]; /* the meter: mean log2 luminance */
+    int has_camera;
+    tl_camera camera;
+} tl_meter_cache;
+void tl_meter_cache_reset(tl_meter_cache *c);
+
 /* How a timeline's frames are rendered; zero fields keep the timeline's. */
 typedef struct tl_render_settings {
     int width, height;         /* 0: the timeline's size */
@@ -92,7 +107,18 @@ typedef struct tl_render_settings {
     const tl_camera *camera;   /* NULL: the timeline's; else this camera (the preview's) */
     unsigned planes;           /* TL_PLANE_* bits to read back (0: all); others keep old data */
     unsigned layers;           /* light layers read back (tl_render_frame_layers); not queued */
+    tl_meter_cache *meter;     /* auto exposure's meters to reuse (NULL: none kept) */
 } tl_render_settings;
+
+/* Auto exposure: when scene->auto_exposure > 0 (the timeline's at time t),
+ * draws the meters the adapted exposure at t is made of (those not in
+ * `cache`, which may be NULL) and sets scene->exposure to the metered one
+ * (tl_exposure_scale); otherwise leaves the scene alone. The meters use
+ * the timeline's camera, or `camera` when not NULL. Call it before a
+ * frame's drawing starts: the meters draw through the same targets.
+ * tl_render_timeline_frame and its kin call it themselves. */
+int tl_render_meter_exposure(tl_render *r, const tl_timeline *tl, double t, const tl_camera *camera,
+                             tl_meter_cache *cache, tl_scene *scene, tl_error *err);
 
 /* The scene a frame is rendered from: the timeline at frame / fps with the
  * settings applied. */

@@ -28,6 +28,7 @@ struct tl_render {
     tl_render_progress_fn progress;          /* tl_render_set_progress */
     void *progress_ctx;
     double progress_done, progress_total; /* pixel samples of the frame being drawn */
+    double refine_exposure;               /* the refined frame's, metered at its first sample */
 };
 
 /* The renderer on whichever context `open_context` made current; headless

@@ -221,6 +221,11 @@ int tl_run_frames(tl_render *render, const tl_run_config *cfg, tl_run_result *ou
     run_state s = {cfg, out, 0, NULL};
     const tl_frame_list *frames = cfg->frames;
     tl_render_settings settings = cfg->settings;
+    /* Consecutive frames share auto exposure's meters. */
+    tl_meter_cache meters;
+    tl_meter_cache_reset(&meters);
+    if (!settings.meter)
+        settings.meter = &meters;
     tl_scene first;
     tl_render_frame_scene(cfg->timeline, 0.0, &settings, &first);
     const int width = first.width, height = first.height;

@@ -11,6 +11,7 @@ void tl_scene_defaults(tl_scene *s)
     s->width = 1280;
     s->height = 720;
     s->exposure = 2.0;
+    s->adapt_time = 1.0;
     s->ev = 0.0;
     s->bloom = 0.02;
 

@@ -267,7 +267,12 @@ typedef struct tl_scene {
     int width, height;
     double exposure; /* linear multiplier before tonemapping (2.0) */
     double ev;       /* exposure value in stops: each +1 halves the light (0) */
-    double bloom;    /* share of the light spread into glare in the display image */
+    /* Exposure that meters itself (tl_exposure.h): its strength, 0 (off,
+     * `exposure` alone) to 1 (the meter's alone), and the adaptation's time
+     * constant, seconds (1). */
+    double auto_exposure;
+    double adapt_time;
+    double bloom; /* share of the light spread into glare in the display image */
     tl_camera camera;
     tl_camera_rig rig; /* the camera as Blender gives it (camera.rotation_mode, .focal_length) */
     tl_sun sun;

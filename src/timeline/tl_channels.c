@@ -31,6 +31,11 @@ static const tl_channel channels[] = {
          "linear exposure before tonemapping"),
     REAL("render.ev", 1, TL_UNIT_NONE, -20.0, 20.0, ev,
          "exposure value in stops: +1 halves the light, -3 for dusk"),
+    REAL("render.auto_exposure", 1, TL_UNIT_NONE, 0.0, 1.0, auto_exposure,
+         "exposure that meters itself: 0 off (render.exposure), 1 the meter's; "
+         "`set render.exposure auto` sets 1"),
+    REAL("render.adapt_time", 1, TL_UNIT_TIME, 0.0, 60.0, adapt_time,
+         "seconds the metered exposure takes to adapt (a time constant; 0 at once)"),
     REAL("render.bloom", 1, TL_UNIT_NONE, 0.0, 1.0, bloom,
          "share of the light spread into glare in the display image (not EXR)"),
 

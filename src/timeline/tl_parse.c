@@ -375,6 +375,30 @@ static void dir_set(parser *p, token *tok, int n)
         return;
     if (tl_parse_unit_after_space(p, tok, n, 2))
         return;
+    /* `set render.exposure auto`: the metered exposure at full strength
+     * (render.auto_exposure 1; its track, so that setting both is caught). */
+    if (strcmp(ch->name, "render.exposure") == 0 && n == 3 && strcmp(tok[2].s, "auto") == 0) {
+        const tl_channel *strength = tl_channel_find("render.auto_exposure");
+        tl_track *tr = tl_timeline_track(p->tl, tl_channel_index(strength), object);
+        if (tr->state != TL_TRACK_DEFAULT) {
+            ERR_AT(&tok[2], "render.auto_exposure is already %s on line %d",
+                   tr->state == TL_TRACK_SET ? "set" : "keyed", tr->line);
+            return;
+        }
+        tr->line = p->line_no;
+        tr->state = TL_TRACK_SET;
+        tr->value[0] = 1.0;
+        return;
+    }
+    char *number_end = NULL;
+    if (strcmp(ch->name, "render.exposure") == 0 && n == 3 && isalpha((unsigned char)tok[2].s[0]) &&
+        (strtod(tok[2].s, &number_end), number_end) == tok[2].s) {
+        /* a word, not nan or inf (the number's own messages) */
+        static const char *const words[] = {"auto", NULL};
+        tl_parse_diag(p, tok[2].col, tok[2].len, tl_suggest(tok[2].s, words),
+                      "render.exposure takes a number or 'auto', got '%s'", tok[2].s);
+        return;
+    }
     if (n - 2 != ch->components) {
         tl_parse_diag(p, tok[n - 1].col, tok[n - 1].len, NULL, "%s takes %d value%s, found %d",
                       tok[1].s, ch->components, ch->components > 1 ? "s" : "", n - 2);
