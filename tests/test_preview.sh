@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # tideline preview under Xvfb (llvmpipe): a paused, sharpened screenshot
 # equals `tideline still`, and refined, `still --spp 16`; the window shows
-# that frame upright; the file is followed as it is edited, a broken file
+# that frame upright (its overlay hidden); the file is followed as it is edited, a broken file
 # keeps the last good frame and prints its error, fixing it recovers;
 # scripted keys move the time exactly and F saves the frame; a target
 # frame rate no frame can meet lowers the render scale, one every frame
 # meets keeps it; no display is a one-line error; a bad
-# --refine is a usage error.
+# --refine is a usage error; the overlay, false colour and safe frames
+# never reach a saved frame, the bar lies over the frame's foot in the
+# window, a click at half the bar lands on the middle frame, the loop
+# range (I, O) holds playback and is printed on quitting, Shift+L clears
+# it.
 # ARGS: the tideline binary, the timelines folder. Prints "N passed, M failed".
 set -u
 bin=$1
@@ -64,7 +68,7 @@ check "refining changes the frame" awk -v p="$psnr" 'BEGIN { exit !(p != "inf" &
 # 2. Hot reload: edit, break, fix.
 cp "$timelines/calm.tl" "$work/edit.tl"
 # Started directly (not through a function) so $! is the preview itself.
-"$bin" preview "$work/edit.tl" --paused --time 2 --size 160x90 --quality draft \
+"$bin" preview "$work/edit.tl" --paused --time 2 --size 160x90 --quality draft --keys tab \
   --screenshot "$work/shot.png" --watch-interval 0.1 --exit-after-frames 100000 \
   >"$work/out2" 2>"$work/err2" &
 pid=$!
@@ -157,6 +161,52 @@ check "no display names DISPLAY and one line" bash -c "grep -q DISPLAY '$work/ou
 status=$?
 check "--refine 0 exits 2" test $status -eq 2
 check "--refine 0 names the flag" grep -q "refine: '0' is not a sample count in 1..1024" "$work/out7"
+
+# 7. The overlay (the bar, with X's false colour and G's safe frames) is
+# the window's alone: the screenshot is the same without it (Tab).
+short="$work/short.tl"
+printf 'tideline 1\nfps 24\nduration 48f\nsize 320x180\nquality draft\nkey camera.yaw linear\n  0s 0\n  2s 20\n' >"$short"
+"$bin" preview "$short" --paused --size 320x180 --refine 1 --keys x,g --screenshot "$work/with.png" \
+  --exit-after-frames 12 >"$work/out8a" 2>&1
+"$bin" preview "$short" --paused --size 320x180 --refine 1 --keys tab --screenshot "$work/without.png" \
+  --exit-after-frames 12 >"$work/out8b" 2>&1
+check "a screenshot is the same with the overlay, false colour and safe frames or without" \
+  test -s "$work/with.png" -a "$(md5 "$work/with.png")" = "$(md5 "$work/without.png")"
+# In the window: the frame above the bar, the bar over the frame's foot.
+"$bin" preview "$short" --paused --size 320x180 --exit-after-frames 100000 \
+  --screenshot "$work/shown.png" >"$work/out8c" 2>&1 &
+pid=$!
+wait_for 60 test -s "$work/shown.png"
+sleep 1
+ffmpeg -hide_banner -loglevel error -y -f x11grab -video_size 320x180 -i "$DISPLAY+0,0" \
+  -frames:v 1 "$work/window8.png"
+kill "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+crop_psnr() { # crop_psnr Y H a.png b.png: PSNR over rows Y..Y+H
+  ffmpeg -hide_banner -i "$3" -i "$4" -lavfi "[0]crop=320:$2:0:$1[a];[1]crop=320:$2:0:$1[b];[a][b]psnr" \
+    -f null - 2>&1 | sed -nE 's/.*average:([0-9.a-z]+).*/\1/p' | tail -1
+}
+top=$(crop_psnr 0 100 "$work/window8.png" "$work/shown.png")
+foot=$(crop_psnr 150 30 "$work/window8.png" "$work/shown.png")
+echo "the window against its screenshot: above the bar PSNR $top dB, over it $foot dB"
+check "the window shows the frame above the bar" at_least_40 "$top"
+check "the bar lies over the frame's foot" awk -v p="$foot" 'BEGIN { exit !(p != "inf" && p < 30) }'
+# A click at half the bar: frame 24 of 48.
+"$bin" preview "$short" --paused --size 160x90 --keys click:0.5 --exit-after-frames 4 \
+  >"$work/out9" 2>&1
+check "a click at half the bar lands on the middle frame" grep -q "stopped at frame 24 " "$work/out9"
+# Frames 4..8 as the loop range, then play: playback stays inside it.
+"$bin" preview "$short" --paused --size 64x36 \
+  --keys right,right,right,right,i,right,right,right,right,o,space --exit-after-frames 80 \
+  >"$work/out10" 2>&1
+cat "$work/out10"
+check "the loop range is printed on quitting" grep -q "loop range frames 4-8 (0.166667 s to 0.375 s)" "$work/out10"
+check "playback keeps to the loop range" bash -c "grep -Eq 'stopped at frame [4-8] ' '$work/out10'"
+"$bin" preview "$short" --paused --size 64x36 --keys i,right,o,shift+l --exit-after-frames 6 \
+  >"$work/out11" 2>&1
+check "Shift+L clears the loop range" grep -q "no loop range" "$work/out11"
+"$bin" preview "$short" --keys click:2 >"$work/out12" 2>&1
+check "a click off the bar is a usage error" grep -q "click:2': a click takes a share of the bar, 0..1" "$work/out12"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

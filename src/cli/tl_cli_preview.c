@@ -13,6 +13,8 @@
 
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
+#include "cli/tl_cli_overlay.h"
+#include "cli/tl_cli_preview.h"
 #include "core/tl_math.h"
 #include "gl/tl_gl_window.h"
 #include "image/tl_image_io.h"
@@ -45,8 +47,8 @@ static const char usage[] =
     "  --screenshot PATH      write PATH (PNG or EXR, atomically) each time the displayed\n"
     "                         frame has fully sharpened and refined\n"
     "  --exit-after-frames N  quit after N displayed frames\n"
-    "  --keys LIST            play keys, one per frame: space,left,right,shift+left,\n"
-    "                         shift+right,home,end,[,],1,2,3,4,c,p,f,r,l,h,esc\n"
+    "  --keys LIST            play keys and clicks on the timeline bar, one per frame:\n"
+    "                         " TL_PREVIEW_KEY_NAMES "\n"
     "  --watch-interval S     seconds between checks of the files (default 0.25)\n"
     "  --shader-dir DIR       load shaders from DIR and reload them when they "
     "change\n" TL_CLI_DISPLAY_USAGE
@@ -55,21 +57,15 @@ static const char usage[] =
     "\n"
     "Keys: space play/pause; left/right one frame; shift+left/right one second;\n"
     "Home/End; [ ] playback speed; 1-4 quality draft/preview/final/reference;\n"
-    "L loop or hold at the end; C free camera (WASD, Q/E down/up, drag to look;\n"
-    "P prints its pose as timeline keys); F saves the frame at full size and\n"
-    "quality as EXR + PNG next to the timeline; R reloads; H or ? this help;\n"
-    "Esc quits.\n";
-
-typedef struct options {
-    const char *timeline, *screenshot, *keys, *shader_dir, *time_text;
-    int paused, verbose, has_quality, has_size;
-    tl_quality quality;
-    int width, height;
-    double scale, target_fps, watch_interval;
-    long exit_after;
-    int refine;         /* samples per pixel a paused frame refines to */
-    tl_cli_color color; /* --ocio, --display, --view */
-} options;
+    "L loop or hold at the end; I / O set the loop range's start / end at the\n"
+    "frame shown, Shift+L clears it; C free camera (WASD, Q/E down/up, drag to\n"
+    "look, the mouse wheel its speed, which grows with its height; P prints its\n"
+    "pose as timeline keys); F saves the frame at full size and quality as EXR +\n"
+    "PNG next to the timeline; R reloads; Tab hides the overlay; G safe frames\n"
+    "and the output's aspect; X false colour (exposure zones); H or ? this help;\n"
+    "Esc quits. Click or drag on the timeline bar to go to a frame.\n"
+    "The overlay (the bar with its cuts, keys, loop and soundtrack, the time and\n"
+    "frame) is drawn in the window only, never in a saved frame.\n";
 
 static volatile sig_atomic_t stop_signal = 0;
 
@@ -174,75 +170,7 @@ static int parse(int argc, char **argv, options *o, int *help, tl_error *err)
     return TL_OK;
 }
 
-/* ---- --keys: a script of key names ---- */
-
-static const struct {
-    const char *name;
-    tl_keycode key;
-    bool shift;
-} key_names[] = {
-    {"space", TL_KEY_SPACE, false},
-    {"left", TL_KEY_LEFT, false},
-    {"right", TL_KEY_RIGHT, false},
-    {"shift+left", TL_KEY_LEFT, true},
-    {"shift+right", TL_KEY_RIGHT, true},
-    {"home", TL_KEY_HOME, false},
-    {"end", TL_KEY_END, false},
-    {"[", TL_KEY_BRACKET_LEFT, false},
-    {"]", TL_KEY_BRACKET_RIGHT, false},
-    {"1", TL_KEY_1, false},
-    {"2", TL_KEY_2, false},
-    {"3", TL_KEY_3, false},
-    {"4", TL_KEY_4, false},
-    {"c", TL_KEY_C, false},
-    {"p", TL_KEY_P, false},
-    {"f", TL_KEY_F, false},
-    {"r", TL_KEY_R, false},
-    {"l", TL_KEY_L, false},
-    {"h", TL_KEY_H, false},
-    {"?", TL_KEY_QUESTION, false},
-    {"esc", TL_KEY_ESCAPE, false},
-};
-
-/* Parses "space,right,F" into presses; returns the count or -1. */
-static int parse_keys(const char *text, tl_key_press *out, int max, tl_error *err)
-{
-    int n = 0;
-    const char *p = text;
-    while (*p) {
-        const char *end = strchr(p, ',');
-        size_t len = end ? (size_t)(end - p) : strlen(p);
-        char word[32];
-        if (len == 0 || len >= sizeof word) {
-            tl_error_set(err, TL_ERR_USAGE, "--keys: empty or overlong key name in '%s'", text);
-            return -1;
-        }
-        for (size_t i = 0; i < len; i++)
-            word[i] = (char)(p[i] >= 'A' && p[i] <= 'Z' ? p[i] - 'A' + 'a' : p[i]);
-        word[len] = '\0';
-        int found = 0;
-        for (size_t k = 0; k < sizeof key_names / sizeof key_names[0]; k++)
-            if (strcmp(word, key_names[k].name) == 0 && n < max) {
-                out[n++] = (tl_key_press){key_names[k].key, key_names[k].shift};
-                found = 1;
-                break;
-            }
-        if (!found) {
-            tl_error_set(err, TL_ERR_USAGE,
-                         "--keys: unknown key '%s' (see 'tideline preview --help')", word);
-            return -1;
-        }
-        p += len + (end ? 1 : 0);
-    }
-    return n;
-}
-
 /* ---- the watched files ---- */
-
-typedef struct stamp {
-    long long mtime_ns, size, inode;
-    int exists;
-} stamp;
 
 static stamp stamp_of(const char *path)
 {
@@ -277,32 +205,6 @@ static long long newest_in(const char *dir)
 }
 
 /* ---- the preview's state ---- */
-
-typedef struct preview {
-    options *o;
-    tl_render *render;
-    tl_timeline tl;
-    int have_tl;
-    stamp tl_stamp;
-    char problem[512]; /* the last reload's error, for the title; "" when fine */
-    double t;          /* the time shown, seconds */
-    int playing, loop;
-    double speed, anchor_clock, anchor_t;
-    tl_quality quality;
-    double scale;
-    int free_cam;
-    tl_camera cam;
-    long version;       /* bumps on every reload: the screenshot follows it */
-    long shown;         /* frames displayed */
-    double fps;         /* measured */
-    char last_shot[96]; /* the state of the last screenshot */
-    int sharp;          /* the displayed frame is fully sharpened */
-    int broken;         /* rendering failed: wait for a change before trying again */
-    int refined;        /* samples per pixel the paused frame holds so far (0: not refining) */
-    long *shot_starts;  /* the first frame of each shot (cuts), for the title */
-    int shots;
-    tl_meter_cache meters; /* auto exposure's, for this version of the timeline */
-} preview;
 
 /* The shots: a new one starts at every frame a cut falls before. */
 static void find_shots(preview *p)
@@ -358,17 +260,22 @@ static int load(preview *p)
     p->broken = 0;
     tl_meter_cache_reset(&p->meters);
     find_shots(p);
+    tl_preview_find_keys(p);
+    long frames = tl_timeline_frame_count(&p->tl);
+    if (p->loop_in >= frames || p->loop_out >= frames)
+        p->loop_in = p->loop_out = -1; /* a shorter timeline: the range is gone */
     return 0;
 }
 
-static long frame_of(const preview *p)
+static void preview_free(preview *p)
 {
-    return (long)floor(p->t * p->tl.fps + 1e-6);
-}
-
-static double duration(const preview *p)
-{
-    return tl_timeline_frame_count(&p->tl) / p->tl.fps;
+    if (p->have_tl)
+        tl_timeline_free(&p->tl);
+    p->have_tl = 0;
+    free(p->shot_starts);
+    free(p->key_times);
+    free(p->key_channels);
+    tl_overlay_free(&p->drawn);
 }
 
 static void set_time(preview *p, double t)
@@ -387,72 +294,6 @@ static void print_pose(const preview *p)
     printf("key camera.yaw\n  %.3fs  %.2fdeg\n", p->t, c->yaw / TL_DEG);
     printf("key camera.pitch\n  %.3fs  %.2fdeg\n", p->t, c->pitch / TL_DEG);
     fflush(stdout);
-}
-
-/* A frame the preview saves (F, --screenshot): an EXR carries the camera
- * and the timeline's floating objects as render's do (tl_passes), in the
- * radiance's Rec.709; a PNG as it shows. */
-static int write_saved(const preview *p, const char *path, const tl_frame *f,
-                       const tl_render_settings *settings, long frame, tl_error *err)
-{
-    tl_image_options opt = {0};
-    if (tl_image_format_from_path(path) != TL_IMAGE_EXR)
-        return tl_image_write(path, f, &opt, err);
-    tl_scene scene;
-    tl_render_frame_scene(&p->tl, tl_timeline_frame_time(&p->tl, frame), settings, &scene);
-    const tl_meta meta[2] = {
-        {"tideline/timeline", TL_META_STRING, p->o->timeline, 0, 0, NULL},
-        {"tideline/time", TL_META_DOUBLE, NULL, scene.time, 0, NULL},
-    };
-    opt.meta = meta;
-    opt.meta_count = 2;
-    const char *names[TL_OBJECT_MAX];
-    for (int k = 0; k < p->tl.object_count && k < TL_OBJECT_MAX; k++)
-        names[k] = p->tl.objects[k].name;
-    const tl_passes_frame info = {0,      &scene.camera, names, p->tl.object_count, p->tl.fps,
-                                  &scene, NULL,          NULL,  TL_WORKING_REC709,  NULL,
-                                  NULL};
-    return tl_passes_write_frame(path, f, &info, &opt, err);
-}
-
-/* F: the frame at full size and quality as EXR + PNG next to the timeline,
- * under a name that is not taken. */
-static void save_frame(preview *p)
-{
-    char base[1024], exr[1100], png[1100];
-    snprintf(base, sizeof base, "%s", p->o->timeline);
-    char *dot = strrchr(base, '.');
-    if (dot && !strchr(dot, '/'))
-        *dot = '\0';
-    long frame = frame_of(p);
-    for (int n = 1; n < 10000; n++) {
-        snprintf(exr, sizeof exr, "%s_frame%04ld_%d.exr", base, frame, n);
-        snprintf(png, sizeof png, "%s_frame%04ld_%d.png", base, frame, n);
-        if (!stamp_of(exr).exists && !stamp_of(png).exists)
-            break;
-    }
-    tl_render_settings settings = {
-        .quality = &p->quality, .camera = p->free_cam ? &p->cam : NULL, .meter = &p->meters};
-    if (p->o->has_size) {
-        settings.width = p->o->width;
-        settings.height = p->o->height;
-    }
-    tl_frame f = {0};
-    tl_error err;
-    tl_error_clear(&err);
-    int rc = tl_render_timeline_frame(p->render, &p->tl, frame, &settings, &f, NULL, &err);
-    /* That frame took the renderer's targets: refinement starts again. */
-    p->refined = 0;
-    if (!rc)
-        rc = write_saved(p, exr, &f, &settings, frame, &err);
-    if (!rc)
-        rc = write_saved(p, png, &f, &settings, frame, &err);
-    if (rc)
-        tl_cli_print_error("preview", &err);
-    else
-        printf("tideline preview: saved %s and %s\n", exr, png);
-    fflush(stdout);
-    tl_frame_free(&f);
 }
 
 static void handle_key(preview *p, tl_key_press k, int *quit)
@@ -498,9 +339,27 @@ static void handle_key(preview *p, tl_key_press k, int *quit)
         }
         break;
     case TL_KEY_P: print_pose(p); break;
-    case TL_KEY_F: save_frame(p); break;
+    case TL_KEY_F: tl_preview_save_frame(p); break;
     case TL_KEY_R: load(p); break;
-    case TL_KEY_L: p->loop = !p->loop; break;
+    case TL_KEY_L:
+        if (k.shift)
+            p->loop_in = p->loop_out = -1;
+        else
+            p->loop = !p->loop;
+        break;
+    case TL_KEY_I:
+    case TL_KEY_O: {
+        long f = frame_of(p);
+        long *end = k.key == TL_KEY_I ? &p->loop_in : &p->loop_out;
+        *end = f;
+        /* An end set past the other moves the other with it. */
+        if (p->loop_in >= 0 && p->loop_out >= 0 && p->loop_in > p->loop_out)
+            *(k.key == TL_KEY_I ? &p->loop_out : &p->loop_in) = f;
+        break;
+    }
+    case TL_KEY_TAB: p->overlay = !p->overlay; break;
+    case TL_KEY_G: p->safe_frame = !p->safe_frame; break;
+    case TL_KEY_X: p->false_colour = !p->false_colour; break;
     case TL_KEY_H:
     case TL_KEY_QUESTION: fputs(usage, stdout); break;
     case TL_KEY_ESCAPE: *quit = 1; break;
@@ -513,11 +372,11 @@ static void fly(preview *p, tl_gl_window *w, double dt)
 {
     double dx, dy;
     tl_gl_window_drag(w, &dx, &dy);
-    if (!p->free_cam)
+    if (!p->free_cam || p->scrubbing)
         return;
     p->cam.yaw += dx * 0.003;
     p->cam.pitch = fmax(-89.0 * TL_DEG, fmin(89.0 * TL_DEG, p->cam.pitch - dy * 0.003));
-    double speed = 6.0 * dt, fx = sin(p->cam.yaw), fz = cos(p->cam.yaw);
+    double speed = camera_speed(p) * dt, fx = sin(p->cam.yaw), fz = cos(p->cam.yaw);
     double move[3] = {0, 0, 0};
     if (tl_gl_window_key_held(w, TL_KEY_W))
         move[0] += fx, move[2] += fz;
@@ -570,9 +429,10 @@ int tl_cli_preview(int argc, char **argv)
         return 0;
     }
     enum { MAX_SCRIPT = 4096 };
-    static tl_key_press script[MAX_SCRIPT];
+    static tl_preview_input script[MAX_SCRIPT];
     int script_len = 0;
-    if (!rc && o.keys && (script_len = parse_keys(o.keys, script, MAX_SCRIPT, &err)) < 0)
+    if (!rc && o.keys &&
+        (script_len = tl_cli_preview_parse_keys(o.keys, script, MAX_SCRIPT, &err)) < 0)
         rc = TL_ERR_USAGE;
     if (rc) {
         tl_cli_print_error("preview", &err);
@@ -582,6 +442,8 @@ int tl_cli_preview(int argc, char **argv)
     p.o = &o;
     p.speed = 1.0;
     p.loop = 1;
+    p.overlay = 1;
+    p.loop_in = p.loop_out = -1;
     p.quality = o.quality;
     if (load(&p))
         return 1;
@@ -589,8 +451,7 @@ int tl_cli_preview(int argc, char **argv)
     if (o.time_text && tl_parse_time_text(o.time_text, p.tl.fps, &t0, &err)) {
         tl_error_prefix(&err, "--time");
         tl_cli_print_error("preview", &err);
-        tl_timeline_free(&p.tl);
-        free(p.shot_starts);
+        preview_free(&p);
         return 2;
     }
     int width = o.has_size ? o.width : p.tl.width, height = o.has_size ? o.height : p.tl.height;
@@ -604,16 +465,14 @@ int tl_cli_preview(int argc, char **argv)
     if (o.shader_dir && tl_shader_lib_from_dir(&lib, o.shader_dir, &err)) {
         tl_error_prefix(&err, "--shader-dir");
         tl_cli_print_error("preview", &err);
-        tl_timeline_free(&p.tl);
-        free(p.shot_starts);
+        preview_free(&p);
         return 2;
     }
     int crc = tl_cli_color_prepare(&o.color, 0, 1, &err);
     if (crc) {
         tl_cli_color_free(&o.color);
         tl_cli_print_error("preview", &err);
-        tl_timeline_free(&p.tl);
-        free(p.shot_starts);
+        preview_free(&p);
         return crc == TL_ERR_USAGE ? 2 : 1;
     }
     if (tl_render_open_window(&p.render, &lib, width, height, "tideline preview", &err) ||
@@ -621,8 +480,7 @@ int tl_cli_preview(int argc, char **argv)
         tl_cli_print_error("preview", &err);
         tl_render_close(p.render); /* NULL when it did not open */
         tl_cli_color_free(&o.color);
-        tl_timeline_free(&p.tl);
-        free(p.shot_starts);
+        preview_free(&p);
         return 1;
     }
     load(&p); /* again, now that the boat can be uploaded */
@@ -643,15 +501,39 @@ int tl_cli_preview(int argc, char **argv)
     long long shaders_seen = o.shader_dir ? newest_in(o.shader_dir) : 0;
     double next_watch = tl_gl_window_time() + o.watch_interval, last = tl_gl_window_time();
     int quit = 0, script_pos = 0;
-    char shown_state[96] = "";
+    char shown_state[96] = "", shown_view[800] = "";
     tl_frame shot = {0};
     while (!quit && !stop_signal && !tl_gl_window_should_close(win)) {
         tl_key_press keys[64];
         int n = tl_gl_window_poll(win, keys, 64);
         for (int i = 0; i < n && !quit; i++)
             handle_key(&p, keys[i], &quit);
-        if (script_pos < script_len)
-            handle_key(&p, script[script_pos++], &quit);
+        tl_gl_mouse mouse;
+        tl_gl_window_mouse(win, &mouse);
+        int ww, wh;
+        tl_gl_window_size(win, &ww, &wh);
+        const tl_bar bar = tl_overlay_bar(ww, wh);
+        const long frames = tl_timeline_frame_count(&p.tl);
+        /* A press on the bar scrubs while it is held (the overlay shown). */
+        if (mouse.pressed && p.overlay && mouse.press_x >= bar.x0 - 4 &&
+            mouse.press_x <= bar.x1 + 4 && mouse.press_y >= bar.y0 - 6 &&
+            mouse.press_y <= bar.y1 + 6)
+            p.scrubbing = 1;
+        if (!mouse.held && !mouse.pressed)
+            p.scrubbing = 0;
+        if (p.scrubbing)
+            set_time(&p, (double)tl_overlay_bar_frame(&bar, mouse.x, frames) / p.tl.fps);
+        if (p.free_cam)
+            p.wheel = fmax(-16.0, fmin(16.0, p.wheel + mouse.scroll));
+        if (script_pos < script_len) {
+            const tl_preview_input *in = &script[script_pos++];
+            if (in->is_click)
+                set_time(&p, (double)tl_overlay_bar_frame(
+                                 &bar, bar.x0 + in->click * (bar.x1 - bar.x0), frames) /
+                                 p.tl.fps);
+            else
+                handle_key(&p, in->key, &quit);
+        }
         double now = tl_gl_window_time();
         fly(&p, win, now - last);
         if (now >= next_watch) { /* follow the file (editors that save by rename too) */
@@ -677,13 +559,17 @@ int tl_cli_preview(int argc, char **argv)
                 }
             }
         }
-        if (p.playing) {
+        if (p.playing && !p.scrubbing) {
             double t = p.anchor_t + (now - p.anchor_clock) * p.speed;
-            double end = (tl_timeline_frame_count(&p.tl) - 1) / p.tl.fps;
-            if (t > end) {
+            double start = 0.0, end = (tl_timeline_frame_count(&p.tl) - 1) / p.tl.fps;
+            if (p.loop_in >= 0) /* the loop range: from I's frame to O's */
+                start = (double)p.loop_in / p.tl.fps;
+            if (p.loop_out >= 0)
+                end = (double)p.loop_out / p.tl.fps;
+            if (t >= end + (p.loop_out >= 0 ? 1.0 / p.tl.fps : 1e-9)) {
                 if (p.loop) {
-                    set_time(&p, 0.0);
-                    t = 0.0;
+                    set_time(&p, start);
+                    t = start;
                 } else {
                     p.playing = 0;
                     set_time(&p, end);
@@ -705,7 +591,18 @@ int tl_cli_preview(int argc, char **argv)
         int target = refine_target(&p);
         int refining = still && !p.broken && p.refined < target && script_pos >= script_len;
         if (((still && !refining) || p.broken) && script_pos >= script_len) {
-            /* The same frame stays on screen: it counts as shown. */
+            /* The same frame stays on screen: it counts as shown. Only
+             * the view over it changed (a key, the cursor on the bar): it
+             * is drawn again over the same frame. */
+            char view_state[800];
+            tl_preview_describe_view(&p, &mouse, &bar, view_state, sizeof view_state);
+            if (!p.broken && strcmp(view_state, shown_view) != 0) {
+                tl_render_view view;
+                tl_preview_build_view(&p, ww, wh, width, height, &mouse, &view);
+                if (tl_render_present(p.render, &view, &err))
+                    tl_cli_print_error("preview", &err);
+                snprintf(shown_view, sizeof shown_view, "%s", view_state);
+            }
             struct timespec rest = {0, 10000000};
             nanosleep(&rest, NULL);
             last = tl_gl_window_time();
@@ -730,8 +627,13 @@ int tl_cli_preview(int argc, char **argv)
             rc = tl_render_timeline_frame(p.render, &p.tl, frame_of(&p), &settings,
                                           want_shot ? &shot : NULL, NULL, &err);
         p.refined = refining ? p.refined + 1 : 0;
-        if (!rc)
-            rc = tl_render_present(p.render, &err);
+        if (!rc) {
+            tl_render_view view;
+            tl_preview_build_view(&p, ww, wh, width, height, &mouse, &view);
+            tl_preview_describe_view(&p, &mouse, &bar, shown_view, sizeof shown_view);
+            if (!rc)
+                rc = tl_render_present(p.render, &view, &err);
+        }
         if (rc) { /* a shader that does not compile: say so, keep the last frame */
             tl_cli_print_error("preview", &err);
             snprintf(p.problem, sizeof p.problem, "rendering failed (see the terminal)");
@@ -740,7 +642,7 @@ int tl_cli_preview(int argc, char **argv)
             continue;
         }
         if (!rc && want_shot) {
-            if (write_saved(&p, o.screenshot, &shot, &settings, frame_of(&p), &err))
+            if (tl_preview_write_saved(&p, o.screenshot, &shot, &settings, frame_of(&p), &err))
                 tl_cli_print_error("preview", &err);
             snprintf(p.last_shot, sizeof p.last_shot, "%s", state);
         }
@@ -765,12 +667,19 @@ int tl_cli_preview(int argc, char **argv)
     printf("tideline preview: stopped at frame %ld (%.6g s, shot %d of %d); %ld frames shown, "
            "%.1f fps, render scale %.2f\n",
            frame_of(&p), p.t, shot_of(&p, frame_of(&p)), p.shots, p.shown, p.fps, p.scale);
+    if (p.loop_in >= 0 || p.loop_out >= 0) {
+        long in = p.loop_in >= 0 ? p.loop_in : 0,
+             out = p.loop_out >= 0 ? p.loop_out : tl_timeline_frame_count(&p.tl) - 1;
+        printf("tideline preview: loop range frames %ld-%ld (%.6g s to %.6g s)\n", in, out,
+               in / p.tl.fps, (out + 1) / p.tl.fps);
+    } else {
+        printf("tideline preview: no loop range\n");
+    }
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
     tl_frame_free(&shot);
     tl_render_close(p.render);
     tl_cli_color_free(&o.color);
-    tl_timeline_free(&p.tl);
-    free(p.shot_starts);
+    preview_free(&p);
     return 0;
 }

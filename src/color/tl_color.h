@@ -22,6 +22,28 @@ void tl_color_working_chromaticities(tl_working_space space, double out[8]);
  * the output for a radiance (after exposure) of
  * 2^(LO + (HI - LO) * i / (n - 1)) in that channel; below 2^LO, and 0, the
  * first entry's. Two entries a stop. */
+/* The preview's false colour (X; shaders/false_colour.frag): zones of a
+ * pixel's luminance after the exposure, in stops from mid-grey (0.18).
+ * Below BLACK the display's tonemap crushes it to black; from HIGHLIGHT
+ * it nears white and from CLIP it clips; within BAND of 0 is mid-grey,
+ * within BAND of +1 a stop over (where skin sits). */
+#define TL_FALSE_COLOUR_BLACK     -6.0
+#define TL_FALSE_COLOUR_SHADOW    -4.5
+#define TL_FALSE_COLOUR_BAND      0.25
+#define TL_FALSE_COLOUR_HIGHLIGHT 4.0
+#define TL_FALSE_COLOUR_CLIP      5.5
+typedef enum tl_false_zone {
+    TL_FALSE_CRUSHED,    /* purple */
+    TL_FALSE_SHADOW,     /* blue */
+    TL_FALSE_GREY,       /* grey, as bright as shown */
+    TL_FALSE_MID,        /* green */
+    TL_FALSE_SKIN,       /* pink */
+    TL_FALSE_NEAR_WHITE, /* yellow */
+    TL_FALSE_CLIPPED     /* red */
+} tl_false_zone;
+/* The zone of a luminance `stops` from mid-grey (the shader's mirror). */
+tl_false_zone tl_color_false_zone(double stops);
+
 #define TL_COLOR_SHAPER_LO -14.0
 #define TL_COLOR_SHAPER_HI 10.0
 #define TL_COLOR_LUT_SIZE  49

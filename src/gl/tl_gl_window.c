@@ -16,6 +16,9 @@ struct tl_gl_window {
     int queued;
     double drag_x, drag_y, last_x, last_y;
     bool dragging;
+    bool pressed;            /* since the last tl_gl_window_mouse */
+    double press_x, press_y; /* window coordinates */
+    double scroll;
     char description[256];
 };
 
@@ -49,6 +52,11 @@ static tl_keycode key_of(int key)
     case GLFW_KEY_D: return TL_KEY_D;
     case GLFW_KEY_Q: return TL_KEY_Q;
     case GLFW_KEY_E: return TL_KEY_E;
+    case GLFW_KEY_I: return TL_KEY_I;
+    case GLFW_KEY_O: return TL_KEY_O;
+    case GLFW_KEY_G: return TL_KEY_G;
+    case GLFW_KEY_X: return TL_KEY_X;
+    case GLFW_KEY_TAB: return TL_KEY_TAB;
     default: return TL_KEY_NONE;
     }
 }
@@ -81,8 +89,21 @@ static void on_button(GLFWwindow *window, int button, int action, int mods)
 {
     (void)mods;
     tl_gl_window *w = glfwGetWindowUserPointer(window);
-    if (w && button == GLFW_MOUSE_BUTTON_LEFT)
+    if (w && button == GLFW_MOUSE_BUTTON_LEFT) {
         w->dragging = action == GLFW_PRESS;
+        if (action == GLFW_PRESS) {
+            w->pressed = true;
+            glfwGetCursorPos(window, &w->press_x, &w->press_y);
+        }
+    }
+}
+
+static void on_scroll(GLFWwindow *window, double dx, double dy)
+{
+    (void)dx;
+    tl_gl_window *w = glfwGetWindowUserPointer(window);
+    if (w)
+        w->scroll += dy;
 }
 
 int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *title, tl_error *err)
@@ -122,6 +143,7 @@ int tl_gl_window_open(tl_gl_window **out, int width, int height, const char *tit
     glfwSetKeyCallback(w->window, on_key);
     glfwSetCursorPosCallback(w->window, on_cursor);
     glfwSetMouseButtonCallback(w->window, on_button);
+    glfwSetScrollCallback(w->window, on_scroll);
     glfwMakeContextCurrent(w->window);
     glfwSwapInterval(0); /* the preview paces itself by the clock */
     snprintf(w->description, sizeof w->description, "GLFW %s: %s, OpenGL %s",
@@ -198,4 +220,24 @@ const char *tl_gl_window_describe(const tl_gl_window *w)
 const char *tl_gl_window_library_version(void)
 {
     return glfwGetVersionString();
+}
+
+void tl_gl_window_mouse(tl_gl_window *w, tl_gl_mouse *m)
+{
+    /* Window coordinates to framebuffer pixels (they differ on HiDPI). */
+    int ww, wh, fw, fh;
+    glfwGetWindowSize(w->window, &ww, &wh);
+    glfwGetFramebufferSize(w->window, &fw, &fh);
+    double sx = ww > 0 ? (double)fw / ww : 1.0, sy = wh > 0 ? (double)fh / wh : 1.0;
+    double x, y;
+    glfwGetCursorPos(w->window, &x, &y);
+    m->x = x * sx;
+    m->y = y * sy;
+    m->held = w->dragging;
+    m->pressed = w->pressed;
+    m->press_x = w->press_x * sx;
+    m->press_y = w->press_y * sy;
+    m->scroll = w->scroll;
+    w->pressed = false;
+    w->scroll = 0.0;
 }

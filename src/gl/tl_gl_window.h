@@ -41,6 +41,11 @@ typedef enum tl_keycode {
     TL_KEY_D,
     TL_KEY_Q,
     TL_KEY_E,
+    TL_KEY_I,
+    TL_KEY_O,
+    TL_KEY_G,
+    TL_KEY_X,
+    TL_KEY_TAB,
     TL_KEY_COUNT
 } tl_keycode;
 
@@ -60,6 +65,16 @@ bool tl_gl_window_should_close(const tl_gl_window *w);
 bool tl_gl_window_key_held(const tl_gl_window *w, tl_keycode key);
 /* Mouse movement with the left button held since the last call, pixels. */
 void tl_gl_window_drag(tl_gl_window *w, double *dx, double *dy);
+/* The mouse, in framebuffer pixels from the top left: where it is, whether
+ * the left button is held, where it was last pressed and whether that was
+ * since the last call, and the wheel's steps since the last call. */
+typedef struct tl_gl_mouse {
+    double x, y;
+    bool held, pressed;
+    double press_x, press_y;
+    double scroll;
+} tl_gl_mouse;
+void tl_gl_window_mouse(tl_gl_window *w, tl_gl_mouse *m);
 void tl_gl_window_size(const tl_gl_window *w, int *width, int *height);
 void tl_gl_window_set_title(tl_gl_window *w, const char *title);
 void tl_gl_window_swap(tl_gl_window *w);

@@ -352,6 +352,7 @@ void tl_renderer_destroy(tl_renderer *r)
         glDeleteProgram(r->upscale_program);
     tl_renderer_free_boat(r);
     tl_renderer_free_sky(r);
+    tl_renderer_free_overlay(r);
     for (int i = 0; i < TL_READBACK_SLOTS; i++)
         if (r->readback[i].buffer)
             glDeleteBuffers(1, &r->readback[i].buffer);
@@ -461,6 +462,8 @@ int tl_renderer_reload_shaders(tl_renderer *r, tl_error *err)
     tl_renderer_drop_program(&r->glare_program);
     tl_renderer_drop_program(&r->mip_program);
     tl_renderer_drop_program(&r->filter_program);
+    tl_renderer_drop_program(&r->false_colour_program);
+    tl_renderer_drop_program(&r->overlay_program);
     tl_renderer_drop_program(&r->upscale_program);
     tl_renderer_drop_program(&r->sky_view_program);
     for (int i = 0; i < r->program_count; i++)

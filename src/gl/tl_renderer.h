@@ -178,6 +178,14 @@ const char *tl_renderer_pass_name(int pass);
  * letterboxed: the live preview. */
 int tl_renderer_display(tl_renderer *r, const tl_display_settings *display, tl_error *err);
 int tl_renderer_present(tl_renderer *r, int width, int height, tl_error *err);
+/* tl_renderer_present, then the window's view over it: with `false_colour`
+ * the scene's exposure zones in place of the display image (the shader
+ * false_colour.frag, tl_color_false_zone), and `overlay_vertices`
+ * triangles' vertices (6 floats each: x, y in window pixels from the top
+ * left, then RGBA, blended by alpha). Window only: the frame's planes
+ * are made before and are not touched. */
+int tl_renderer_present_view(tl_renderer *r, int width, int height, int false_colour,
+                             const float *overlay, int overlay_vertices, tl_error *err);
 
 /* Evaluates one of the shaders' functions (shaders/probe.frag lists the
  * modes: surface height, Fresnel, water and fog transmittance, the lens's

@@ -35,23 +35,23 @@
  * textures are bound to be set up); the sky-view table's pass and the
  * display pass number their own inputs from 0. */
 enum {
-    TL_UNIT_INPUT = 0,             /* a post pass's one input; the probe's points */
-    TL_UNIT_BOAT_COLOR = 1,        /* the ocean's: the hull's radiance, */
-    TL_UNIT_BOAT_DISTANCE = 2,     /* its distance along the ray, */
-    TL_UNIT_BOAT_REFLECTION = 3,   /* its mirror image, */
-    TL_UNIT_SKY_VIEW = 4,          /* the physical sky's sky-view table, */
-    TL_UNIT_MARCH_HINT = 5,        /* the march prepass's distances, */
-    TL_UNIT_BOAT_SHADOW = 6,       /* the objects' shadow maps (the mesh pass's too) */
-    TL_UNIT_MESH_MAPS = 7,         /* the mesh pass's maps, 7 to 11 in tl_mesh_map order */
-    TL_UNIT_BOAT_SURFACE = 12,     /* the ocean's with the passes: the hull's normal and object */
-    TL_UNIT_BOAT_UNDERSIDE = 13,   /* under water: the hull mirrored in the surface's underside, */
+    TL_UNIT_INPUT = 0,           /* a post pass's one input; the probe's points */
+    TL_UNIT_BOAT_COLOR = 1,      /* the ocean's: the hull's radiance, */
+    TL_UNIT_BOAT_DISTANCE = 2,   /* its distance along the ray, */
+    TL_UNIT_BOAT_REFLECTION = 3, /* its mirror image, */
+    TL_UNIT_SKY_VIEW = 4,        /* the physical sky's sky-view table, */
+    TL_UNIT_MARCH_HINT = 5,      /* the march prepass's distances, */
+    TL_UNIT_BOAT_SHADOW = 6,     /* the objects' shadow maps (the mesh pass's too) */
+    TL_UNIT_MESH_MAPS = 7,       /* the mesh pass's maps, 7 to 11 in tl_mesh_map order */
+    TL_UNIT_BOAT_SURFACE = 12,   /* the ocean's with the passes: the hull's normal and object */
+    TL_UNIT_BOAT_UNDERSIDE = 13, /* under water: the hull mirrored in the surface's underside, */
     TL_UNIT_BOAT_UNDERSIDE_DISTANCE = 14, /* its path's length */
-    TL_UNIT_SKY_TRANSMITTANCE = 0, /* the sky-view pass's: transmittance, */
-    TL_UNIT_SKY_MULTIPLE = 1,      /* multiple scattering */
-    TL_UNIT_DISPLAY_HDR = 0,       /* the display pass's: the scene, */
-    TL_UNIT_DISPLAY_DISTANCE = 1,  /* its distances, */
-    TL_UNIT_DISPLAY_GLARE = 2,     /* the glare, */
-    TL_UNIT_DISPLAY_LUT = 3        /* the display table */
+    TL_UNIT_SKY_TRANSMITTANCE = 0,        /* the sky-view pass's: transmittance, */
+    TL_UNIT_SKY_MULTIPLE = 1,             /* multiple scattering */
+    TL_UNIT_DISPLAY_HDR = 0,              /* the display pass's: the scene, */
+    TL_UNIT_DISPLAY_DISTANCE = 1,         /* its distances, */
+    TL_UNIT_DISPLAY_GLARE = 2,            /* the glare, */
+    TL_UNIT_DISPLAY_LUT = 3               /* the display table */
 };
 
 /* Ocean program variants beyond the frame's features (bits above them):
@@ -174,7 +174,10 @@ struct tl_renderer {
     GLuint upscale_program;
     target filtered; /* the display image after the pixel filter (quality.pixel_filter) */
     GLuint filter_program;
-    int display_filtered;                  /* the last display pass left its image in `filtered` */
+    int display_filtered;   /* the last display pass left its image in `filtered` */
+    float display_exposure; /* the last display pass's (the false colour's) */
+    /* The preview window's view (tl_renderer_overlay.c). */
+    GLuint false_colour_program, overlay_program, overlay_vao, overlay_vbo;
     GLuint mesh_program[TL_MESH_PROGRAMS]; /* per feature set that lights it (tl_renderer_boat.c) */
     GLuint shadow_program;                 /* the sun's depth view of an object */
     /* The objects' shadow maps: an array of shadow_layers layers,
@@ -228,6 +231,8 @@ int tl_renderer_target_ensure_depth(target *t, int width, int height, int attach
 
 /* Deletes *program if there is one and zeroes it: built again on next use. */
 void tl_renderer_drop_program(GLuint *program);
+/* Frees the overlay's and the false colour's programs and buffers. */
+void tl_renderer_free_overlay(tl_renderer *r);
 /* Frees the sky's textures and program (tl_renderer_sky.c). */
 void tl_renderer_free_sky(tl_renderer *r);
 

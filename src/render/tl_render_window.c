@@ -32,11 +32,13 @@ tl_gl_window *tl_render_window(tl_render *r)
     return r->window;
 }
 
-int tl_render_present(tl_render *r, tl_error *err)
+int tl_render_present(tl_render *r, const tl_render_view *view, tl_error *err)
 {
     int w, h;
     tl_gl_window_size(r->window, &w, &h);
-    int rc = tl_renderer_present(r->renderer, w, h, err);
+    int rc = view ? tl_renderer_present_view(r->renderer, w, h, view->false_colour, view->overlay,
+                                             view->overlay_vertices, err)
+                  : tl_renderer_present(r->renderer, w, h, err);
     if (!rc)
         tl_gl_window_swap(r->window);
     return rc;
