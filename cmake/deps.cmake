@@ -25,6 +25,7 @@ tl_require_pkg(ASSIMP assimp libassimp-dev)
 tl_require_pkg(STB stb libstb-dev)
 tl_require_pkg(OCIO OpenColorIO libopencolorio-dev)
 tl_require_pkg(SNDFILE sndfile libsndfile1-dev)
+tl_require_pkg(SDL2 sdl2 libsdl2-dev)
 
 # OpenEXR's pkg-config file names the C++ libraries too; tideline uses only
 # the C API, so link OpenEXRCore alone.

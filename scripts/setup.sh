@@ -19,6 +19,7 @@ packages=(
   libassimp-dev                    # boat meshes: glTF and OBJ (assimp's C API)
   libstb-dev                       # boat textures: PNG and JPEG decoding (stb_image)
   libsndfile1-dev                  # the soundtrack: WAV, FLAC and Ogg decoding
+  libsdl2-dev                      # the preview plays the soundtrack (SDL2 audio)
   ffmpeg                           # movies (tideline render --movie); ffprobe for tests
   xvfb xauth                       # a virtual display for the preview's tests
   gnuplot-nox                      # tideline bench --plot

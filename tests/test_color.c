@@ -125,8 +125,26 @@ static void test_display(tl_render *r)
     CHECK_STR_CONTAINS(err.message, "OpenColorIO config /nonexistent/studio.ocio:");
 }
 
+/* The preview's false colour zones (the shader's mirror), stop by stop. */
+static void test_false_zones(void)
+{
+    CHECK(tl_color_false_zone(-8.0) == TL_FALSE_CRUSHED);
+    CHECK(tl_color_false_zone(NAN) == TL_FALSE_CRUSHED);
+    CHECK(tl_color_false_zone(-5.0) == TL_FALSE_SHADOW);
+    CHECK(tl_color_false_zone(-2.0) == TL_FALSE_GREY);
+    CHECK(tl_color_false_zone(0.1) == TL_FALSE_MID);
+    CHECK(tl_color_false_zone(-0.24) == TL_FALSE_MID);
+    CHECK(tl_color_false_zone(0.5) == TL_FALSE_GREY);
+    CHECK(tl_color_false_zone(1.2) == TL_FALSE_SKIN);
+    CHECK(tl_color_false_zone(3.0) == TL_FALSE_GREY);
+    CHECK(tl_color_false_zone(4.5) == TL_FALSE_NEAR_WHITE);
+    CHECK(tl_color_false_zone(5.5) == TL_FALSE_CLIPPED);
+    CHECK(tl_color_false_zone(INFINITY) == TL_FALSE_CLIPPED);
+}
+
 int main(void)
 {
+    test_false_zones();
     tl_render *r = render_test_open();
     CHECK(r != NULL);
     if (!r)

@@ -208,5 +208,32 @@ check "Shift+L clears the loop range" grep -q "no loop range" "$work/out11"
 "$bin" preview "$short" --keys click:2 >"$work/out12" 2>&1
 check "a click off the bar is a usage error" grep -q "click:2': a click takes a share of the bar, 0..1" "$work/out12"
 
+# 8. The soundtrack: without a device the preview says so once and plays
+# on; through SDL's file driver it plays the timeline's sound, and none
+# where the offset puts the sound past the frames played.
+ffmpeg -hide_banner -loglevel error -y -f lavfi -i "sine=frequency=440:duration=3" "$work/tone.wav"
+printf 'audio tone.wav 0s\n' | cat "$short" - >"$work/sound.tl"
+printf 'audio tone.wav 100s\n' | cat "$short" - >"$work/late.tl"
+SDL_AUDIODRIVER=none "$bin" preview "$work/sound.tl" --size 64x36 --exit-after-frames 20 \
+  >"$work/out13" 2>&1
+status=$?
+check "no audio device: said once, and the preview plays on" bash -c "[ $status -eq 0 ] &&
+  [ \$(grep -c 'the soundtrack plays silently' '$work/out13') -eq 1 ]"
+peak_of() { # the peak level, dB, of raw 32-bit float mono at 44.1 kHz (the tone's)
+  ffmpeg -hide_banner -f f32le -ar 44100 -ac 1 -i "$1" -af astats=measure_perchannel=none \
+    -f null - 2>&1 | sed -nE 's/.*Peak level dB: (-?[0-9.a-z]+).*/\1/p' | tail -1
+}
+for which in sound late; do
+  SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$work/$which.raw" "$bin" preview "$work/$which.tl" \
+    --size 64x36 --exit-after-frames 30 >"$work/out14" 2>&1
+done
+tone=$(ffmpeg -hide_banner -i "$work/tone.wav" -af astats=measure_perchannel=none -f null - 2>&1 |
+  sed -nE 's/.*Peak level dB: (-?[0-9.]+).*/\1/p' | tail -1)
+heard=$(peak_of "$work/sound.raw")
+late=$(peak_of "$work/late.raw")
+echo "the tone's peak $tone dB; played $heard dB; with the sound past the frames $late"
+check "the device plays the soundtrack" awk -v a="$heard" -v b="$tone" 'BEGIN { exit !(a - b < 1 && b - a < 1) }'
+check "the offset keeps the sound where it belongs" test "$late" = "-inf"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

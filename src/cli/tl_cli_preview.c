@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "audio/tl_audio_play.h"
 #include "cli/tl_args.h"
 #include "cli/tl_cli.h"
 #include "cli/tl_cli_overlay.h"
@@ -261,6 +262,7 @@ static int load(preview *p)
     tl_meter_cache_reset(&p->meters);
     find_shots(p);
     tl_preview_find_keys(p);
+    tl_preview_load_audio(p);
     long frames = tl_timeline_frame_count(&p->tl);
     if (p->loop_in >= frames || p->loop_out >= frames)
         p->loop_in = p->loop_out = -1; /* a shorter timeline: the range is gone */
@@ -276,6 +278,11 @@ static void preview_free(preview *p)
     free(p->key_times);
     free(p->key_channels);
     tl_overlay_free(&p->drawn);
+    tl_audio_player_close(p->player);
+    p->player = NULL;
+    tl_audio_free(&p->clip);
+    free(p->wave);
+    p->wave = NULL;
 }
 
 static void set_time(preview *p, double t)
@@ -578,6 +585,7 @@ int tl_cli_preview(int argc, char **argv)
             }
             p.t = t;
         }
+        tl_preview_follow_audio(&p);
         /* Paused: sharpen toward scale 1; nothing new to show: rest. */
         char state[96];
         snprintf(state, sizeof state, "%ld %ld %s %d %.6f %.6f %.6f %.6f %.6f", frame_of(&p),

@@ -24,6 +24,7 @@ int tl_cli_preview_parse_keys(const char *text, tl_preview_input *out, int max, 
 
 #include <math.h>
 
+#include "audio/tl_audio.h"
 #include "cli/tl_cli.h"
 #include "cli/tl_cli_overlay.h"
 #include "image/tl_frame.h"
@@ -80,6 +81,13 @@ typedef struct preview {
     const char **key_channels;
     int key_count;
     tl_overlay drawn;
+    /* The soundtrack: decoded at each load, played while the playhead
+     * moves at speed 1 (tl_audio_play), drawn on the bar. */
+    tl_audio_clip clip;
+    struct tl_audio_player *player;
+    int audio_said;   /* the lack of a device was reported (once) */
+    float *wave;      /* the bar's waveform, a peak a pixel column */
+    int wave_columns; /* for a bar this wide (0: to be made) */
 } preview;
 
 static inline long frame_of(const preview *p)
@@ -112,5 +120,10 @@ void tl_preview_describe_view(const preview *p, const tl_gl_mouse *m, const tl_b
 int tl_preview_write_saved(const preview *p, const char *path, const tl_frame *f,
                            const tl_render_settings *settings, long frame, tl_error *err);
 void tl_preview_save_frame(preview *p);
+/* The soundtrack at a load: decoded (a failure is reported, the preview
+ * goes on silent); the device opened the first time (its lack said once). */
+void tl_preview_load_audio(preview *p);
+/* Each frame: the device follows the playhead. */
+void tl_preview_follow_audio(preview *p);
 
 #endif

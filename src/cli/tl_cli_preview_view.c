@@ -5,6 +5,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "audio/tl_audio_play.h"
 #include "cli/tl_cli_preview.h"
 #include "image/tl_image_io.h"
 #include "passes/tl_passes.h"
@@ -111,6 +112,27 @@ void tl_preview_save_frame(preview *p)
     tl_frame_free(&f);
 }
 
+/* The waveform for a bar of `columns` pixels: the loudest sample under
+ * each column, the timeline's time mapped to the clip's by the offset. */
+static void make_wave(preview *p, int columns)
+{
+    if (p->wave_columns == columns || !p->clip.samples || columns <= 0)
+        return;
+    float *w = realloc(p->wave, sizeof *w * (size_t)columns);
+    if (!w)
+        return;
+    p->wave = w;
+    p->wave_columns = columns;
+    /* Drawn to the clip's loudest sample, as an editor's waveform view is,
+     * so that a quiet track still shows its shape. */
+    const double span = duration(p) / columns;
+    float loudest = tl_audio_peak(&p->clip, 0.0, p->clip.info.duration);
+    for (int c = 0; c < columns; c++) {
+        double t0 = c * span - p->tl.audio_offset;
+        p->wave[c] = loudest > 0.0f ? tl_audio_peak(&p->clip, t0, t0 + span) / loudest : 0.0f;
+    }
+}
+
 /* The window's view over the frame: the false colour, and the overlay
  * when shown (Tab). */
 void tl_preview_build_view(preview *p, int ww, int wh, int width, int height, const tl_gl_mouse *m,
@@ -148,6 +170,12 @@ void tl_preview_build_view(preview *p, int ww, int wh, int width, int height, co
                           .mouse_x = m->x,
                           .mouse_y = m->y,
                           .problem = p->problem};
+    const tl_bar bar = tl_overlay_bar(ww, wh);
+    make_wave(p, (int)(bar.x1 - bar.x0));
+    if (p->clip.samples && p->wave_columns > 0) {
+        s.wave = p->wave;
+        s.wave_columns = p->wave_columns;
+    }
     tl_overlay_preview(&p->drawn, &s);
     view->overlay = p->drawn.vertex;
     view->overlay_vertices = p->drawn.count;
@@ -162,3 +190,35 @@ void tl_preview_describe_view(const preview *p, const tl_gl_mouse *m, const tl_b
     snprintf(out, size, "%d %d %d %ld %ld %d %.0f %s", p->overlay, p->safe_frame, p->false_colour,
              p->loop_in, p->loop_out, p->refined, over_bar ? m->x : -1.0, p->problem);
 }
+
+void tl_preview_load_audio(preview *p)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    if (p->player)
+        tl_audio_player_use(p->player, NULL, &err); /* the old clip is about to go */
+    tl_audio_free(&p->clip);
+    p->wave_columns = 0;
+    if (!p->tl.audio[0])
+        return;
+    if (tl_audio_read(p->tl.audio, &p->clip, &err)) {
+        tl_cli_print_error("preview", &err);
+        return;
+    }
+    int rc = p->player       ? tl_audio_player_use(p->player, &p->clip, &err)
+             : p->audio_said ? TL_OK
+                             : tl_audio_player_open(&p->player, &p->clip, &err);
+    if (rc && !p->audio_said) {
+        fprintf(stderr, "tideline preview: %s: the soundtrack plays silently\n", err.message);
+        p->audio_said = 1;
+    }
+}
+
+void tl_preview_follow_audio(preview *p)
+{
+    if (p->player)
+        tl_audio_player_follow(p->player, p->t - p->tl.audio_offset,
+                               p->playing && !p->scrubbing && p->speed == 1.0 &&
+                                   p->clip.samples != NULL);
+}
+
