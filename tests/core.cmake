@@ -27,7 +27,7 @@ add_test(NAME test_render_cmd_runs COMMAND test_render_cmd $<TARGET_FILE:tidelin
 set_tests_properties(test_render_cmd_runs PROPERTIES LABELS gl)
 # Every bundled timeline is valid.
 add_test(NAME check_bundled_timelines
-  COMMAND sh -c "for f in ${PROJECT_SOURCE_DIR}/timelines/*.tl ${PROJECT_SOURCE_DIR}/scripts/*-shots/*.tl; do $<TARGET_FILE:tideline> check \"$f\" >/dev/null || exit 1; done")
+  COMMAND sh -c "for f in ${PROJECT_SOURCE_DIR}/timelines/*.tl ${PROJECT_SOURCE_DIR}/scripts/*-shots/*.tl ${PROJECT_SOURCE_DIR}/scripts/tutorial/step0[1-8].tl; do $<TARGET_FILE:tideline> check \"$f\" >/dev/null || exit 1; done")
 set_tests_properties(check_bundled_timelines PROPERTIES LABELS unit)
 # The farm example splits a shot over 3 processes; together they write every frame.
 add_test(NAME example_farm_xargs
