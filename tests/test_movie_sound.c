@@ -70,6 +70,24 @@ static void test_probe(const char *wav)
     CHECK(tl_audio_peak(&clip, 5.0, 6.0) == 0.0f);
     tl_audio_free(&clip);
 
+    /* FLAC and Ogg Vorbis, as ffmpeg writes them, decode too. */
+    const char *kinds[2] = {"flac", "ogg"};
+    for (int k = 0; k < 2; k++) {
+        char other[512], cmd[1400];
+        snprintf(other, sizeof other, "%s/ramp.%s", dir, kinds[k]);
+        snprintf(cmd, sizeof cmd, "ffmpeg -v error -y -i '%s' %s '%s'", wav,
+                 k ? "-c:a libvorbis" : "", other);
+        CHECK(system(cmd) == 0);
+        tl_audio_info o;
+        CHECK(tl_audio_probe(other, &o, &err) == 0);
+        CHECK(o.sample_rate == RATE && o.channels == 1);
+        CHECK_NEAR(o.duration, SECONDS, 0.03);
+        tl_audio_clip c;
+        CHECK(tl_audio_read(other, &c, &err) == 0);
+        CHECK_NEAR(tl_audio_peak(&c, 1.8, 2.0), 0.9, 0.05);
+        tl_audio_free(&c);
+    }
+
     char path[512];
     snprintf(path, sizeof path, "%s/none.wav", dir);
     CHECK(tl_audio_probe(path, &info, &err) != 0);

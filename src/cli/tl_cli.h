@@ -34,6 +34,15 @@ int tl_cli_load_cutscene(const char *command, const char *path, struct tl_cutsce
 void tl_cli_warn_outside(const char *command, const char *flag, const char *given,
                          const struct tl_timeline *tl, double t);
 
+/* SIGINT and SIGTERM to `handler` (a long run's stop flag), the actions
+ * before kept in `saved` for tl_cli_restore_stop. */
+#include <signal.h>
+typedef struct tl_cli_signals {
+    struct sigaction old_int, old_term;
+} tl_cli_signals;
+void tl_cli_catch_stop(void (*handler)(int), tl_cli_signals *saved);
+void tl_cli_restore_stop(const tl_cli_signals *saved);
+
 /* mkdir -p of the folder part of `path` (status 2 when it cannot). */
 int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 /* A time left for progress lines: "48s", "3m05s", "2h10m"; "--" when not

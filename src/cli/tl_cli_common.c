@@ -70,3 +70,19 @@ double tl_cli_progress_delay(void)
     double v = text ? strtod(text, &end) : 1.0;
     return text && end != text && *end == '\0' && v >= 0.0 && isfinite(v) ? v : 1.0;
 }
+
+void tl_cli_catch_stop(void (*handler)(int), tl_cli_signals *saved)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = handler;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &saved->old_int);
+    sigaction(SIGTERM, &sa, &saved->old_term);
+}
+
+void tl_cli_restore_stop(const tl_cli_signals *saved)
+{
+    sigaction(SIGINT, &saved->old_int, NULL);
+    sigaction(SIGTERM, &saved->old_term, NULL);
+}

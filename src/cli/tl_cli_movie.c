@@ -169,12 +169,8 @@ int tl_cli_movie(int argc, char **argv)
                                  .duration = (double)frames.count / fps,
                                  .sample_rate = tl.audio_rate};
 
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    tl_cli_signals signals;
+    tl_cli_catch_stop(on_signal, &signals);
     progress prog = {isatty(STDERR_FILENO), o.quiet, 0};
     tl_movie_frames job = {.pattern = o.pattern,
                            .frames = frames.frames,
@@ -188,8 +184,7 @@ int tl_cli_movie(int argc, char **argv)
                            .stop = &stop_signal};
     if (!rc)
         rc = tl_movie_from_frames(&job, &err);
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
+    tl_cli_restore_stop(&signals);
 
     int status = 0;
     if (stop_signal) {

@@ -494,12 +494,8 @@ int tl_cli_preview(int argc, char **argv)
     if (o.verbose)
         fprintf(stderr, "tideline preview: %s\n", tl_render_describe(p.render));
     tl_gl_window *win = tl_render_window(p.render);
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    tl_cli_signals signals;
+    tl_cli_catch_stop(on_signal, &signals);
 
     p.playing = !o.paused;
     p.scale = o.scale > 0.0 ? o.scale : 1.0;
@@ -683,8 +679,7 @@ int tl_cli_preview(int argc, char **argv)
     } else {
         printf("tideline preview: no loop range\n");
     }
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
+    tl_cli_restore_stop(&signals);
     tl_frame_free(&shot);
     tl_render_close(p.render);
     tl_cli_color_free(&o.color);

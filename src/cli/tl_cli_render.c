@@ -480,13 +480,9 @@ int tl_cli_render(int argc, char **argv)
     if (!rc && o.movie && !o.skip_existing)
         rc = tl_movie_open(&movie, o.movie, width, height, tl.fps, soundtrack, &err);
 
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
     stop_signal = 0;
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
+    tl_cli_signals signals;
+    tl_cli_catch_stop(on_signal, &signals);
 
     progress prog = {isatty(STDERR_FILENO), o.quiet, frames.count, 0, tl_clock_seconds(), 0.0};
     run_lines lines = {&prog, o.verbose};
@@ -540,8 +536,7 @@ int tl_cli_render(int argc, char **argv)
         rc = tl_movie_from_frames(&job, &err);
         interrupted = stop_signal != 0;
     }
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
+    tl_cli_restore_stop(&signals);
 
     double total = tl_clock_seconds() - prog.start;
     char took[32];
