@@ -146,8 +146,7 @@ static void test_geometry(void)
                    -10.0 * mask * (1.0 - TL_GIANT_TROUGH_LIFT), 1e-9);
         /* The trough behind is filled by TL_GIANT_BACK_FILL more. */
         CHECK_NEAR(tl_giant_height(&g, ox - g.dir[0] * trough, oz - g.dir[1] * trough, 8),
-                   -10.0 * mask * (1.0 - TL_GIANT_TROUGH_LIFT) * (1.0 - TL_GIANT_BACK_FILL),
-                   1e-9);
+                   -10.0 * mask * (1.0 - TL_GIANT_TROUGH_LIFT) * (1.0 - TL_GIANT_BACK_FILL), 1e-9);
         CHECK_NEAR(tl_giant_height(&g, ox + g.dir[0] * half, oz + g.dir[1] * half, 8),
                    10.0 * cos(g.k * half), 1e-9);
         CHECK_NEAR(tl_giant_height(&g, ox - g.dir[0] * beyond, oz - g.dir[1] * beyond, 8), 0.0,

@@ -188,8 +188,7 @@ static void test_render_command(void)
             sum += layer[k][i];
         worst = fmax(worst, fabs(sum - combined[i]) / fmax(combined[i], 1e-2));
     }
-    printf("render --passes lights: the layers against Combined, worst %.2e relative\n",
-           worst);
+    printf("render --passes lights: the layers against Combined, worst %.2e relative\n", worst);
     CHECK(read && worst < 4e-3); /* eight half floats' rounding */
     free(combined);
     for (int k = 0; k < TL_LIGHT_SHADED; k++)

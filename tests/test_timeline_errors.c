@@ -12,7 +12,7 @@
 
 #include "tl_test.h"
 
-#define MAX_FILES 256
+#define MAX_FILES  256
 #define MIN_BROKEN 20
 
 static const char *binary;
@@ -245,8 +245,7 @@ int main(int argc, char **argv)
         free(got);
         free(want);
     }
-    printf("%d broken and %d valid timelines, %d golden mismatches\n", broken, valid,
-           mismatched);
+    printf("%d broken and %d valid timelines, %d golden mismatches\n", broken, valid, mismatched);
     CHECK(broken >= MIN_BROKEN);
     CHECK(valid >= 2);
     for (int i = 0; i < count; i++)

@@ -10,7 +10,7 @@
 #include "timeline/tl_parse.h"
 #include "tl_test.h"
 
-#define ITERATIONS 20000
+#define ITERATIONS  20000
 #define MAX_REPORTS 5 /* failing inputs printed in full */
 
 /* ---- PRNG (splitmix64) and a growable byte buffer ---- */
@@ -115,24 +115,131 @@ static const char *const seeds[] = {
 #define SEED_COUNT (sizeof seeds / sizeof seeds[0])
 
 static const char *const words[] = {
-    "tideline", "fps", "duration", "size", "quality", "set", "key", "path", "look", "follow",
-    "camera", "boat", "at", "+", "giant.center", "cut", "constant", "step", "linear", "bezier",
-    "spline", "ease", "auto-clamped", "auto", "vector", "aligned", "free", "left", "right",
-    "ease-in-sine", "ease-out-back", "ease-in-out-elastic", "ease-out-bounce", "ease-in-expo",
-    "extrapolate", "cycle", "cycle-offset", "ping-pong", "shortest", "constant-speed", "on",
-    "off", "auto", "draft", "final", "reference", "seed", "1280x720", "1x1", "16384x16384",
-    "0x0", "#", "##", "\t", "  ", "x", "-", "--", ".", "e", "deg", "rad", "ms", "s", "f", "m",
-    "passes", "working_space", "all", "none", "masks", "depth,vector", "cryptomatte,", "rec709",
+    "tideline",
+    "fps",
+    "duration",
+    "size",
+    "quality",
+    "set",
+    "key",
+    "path",
+    "look",
+    "follow",
+    "camera",
+    "boat",
+    "at",
+    "+",
+    "giant.center",
+    "cut",
+    "constant",
+    "step",
+    "linear",
+    "bezier",
+    "spline",
+    "ease",
+    "auto-clamped",
+    "auto",
+    "vector",
+    "aligned",
+    "free",
+    "left",
+    "right",
+    "ease-in-sine",
+    "ease-out-back",
+    "ease-in-out-elastic",
+    "ease-out-bounce",
+    "ease-in-expo",
+    "extrapolate",
+    "cycle",
+    "cycle-offset",
+    "ping-pong",
+    "shortest",
+    "constant-speed",
+    "on",
+    "off",
+    "auto",
+    "draft",
+    "final",
+    "reference",
+    "seed",
+    "1280x720",
+    "1x1",
+    "16384x16384",
+    "0x0",
+    "#",
+    "##",
+    "\t",
+    "  ",
+    "x",
+    "-",
+    "--",
+    ".",
+    "e",
+    "deg",
+    "rad",
+    "ms",
+    "s",
+    "f",
+    "m",
+    "passes",
+    "working_space",
+    "all",
+    "none",
+    "masks",
+    "depth,vector",
+    "cryptomatte,",
+    "rec709",
     "acescg",
 };
 #define WORD_COUNT (sizeof words / sizeof words[0])
 
 static const char *const numbers[] = {
-    "0", "-0", "1", "-1", "0.5", "1e308", "-1e308", "1e309", "1e-320", "5e-324", "nan", "-nan",
-    "inf", "-inf", "infinity", "NaN", "1e9", "-1e9", "1e9m", "1000000001", "1e7s", "1e9s",
-    "2e10s", "1e6s", "1000000.000001s", "-5s", "36f", "1e30f", "1500ms", "90deg", "-720deg",
-    "1e12rad", "3.14159rad", "4294967296", "-2147483649", "9223372036854775808", "1e-9",
-    "0x1p4", "1.", ".5", "+2", "1e", "e5", "--1", "1..2", "12345678901234567890123456789",
+    "0",
+    "-0",
+    "1",
+    "-1",
+    "0.5",
+    "1e308",
+    "-1e308",
+    "1e309",
+    "1e-320",
+    "5e-324",
+    "nan",
+    "-nan",
+    "inf",
+    "-inf",
+    "infinity",
+    "NaN",
+    "1e9",
+    "-1e9",
+    "1e9m",
+    "1000000001",
+    "1e7s",
+    "1e9s",
+    "2e10s",
+    "1e6s",
+    "1000000.000001s",
+    "-5s",
+    "36f",
+    "1e30f",
+    "1500ms",
+    "90deg",
+    "-720deg",
+    "1e12rad",
+    "3.14159rad",
+    "4294967296",
+    "-2147483649",
+    "9223372036854775808",
+    "1e-9",
+    "0x1p4",
+    "1.",
+    ".5",
+    "+2",
+    "1e",
+    "e5",
+    "--1",
+    "1..2",
+    "12345678901234567890123456789",
 };
 #define NUMBER_COUNT (sizeof numbers / sizeof numbers[0])
 
@@ -156,18 +263,14 @@ static void random_number(char *out, size_t size)
 {
     static const char *const units[] = {"", "", "", "s", "ms", "f", "deg", "rad", "m", "x"};
     switch (rnd(3)) {
-    case 0:
-        snprintf(out, size, "%s", numbers[rnd(NUMBER_COUNT)]);
-        break;
+    case 0: snprintf(out, size, "%s", numbers[rnd(NUMBER_COUNT)]); break;
     case 1: {
         double mant = (double)(int64_t)(rng() % 2000001) / 1000.0 - 1000.0;
         int exp = (int)rnd(80) - 40;
         snprintf(out, size, "%.*ge%d%s", (int)rnd(17) + 1, mant, exp, units[rnd(10)]);
         break;
     }
-    default:
-        snprintf(out, size, "%d%s", (int)rnd(200) - 20, units[rnd(10)]);
-        break;
+    default: snprintf(out, size, "%d%s", (int)rnd(200) - 20, units[rnd(10)]); break;
     }
 }
 
@@ -179,8 +282,8 @@ static void mutate_number(buf *b)
     for (size_t i = 0; i < b->n && n < 512; i++) {
         char c = b->d[i], prev = i ? b->d[i - 1] : ' ';
         if ((prev == ' ' || prev == '\t') &&
-            ((c >= '0' && c <= '9') || (c == '-' && i + 1 < b->n && b->d[i + 1] >= '0' &&
-                                        b->d[i + 1] <= '9')))
+            ((c >= '0' && c <= '9') ||
+             (c == '-' && i + 1 < b->n && b->d[i + 1] >= '0' && b->d[i + 1] <= '9')))
             starts[n++] = i;
     }
     if (!n)
@@ -274,9 +377,7 @@ static void mutate(buf *b)
         buf_insert(b, a, tmp, strlen(tmp));
         break;
     }
-    case 8: /* truncate */
-        b->n = rnd(b->n + 1);
-        break;
+    case 8: /* truncate */ b->n = rnd(b->n + 1); break;
     case 9: { /* binary bytes, NUL and CR included */
         size_t count = 1 + rnd(8);
         for (size_t i = 0; i < count; i++) {
@@ -341,8 +442,8 @@ static int scene_ok(const tl_scene *s, char *why, size_t size)
         tl_channel_get(ch, s, v);
         for (int c = 0; c < ch->components; c++)
             if (!isfinite(v[c]) || v[c] < ch->min || v[c] > ch->max) {
-                snprintf(why, size, "t=%.17g: %s[%d] = %.17g outside %g..%g", s->time, ch->name,
-                         c, v[c], ch->min, ch->max);
+                snprintf(why, size, "t=%.17g: %s[%d] = %.17g outside %g..%g", s->time, ch->name, c,
+                         v[c], ch->min, ch->max);
                 return 0;
             }
     }
@@ -401,8 +502,8 @@ static int check_input(const char *text, size_t len, tl_diags *diags)
             ok = diags->items[i].warning;
         if (!ok)
             snprintf(why, sizeof why, "parsed, yet %d errors", diags->errors);
-        double times[] = {0.0, tl.duration, -5.0, 1e6, tl.duration * 0.5,
-                          tl.duration * (double)rnd(1000) / 1000.0};
+        double times[] = {0.0, tl.duration,       -5.0,
+                          1e6, tl.duration * 0.5, tl.duration * (double)rnd(1000) / 1000.0};
         for (size_t i = 0; ok && i < sizeof times / sizeof times[0]; i++) {
             tl_scene s;
             tl_timeline_eval(&tl, times[i], &s);

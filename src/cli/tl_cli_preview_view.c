@@ -221,4 +221,3 @@ void tl_preview_follow_audio(preview *p)
                                p->playing && !p->scrubbing && p->speed == 1.0 &&
                                    p->clip.samples != NULL);
 }
-
