@@ -35,6 +35,12 @@ int main(int argc, char **argv)
         return 2;
     }
     const char *cmd = argv[1];
+    char *help[] = {argv[0], argc > 2 ? argv[2] : NULL, "--help", NULL};
+    if (strcmp(cmd, "help") == 0 && argc > 2) { /* `tideline help render`: its --help */
+        argv = help;
+        argc = 3;
+        cmd = argv[1];
+    }
     if (strcmp(cmd, "-h") == 0 || strcmp(cmd, "--help") == 0 || strcmp(cmd, "help") == 0) {
         fputs(usage, stdout);
         return 0;

@@ -437,9 +437,14 @@ static void test_movie_from_frames(void)
     write_text(timeline, text);
     CHECK(tl_run(NULL, "check", timeline, NULL) == 0);
     CHECK_STR_CONTAINS(tl_run_output, "audio     tone.wav: 1.000 s, 48000 Hz, 1 channel, from "
-                                      "0.1 s on the timeline");
+                                      "0.1 s on the timeline (its last 0.850 s lie past the "
+                                      "end: movies cut it there)");
     snprintf(mov, sizeof mov, "%s/sound.mov", out);
     CHECK(tl_run(NULL, "render", timeline, "--movie", mov, "-q", NULL) == 0);
+    CHECK_STR_CONTAINS(tl_run_output,
+                       "with the sound of tone.wav, its start 0.100 s into the movie");
+    CHECK(tl_run(NULL, "help", "movie", NULL) == 0);
+    CHECK_STR_CONTAINS(tl_run_output, "Usage: tideline movie PATTERN.png -o FILE.mp4");
     snprintf(cmd, sizeof cmd, "ffmpeg -v error -i '%s' -map 0:a -f s16le -ac 1 -", mov);
     size_t len = 0;
     short *pcm = (short *)tl_test_output(cmd, &len);

@@ -18,8 +18,8 @@ static int open_sound(const char *path, SNDFILE **out, SF_INFO *sf, tl_error *er
     *out = sf_open(path, SFM_READ, sf);
     if (!*out)
         return tl_error_set(err, TL_ERR_RUNTIME,
-                            "sound file '%s' cannot be decoded: %s (WAV, FLAC and Ogg Vorbis "
-                            "are read)",
+                            "sound file '%s' cannot be decoded: %s (WAV, FLAC, Ogg Vorbis, MP3 "
+                            "and the other formats libsndfile reads are)",
                             path, sf_strerror(NULL));
     if (sf->frames <= 0 || sf->samplerate <= 0 || sf->channels <= 0) {
         sf_close(*out);

@@ -43,6 +43,11 @@ typedef struct tl_cli_signals {
 void tl_cli_catch_stop(void (*handler)(int), tl_cli_signals *saved);
 void tl_cli_restore_stop(const tl_cli_signals *saved);
 
+/* ", with the sound of FILE from S s into it" or ", with the sound of
+ * FILE, its start S s into the movie": where a movie's soundtrack lies. */
+struct tl_movie_sound;
+void tl_cli_describe_sound(FILE *to, const struct tl_movie_sound *sound);
+
 /* mkdir -p of the folder part of `path` (status 2 when it cannot). */
 int tl_cli_make_parent_dirs(const char *path, tl_error *err);
 /* A time left for progress lines: "48s", "3m05s", "2h10m"; "--" when not

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include "image/tl_image_io.h"
+#include "movie/tl_movie.h"
 #include "passes/tl_passes.h"
 #include "scene/tl_quality.h"
 #include "tl_cli.h"
@@ -85,4 +86,14 @@ void tl_cli_restore_stop(const tl_cli_signals *saved)
 {
     sigaction(SIGINT, &saved->old_int, NULL);
     sigaction(SIGTERM, &saved->old_term, NULL);
+}
+
+void tl_cli_describe_sound(FILE *to, const tl_movie_sound *sound)
+{
+    const char *slash = strrchr(sound->path, '/');
+    const char *name = slash ? slash + 1 : sound->path;
+    if (sound->start >= 0.0)
+        fprintf(to, ", with the sound of %s from %.3f s into it", name, sound->start);
+    else
+        fprintf(to, ", with the sound of %s, its start %.3f s into the movie", name, -sound->start);
 }

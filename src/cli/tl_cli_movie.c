@@ -196,10 +196,8 @@ int tl_cli_movie(int argc, char **argv)
     } else {
         fprintf(stderr, "tideline movie: wrote %s: %zu frames at %g fps, %.3f s", o.movie,
                 frames.count, fps, (double)frames.count / fps);
-        if (sound.path) {
-            const char *slash = strrchr(sound.path, '/');
-            fprintf(stderr, ", sound %s from %.3f s", slash ? slash + 1 : sound.path, sound.start);
-        }
+        if (sound.path)
+            tl_cli_describe_sound(stderr, &sound);
         fputc('\n', stderr);
     }
     tl_frame_list_free(&frames);

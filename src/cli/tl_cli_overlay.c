@@ -15,9 +15,11 @@ static const float panel[4] = {0.0f, 0.0f, 0.0f, 0.5f}, track[4] = {0.12f, 0.12f
                    warn[4] = {1.0f, 0.35f, 0.30f, 1.0f}, safe[4] = {1.0f, 1.0f, 1.0f, 0.55f},
                    aspect[4] = {0.30f, 0.90f, 1.0f, 0.8f};
 
-/* Font pixels to window pixels: stb_easy_font's glyphs are 7 tall. */
-#define TEXT_SCALE 1.5
-#define TEXT_LINE  (10.0 * TEXT_SCALE)
+/* Font pixels to window pixels (stb_easy_font's glyphs are 7 tall): 1.5
+ * in a window 540 pixels tall or more, down to 1 in a small one, so that
+ * the overlay keeps to the frame's foot. Set per overlay. */
+static double text_scale = 1.5;
+#define TEXT_LINE (10.0 * text_scale)
 
 void tl_overlay_clear(tl_overlay *o)
 {
@@ -161,12 +163,13 @@ static void false_colour_key(tl_overlay *o, const tl_overlay_state *s)
     tl_overlay_rect(o, x - 6, y - 6, x + 110, y + 6 * TEXT_LINE + 2, panel);
     for (size_t i = 0; i < sizeof zones / sizeof *zones; i++) {
         tl_overlay_rect(o, x, y + i * TEXT_LINE, x + 12, y + i * TEXT_LINE + 10, zones[i].rgba);
-        tl_overlay_text(o, x + 18, y + i * TEXT_LINE, TEXT_SCALE, zones[i].name, text);
+        tl_overlay_text(o, x + 18, y + i * TEXT_LINE, text_scale, zones[i].name, text);
     }
 }
 
 void tl_overlay_preview(tl_overlay *o, const tl_overlay_state *s)
 {
+    text_scale = fmin(1.5, fmax(1.0, s->height / 360.0));
     if (s->safe_frame)
         safe_frame(o, s);
     if (s->false_colour)
@@ -225,25 +228,25 @@ void tl_overlay_preview(tl_overlay *o, const tl_overlay_state *s)
     snprintf(where, sizeof where, "%.3f s  frame %ld/%ld%s", s->t, s->frame, n, loop_text);
     snprintf(how, sizeof how, "%s%s  %.1f fps  scale %.2f  %s%s", s->playing ? "" : "paused  ",
              s->quality ? s->quality : "", s->fps_shown, s->scale, refined, cam);
-    double left_w = tl_overlay_text_width(where, TEXT_SCALE),
-           right_w = tl_overlay_text_width(how, TEXT_SCALE);
+    double left_w = tl_overlay_text_width(where, text_scale),
+           right_w = tl_overlay_text_width(how, text_scale);
     double y = bar.y0 - TEXT_LINE - 2;
-    tl_overlay_text(o, bar.x0, y, TEXT_SCALE, where, text);
+    tl_overlay_text(o, bar.x0, y, text_scale, where, text);
     if (bar.x0 + left_w + 16 + right_w > bar.x1) {
         y -= TEXT_LINE;
         tl_overlay_rect(o, 0, y - 4, s->width, y + TEXT_LINE - 4, panel);
     }
-    tl_overlay_text(o, fmax(bar.x0, bar.x1 - right_w), y, TEXT_SCALE, how, text);
+    tl_overlay_text(o, fmax(bar.x0, bar.x1 - right_w), y, text_scale, how, text);
     if (hover) {
         char label[160];
         snprintf(label, sizeof label, "%s key at %.3f s", hover, hover_t);
-        double w = tl_overlay_text_width(label, TEXT_SCALE);
+        double w = tl_overlay_text_width(label, text_scale);
         double x = fmin(fmax(hover_x - w / 2, 4.0), s->width - w - 4.0);
         tl_overlay_rect(o, x - 4, bar.y0 - 2 * TEXT_LINE - 8, x + w + 4, bar.y0 - TEXT_LINE - 6,
                         panel);
-        tl_overlay_text(o, x, bar.y0 - 2 * TEXT_LINE - 6, TEXT_SCALE, label, text);
+        tl_overlay_text(o, x, bar.y0 - 2 * TEXT_LINE - 6, text_scale, label, text);
     }
     if (s->problem && s->problem[0])
-        tl_overlay_text(o, 12.0, s->false_colour ? 12.0 + 7 * TEXT_LINE : 12.0, TEXT_SCALE,
+        tl_overlay_text(o, 12.0, s->false_colour ? 12.0 + 7 * TEXT_LINE : 12.0, text_scale,
                         s->problem, warn);
 }

@@ -542,7 +542,9 @@ int tl_cli_preview(int argc, char **argv)
         if (now >= next_watch) { /* follow the file (editors that save by rename too) */
             next_watch = now + o.watch_interval;
             stamp s = stamp_of(o.timeline);
-            if (s.exists && memcmp(&s, &p.tl_stamp, sizeof s) != 0) {
+            /* Field by field: the struct's padding is not part of it. */
+            if (s.exists && (s.mtime_ns != p.tl_stamp.mtime_ns || s.size != p.tl_stamp.size ||
+                             s.inode != p.tl_stamp.inode || !p.tl_stamp.exists)) {
                 p.tl_stamp = s;
                 if (!load(&p) && o.verbose)
                     fprintf(stderr, "tideline preview: reloaded %s\n", o.timeline);

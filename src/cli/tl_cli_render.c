@@ -551,9 +551,12 @@ int tl_cli_render(int argc, char **argv)
     if (result.drawn)
         fprintf(stderr, " (%.0f ms/frame)", result.busy_seconds / (double)result.drawn * 1e3);
     fprintf(stderr, "\n");
-    if (!rc && !interrupted && o.movie)
-        fprintf(stderr, "tideline render: wrote %s\n", o.movie);
-    else if (o.movie)
+    if (!rc && !interrupted && o.movie) {
+        fprintf(stderr, "tideline render: wrote %s", o.movie);
+        if (soundtrack)
+            tl_cli_describe_sound(stderr, soundtrack);
+        fputc('\n', stderr);
+    } else if (o.movie)
         fprintf(stderr, "tideline render: %s not written: a movie missing frames is discarded%s\n",
                 o.movie, access(o.movie, F_OK) == 0 ? " (the earlier file is untouched)" : "");
 

@@ -204,9 +204,17 @@ static int check_one(const char *file, int strict)
     }
     if (tl.audio[0]) {
         const char *slash = strrchr(tl.audio, '/');
-        printf("  audio     %s: %.3f s, %d Hz, %d channel%s, from %.6g s on the timeline\n",
+        printf("  audio     %s: %.3f s, %d Hz, %d channel%s, from %.6g s on the timeline",
                slash ? slash + 1 : tl.audio, tl.audio_duration, tl.audio_rate, tl.audio_channels,
                tl.audio_channels == 1 ? "" : "s", tl.audio_offset);
+        /* Movies cut it to their frames; say where that happens. */
+        double end = (double)tl_timeline_frame_count(&tl) / tl.fps;
+        if (tl.audio_offset + tl.audio_duration > end + 1e-9)
+            printf(" (its last %.3f s lie past the end: movies cut it there)",
+                   fmin(tl.audio_duration, tl.audio_offset + tl.audio_duration - end));
+        if (tl.audio_offset >= end)
+            printf(" (it starts past the end: no movie has it)");
+        printf("\n");
     }
     if (tl.camera_look.target == TL_TARGET_BOAT)
         printf("  link      camera looks at %s + %g %g %g\n", object_name(&tl, &tl.camera_look),
