@@ -351,9 +351,10 @@ static int draw_timeline_frame(tl_render *r, const tl_timeline *tl, long frame,
 {
     double t = tl_timeline_frame_time(tl, frame);
     tl_render_frame_scene(tl, t, settings, scene);
-    int rc = meter
-                 ? tl_render_meter_exposure(r, tl, t, settings->camera, settings->meter, scene, err)
-                 : TL_OK;
+    /* The shot's exposure: metered from the timeline's camera, also under
+     * the preview's free camera (whose every move would draw the meters
+     * again). */
+    int rc = meter ? tl_render_meter_exposure(r, tl, t, NULL, settings->meter, scene, err) : TL_OK;
     if (!rc)
         rc = tl_scene_validate(scene, err);
     if (!rc && out)
@@ -489,7 +490,7 @@ int tl_render_timeline_refine(tl_render *r, const tl_timeline *tl, long frame,
      * overwrite the running mean; the later samples keep its exposure. */
     int rc = TL_OK;
     if (sample == 0) {
-        rc = tl_render_meter_exposure(r, tl, t, settings->camera, settings->meter, &scene, err);
+        rc = tl_render_meter_exposure(r, tl, t, NULL, settings->meter, &scene, err);
         r->refine_exposure = scene.exposure;
     } else {
         scene.exposure = r->refine_exposure;

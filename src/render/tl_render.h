@@ -116,7 +116,9 @@ typedef struct tl_render_settings {
  * (tl_exposure_scale); otherwise leaves the scene alone. The meters use
  * the timeline's camera, or `camera` when not NULL. Call it before a
  * frame's drawing starts: the meters draw through the same targets.
- * tl_render_timeline_frame and its kin call it themselves. */
+ * tl_render_timeline_frame and its kin call it themselves, with the
+ * timeline's camera even where settings->camera replaces it (the
+ * preview's free camera keeps the shot's exposure). */
 int tl_render_meter_exposure(tl_render *r, const tl_timeline *tl, double t, const tl_camera *camera,
                              tl_meter_cache *cache, tl_scene *scene, tl_error *err);
 
