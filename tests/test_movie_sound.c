@@ -92,6 +92,8 @@ static void test_probe(const char *wav)
     snprintf(path, sizeof path, "%s/none.wav", dir);
     CHECK(tl_audio_probe(path, &info, &err) != 0);
     CHECK_STR_CONTAINS(err.message, "none.wav': No such file");
+    CHECK(tl_audio_probe(dir, &info, &err) != 0);
+    CHECK_STR_CONTAINS(err.message, "' is not a regular file");
     snprintf(path, sizeof path, "%s/text.wav", dir);
     tl_test_write_file(path, "not a sound\n");
     CHECK(tl_audio_probe(path, &info, &err) != 0);

@@ -6,11 +6,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <sys/stat.h>
+
 #include <sndfile.h>
 
 static int open_sound(const char *path, SNDFILE **out, SF_INFO *sf, tl_error *err)
 {
     memset(sf, 0, sizeof *sf);
+    /* A folder, a pipe or a device is refused before it is opened (a pipe
+     * would wait for a writer). */
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return tl_error_set(err, TL_ERR_RUNTIME, "sound file '%s': %s", path, strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        return tl_error_set(err, TL_ERR_RUNTIME, "sound file '%s' is not a regular file", path);
     FILE *probe = fopen(path, "rb");
     if (!probe)
         return tl_error_set(err, TL_ERR_RUNTIME, "sound file '%s': %s", path, strerror(errno));

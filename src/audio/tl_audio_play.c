@@ -60,14 +60,14 @@ int tl_audio_player_open(tl_audio_player **out, const tl_audio_clip *clip, tl_er
         return tl_error_set(err, TL_ERR_RUNTIME, "no audio device (%s)", SDL_GetError());
     tl_audio_player *p = calloc(1, sizeof *p);
     if (!p) {
-        SDL_QuitSubSystem(SDL_INIT_AUDIO);
+        SDL_Quit();
         return tl_error_set(err, TL_ERR_RUNTIME, "out of memory");
     }
     p->clip = clip;
     int rc = open_device(p, clip, err);
     if (rc) {
         free(p);
-        SDL_QuitSubSystem(SDL_INIT_AUDIO);
+        SDL_Quit();
         return rc;
     }
     *out = p;
@@ -104,5 +104,5 @@ void tl_audio_player_close(tl_audio_player *p)
         return;
     SDL_CloseAudioDevice(p->device);
     free(p);
-    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+    SDL_Quit();
 }
