@@ -116,6 +116,15 @@ void tl_parse_dir_look(parser *p, token *tok, int n);
 /* `follow camera|giant.center boat [+ offset]`. */
 void tl_parse_dir_follow(parser *p, token *tok, int n);
 
+/* ---- tl_parse.c: shared by the directives ---- */
+/* Reports (and returns 1) when a line has fewer than `min` or more than
+ * `max` arguments after its directive; `usage` says what it takes. */
+int tl_parse_expect_args(parser *p, token *tok, int n, int min, int max, const char *usage);
+
+/* ---- tl_parse_header.c: tideline, fps, duration, size, quality,
+ * working_space, passes ---- */
+void tl_parse_dir_header(parser *p, token *tok, int n);
+
 /* ---- tl_parse_files.c: lines that name files ---- */
 /* Token t's path, relative to the timeline's folder, into out; 1 after
  * reporting one too long for it (`what` names the line's setting). */
