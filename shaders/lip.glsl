@@ -133,7 +133,7 @@ GiantLip giant_lip_at(float w)
 // Signed distance to the tube in the cross-section (negative inside), and
 // in *n2 the unit direction of its gradient there (the thinning along the
 // arc tilts it by a few degrees at most: left out).
-float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
+float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2)
 {
     n2 = vec2(0.0, 1.0);
     if (!lip.present)
@@ -153,6 +153,23 @@ float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
     vec2 d = c0 < c1 ? d0 : d1;
     n2 = d / max(length(d), 1.0e-6);
     return min(c0, c1);
+}
+
+// The lip is the tube in front of the vertical through the crest's top
+// (the arc's centre: the anchor is straight up); behind it the crest's own
+// back is the water. The tube's root there stood above a back that falls
+// away, and seen from behind it drew a smooth slab with a stair-stepped
+// edge over the wave's back. The cut face lies under the crest's top,
+// inside the water. tl_giant_lip_distance.
+float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
+{
+    float tube = giant_lip_tube_distance(lip, sy, n2);
+    float behind = lip.center.x - sy.x;
+    if (behind > tube) {
+        n2 = vec2(-1.0, 0.0);
+        return behind;
+    }
+    return tube;
 }
 
 // The part of the ray inside the lip's box (u_giant_lip_box: s and y

@@ -103,6 +103,39 @@ static void test_lip_heights(void)
     CHECK(lines > 100);
 }
 
+/* Behind the crest's top the wave's back is the only surface: the tube's
+ * root, which would stand above a back that falls away, is cut there. */
+static void test_lip_behind_top(void)
+{
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        breaking_scene(&s, 10.0, k == 0 ? 2.0 : 4.5, 0.0, 0.0);
+        tl_giant g;
+        tl_giant_prepare(&g, &s.giant, s.time);
+        int behind = 0, front = 0;
+        for (int iw = 0; iw < 9; iw++) {
+            double w = s.giant.peak + 3.0 * (iw - 4);
+            tl_giant_lip lip;
+            tl_giant_lip_at(&g, w, base_of(&s), &lip);
+            if (!lip.present)
+                continue;
+            for (int is = 0; is < 30; is++) {
+                double sv = lip.center[0] + lip.radius * (is - 20) / 10.0, h[8];
+                double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
+                double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+                int n = tl_giant_lip_heights(&g, x, z, -1e9, base_of(&s), h, 8);
+                if (sv < lip.center[0])
+                    behind += n;
+                else
+                    front += n;
+            }
+        }
+        printf("lip behind the crest's top: %d crossings (in front %d)\n", behind, front);
+        CHECK(behind == 0);
+        CHECK(front > 0);
+    }
+}
+
 /* The lip's outer surface passes through the crest's top at its anchor
  * angle; the lip is thrown further the older the break, and exists only
  * from the break's start until it has thinned away. */
@@ -830,6 +863,7 @@ static void test_lip_march(tl_renderer *r)
 int main(void)
 {
     test_lip_heights();
+    test_lip_behind_top();
     test_lip_life();
     test_lip_bounds();
     test_spray_density();

@@ -583,10 +583,8 @@ double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle)
     return lip_half_smooth(lip, angle) * tl_giant_lip_lump(lip, angle);
 }
 
-double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
+static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, double y)
 {
-    if (!lip->present)
-        return 1e30;
     double qs = s - lip->center[0], qy = y - lip->center[1];
     double angle = atan2(qs, qy); /* from up, clockwise toward +s */
     if (angle >= lip->from && angle <= lip->to)
@@ -599,6 +597,19 @@ double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
         d = fmin(d, hypot(qs - es, qy - ey) - tl_giant_lip_half_thickness(lip, ends[i]));
     }
     return d;
+}
+
+/* The lip is the tube in front of the vertical through the crest's top
+ * (the arc's centre, as the anchor is straight up); behind it the crest's
+ * own back is the water, and the tube's root stood above a back that falls
+ * away (a smooth slab over the wave's back, seen from behind). The cut face
+ * lies under the crest's top, inside the water. */
+_Static_assert(TL_GIANT_LIP_ANCHOR == 0.0, "the lip's cut is the vertical through its centre");
+double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
+{
+    if (!lip->present)
+        return 1e30;
+    return fmax(tl_giant_lip_tube_distance(lip, s, y), lip->center[0] - s);
 }
 
 bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double across[2])
