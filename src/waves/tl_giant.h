@@ -378,4 +378,14 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
 #define TL_GIANT_MIRROR_SPREAD_MIN 0.25
 #define TL_GIANT_FACE_FRESNEL      0.05
 
+/* The water's normals are blended toward up with distance
+ * (water.normal_smooth_*): that stands for the detail a far, grazing view
+ * averages away on a level sea. The giant wave's face is met nearly head
+ * on, so the blend is lifted where the wave's own slope rises from
+ * TL_GIANT_FACE_SHARP_FROM to TL_GIANT_FACE_SHARP_TO: the small waves on a
+ * face 100 m away stay (they were blended to a fifth there, and the face
+ * read as a smooth, featureless wall). */
+#define TL_GIANT_FACE_SHARP_FROM 0.1
+#define TL_GIANT_FACE_SHARP_TO   0.5
+
 #endif
