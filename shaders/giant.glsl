@@ -347,7 +347,16 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     float open = mix(0.72, 0.3, fresh * fresh) + 0.2 * (0.5 - drift);
     float patches = smoothstep(open, open + 0.12, patch_lace) * (0.4 + 0.6 * fresh) *
                     clamp(0.55 + 0.8 * detail, 0.0, 1.0);
-    float texture_trail = max(0.8 * veins, patches);
+    // A patch's edge frays into bubbles: specks of the fine detail
+    // around it, thinning out with the distance from its edge (ended at
+    // one contour, a patch read as a stain with a hard outline; judge).
+    float fringe = smoothstep(open - 0.2, open + 0.06, patch_lace) *
+                   smoothstep(0.1, 0.25, foam_detail(at * 2.5 + vec2(4.7, 2.9), 2.5 * footprint) +
+                                             0.15 * (detail - 0.5)) *
+                   (0.3 + 0.5 * fresh);
+    // Inside, foam is a sheet with holes and thinner stretches, not paint.
+    patches *= 0.65 + 0.35 * smoothstep(0.35, 0.65, foam_lace(at * 1.7 + vec2(6.1, 0.4)));
+    float texture_trail = max(max(0.8 * veins, patches), fringe);
     // The bubbles the broken crest drove under stay longer than the foam
     // on top, in clouds larger than the web's cells.
     aerated = bubbles * g.lambda * u_giant_foam.z *
