@@ -148,6 +148,17 @@ float giant_ride_squeeze(GiantSample g)
     return max(1.0 - u_giant_ride * (g.jacobian - 1.0) / g.jacobian, 1.0e-3);
 }
 
+// The water's normal blend toward up (`level`, optics_normal_blend) on the
+// wave at its sample g (tl_giant_face_blend): the face is met nearly head
+// on, so its small waves stay where a level sea's would be averaged away
+// (TL_GIANT_FACE_SHARP_*).
+float giant_face_blend(GiantSample g, float level)
+{
+    return level * (1.0 - TL_GIANT_FACE_SHARP_SHARE * smoothstep(TL_GIANT_FACE_SHARP_FROM,
+                                                                 TL_GIANT_FACE_SHARP_TO,
+                                                                 length(g.grad)));
+}
+
 float giant_height(vec2 p)
 {
     return giant_sample(p).height;

@@ -131,3 +131,11 @@ vec3 optics_fog(vec3 color, float y0, vec3 ray, float dist, int layer)
     return color * t + layer_emit(layer, haze * (1.0 - t));
 }
 #endif
+
+// How far the water's normal is blended toward up `dist` metres from the
+// eye (tl_optics_normal_blend): the detail a far, grazing view of a level
+// sea averages away.
+float optics_normal_blend(float dist)
+{
+    return u_normal_smooth_max * min(1.0, sqrt(dist * u_normal_smooth_rate) * u_normal_smooth_gain);
+}

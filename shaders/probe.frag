@@ -71,6 +71,10 @@
 //           the lace w              (tl_mesh_wash_cover, tl_mesh_wash_top)
 //   mode 27: a lamp's glint at cos x from its centre, its angular radius y
 //                                            (tl_optics_lamp_glint)
+//   mode 28: the water's normal blend toward up the input's third float
+//           metres from the eye, on a level sea (x) and on the giant wave
+//           at camera-relative (x, z) (y)
+//                          (tl_optics_normal_blend, tl_giant_face_blend)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -200,6 +204,10 @@ void main()
         result.x = foam_detail(vec2(p.x, 0.37 * p.x), p.y);
     else if (u_probe_mode == 23)
         result.x = giant_short_wave_gain(giant_sample(p));
+    else if (u_probe_mode == 28) {
+        result.x = optics_normal_blend(input4.z);
+        result.y = giant_face_blend(giant_sample(p), result.x);
+    }
     else if (u_probe_mode == 24) {
         vec2 flat_dir = input4.zw;
         vec3 dir = vec3(flat_dir.x, sqrt(max(1.0 - dot(flat_dir, flat_dir), 0.0)), flat_dir.y);

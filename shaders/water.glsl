@@ -118,14 +118,9 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
 #endif
     // Far away the normal's detail is below a pixel; blending toward "up"
     // removes the shimmer the reference also suppresses this way.
-    float smoothing = u_normal_smooth_max *
-                      min(1.0, sqrt(dist * u_normal_smooth_rate) * u_normal_smooth_gain);
+    float smoothing = optics_normal_blend(dist);
 #ifdef TL_FEATURE_GIANT_WAVE
-    // Not on the giant wave's face, which the view meets nearly head on
-    // (TL_GIANT_FACE_SHARP_*): its small waves stay where a level sea's
-    // would be averaged away.
-    smoothing *= 1.0 - smoothstep(TL_GIANT_FACE_SHARP_FROM, TL_GIANT_FACE_SHARP_TO,
-                                  length(giant.grad));
+    smoothing = giant_face_blend(giant, smoothing);
 #endif
     // The reference shader leaves the blend unnormalised (a shorter normal
     // darkens the Fresnel term a little); `seed` keeps that.

@@ -1,88 +1,72 @@
 /* The giant wave's face keeps its small waves far away: the water's
  * normals are blended toward up with distance (a far, grazing view of a
- * level sea averages their detail away), but not on the face, which the
- * view meets nearly head on. Rendered on the GPU (llvmpipe on CI). */
+ * level sea averages their detail away), less on the face, which the view
+ * meets nearly head on (TL_GIANT_FACE_SHARP_*). The blend on the GPU
+ * (llvmpipe on CI, probe mode 28) against its double mirror, near the
+ * origin and 1e4 m out at t = 1e5 s. */
 #include <math.h>
 #include <stdlib.h>
 
+#include "optics/tl_optics.h"
 #include "tl_giant_test.h"
 
-/* The texture of `f` where the wave stands against the sky: the mean
- * absolute difference of the luminance between neighbouring pixels over
- * the mean luminance, over the pixels above the horizon where `f` and
- * their neighbours differ from `bare` (the frame without the wave); the
- * count in *count. Neighbours' differences see the small waves and not the
- * face's gradient from its glowing top to its foot. */
-static double texture_on_face(const tl_scene *s, const tl_frame *f, const tl_frame *bare,
-                              int *count)
+/* Along the wave's centre line from 60 m behind its crest to 60 m in
+ * front, and 400 m beside it (off the wave), at distances from 5 m to
+ * 400 m: the GPU's blend against the CPU's; off the wave and on its level
+ * top the level sea's; on the steepest face the level sea's less
+ * TL_GIANT_FACE_SHARP_SHARE of it. */
+static void test_blend_probe(tl_renderer *r, double x, double z, double t)
 {
-    int w = s->width, h = s->height;
-    unsigned char *face = calloc((size_t)w * (size_t)h, 1);
-    if (!face)
-        return -1.0;
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            size_t i = (size_t)y * (size_t)w + (size_t)x;
-            double ray[3], l = luminance(f->color + 4 * i), b = luminance(bare->color + 4 * i);
-            pixel_ray(s, x, y, ray);
-            face[i] = ray[1] > 0.0 && fabs(l - b) > 1e-2 * fmax(b, 1e-3);
-        }
-    double sum = 0.0, diff = 0.0;
-    int n = 0;
-    for (int y = 0; y + 1 < h; y++)
-        for (int x = 0; x + 1 < w; x++) {
-            size_t i = (size_t)y * (size_t)w + (size_t)x;
-            if (!face[i] || !face[i + 1] || !face[i + (size_t)w])
-                continue;
-            double l = luminance(f->color + 4 * i);
-            diff += fabs(luminance(f->color + 4 * (i + 1)) - l) +
-                    fabs(luminance(f->color + 4 * (i + (size_t)w)) - l);
-            sum += l;
-            n++;
-        }
-    free(face);
-    *count = n;
-    return n ? diff / fmax(sum, 1e-9) : 0.0;
-}
-
-/* facing_scene (a 20 m wave 120 m away) backlit by a low sun, through a
- * long lens filled by the face: its texture with the default distance
- * blend against with none, the same within 5% (the blend lifted there; it
- * took a seventh of it before). */
-static void test_face_keeps_small_waves(tl_renderer *r)
-{
+    const double cam[3] = {x, 6.0, z};
+    enum { N = 64 };
     tl_scene s;
-    facing_scene(&s);
-    s.width = 320;
-    s.height = 180;
-    s.camera.position[1] = 4.0;
-    s.camera.pitch = 0.07;
-    s.camera.vfov = 0.12;
-    s.sun.azimuth = 0.6; /* behind the wave, low: a backlit face */
-    s.sun.elevation = 0.25;
-    s.giant.breaking = false;
-    tl_scene bare = s, flat = s, bare_flat;
-    bare.giant.fade = 0.0;
-    flat.water.normal_smooth_max = 0.0;
-    bare_flat = flat;
-    bare_flat.giant.fade = 0.0;
-    tl_frame f[4];
-    const tl_scene *scenes[4] = {&s, &bare, &flat, &bare_flat};
-    for (int k = 0; k < 4; k++)
-        if (render(r, scenes[k], &f[k])) {
-            for (int j = 0; j < k; j++)
-                tl_frame_free(&f[j]);
-            return;
+    wave_scene(&s, 20.0, t, cam);
+    s.giant.fade = 1.0;
+    tl_waves w;
+    tl_giant g;
+    tl_frame_uniforms u;
+    tl_waves_init(&w, &s.ocean);
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_prepare_frame(&s, &w, &u);
+    double crest = g.fade * g.curl / g.k;
+    float in4[4 * N], gpu[4 * N];
+    for (int i = 0; i < N; i++) {
+        double at = crest - 60.0 + 120.0 * i / (N - 2), beside = i == N - 1 ? 400.0 : 0.0;
+        in4[4 * i + 0] = (float)(g.origin[0] + g.dir[0] * at + g.across[0] * beside - cam[0]);
+        in4[4 * i + 1] = (float)(g.origin[1] + g.dir[1] * at + g.across[1] * beside - cam[2]);
+        in4[4 * i + 2] = (float)(5.0 + 395.0 * (i % 7) / 6.0);
+        in4[4 * i + 3] = 0.0f;
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe4(r, &u, 28, in4, N, s.quality.march_octaves, gpu, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    double worst = 0.0, steepest = 0.0, at_steepest = 0.0, off = -1.0;
+    for (int i = 0; i < N; i++) {
+        tl_giant_sample smp;
+        tl_giant_sample_at(&g, cam[0] + (double)in4[4 * i], cam[2] + (double)in4[4 * i + 1],
+                           s.quality.giant_iterations, &smp);
+        double level = tl_optics_normal_blend(&s.water, in4[4 * i + 2]);
+        double face = tl_giant_face_blend(&smp, level);
+        worst = fmax(worst, fmax(fabs(gpu[4 * i] - level), fabs(gpu[4 * i + 1] - face)));
+        double slope = hypot(smp.grad[0], smp.grad[1]);
+        if (i < N - 1 && slope > steepest) {
+            steepest = slope;
+            at_steepest = face / level;
         }
-    int faces[2];
-    double face = texture_on_face(&s, &f[0], &f[1], &faces[0]);
-    double face_sharp = texture_on_face(&s, &f[2], &f[3], &faces[1]);
-    printf("face: texture %.4f with the distance blend, %.4f without (%d, %d pixels)\n", face,
-           face_sharp, faces[0], faces[1]);
-    CHECK(faces[0] > s.width * s.height / 20 && faces[1] > s.width * s.height / 20);
-    CHECK(face >= 0.95 * face_sharp);
-    for (int k = 0; k < 4; k++)
-        tl_frame_free(&f[k]);
+        if (i == N - 1)
+            off = face / level;
+    }
+    printf("normal blend at (%g, %g), t = %g: |gpu-cpu| <= %.2e; steepest slope %.2f keeps "
+           "%.3f of the level sea's blend; off the wave %.3f\n",
+           x, z, t, worst, steepest, at_steepest, off);
+    CHECK(worst <= 2e-4); /* the wave's slope in float, through the smoothstep */
+    CHECK(steepest > TL_GIANT_FACE_SHARP_TO);
+    CHECK(fabs(at_steepest - (1.0 - TL_GIANT_FACE_SHARP_SHARE)) <= 1e-9);
+    CHECK(off == 1.0);
 }
 
 int main(void)
@@ -91,7 +75,8 @@ int main(void)
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)
         return 1;
-    test_face_keeps_small_waves(r);
+    test_blend_probe(r, 0.0, 0.0, 10.0);
+    test_blend_probe(r, 1e4, -7e3, 1e5);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

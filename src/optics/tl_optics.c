@@ -45,6 +45,12 @@ double tl_optics_window_share(double ny, double ior)
     return t * t;
 }
 
+double tl_optics_normal_blend(const tl_water *w, double dist)
+{
+    return w->normal_smooth_max *
+           fmin(1.0, sqrt(fmax(dist, 0.0) * w->normal_smooth_rate) * w->normal_smooth_gain);
+}
+
 void tl_optics_water_extinction(const tl_water *w, double sigma[3])
 {
     for (int c = 0; c < 3; c++) {

@@ -50,6 +50,12 @@ double tl_optics_lamp_glint(double cos_to, double size);
  * (shaders/optics.glsl, optics_window_share). */
 double tl_optics_window_share(double ny, double ior);
 
+/* How far the water's normal is blended toward straight up `dist` metres
+ * from the eye (water.normal_smooth_*): max · min(1, sqrt(dist · rate) ·
+ * gain). It stands for the detail a far, grazing view of a level sea
+ * averages away (shaders/optics.glsl, optics_normal_blend). */
+double tl_optics_normal_blend(const tl_water *w, double dist);
+
 /* Extinction per metre of the water body, R G B. With
  * water.color_distance > 0: -ln(color_at_distance) / color_distance (the
  * colour white light takes after that distance; seed 003's "colour at

@@ -465,6 +465,13 @@ static double smoothstep(double e0, double e1, double x)
     return smooth01((x - e0) / (e1 - e0), &d);
 }
 
+double tl_giant_face_blend(const tl_giant_sample *smp, double level)
+{
+    double slope = hypot(smp->grad[0], smp->grad[1]);
+    return level * (1.0 - TL_GIANT_FACE_SHARP_SHARE *
+                              smoothstep(TL_GIANT_FACE_SHARP_FROM, TL_GIANT_FACE_SHARP_TO, slope));
+}
+
 void tl_giant_world_origin(const tl_giant *g, double out[2])
 {
     double along = g->dir[0] * g->origin[0] + g->dir[1] * g->origin[1];

@@ -292,6 +292,11 @@ void tl_giant_ride_grad(const tl_giant *g, const tl_giant_sample *smp, double gr
  * the surface without it. */
 double tl_giant_short_wave_gain(const tl_giant *g, const tl_giant_sample *smp);
 
+/* The water's normal blend toward up (`level`, tl_optics_normal_blend) on
+ * the giant wave at its sample: less by TL_GIANT_FACE_SHARP_SHARE where
+ * its slope is steep (shaders/giant.glsl, giant_face_blend). */
+double tl_giant_face_blend(const tl_giant_sample *smp, double level);
+
 /* The wave's origin in its own frame (along the travel, across it),
  * wrapped every 65536 m: the world-fixed coordinates of the foam it
  * leaves behind are these plus (s0, w) (the shaders' u_giant_world). */
@@ -381,11 +386,14 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
 /* The water's normals are blended toward up with distance
  * (water.normal_smooth_*): that stands for the detail a far, grazing view
  * averages away on a level sea. The giant wave's face is met nearly head
- * on, so the blend is lifted where the wave's own slope rises from
- * TL_GIANT_FACE_SHARP_FROM to TL_GIANT_FACE_SHARP_TO: the small waves on a
- * face 100 m away stay (they were blended to a fifth there, and the face
- * read as a smooth, featureless wall). */
-#define TL_GIANT_FACE_SHARP_FROM 0.1
-#define TL_GIANT_FACE_SHARP_TO   0.5
+ * on, so TL_GIANT_FACE_SHARP_SHARE of the blend is lifted where the wave's
+ * own slope rises from TL_GIANT_FACE_SHARP_FROM to TL_GIANT_FACE_SHARP_TO:
+ * the small waves on a face 100 m away show (they were blended to a fifth
+ * there, and the face read as a smooth, featureless wall). Lifted whole,
+ * `final`'s one sample a pixel aliased the sharper face and drifted from
+ * `reference` twice as far as half lifted (docs/rendering.md). */
+#define TL_GIANT_FACE_SHARP_FROM  0.1
+#define TL_GIANT_FACE_SHARP_TO    0.5
+#define TL_GIANT_FACE_SHARP_SHARE 0.5
 
 #endif
