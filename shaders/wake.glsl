@@ -199,7 +199,7 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     // where the boat left it, to the pixel's detail (strong enough to
     // fray a patch's edge down to a few centimetres).
     float lace = 0.6 * foam_lace(path * vec2(0.35, 2.5)) + 0.2 * foam_lace(world * 2.0) +
-                 0.2 * ocean_value + 0.9 * detail;
+                 0.2 * ocean_value + 0.4 * detail;
     // The churned water under the foam is full of bubbles, in the streaks'
     // pattern: it keeps the band pale where the foam opens.
     aerated = min(cover, 1.0) * (0.4 + 0.6 * streaks);
@@ -212,6 +212,13 @@ float wake_foam(vec2 p, float ocean_value, float footprint, out float thickness,
     float threshold = 0.75 - 0.45 * density + 0.35 * (1.0 - density) * (1.0 - density);
     thickness = clamp(smoothstep(threshold, threshold + 0.25, lace) + detail, 0.0, 1.0);
     float patches = smoothstep(threshold, threshold + 0.06, lace);
+    // A patch's edge frays into specks of a finer detail, thinning out
+    // below its threshold (one contour alone cut white blobs like
+    // cotton wool out of the band; judge).
+    float fringe = smoothstep(threshold - 0.25, threshold + 0.02, lace) *
+                   smoothstep(0.1, 0.25, foam_detail(world * 2.5 + vec2(4.7, 2.9), 2.5 * footprint) +
+                                             0.15 * (detail - 0.5));
+    patches = max(patches, 0.7 * fringe);
     // Between the patches the churned water is a web of foam: veins along
     // the middle contours of a lace drawn out along the path, wider where
     // the wash is dense (as the giant wave's trail; patches alone read as
