@@ -44,8 +44,9 @@
  * crest's ridge dry, a model pasted on the water. */
 #define TL_SPRAY_CROSS_RADIUS 0.4
 /* The crossing's burst is this much denser than the spindrift: the
- * crest's top thrown up by the hull, a white skirt around it. */
-#define TL_SPRAY_CROSS_GAIN  25.0
+ * crest's top thrown up by the hull, a white skirt around it (at 25 times
+ * the boat it lifts over the crest was washed out to a white ghost). */
+#define TL_SPRAY_CROSS_GAIN  10.0
 #define TL_SPRAY_CROSS_EARLY 0.3
 #define TL_SPRAY_CROSS_LATE  0.4
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
