@@ -20,20 +20,15 @@ static void test_blend_probe(tl_renderer *r, double x, double z, double t)
     const double cam[3] = {x, 6.0, z};
     enum { N = 64 };
     tl_scene s;
-    wave_scene(&s, 20.0, t, cam);
-    s.giant.fade = 1.0;
     tl_waves w;
     tl_giant g;
     tl_frame_uniforms u;
-    tl_waves_init(&w, &s.ocean);
-    tl_giant_prepare(&g, &s.giant, s.time);
-    tl_prepare_frame(&s, &w, &u);
+    centre_line_scene(&s, t, cam, &w, &g, &u);
     double crest = g.fade * g.curl / g.k;
     float in4[4 * N], gpu[4 * N];
     for (int i = 0; i < N; i++) {
         double at = crest - 60.0 + 120.0 * i / (N - 2), beside = i == N - 1 ? 400.0 : 0.0;
-        in4[4 * i + 0] = (float)(g.origin[0] + g.dir[0] * at + g.across[0] * beside - cam[0]);
-        in4[4 * i + 1] = (float)(g.origin[1] + g.dir[1] * at + g.across[1] * beside - cam[2]);
+        centre_line_point(&g, cam, at, beside, in4 + 4 * i);
         in4[4 * i + 2] = (float)(5.0 + 395.0 * (i % 7) / 6.0);
         in4[4 * i + 3] = 0.0f;
     }

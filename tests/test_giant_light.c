@@ -624,21 +624,17 @@ static void test_short_wave_gain(tl_renderer *r, double x, double z, double t)
     const double cam[3] = {x, 6.0, z};
     enum { N = 64 };
     tl_scene s;
-    wave_scene(&s, 20.0, t, cam);
-    s.giant.fade = 1.0;
     tl_waves w;
     tl_giant g;
     tl_frame_uniforms u;
-    prepare_wave(&s, &w, &g, &u);
+    centre_line_scene(&s, t, cam, &w, &g, &u);
     double crest = g.fade * g.curl / g.k;
     float xz[2 * N], gpu[4 * N];
     double at[N];
     for (int i = 0; i < N; i++) {
         at[i] = crest - 60.0 + 120.0 * i / (N - 1);
         /* the last point is 400 m beside the wave, off it */
-        double beside = i == N - 1 ? 400.0 : 0.0;
-        xz[2 * i] = (float)(g.origin[0] + g.dir[0] * at[i] + g.across[0] * beside - cam[0]);
-        xz[2 * i + 1] = (float)(g.origin[1] + g.dir[1] * at[i] + g.across[1] * beside - cam[2]);
+        centre_line_point(&g, cam, at[i], i == N - 1 ? 400.0 : 0.0, xz + 2 * i);
     }
     tl_error err;
     tl_error_clear(&err);

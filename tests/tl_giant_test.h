@@ -22,6 +22,28 @@ static inline void wave_scene(tl_scene *s, double height, double t, const double
     s->giant.angle = 0.3;
 }
 
+/* wave_scene with a 20 m wave at full strength, prepared: its ocean, the
+ * wave in double and the frame's uniforms (the probes along its centre
+ * line: test_giant_light, test_giant_face). */
+static inline void centre_line_scene(tl_scene *s, double t, const double cam[3], tl_waves *w,
+                                     tl_giant *g, tl_frame_uniforms *u)
+{
+    wave_scene(s, 20.0, t, cam);
+    s->giant.fade = 1.0;
+    tl_waves_init(w, &s->ocean);
+    tl_giant_prepare(g, &s->giant, s->time);
+    tl_prepare_frame(s, w, u);
+}
+
+/* The camera-relative (x, z) of the point `at` metres along the wave's
+ * travel from its origin and `beside` metres across it. */
+static inline void centre_line_point(const tl_giant *g, const double cam[3], double at,
+                                     double beside, float xz[2])
+{
+    xz[0] = (float)(g->origin[0] + g->dir[0] * at + g->across[0] * beside - cam[0]);
+    xz[1] = (float)(g->origin[1] + g->dir[1] * at + g->across[1] * beside - cam[2]);
+}
+
 /* A camera 120 m in front of a 20 m wave that travels toward it. */
 static inline void facing_scene(tl_scene *s)
 {
