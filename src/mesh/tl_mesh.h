@@ -166,9 +166,10 @@ int tl_mesh_outline_contains(const tl_mesh_outline *o, const double p[3]);
  * even sheen that hid its form. */
 #define TL_MESH_F0_UNDER_WATER 0.0035
 /* The hull is wet up to TL_MESH_WET_LOW metres above its design waterline
- * and dry from TL_MESH_WET_HIGH, where spray and the waves reach. */
-#define TL_MESH_WET_LOW  0.1
-#define TL_MESH_WET_HIGH 0.6
+ * and dry from TL_MESH_WET_HIGH, where spray and the waves reach: a band
+ * above the boot stripe (wet only to 0.1 m, it lay inside the stripe). */
+#define TL_MESH_WET_LOW  0.25
+#define TL_MESH_WET_HIGH 0.7
 /* The normal a tangent-space normal map's texel (r g b in [0, 1]) gives a
  * surface of unit normal n and unit tangent t (t[3]: the bitangent's sign,
  * b = sign * n x t), its tilt scaled by `scale` (glTF's normal map). */
@@ -191,7 +192,7 @@ double tl_mesh_wash_top(double along, double speed);
  * moved by `lace` in [0, 1]. */
 double tl_mesh_wash_cover(double height, double top, double lace);
 /* How much darker wet gloss paint is (a rough, porous surface: half). */
-#define TL_MESH_WET_DARKEN 0.15
+#define TL_MESH_WET_DARKEN 0.25
 /* BRDF x cos(l) of a surface with normal n (facing v) for light from l
  * toward v, unit vectors: Lambert under a GGX lobe. */
 void tl_mesh_brdf(const double n[3], const double v[3], const double l[3], const double base[3],
