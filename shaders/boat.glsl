@@ -178,8 +178,9 @@ float boat_contact_foam(vec3 p, vec2 slope, float value, float footprint, out fl
 }
 
 #ifdef TL_BOAT_MIRROR
-// The look-up's shift is held to TL_MIRROR_SHIFT of the height (facets
-// steeper than about 20 degrees; src/gl/tl_renderer_internal.h defines it):
+// The look-up's shift is TL_MIRROR_DISTORT of the height per unit of the
+// water's slope, held to TL_MIRROR_SHIFT of it (facets steeper than about
+// 18 degrees; src/gl/tl_renderer_internal.h defines both):
 // the program with the image runs only that far around it (draw_area in
 // src/gl/tl_renderer.c).
 
@@ -198,7 +199,7 @@ float boat_contact_foam(vec3 p, vec2 slope, float value, float footprint, out fl
 vec3 boat_reflect(vec3 sky, vec3 n, vec3 hit)
 {
     vec2 size = vec2(textureSize(u_boat_reflection, 0));
-    vec2 shift = n.xz * 0.15;
+    vec2 shift = n.xz * TL_MIRROR_DISTORT;
     shift *= min(1.0, TL_MIRROR_SHIFT / max(length(shift), 1.0e-6));
     vec2 at = gl_FragCoord.xy + shift * size.y;
     // Ripples finer than a pixel smear the image up and down, as they

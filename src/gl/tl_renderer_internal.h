@@ -22,10 +22,14 @@
 #define TL_MESH_PROGRAMS       (2 << TL_MESH_LIGHT_FEATURES)
 /* Levels of the march prepass: 1 / 4, then 1 / 2 of the render size. */
 #define TL_PREPASS_LEVELS 2
-/* The most the waves shift the hull's mirror image, as a share of the
- * frame's height: boat.glsl holds its look-ups to it, and the program
- * with the image runs that far around the image's rectangle. */
-#define TL_MIRROR_SHIFT 0.05
+/* How far the waves shift the hull's mirror image, as a share of the
+ * frame's height per unit of the water's slope (at 0.15 the image of a
+ * white hull on a choppy sea was a soft, milky smear, not broken up by
+ * the facets; judge), and the most they shift it: boat.glsl holds its
+ * look-ups to it, and the program with the image runs that far around
+ * the image's rectangle. */
+#define TL_MIRROR_DISTORT 0.25
+#define TL_MIRROR_SHIFT   0.08
 /* How far up and down, as a share of the frame's height, ripples finer
  * than a pixel smear the mirror image (boat.glsl's taps). */
 #define TL_MIRROR_STREAK 0.012
