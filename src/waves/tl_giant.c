@@ -607,11 +607,11 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
 }
 
 /* The lip is the tube in front of the vertical through the crest's top
- * (the arc's centre, as the anchor is straight up); behind it the crest's
- * own back is the water, and the tube's root stood above a back that falls
- * away (a smooth slab over the wave's back, seen from behind). The cut face
- * lies under the crest's top, inside the water. */
-_Static_assert(TL_GIANT_LIP_ANCHOR == 0.0, "the lip's cut is the vertical through its centre");
+ * (the arc's centre, as the anchor is straight up: test_giant_lip checks
+ * TL_GIANT_LIP_ANCHOR is 0); behind it the crest's own back is the water,
+ * and the tube's root stood above a back that falls away (a smooth slab
+ * over the wave's back, seen from behind). The cut face lies under the
+ * crest's top, inside the water. */
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
 {
     if (!lip->present)
