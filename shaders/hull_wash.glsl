@@ -45,8 +45,10 @@ vec2 hull_wash(int o, vec3 world, float footprint)
     vec2 flow = vec2(m.z / per_metre + object_wake_along(o, 0), height);
     float lace = foam_lace(flow * vec2(1.5, 6.0)) + 0.6 * foam_detail(flow * 2.0, footprint);
     float sheet = hull_wash_cover(height, top, clamp(lace, 0.0, 1.0));
-    // The foam in it: streaks where the lace is thick, fuller low down.
+    // The foam in it: streaks where the lace is thick, fuller low down,
+    // its fine detail drawn out along the hull as well (round, it made
+    // clouds stuck on the paint; judge).
     float streaks = foam_lace(flow * vec2(0.8, 9.0) + vec2(7.1, 2.3)) +
-                    0.5 * foam_detail(flow * 3.0, footprint);
+                    0.5 * foam_detail(flow * vec2(1.0, 8.0), footprint);
     return vec2(sheet, sheet * smoothstep(0.5, 0.75, streaks + 0.15 * sheet));
 }
