@@ -19,12 +19,14 @@ vec2 caustic_slant(vec2 x, float footprint)
 
 // The focus of a map whose Jacobian has determinant det, taken over a step
 // e at `depth`: the finer octaves' tilt and the sun's disc spread each
-// bundle over a band that widens with depth, so the lines widen and dim;
-// inside a fold three sheets light the point (tl_caustics.c says why).
-float caustic_rounded(float det, float depth, float e)
+// bundle over a band that widens with depth, across which det changes by
+// the band's width times `grad` (per metre; TL_CAUSTIC_BAND says why), so
+// det is blurred no closer to 0 than that. Inside a fold three sheets
+// light the point (tl_caustics.c says why).
+float caustic_rounded(float det, float grad, float depth, float e)
 {
     float tilt = (1.0 - 1.0 / u_water_ior) * sqrt(waves_unresolved_slope_variance(TL_NORMAL_OCTAVES, e));
-    float spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
+    float spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) * grad;
     float k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
     if (det < 0.0)
         det *= TL_CAUSTIC_FOLD;
@@ -36,12 +38,36 @@ float caustic_det(mat2 g)
     return (1.0 + g[0].x) * (1.0 + g[1].y) - g[1].x * g[0].y;
 }
 
+// |grad det J| per metre, from g = J - I and the slant's second
+// differences along x and z (times depth): the slant is near the gradient
+// of one potential, so its mixed derivatives follow from those two
+// (tl_caustics.c says how).
+float caustic_det_gradient(mat2 g, vec2 along_x, vec2 along_z)
+{
+    float xz = 0.5 * (g[0].y + g[1].x);
+    return length(vec2(along_x.x * (1.0 + g[1].y) + (1.0 + g[0].x) * along_z.x - 2.0 * xz * along_x.y,
+                       along_x.y * (1.0 + g[1].y) + (1.0 + g[0].x) * along_z.y - 2.0 * xz * along_z.x));
+}
+
+// The points the slant is taken at, in steps from x0: the centre, then
+// +x, +z, -x, -z.
+const vec2 TL_CAUSTIC_TAPS[5] = vec2[5](vec2(0.0), vec2(1.0, 0.0), vec2(0.0, 1.0), vec2(-1.0, 0.0), vec2(0.0, -1.0));
+
+// What the focus lights: a surface (the sea floor, a hull) shows the web's
+// lines sharp, each rounded off by how fast det changes across it; the
+// glow through the giant wave's crest and the shafts are gathered along a
+// view ray over a range of depths, and take the web as bundles (det
+// changing by 1 across a step); the shafts take the coarse web alone.
+const int TL_CAUSTIC_ON_SURFACE = 0;
+const int TL_CAUSTIC_IN_GLOW = 1;
+const int TL_CAUSTIC_IN_SHAFT = 2;
+
 // The irradiance at camera-relative p, `depth` metres under the mean
 // surface, in units of a flat sea's: 1 / |det J| of the map from the
 // surface to that depth, rounded off at TL_CAUSTIC_PEAK, times the finer
-// waves' own (tl_caustics.h) when `fine`. `footprint`: the pixel's width
-// there (metres).
-float caustic_focus(vec2 p, float depth, float footprint, bool fine)
+// waves' own (tl_caustics.h) but in a shaft. `footprint`: the pixel's
+// width there (metres); `lit`: one of TL_CAUSTIC_*.
+float caustic_focus(vec2 p, float depth, float footprint, int lit)
 {
     if (depth <= 0.0 || u_sun_dir.y <= 0.0)
         return 1.0;
@@ -51,24 +77,39 @@ float caustic_focus(vec2 p, float depth, float footprint, bool fine)
     // One fixed-point step toward the surface point whose bent ray lands
     // here (tl_caustics.c says why).
     x0 = p - depth * caustic_slant(x0, e);
-    // The slant at x0 and a step along x and z, at the coarse step and,
-    // for the finer web, at the fine one: in one loop, so that the waves'
-    // own loop is compiled once (six inlined copies of it took llvmpipe's
-    // compiler minutes).
-    int count = fine && ef < TL_CAUSTIC_FINE_GAP * e ? 6 : 3;
-    vec2 slant[6];
+    // The slant at x0 and around it at the coarse step (on a surface, on
+    // both sides: central differences and the second differences that
+    // give det's gradient; bundles take a forward difference), then at
+    // the fine step for the finer web: in one loop, so that the waves' own loop is
+    // compiled once (six inlined copies of it took llvmpipe's compiler
+    // minutes).
+    bool sharp = lit == TL_CAUSTIC_ON_SURFACE;
+    int coarse_count = sharp ? 5 : 3;
+    int count = coarse_count + (lit != TL_CAUSTIC_IN_SHAFT && ef < TL_CAUSTIC_FINE_GAP * e ? 3 : 0);
+    vec2 slant[8];
     for (int i = 0; i < count; i++) {
-        float step = i < 3 ? e : ef;
-        int k = i % 3;
-        slant[i] = caustic_slant(x0 + step * vec2(k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0), step);
+        bool coarse_tap = i < coarse_count;
+        float step = coarse_tap ? e : ef;
+        slant[i] = caustic_slant(x0 + step * TL_CAUSTIC_TAPS[coarse_tap ? i : i - coarse_count], step);
     }
-    mat2 coarse = mat2(slant[1] - slant[0], slant[2] - slant[0]) * (depth / e);
-    float focus = caustic_rounded(caustic_det(coarse), depth, e);
-    if (count == 6) {
-        mat2 fine_map = mat2(slant[4] - slant[3], slant[5] - slant[3]) * (depth / ef) - coarse;
+    mat2 coarse;
+    float grad;
+    if (sharp) {
+        coarse = mat2(slant[1] - slant[3], slant[2] - slant[4]) * (depth / (2.0 * e));
+        float second = depth / (e * e);
+        grad = TL_CAUSTIC_BAND * caustic_det_gradient(coarse, (slant[1] - 2.0 * slant[0] + slant[3]) * second,
+                                    (slant[2] - 2.0 * slant[0] + slant[4]) * second);
+    } else {
+        coarse = mat2(slant[1] - slant[0], slant[2] - slant[0]) * (depth / e);
+        grad = 1.0 / e;
+    }
+    float focus = caustic_rounded(caustic_det(coarse), grad, depth, e);
+    if (count > coarse_count) {
+        int f = coarse_count;
+        mat2 fine_map = mat2(slant[f + 1] - slant[f], slant[f + 2] - slant[f]) * (depth / ef) - coarse;
         float unscattered = exp(-u_water_scattering * depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN));
         float share = TL_CAUSTIC_FINE_SHARE * unscattered;
-        focus *= 1.0 + share * (caustic_rounded(caustic_det(fine_map), depth, ef) - 1.0);
+        focus *= 1.0 + share * (caustic_rounded(caustic_det(fine_map), 1.0 / ef, depth, ef) - 1.0);
     }
     return focus;
 }
@@ -77,7 +118,7 @@ float caustic_focus(vec2 p, float depth, float footprint, bool fine)
 // underwater.caustics (0: the flat sea's 1).
 float caustic_light(vec2 p, float depth, float footprint)
 {
-    return max(mix(1.0, caustic_focus(p, depth, footprint, true), u_caustics), 0.0);
+    return max(mix(1.0, caustic_focus(p, depth, footprint, TL_CAUSTIC_ON_SURFACE), u_caustics), 0.0);
 }
 
 #ifdef TL_FEATURE_GIANT_CAUSTICS
@@ -96,7 +137,7 @@ float caustic_crest(vec2 hit, float path, float footprint)
         return 1.0;
     float depth = path * max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN);
     vec2 at = hit + path * (u_sun_dir.xz + u_sun_water.xz);
-    return mix(1.0, caustic_focus(at, depth, footprint, true),
+    return mix(1.0, caustic_focus(at, depth, footprint, TL_CAUSTIC_IN_GLOW),
                u_giant_scatter.w * exp(-path / TL_CAUSTIC_CREST_REACH));
 }
 #endif

@@ -161,7 +161,7 @@ void main()
         result.x = hull_wash_cover(input4.x, hull_wash_top(input4.y, input4.z), input4.w);
 #ifdef TL_FEATURE_CAUSTICS
     else if (u_probe_mode == 19)
-        result.x = caustic_focus(p, input4.z, input4.w, true);
+        result.x = caustic_focus(p, input4.z, input4.w, TL_CAUSTIC_ON_SURFACE);
 #endif
 #ifdef TL_FEATURE_GIANT_CAUSTICS
     else if (u_probe_mode == 21)

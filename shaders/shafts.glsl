@@ -44,7 +44,7 @@ vec3 water_shafts(vec3 ray, float dist)
         float footprint = max(max(s * pixel, TL_SHAFT_FOOTPRINT), across);
         // The coarse web alone: a shaft is a bundle wider than the fine
         // lines, which would only add noise to the march.
-        float focus = caustic_focus(p.xz, depth, footprint, false);
+        float focus = caustic_focus(p.xz, depth, footprint, TL_CAUSTIC_IN_SHAFT);
         sum += (focus - 1.0) * water_sun_at(depth) * exp(-u_water_sigma * s);
     }
     return (u_shafts * u_water_scattering * water_phase(dot(u_sun_water, -ray)) * ds) * sum;

@@ -2,7 +2,8 @@
  * focus estimate against the CPU's in double, near the origin and far out
  * at a late time; and the estimate's physics: a flat sea and a set sun
  * focus nothing, the light is conserved on average, the pattern has
- * contrast that softens with depth, and it moves with the waves; on the
+ * contrast that softens with depth, and it moves with the waves; its lines
+ * differ in brightness; on the
  * sea floor in a frame, where the CPU says; and on the boat's hull. */
 #include <string.h>
 
@@ -100,6 +101,49 @@ static void test_fine_web(void)
            step[0], step[1], mean[0], mean[1]);
     CHECK(step[0] > 1.2 * step[1]);
     CHECK(fabs(mean[0] / mean[1] - 1.0) < 0.15);
+}
+
+/* The web's lines differ in brightness (TL_CAUSTIC_BAND): 9 m down, over a
+ * 6.4 m square at 4 cm, the focus's local peaks above 1.5 spread by more
+ * than this share of their mean. With every line rounded off by det
+ * changing 1 across the step (the crest's glow and the shafts still do
+ * so) they spread by half as much: each line reached one peak, and the
+ * sea floor read as a pool's. */
+#define TL_TEST_LINE_SPREAD 0.3
+
+static void test_lines_differ(void)
+{
+    enum { G = 160 };
+    static double v[G * G];
+    tl_scene s;
+    underwater_scene(&s, 0.0, 0.0, 10.0);
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_caustic_light l;
+    light_of(&s, &l);
+    for (int j = 0; j < G; j++)
+        for (int i = 0; i < G; i++)
+            v[j * G + i] = tl_caustic_focus(&w, &l, 0.04 * i, 0.04 * j, 9.0, 10.0, 36, 0.0);
+    double sum = 0.0, sq = 0.0;
+    int peaks = 0;
+    for (int j = 1; j < G - 1; j++)
+        for (int i = 1; i < G - 1; i++) {
+            double c = v[j * G + i];
+            int peak = c > 1.5;
+            for (int k = 0; k < 9; k++)
+                if (k != 4 && v[(j + k / 3 - 1) * G + i + k % 3 - 1] >= c)
+                    peak = 0;
+            if (peak) {
+                sum += c;
+                sq += c * c;
+                peaks++;
+            }
+        }
+    double mean = peaks ? sum / peaks : 0.0;
+    double spread = peaks ? sqrt(fmax(sq / peaks - mean * mean, 0.0)) / mean : 0.0;
+    printf("caustics 9 m down: %d peaks, mean %.3f, sd/mean %.3f\n", peaks, mean, spread);
+    CHECK(peaks > 50);
+    CHECK(spread > TL_TEST_LINE_SPREAD);
 }
 
 /* GPU (float, analytic gradients) against CPU (double, differences). */
@@ -377,6 +421,7 @@ int main(void)
 {
     test_physics();
     test_fine_web();
+    test_lines_differ();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);
     if (!r)

@@ -36,25 +36,26 @@ static void slant(const tl_waves *w, const tl_caustic_light *l, double x, double
  * step e at `depth`, rounded off. The octaves the step leaves out still
  * tilt the rays, by their RMS slope times (1 - 1/ior), and the sun's disc
  * is no point: each bundle lands spread over a band that widens with
- * depth. Near a focus det changes by about 1 across a step, so a line
- * that wide cannot fall below its width / e in det: the rounding widens
- * and dims the lines deep down, as the light shows there. */
-static double rounded_focus(const tl_waves *w, const tl_caustic_light *l, double det, double depth,
-                            double e, int octaves)
+ * depth. Across that band det changes by its width times `grad` (per
+ * metre: TL_CAUSTIC_BAND times |grad det| for the coarse web, 1 / e where
+ * det is taken to change by 1 across the step), so the blurred det comes
+ * no closer to 0 than that. */
+static double rounded_focus(const tl_waves *w, const tl_caustic_light *l, double det, double grad,
+                            double depth, double e, int octaves)
 {
     double tilt = (1.0 - 1.0 / l->ior) * sqrt(tl_waves_unresolved_slope_variance(w, octaves, e));
-    double spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) / e;
-    double k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
+    double spread = depth * (tilt + TL_CAUSTIC_SUN_SPREAD) * grad;
     /* Past a fold (det < 0) three sheets of the surface light the point
      * and the one followed here is the dimmest: the band between a fold's
      * two lines is lit as brightly as the lines' sides, not left dark. */
     if (det < 0.0)
         det *= TL_CAUSTIC_FOLD;
+    double k = 1.0 / (TL_CAUSTIC_PEAK * TL_CAUSTIC_PEAK) + spread * spread;
     return sqrt((1.0 + k) / (det * det + k));
 }
 
 /* (J - I) of the map to `depth` at surface point (x0, z0), by a forward
- * difference over e of the slant `a` there. */
+ * difference over e of the slant `a` there (the finer web's). */
 static void map_gradient(const tl_waves *w, const tl_caustic_light *l, double x0, double z0,
                          double t, int octaves, double e, double depth, const double a[2],
                          double out[4])
@@ -74,8 +75,40 @@ static double det_of(const double g[4])
     return (1.0 + g[0]) * (1.0 + g[3]) - g[2] * g[1];
 }
 
-double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, double z,
-                        double depth, double t, int octaves, double footprint)
+/* (J - I) at (x0, z0) by central differences over e of the slant (`a`
+ * there), and |grad det J| per metre. The slant is close to the gradient
+ * of one potential phi (exactly so for small slopes), so J - I = depth ·
+ * Hess(phi), and grad det needs phi's third derivatives: phi_xxx and
+ * phi_xxz are the second differences along x of the run's x and z,
+ * phi_xzz and phi_zzz those along z. Four taps around x0 give them all. */
+static double map_gradient_central(const tl_waves *w, const tl_caustic_light *l, double x0,
+                                   double z0, double t, int octaves, double e, double depth,
+                                   const double a[2], double g[4])
+{
+    double px[2], pz[2], mx[2], mz[2];
+    slant(w, l, x0 + e, z0, t, octaves, e, px);
+    slant(w, l, x0, z0 + e, t, octaves, e, pz);
+    slant(w, l, x0 - e, z0, t, octaves, e, mx);
+    slant(w, l, x0, z0 - e, t, octaves, e, mz);
+    double s = depth / (2.0 * e), s2 = depth / (e * e);
+    g[0] = (px[0] - mx[0]) * s;
+    g[1] = (px[1] - mx[1]) * s;
+    g[2] = (pz[0] - mz[0]) * s;
+    g[3] = (pz[1] - mz[1]) * s;
+    double xxx = (px[0] - 2.0 * a[0] + mx[0]) * s2, xxz = (px[1] - 2.0 * a[1] + mx[1]) * s2;
+    double xzz = (pz[0] - 2.0 * a[0] + mz[0]) * s2, zzz = (pz[1] - 2.0 * a[1] + mz[1]) * s2;
+    double xz = 0.5 * (g[1] + g[2]);
+    double gx = xxx * (1.0 + g[3]) + (1.0 + g[0]) * xzz - 2.0 * xz * xxz;
+    double gz = xxz * (1.0 + g[3]) + (1.0 + g[0]) * zzz - 2.0 * xz * xzz;
+    return sqrt(gx * gx + gz * gz);
+}
+
+/* The focus (tl_caustic_focus); `on_surface`: lighting a surface, whose
+ * lines are rounded off by how fast det changes across them; else the
+ * crest's glow, gathered over a range of depths, which takes the web as
+ * bundles (det changing by 1 across the step). */
+static double focus_at(const tl_waves *w, const tl_caustic_light *l, double x, double z,
+                       double depth, double t, int octaves, double footprint, int on_surface)
 {
     if (!(depth > 0.0) || !(l->sun_dir[1] > 0.0))
         return 1.0;
@@ -92,8 +125,13 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
     x0 = x - depth * a[0];
     z0 = z - depth * a[1];
     slant(w, l, x0, z0, t, octaves, e, a);
-    map_gradient(w, l, x0, z0, t, octaves, e, depth, a, coarse);
-    double focus = rounded_focus(w, l, det_of(coarse), depth, e, octaves);
+    double grad = 1.0 / e;
+    if (on_surface)
+        grad =
+            TL_CAUSTIC_BAND * map_gradient_central(w, l, x0, z0, t, octaves, e, depth, a, coarse);
+    else
+        map_gradient(w, l, x0, z0, t, octaves, e, depth, a, coarse);
+    double focus = rounded_focus(w, l, det_of(coarse), grad, depth, e, octaves);
     /* The finer waves' own map: their Jacobian is the finer step's less
      * the coarse waves' (tl_caustics.h). */
     double ef = fmax(TL_CAUSTIC_STEP + depth * TL_CAUSTIC_FINE_BLUR, footprint);
@@ -103,12 +141,19 @@ double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, 
         map_gradient(w, l, x0, z0, t, octaves, ef, depth, af, fine);
         for (int i = 0; i < 4; i++)
             fine[i] -= coarse[i];
-        double f = rounded_focus(w, l, det_of(fine), depth, ef, octaves);
+        /* Its det is taken to change by 1 across its step. */
+        double f = rounded_focus(w, l, det_of(fine), 1.0 / ef, depth, ef, octaves);
         double unscattered =
             exp(-l->scattering * depth / fmax(-l->sun_water[1], TL_CAUSTIC_MIN_DOWN));
         focus *= 1.0 + TL_CAUSTIC_FINE_SHARE * unscattered * (f - 1.0);
     }
     return focus;
+}
+
+double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, double z,
+                        double depth, double t, int octaves, double footprint)
+{
+    return focus_at(w, l, x, z, depth, t, octaves, footprint, 1);
 }
 
 double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, double z,
@@ -121,6 +166,6 @@ double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, 
     double depth = path * fmax(-l->sun_water[1], TL_CAUSTIC_MIN_DOWN);
     double ax = x + path * (l->sun_dir[0] + l->sun_water[0]);
     double az = z + path * (l->sun_dir[2] + l->sun_water[2]);
-    double focus = tl_caustic_focus(w, l, ax, az, depth, t, octaves, footprint);
+    double focus = focus_at(w, l, ax, az, depth, t, octaves, footprint, 0);
     return 1.0 + share * exp(-path / TL_CAUSTIC_CREST_REACH) * (focus - 1.0);
 }
