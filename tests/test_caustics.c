@@ -42,6 +42,15 @@ static void light_of(const tl_scene *s, tl_caustic_light *l)
     tl_optics_sun_in_water(l->sun_dir, l->ior, l->sun_water);
 }
 
+/* The default sea at t = 10 s under the test's sun, and its light. */
+static void sunny_sea(tl_waves *w, tl_caustic_light *l)
+{
+    tl_scene s;
+    underwater_scene(&s, 0.0, 0.0, 10.0);
+    tl_waves_init(w, &s.ocean);
+    light_of(&s, l);
+}
+
 /* The focus at the N points of `in` (x, z camera-relative, depth,
  * footprint), on the CPU. */
 static void cpu_focus(const tl_scene *s, const float *in, double *out)
@@ -76,12 +85,9 @@ static void points(float *in)
 static void test_fine_web(void)
 {
     enum { M = 1024 };
-    tl_scene s;
-    underwater_scene(&s, 0.0, 0.0, 10.0);
     tl_waves w;
-    tl_waves_init(&w, &s.ocean);
     tl_caustic_light fine, coarse;
-    light_of(&s, &fine);
+    sunny_sea(&w, &fine);
     coarse = fine;
     coarse.scattering = 1e3;
     double step[2] = {0.0, 0.0}, mean[2] = {0.0, 0.0};
@@ -115,12 +121,9 @@ static void test_lines_differ(void)
 {
     enum { G = 160 };
     static double v[G * G];
-    tl_scene s;
-    underwater_scene(&s, 0.0, 0.0, 10.0);
     tl_waves w;
-    tl_waves_init(&w, &s.ocean);
     tl_caustic_light l;
-    light_of(&s, &l);
+    sunny_sea(&w, &l);
     for (int j = 0; j < G; j++)
         for (int i = 0; i < G; i++)
             v[j * G + i] = tl_caustic_focus(&w, &l, 0.04 * i, 0.04 * j, 9.0, 10.0, 36, 0.0);
@@ -202,12 +205,9 @@ static void test_physics(void)
 {
     enum { G = 96 };
     static double a[G * G], b[G * G];
-    tl_scene s;
-    underwater_scene(&s, 0.0, 0.0, 10.0);
     tl_waves w;
-    tl_waves_init(&w, &s.ocean);
     tl_caustic_light l;
-    light_of(&s, &l);
+    sunny_sea(&w, &l);
     const double depths[] = {1.0, 5.0, 40.0};
     double contrast[3];
     for (int d = 0; d < 3; d++) {
@@ -231,7 +231,8 @@ static void test_physics(void)
     CHECK(contrast[0] > 0.3 && contrast[1] > 0.3);
     CHECK(contrast[2] < 0.5 * contrast[1]);
     /* Nothing to focus: a flat sea, a sun below the horizon, the surface. */
-    tl_scene flat = s;
+    tl_scene flat;
+    underwater_scene(&flat, 0.0, 0.0, 10.0);
     flat.ocean.depth = 1e-6;
     tl_waves wf;
     tl_waves_init(&wf, &flat.ocean);
