@@ -31,10 +31,13 @@ float floor_relief(vec2 p, float footprint)
 {
     float dunes = 0.25 * floor_noise(p, 8.0) + 0.08 * floor_noise(p + 3.7, 2.0);
     // Ripples across the swell's way, their crests bent, forked and
-    // broken by noise.
+    // broken by noise, everywhere (the shallow sea's swell combs all of
+    // the sand) but higher in patches: their light and shade are what
+    // breaks a caustic web up on sand, and what tells a sea floor from a
+    // pool's; at 2 cm in patches alone they did not read.
     float bend = 0.6 * floor_noise(p, 2.0) + 0.3 * floor_noise(p, 0.5);
     float phase = 2.0 * TL_PI * (p.y + 0.3 * p.x) / TL_FLOOR_RIPPLE + 9.0 * bend;
-    float ripples = 0.02 * smoothstep(0.25, 0.7, floor_noise(p + 11.0, 1.0)) *
+    float ripples = 0.03 * (0.5 + 0.5 * smoothstep(0.2, 0.7, floor_noise(p + 11.0, 1.0))) *
                     (sin(phase) + 0.3 * sin(2.0 * phase));
     float resolved = 1.0 - smoothstep(0.15, 0.5, footprint / TL_FLOOR_RIPPLE);
     return dunes + ripples * resolved;
