@@ -63,9 +63,12 @@ static const tl_mesh_material MATERIALS[MATERIAL_COUNT] = {
     [ROOF] = {{0.50f, 0.51f, 0.50f}, 0.55f, 0.0f, 0.0f},
     [DOOR] = {{0.05f, 0.10f, 0.20f}, 0.4f, 0.0f, 0.0f},
     /* Glass over the wheelhouse's dim interior: its diffuse is what shows
-     * through (by day a fraction of the light outside, a warm lamp inside
-     * with boat.lights), the gloss the sky's reflection. */
-    [GLASS] = {{0.016f, 0.015f, 0.013f}, 0.05f, 0.0f, 0.1f},
+     * through (by day a fraction of the light outside, off a warm wooden
+     * inside; with boat.lights a dim amber lamp), the gloss the sky's
+     * reflection. A night shot is exposed for the navigation lights, and
+     * at twice this emission, neutral, the panes came out white, blown
+     * out beside them. */
+    [GLASS] = {{0.016f, 0.012f, 0.008f}, 0.05f, 0.0f, 0.02f},
     [FRAME] = {{0.05f, 0.05f, 0.05f}, 0.4f, 0.0f, 0.0f}, /* black rubber and paint */
     [BRONZE] = {{0.78f, 0.50f, 0.28f}, 0.35f, 1.0f, 0.0f},
     [STEEL] = {{0.60f, 0.60f, 0.58f}, 0.3f, 1.0f, 0.0f}, /* stainless */
