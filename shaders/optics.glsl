@@ -40,9 +40,6 @@ float optics_fresnel_rough(float cos_i, float n1, float n2, float spread)
                           optics_fresnel(cos(abs(theta - d)), n1, n2));
 }
 
-// The spread of the facets a view through the surface meets: the slope
-// variance the normal leaves out, and at least a share of `pixel` (the
-// angle a pixel spans, radians).
 // A lamp's glint in a mirror: how much of its radiance a mirrored ray at
 // cos `cos_to` from its centre sees, for a lamp of angular radius `size`:
 // a Gaussian disc widened to at least TL_LAMP_GLINT_MIN radians, its
@@ -75,10 +72,15 @@ float optics_window_share(float ny, float ior)
     return t * t;
 }
 
+// The spread of the facets a view through the surface meets: the slope
+// variance the normal leaves out, the capillary ripples finer than every
+// octave (water.capillaries: without them a choppy sea's window broke
+// into hard-edged shards and scraps), and at least a share of `pixel`
+// (the angle a pixel spans, radians).
 float optics_facet_spread(float slope_var, float pixel)
 {
     float least = TL_WINDOW_PIXEL_SPREAD * pixel;
-    return sqrt(slope_var + least * least);
+    return sqrt(slope_var + u_capillary_slope_var + least * least);
 }
 
 #if defined(TL_FEATURE_UNDERWATER) || defined(TL_FEATURE_SEA_FLOOR)

@@ -2,7 +2,8 @@
  * frame, the exact Fresnel reflectance from the water side, Beer-Lambert
  * and fog transmittance against exp(-sigma d), the haze at the horizon
  * after sunset, the waterline of a frame across the surface, the auto
- * mode's flip, and fog 0 as no fog. */
+ * mode's flip, fog 0 as no fog, and the capillary ripples' softening of
+ * the window's rim. */
 #include <string.h>
 
 #include "core/tl_math.h"
@@ -516,6 +517,72 @@ static void test_no_fog(tl_renderer *r)
     tl_frame_free(&fb);
 }
 
+/* The capillary ripples (water.capillaries): 3 m under the default sea,
+ * looking straight up, more of the rim of Snell's window (40 to 56 deg
+ * from the zenith) lies between the window's light and the water's with
+ * them than without (the shards' hard edges softened). The uniform is the
+ * CPU's variance; a calm sea has none. */
+static int rim_middle(tl_renderer *r, double capillaries, double *middle)
+{
+    tl_scene s;
+    tl_scene_defaults(&s);
+    s.width = s.height = 161;
+    s.camera.position[1] = -3.0;
+    s.camera.pitch = 90.0 * TL_DEG;
+    s.camera.vfov = 130.0 * TL_DEG;
+    s.sun.elevation = 60.0 * TL_DEG;
+    s.water.capillaries = capillaries;
+    tl_waves w;
+    tl_waves_init(&w, &s.ocean);
+    tl_frame_uniforms u;
+    tl_prepare_frame(&s, &w, &u);
+    CHECK_NEAR(u.capillary_slope_var,
+               tl_waves_capillary_slope_variance(&w, s.quality.normal_octaves, capillaries), 1e-9);
+    tl_frame f;
+    if (render(r, &s, &f))
+        return -1;
+    int c = s.width / 2, n_inside = 0, n_rim = 0, n_middle = 0;
+    double focal = 0.5 * s.height / tan(0.5 * s.camera.vfov), inside = 0.0;
+    for (int pass = 0; pass < 2; pass++) {
+        for (int y = 0; y < s.height; y++)
+            for (int x = 0; x < s.width; x++) {
+                double zenith = atan(hypot(x - c, y - c) / focal) / TL_DEG;
+                double l = luminance(f.color + ((size_t)y * s.width + x) * 4);
+                if (pass == 0 && zenith < 30.0) {
+                    inside += l;
+                    n_inside++;
+                } else if (pass == 1 && zenith > 40.0 && zenith < 56.0) {
+                    n_rim++;
+                    n_middle += l > 0.15 * inside && l < 0.6 * inside;
+                }
+            }
+        if (pass == 0)
+            inside /= n_inside;
+    }
+    tl_frame_free(&f);
+    *middle = (double)n_middle / n_rim;
+    return 0;
+}
+
+static void test_window_capillaries(tl_renderer *r)
+{
+    double with, without;
+    if (rim_middle(r, 0.5, &with) || rim_middle(r, 0.0, &without)) {
+        CHECK(0);
+        return;
+    }
+    printf("Snell's window's rim, 3 m under the default sea: %.3f of its pixels between the "
+           "window's light and the water's with the capillaries, %.3f without\n",
+           with, without);
+    CHECK(with > 1.15 * without);
+    tl_scene calm;
+    tl_scene_defaults(&calm);
+    calm.ocean.depth = 0.001;
+    tl_waves w;
+    tl_waves_init(&w, &calm.ocean);
+    CHECK(tl_waves_capillary_slope_variance(&w, calm.quality.normal_octaves, 0.5) < 1e-8);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -525,6 +592,7 @@ int main(void)
     test_fresnel(r);
     test_window_share(r);
     test_snell_window(r);
+    test_window_capillaries(r);
     test_water_transmittance(r);
     test_fog_transmittance(r);
     test_haze_after_sunset(r);

@@ -645,6 +645,8 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     tl_optics_water_fall(&s->water, sigma, fall);
     to_float3(sigma, u->water_sigma);
     to_float3(fall, u->water_fall);
+    u->capillary_slope_var = (float)tl_waves_capillary_slope_variance(w, s->quality.normal_octaves,
+                                                                      s->water.capillaries);
     u->cam_depth = (float)fmax(-gap, 0.0);
     u->lens = (float)TL_LENS_DISTANCE;
     double sun[3];

@@ -268,6 +268,9 @@ typedef struct tl_frame_uniforms {
     float water_sigma[3];   /* extinction per metre, R G B */
     float water_fall[3];    /* the light from above: its fall per metre down */
     float water_scattering; /* per metre, grey */
+    /* The slope variance per axis of the capillary ripples finer than the
+     * finest octave (tl_prepare_capillary_slope_variance). */
+    float capillary_slope_var;
     float water_ior;
     float cam_depth;          /* metres below the surface at the camera (0 above) */
     float lens;               /* TL_LENS_DISTANCE */

@@ -61,6 +61,11 @@ void tl_scene_defaults(tl_scene *s)
     s->water.absorption[1] = 0.057;
     s->water.absorption[2] = 0.009;
     s->water.scattering = 0.03;
+    /* Cox and Munk's sun glitter: a slick, which damps the capillary
+     * ripples, takes about half the mean square slope off a clean sea in a
+     * light breeze; the waves' octaves stop at a few centimetres, so about
+     * half as much again as theirs is left to the ripples. */
+    s->water.capillaries = 0.5;
     s->water.color_at_distance[0] = 0.3;
     s->water.color_at_distance[1] = 0.7;
     s->water.color_at_distance[2] = 0.8;

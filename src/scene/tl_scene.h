@@ -85,12 +85,13 @@ typedef struct tl_water {
     double ior;                  /* refractive index (1.333) */
     double foam;                 /* scale of every foam term, 0..1 (1) */
     double fresnel_f0;           /* Schlick F0 (0.04) */
-    double scatter_color[3];     /* linear RGB (0.0293, 0.0698, 0.1717) */
-    double scatter_strength;     /* (0.1) */
-    double scatter_base;         /* scattering at the wave troughs (0.2) */
-    double normal_smooth_max;    /* max blend of far normals toward up (0.8) */
-    double normal_smooth_rate;   /* per metre inside the sqrt (0.01) */
-    double normal_smooth_gain;   /* (1.1) */
+    double capillaries;        /* the capillary ripples' slope variance over the waves' own (0.5) */
+    double scatter_color[3];   /* linear RGB (0.0293, 0.0698, 0.1717) */
+    double scatter_strength;   /* (0.1) */
+    double scatter_base;       /* scattering at the wave troughs (0.2) */
+    double normal_smooth_max;  /* max blend of far normals toward up (0.8) */
+    double normal_smooth_rate; /* per metre inside the sqrt (0.01) */
+    double normal_smooth_gain; /* (1.1) */
 } tl_water;
 
 typedef enum tl_sky_model {

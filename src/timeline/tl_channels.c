@@ -134,6 +134,9 @@ static const tl_channel channels[] = {
     REAL("water.color_distance", 1, TL_UNIT_LENGTH, 0.0, 1e4, water.color_distance,
          "> 0: extinction from water.color_at_distance instead of absorption"),
     REAL("water.ior", 1, TL_UNIT_NONE, 1.0, 3.0, water.ior, "refractive index of the water"),
+    REAL("water.capillaries", 1, TL_UNIT_NONE, 0.0, 10.0, water.capillaries,
+         "slope variance of the ripples finer than the waves, over the waves' own: they soften "
+         "Snell's window's edge and blur the floor seen through the surface"),
     REAL("water.foam", 1, TL_UNIT_NONE, 0.0, 1.0, water.foam,
          "scale of all foam (today the giant wave's)"),
     REAL("water.fresnel_f0", 1, TL_UNIT_NONE, 0.0, 1.0, water.fresnel_f0,

@@ -91,6 +91,12 @@ double tl_waves_unresolved_slope_variance(const tl_waves *w, int octaves, double
     return 0.5 * raw * scale * scale;
 }
 
+double tl_waves_capillary_slope_variance(const tl_waves *w, int octaves, double share)
+{
+    /* Every octave is finer than an endless footprint: their total. */
+    return share * tl_waves_unresolved_slope_variance(w, octaves, HUGE_VAL);
+}
+
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves)
 {
     return (tl_waves_value(w, x, z, t, octaves) - 1.0) * w->depth;

@@ -59,6 +59,13 @@ double tl_waves_value_lod(const tl_waves *w, double x, double z, double t, int o
  * them whole (waves_unresolved_slope_variance). */
 double tl_waves_unresolved_slope_variance(const tl_waves *w, int octaves, double footprint);
 
+/* The slope variance per axis of the capillary ripples finer than the
+ * finest of the first `octaves` octaves: `share` (water.capillaries) of
+ * the octaves' own. No octave draws them, but they spread the light that
+ * crosses the surface: the edge of Snell's window from below, the floor
+ * seen through it from above. A calm sea has none. */
+double tl_waves_capillary_slope_variance(const tl_waves *w, int octaves, double share);
+
 /* World height of the surface: (value - 1) * depth, in [-depth, 0]. */
 double tl_waves_height(const tl_waves *w, double x, double z, double t, int octaves);
 
