@@ -37,3 +37,24 @@ float boat_shadow(vec3 p)
         lit *= boat_shadow_one(o, p);
     return lit;
 }
+
+#if defined(TL_FEATURE_UNDERWATER) || defined(TL_FEATURE_SEA_FLOOR)
+// The share of the sun's beam that reaches camera-relative p, `depth`
+// metres under the mean surface, past every object: the beam crossed the
+// surface where the refracted ray through p meets it, and the hulls stand
+// at the surface, so it is looked up there (the sand's shadow under a
+// boat; a point on a hull's own bottom lies too near the hull for that
+// lookup, and its faces turned from the sun are dark by their angle). The waves tilt the refracted
+// beam and the sun's disc widens it (u_beam_spread radians), so a hull's
+// shadow blurs with depth: over a square that wide a side (four lookups),
+// the band a bundle lands spread over, as the caustics' lines are.
+float boat_shadow_below(vec3 p, float depth)
+{
+    depth = max(depth, 0.0);
+    vec3 q = p - u_sun_water * (depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN));
+    float blur = depth * u_beam_spread, lit = 0.0;
+    for (int i = 0; i < 4; i++)
+        lit += boat_shadow(q + vec3(float(i & 1) - 0.5, 0.0, float(i >> 1) - 0.5) * blur);
+    return 0.25 * lit;
+}
+#endif

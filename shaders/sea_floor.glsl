@@ -67,6 +67,12 @@ vec3 floor_color(vec3 p, vec3 ray, float dist, float blur, bool lit_by_caustics)
     if (lit_by_caustics)
         sun *= caustic_light(p.xz, depth, footprint);
 #endif
+#ifdef TL_FEATURE_BOAT_SHADOW
+    // The floating objects' shadows on the sand: their beam cut out,
+    // caustics and all; the water's even light still reaches it.
+    if (lit_by_caustics)
+        sun *= boat_shadow_below(vec3(p.x, p.y - u_cam_height, p.z), depth);
+#endif
     vec3 light = water_sun_at(depth) * sun / TL_PI + water_sky_at(depth) * (0.5 + 0.5 * n.y);
     return albedo * light;
 }

@@ -1,13 +1,15 @@
 /* The boat's light on the GPU (llvmpipe on CI): its materials' formulas
  * against their CPU mirror (shaders/material.glsl, tl_mesh_shading.c); the
  * sun's shadows, of the wheelhouse on the deck by the factor the BRDF
- * says, and of the boat on the water beside it; the hull seen from below,
+ * says, of the boat on the water beside it and on the sand below it; the
+ * hull seen from below,
  * dark against the surface and modelled by the water's light; above the
  * water, no part of it black; the bow wave of a boat under way; and all
  * of it 1e4 m out at t = 1e5 s as at the origin. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/tl_math.h"
 #include "mesh/tl_mesh.h"
 #include "optics/tl_optics.h"
 #include "tl_gl_test.h"
@@ -275,6 +277,58 @@ static void test_water_shadow(tl_renderer *r, const tl_mesh *m)
            same / count);
     CHECK(dark < 0.85 * dark_off);
     CHECK(same_diff < 1e-3 * same);
+    tl_frame_free(&lit);
+    tl_frame_free(&unlit);
+}
+
+/* The boat's shadow on the sand (boat_shadow_below): a sand floor 6 m
+ * down, the sun 60 degrees up in the east; from 3 m down, looking straight
+ * down (the boat out of view), the sand where the sun's beam in the water
+ * carries the boat's centre is darker with shadows on; away from it the
+ * frame is the same. */
+static void test_floor_shadow(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    tl_scene s;
+    boat_at_origin(&s);
+    s.width = s.height = 64;
+    s.ocean.floor_depth = 6.0;
+    s.sun.elevation = 60.0 * TL_DEG;
+    s.sun.azimuth = 90.0 * TL_DEG;
+    double sun[3], beam[3];
+    tl_scene_sun_direction(&s.sun, sun);
+    tl_optics_sun_in_water(sun, s.water.ior, beam);
+    double run = 6.0 / -beam[1];
+    s.camera.position[0] = run * beam[0];
+    s.camera.position[1] = -3.0;
+    s.camera.position[2] = run * beam[2];
+    s.camera.pitch = -90.0 * TL_DEG;
+    s.camera.vfov = 90.0 * TL_DEG;
+    tl_scene off = s;
+    off.boat.shadows = false;
+    tl_frame lit, unlit;
+    if (render(r, &s, &lit))
+        return;
+    if (render(r, &off, &unlit)) {
+        tl_frame_free(&lit);
+        return;
+    }
+    double dark = 0.0, dark_off = 0.0, far = 0.0, far_diff = 0.0;
+    for (int dy = -2; dy <= 2; dy++)
+        for (int dx = -2; dx <= 2; dx++) {
+            dark += luminance(pixel(&lit, 32 + dx, 32 + dy));
+            dark_off += luminance(pixel(&unlit, 32 + dx, 32 + dy));
+            far += luminance(pixel(&unlit, 4 + dx + 2, 4 + dy + 2));
+            far_diff += fabs(luminance(pixel(&lit, 4 + dx + 2, 4 + dy + 2)) -
+                             luminance(pixel(&unlit, 4 + dx + 2, 4 + dy + 2)));
+        }
+    printf("sand 6 m down in the boat's shadow, %.2f m west of it: %.4f against %.4f "
+           "unshadowed; a corner of the frame differs by %.2g of %.4f\n",
+           -s.camera.position[0], dark / 25, dark_off / 25, far_diff / 25, far / 25);
+    CHECK(dark < 0.8 * dark_off);
+    CHECK(far_diff < 1e-3 * far);
     tl_frame_free(&lit);
     tl_frame_free(&unlit);
 }
@@ -826,6 +880,7 @@ int main(void)
     test_material_probe(r);
     test_deck_shadow(r, &boat);
     test_water_shadow(r, &boat);
+    test_floor_shadow(r, &boat);
     test_hull_from_below(r, &boat);
     test_hull_above(r, &boat);
     test_bow_wave(r, &boat);

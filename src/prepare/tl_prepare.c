@@ -13,6 +13,7 @@
 #include "prepare/tl_uniform_list.h"
 #include "sky/tl_sky.h"
 #include "waves/tl_bow_spray.h"
+#include "waves/tl_caustics.h"
 #include "waves/tl_giant.h"
 #include "waves/tl_giant_spray.h"
 
@@ -366,6 +367,24 @@ static void prepare_bow_spray(const tl_scene *s, const tl_boat *b, int k, tl_obj
     o->bow_spray_shape[3] = 0.0f;
 }
 
+/* Whether an object's shadow on the sea floor (its bounding sphere carried
+ * down the sun's beam in the water to the floor, widened by a tenth of the
+ * way: the beam spreads by a few hundredths of a radian) is in view. */
+static int shadow_on_floor_in_view(const tl_scene *s, const tl_boat *b, const double c[3], double r)
+{
+    double sun[3], beam[3];
+    tl_scene_sun_direction(&s->sun, sun);
+    if (!b->shadows || !(s->ocean.floor_depth > 0.0) || !(sun[1] > 0.0))
+        return 0;
+    tl_optics_sun_in_water(sun, s->water.ior, beam);
+    double floor_y = -s->ocean.floor_depth - s->camera.position[1];
+    double run = (floor_y - c[1]) / fmin(beam[1], -TL_CAUSTIC_MIN_DOWN);
+    if (!(run > 0.0))
+        return 0;
+    double at[3] = {c[0] + run * beam[0], floor_y, c[2] + run * beam[2]};
+    return sphere_in_view(s, at, r + 0.1 * run);
+}
+
 /* An object's matrices in camera-relative space, and whether its bounding
  * sphere (or its mirror image's) is in view; how much of the sun its hull
  * sees past the giant wave's crest, at the hull's centre (the shadow's
@@ -407,11 +426,13 @@ static int prepare_hull(const tl_scene *s, const tl_giant *giant, const tl_boat 
     }
     vec4 c = {(float)centre[0], (float)centre[1], (float)centre[2], 1.0f}, cw;
     glm_mat4_mulv(model, c, cw);
-    /* In view itself, or mirrored in the water at its waterline. */
+    /* In view itself, or mirrored in the water at its waterline, or its
+     * shadow on the sea floor. */
     double world[3] = {cw[0], cw[1], cw[2]};
     double mirrored[3] = {cw[0], 2.0 * rel[1] - cw[1], cw[2]};
     double radius = sqrt(half) * b->scale;
-    if (!sphere_in_view(s, world, radius) && !sphere_in_view(s, mirrored, radius))
+    if (!sphere_in_view(s, world, radius) && !sphere_in_view(s, mirrored, radius) &&
+        !shadow_on_floor_in_view(s, b, world, radius))
         return 0;
     double corner[8][3];
     for (int i = 0; i < 8; i++) {
@@ -645,6 +666,7 @@ static void prepare_water_body(const tl_scene *s, const tl_waves *w, const tl_gi
     tl_optics_water_fall(&s->water, sigma, fall);
     to_float3(sigma, u->water_sigma);
     to_float3(fall, u->water_fall);
+    u->beam_spread = (float)tl_caustic_beam_spread(w, s->water.ior, s->quality.normal_octaves);
     u->capillary_slope_var = (float)tl_waves_capillary_slope_variance(w, s->quality.normal_octaves,
                                                                       s->water.capillaries);
     u->cam_depth = (float)fmax(-gap, 0.0);

@@ -271,6 +271,10 @@ typedef struct tl_frame_uniforms {
     /* The slope variance per axis of the capillary ripples finer than the
      * finest octave (tl_prepare_capillary_slope_variance). */
     float capillary_slope_var;
+    /* The angle the sun's beam under the water spreads over
+     * (tl_caustic_beam_spread): a floating object's shadow blurs by it per
+     * metre down. */
+    float beam_spread;
     float water_ior;
     float cam_depth;          /* metres below the surface at the camera (0 above) */
     float lens;               /* TL_LENS_DISTANCE */

@@ -245,7 +245,7 @@ static const tl_channel channels[] = {
     REAL("boat.spray", 1, TL_UNIT_NONE, 0.0, 10.0, boat.spray,
          "strength of the spray the bow throws where it meets rising water"),
     {"boat.shadows", TL_CH_BOOL, 1, TL_UNIT_NONE, 0, 1, true, offsetof(tl_scene, boat.shadows),
-     NULL, "the sun casts the boat's shadows, on itself and on the water"},
+     NULL, "the sun casts the boat's shadows, on itself, the water and the sea floor"},
     {"boat.paint", TL_CH_REAL, 3, TL_UNIT_NONE, 0.0, 1.0, false, offsetof(tl_scene, boat.paint),
      NULL,
      "the built-in boat's topsides colour, linear RGB (a rescue boat's orange: 0.8 0.15 0.02)"},

@@ -169,3 +169,9 @@ double tl_caustic_crest(const tl_waves *w, const tl_caustic_light *l, double x, 
     double focus = focus_at(w, l, ax, az, depth, t, octaves, footprint, 0);
     return 1.0 + share * exp(-path / TL_CAUSTIC_CREST_REACH) * (focus - 1.0);
 }
+
+double tl_caustic_beam_spread(const tl_waves *w, double ior, int octaves)
+{
+    double slope_var = tl_waves_unresolved_slope_variance(w, octaves, HUGE_VAL);
+    return (1.0 - 1.0 / ior) * sqrt(fmax(slope_var, 0.0)) + TL_CAUSTIC_SUN_SPREAD;
+}

@@ -103,6 +103,13 @@ typedef struct tl_caustic_light {
 double tl_caustic_focus(const tl_waves *w, const tl_caustic_light *l, double x, double z,
                         double depth, double t, int octaves, double footprint);
 
+/* The angle (radians, a width) the sun's beam spreads over under the
+ * ocean's first `octaves` octaves: the waves tilt the refracted rays by
+ * (1 - 1/ior) of their whole RMS slope, and the sun's disc adds its width
+ * (TL_CAUSTIC_SUN_SPREAD). A floating object's shadow on the sand, or on
+ * its own keel, blurs by it per metre down (boat_shadow_below). */
+double tl_caustic_beam_spread(const tl_waves *w, double ior, int octaves);
+
 /* The caustics in the light through the giant wave's crest (feature
  * `crest caustics`, caustic_crest in shaders/caustics.glsl): the sunlight
  * that reaches world point (x, z) under the face (where the ocean's waves
