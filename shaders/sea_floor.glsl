@@ -68,10 +68,15 @@ vec3 floor_color(vec3 p, vec3 ray, float dist, float blur, bool lit_by_caustics)
         sun *= caustic_light(p.xz, depth, footprint);
 #endif
 #ifdef TL_FEATURE_BOAT_SHADOW
-    // The floating objects' shadows on the sand: their beam cut out,
-    // caustics and all; the water's even light still reaches it.
-    if (lit_by_caustics)
-        sun *= boat_shadow_below(vec3(p.x, p.y - u_cam_height, p.z), depth);
+    // The floating objects' shadows on the sand: the share of the beam the
+    // water has not yet scattered on its way down is cut out, caustics and
+    // all; what it has scattered comes in from around the shadow and still
+    // lights the sand (in a bay's water a shadow 7 m down keeps about half
+    // of the sun: black, it read as an oil slick from above; judge).
+    if (lit_by_caustics) {
+        float unscattered = exp(-u_water_scattering * depth / max(-u_sun_water.y, TL_CAUSTIC_MIN_DOWN));
+        sun *= 1.0 - unscattered * (1.0 - boat_shadow_below(vec3(p.x, p.y - u_cam_height, p.z), depth));
+    }
 #endif
     vec3 light = water_sun_at(depth) * sun / TL_PI + water_sky_at(depth) * (0.5 + 0.5 * n.y);
     return albedo * light;
