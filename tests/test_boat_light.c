@@ -35,6 +35,21 @@ static void boat_at_origin(tl_scene *s)
     s->boat.position[1] = tl_waves_height(&w, 0.0, 0.0, s->time, TL_MAX_OCTAVES);
 }
 
+/* Scene s rendered with the boat's shadows and without (both frames
+ * freed on failure). */
+static int render_shadows_on_off(tl_renderer *r, const tl_scene *s, tl_frame *lit, tl_frame *unlit)
+{
+    tl_scene off = *s;
+    off.boat.shadows = false;
+    if (render(r, s, lit))
+        return -1;
+    if (render(r, &off, unlit)) {
+        tl_frame_free(lit);
+        return -1;
+    }
+    return 0;
+}
+
 /* Model point m through the frame's matrices: camera-relative world w and
  * its pixel (top row first); 0 when it is behind the camera. */
 static int project(const tl_scene *s, const tl_frame_uniforms *u, const double m[3], double w[3],
@@ -165,18 +180,14 @@ static void test_deck_shadow(tl_renderer *r, const tl_mesh *m)
     s.camera.position[2] = -8.0;
     const double target[3] = {0.0, 0.5, -2.0};
     tl_scene_camera_look_at(&s.camera, target, NULL);
-    tl_scene off = s;
-    off.boat.shadows = false;
     tl_frame lit, unlit;
-    if (render(r, &s, &lit))
+    if (render_shadows_on_off(r, &s, &lit, &unlit))
         return;
-    if (render(r, &off, &unlit)) {
-        tl_frame_free(&lit);
-        return;
-    }
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     CHECK(u.features & TL_FEATURE_BOAT_SHADOW);
+    tl_scene off = s;
+    off.boat.shadows = false;
     tl_frame_uniforms u_off;
     gl_test_prepare(r, &off, &u_off);
     CHECK(!(u_off.features & TL_FEATURE_BOAT_SHADOW));
@@ -236,15 +247,9 @@ static void test_water_shadow(tl_renderer *r, const tl_mesh *m)
     s.camera.position[2] = -14.0;
     const double target[3] = {-1.5, 0.0, 0.0};
     tl_scene_camera_look_at(&s.camera, target, NULL);
-    tl_scene off = s;
-    off.boat.shadows = false;
     tl_frame lit, unlit;
-    if (render(r, &s, &lit))
+    if (render_shadows_on_off(r, &s, &lit, &unlit))
         return;
-    if (render(r, &off, &unlit)) {
-        tl_frame_free(&lit);
-        return;
-    }
     tl_frame_uniforms u;
     gl_test_prepare(r, &s, &u);
     /* Where the wheelhouse's middle casts its shadow on the water plane,
@@ -306,15 +311,9 @@ static void test_floor_shadow(tl_renderer *r, const tl_mesh *m)
     s.camera.position[2] = run * beam[2];
     s.camera.pitch = -90.0 * TL_DEG;
     s.camera.vfov = 90.0 * TL_DEG;
-    tl_scene off = s;
-    off.boat.shadows = false;
     tl_frame lit, unlit;
-    if (render(r, &s, &lit))
+    if (render_shadows_on_off(r, &s, &lit, &unlit))
         return;
-    if (render(r, &off, &unlit)) {
-        tl_frame_free(&lit);
-        return;
-    }
     double dark = 0.0, dark_off = 0.0, far = 0.0, far_diff = 0.0;
     for (int dy = -2; dy <= 2; dy++)
         for (int dx = -2; dx <= 2; dx++) {
