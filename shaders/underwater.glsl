@@ -73,14 +73,22 @@ uniform sampler2D u_boat_underside_distance; // the mirrored path's length from 
 // below the water mirrored in the surface (the mesh pass drew it from the
 // eye's mirror image), dimmed on its way from the surface with the water's
 // light between; looked up where the pixel is, shifted by the facet's slope
-// as the reflection from above is (boat_reflect). Without it the hull's
+// as the reflection from above is (boat_reflect), less near the hull. Without it the hull's
 // upper part, hidden from an eye just under the surface by the surface's
 // underside, left a band of water between the boat above the waterline
 // and its keel below.
 vec3 boat_underside(vec3 water, vec3 n, vec3 hit, vec3 down, float t)
 {
     vec2 size = vec2(textureSize(u_boat_underside, 0));
-    vec2 shift = n.xz * 0.15;
+    // A facet tilted by a slope turns the mirrored ray by twice that, which
+    // moves the image by the path beyond the surface over the whole path:
+    // where the hull meets its image at the waterline, not at all (shifted
+    // whole, the image's edge along the hull was a sawtooth; judge).
+    ivec2 here = ivec2(clamp(gl_FragCoord.xy, vec2(0.0), size - 1.0));
+    float reach = texelFetch(u_boat_underside, here, 0).a > 0.0
+                      ? max(texelFetch(u_boat_underside_distance, here, 0).r - t, 0.0)
+                      : t;
+    vec2 shift = n.xz * 0.15 * min(1.0, 2.0 * reach / max(t + reach, 1.0e-6));
     shift *= min(1.0, TL_MIRROR_SHIFT / max(length(shift), 1.0e-6));
     ivec2 at = ivec2(clamp(gl_FragCoord.xy + shift * size.y, vec2(0.0), size - 1.0));
     vec4 hull = texelFetch(u_boat_underside, at, 0);
