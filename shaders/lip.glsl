@@ -1,5 +1,6 @@
 // The giant wave's lip (TL_FEATURE_GIANT_LIP): where the crest breaks, a
-// tube along an arc of a circle in the crest's cross-section, thrown
+// tube along an arc in the crest's cross-section (a circle stretched
+// along the travel, TL_GIANT_LIP_THROW), thrown
 // forward from the crest's top and falling onto the face in front, marched
 // as an implicit surface inside its own box and combined with the height
 // field by the nearest hit (trace_water). src/waves/tl_giant.c
@@ -110,7 +111,8 @@ GiantLip giant_lip_at(float w)
                        ((lip.progress < 1.0 ? throw_rate * tall : 0.0) + lip.progress * gate_rate);
     float root_thickness = TL_GIANT_LIP_THICKNESS * height;
     float tip =
-        lip.radius * (sweep_rate + TL_GIANT_LIP_COLLAPSE * 1.5 * spent_rate * sweep) +
+        TL_GIANT_LIP_THROW * lip.radius *
+            (sweep_rate + TL_GIANT_LIP_COLLAPSE * 1.5 * spent_rate * sweep) +
         2.0 * root_thickness *
             ((lip.progress < TL_GIANT_LIP_GROW ? 1.5 * throw_rate / TL_GIANT_LIP_GROW : 0.0) +
              gate_rate + 2.0 * TL_GIANT_LIP_SWELL * spent_rate);
@@ -126,32 +128,53 @@ GiantLip giant_lip_at(float w)
     lip.rate = tip + abs(db) + lump_rate +
                lumped * TL_GIANT_LIP_LUMP * 1.5 / TL_GIANT_LIP_ROUGHEN * spent_rate +
                abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +
-                          2.0 * TL_GIANT_LIP_RADIUS * u_giant_shape.y);
+                          2.0 * TL_GIANT_LIP_THROW * TL_GIANT_LIP_RADIUS * u_giant_shape.y);
     return lip;
+}
+
+// The arc's point at `angle`, from its centre: a circle stretched along
+// the travel by TL_GIANT_LIP_THROW (the lip is thrown out over the face).
+vec2 giant_lip_arc_point(GiantLip lip, float angle)
+{
+    return lip.radius * vec2(TL_GIANT_LIP_THROW * sin(angle), cos(angle));
 }
 
 // Signed distance to the tube in the cross-section (negative inside), and
 // in *n2 the unit direction of its gradient there (the thinning along the
-// arc tilts it by a few degrees at most: left out).
-float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2)
+// arc tilts it by a few degrees at most: left out). With the travel's axis
+// shrunk by THROW the arc is a circle of radius R, r the distance from its
+// centre there: the distance is |r - R| over r's gradient (first order;
+// the tube keeps its thickness where the arc runs down). *bound: |r - R|
+// less the half thickness, never more than the distance (r changes by at
+// most a metre per metre), which the march steps by.
+// (tl_giant_lip_distance_bounded)
+float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2, out float bound)
 {
     n2 = vec2(0.0, 1.0);
+    bound = 1e30;
     if (!lip.present)
         return 1e30;
     vec2 q = sy - lip.center;
-    float angle = atan(q.x, q.y);
+    vec2 e = vec2(q.x / TL_GIANT_LIP_THROW, q.y);
+    float angle = atan(e.x, e.y);
     if (angle >= lip.from && angle <= lip.to) {
-        float r = length(q);
-        n2 = (r >= lip.radius ? 1.0 : -1.0) * q / max(r, 1.0e-6);
-        return abs(r - lip.radius) - giant_lip_half(lip, angle);
+        float r = max(length(e), 1.0e-6);
+        vec2 grad = vec2(e.x / TL_GIANT_LIP_THROW, e.y) / r;
+        float slope = length(grad);
+        float half_thickness = giant_lip_half(lip, angle);
+        n2 = (r >= lip.radius ? 1.0 : -1.0) * grad / slope;
+        bound = abs(r - lip.radius) - half_thickness;
+        return abs(r - lip.radius) / slope - half_thickness;
     }
-    vec2 e0 = lip.radius * vec2(sin(lip.from), cos(lip.from));
-    vec2 e1 = lip.radius * vec2(sin(lip.to), cos(lip.to));
-    vec2 d0 = q - e0, d1 = q - e1;
+    vec2 d0 = q - giant_lip_arc_point(lip, lip.from), d1 = q - giant_lip_arc_point(lip, lip.to);
     float c0 = length(d0) - giant_lip_half(lip, lip.from),
           c1 = length(d1) - giant_lip_half(lip, lip.to);
     vec2 d = c0 < c1 ? d0 : d1;
     n2 = d / max(length(d), 1.0e-6);
+    // The caps are not the nearest part of the arc everywhere past its
+    // ends (near the centre, its top is): the bound is the nearer of them
+    // and of the band the arc lies in, less the thickest the tube can be.
+    bound = min(min(c0, c1), abs(length(e) - lip.radius) - lip.thickness * (1.0 + TL_GIANT_LIP_LUMP));
     return min(c0, c1);
 }
 
@@ -160,16 +183,23 @@ float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2)
 // back is the water. The tube's root there stood above a back that falls
 // away, and seen from behind it drew a smooth slab with a stair-stepped
 // edge over the wave's back. The cut face lies under the crest's top,
-// inside the water. tl_giant_lip_distance.
-float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
+// inside the water. tl_giant_lip_distance_bounded.
+float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2, out float bound)
 {
-    float tube = giant_lip_tube_distance(lip, sy, n2);
+    float tube = giant_lip_tube_distance(lip, sy, n2, bound);
     float behind = lip.center.x - sy.x;
+    bound = max(bound, behind);
     if (behind > tube) {
         n2 = vec2(-1.0, 0.0);
         return behind;
     }
     return tube;
+}
+
+float giant_lip_distance(GiantLip lip, vec2 sy, out vec2 n2)
+{
+    float bound;
+    return giant_lip_distance(lip, sy, n2, bound);
 }
 
 // The part of the ray inside the lip's box (u_giant_lip_box: s and y
@@ -197,7 +227,7 @@ vec2 giant_lip_interval(vec3 ray)
 // Trusting the cross-section's distance alone stepped
 // over most of a peeling lip seen along the crest, leaving a floating
 // green blade where a few rays happened to land on it.
-#define TL_GIANT_LIP_STEPS    96
+#define TL_GIANT_LIP_STEPS    128
 #define TL_GIANT_LIP_RELAX    0.8
 #define TL_GIANT_LIP_GAP      2.0
 #define TL_GIANT_LIP_BISECT   8
@@ -215,7 +245,8 @@ float giant_lip_march(vec3 ray, float t_min, float t_max)
         vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * t;
         vec2 sw = giant_coords(p.xz), n2;
         GiantLip lip = giant_lip_at(sw.y);
-        float dist = giant_lip_distance(lip, vec2(sw.x, p.y), n2);
+        float bound;
+        float dist = giant_lip_distance(lip, vec2(sw.x, p.y), n2, bound);
         float eps = max(u_hit_epsilon, 1.0e-4 * t);
         if (dist < eps) {
             // A long step (a gap's, or one the local rate underestimated)
@@ -240,7 +271,7 @@ float giant_lip_march(vec3 ray, float t_min, float t_max)
         // metres of w: the lip begins (the peel's front), ends (its life)
         // and stops (the tall-crest gate) as a vanishing tube, so nothing
         // visible lies within that of its edges.
-        t += lip.present ? max(TL_GIANT_LIP_RELAX * min(dist, 1.0e3) /
+        t += lip.present ? max(TL_GIANT_LIP_RELAX * min(bound, 1.0e3) /
                                    (ray_sy * (1.0 + lip.slope) + lip.rate * ray_w),
                                TL_GIANT_LIP_MIN_STEP * lip.thickness)
                          : min(TL_GIANT_LIP_GAP / max(ray_w, 1.0e-6), 1.0e3);

@@ -56,7 +56,7 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         GiantLip lip = giant_lip_at(sw.y);
         if (lip.present && lip.progress > 0.5) {
             float ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
-            float ts = lip.center.x + lip.radius * (sin(lip.to) + ahead) - sw.x;
+            float ts = lip.center.x + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead) - sw.x;
             float ty =
                 lip.center.y + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - p.y;
             float r =

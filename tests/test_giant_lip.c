@@ -139,6 +139,73 @@ static void test_lip_behind_top(void)
     }
 }
 
+/* The lip is thrown out over the face (TL_GIANT_LIP_THROW): once it has
+ * thrown, a vertical line in front of the crest's top meets the face,
+ * then air (the barrel), then the lip; a circle's arc lay on the face.
+ * And the march's bound never exceeds the distance to the tube's surface
+ * (found by brute force over the cross-section), so it steps over none. */
+static void test_lip_barrel(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 2.0, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    const double base = base_of(&s), w = s.giant.peak;
+    tl_giant_lip lip;
+    tl_giant_lip_at(&g, w, base, &lip);
+    CHECK(lip.present && lip.progress > 0.8 && lip.spent == 0.0);
+    double dl, height = tl_giant_lambda(&g, w, &dl) * g.amplitude, gap = 0.0;
+    for (int is = 0; is <= 200; is++) {
+        double sv = lip.center[0] + TL_GIANT_LIP_THROW * lip.radius * is / 200.0, h[8];
+        double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
+        double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+        if (tl_giant_lip_heights(&g, x, z, -1e9, base, h, 8) > 0)
+            gap = fmax(gap, h[0] - (base + tl_giant_height(&g, x, z, 8)));
+    }
+    printf("lip's barrel: up to %.2f m of air under the lip (the crest %.2f m high)\n", gap,
+           height);
+    CHECK(gap > 0.25 * height);
+
+    /* The bound against the distance, on points round the tube. */
+    const int n = 500;
+    const double reach = TL_GIANT_LIP_THROW * lip.radius + 2.0 * lip.thickness;
+    const double step = 2.0 * reach / n;
+    static double inside[2][250000];
+    int count = 0;
+    for (int i = 0; i < n && count < 250000; i++)
+        for (int j = 0; j < n && count < 250000; j++) {
+            double sv = lip.center[0] - reach + step * i, y = lip.center[1] - reach + step * j;
+            if (tl_giant_lip_distance(&lip, sv, y) < 0.0) {
+                inside[0][count] = sv;
+                inside[1][count++] = y;
+            }
+        }
+    CHECK(count > 100 && count < 250000);
+    int probes = 0, over = 0;
+    double worst = 0.0;
+    for (int i = 0; i < 40; i++)
+        for (int j = 0; j < 40; j++) {
+            double sv = lip.center[0] - reach + 2.0 * reach * (i + 0.37) / 40.0;
+            double y = lip.center[1] - reach + 2.0 * reach * (j + 0.61) / 40.0, bound;
+            if (tl_giant_lip_distance_bounded(&lip, sv, y, &bound) <= 0.0)
+                continue;
+            double nearest = 1e30;
+            for (int k = 0; k < count; k++)
+                nearest = fmin(nearest, hypot(inside[0][k] - sv, inside[1][k] - y));
+            probes++;
+            /* The march steps 0.8 of it (lip.glsl's TL_GIANT_LIP_RELAX):
+             * the bound takes the tube's thickness at the point's own
+             * angle, and near the centre a thicker stretch of the arc
+             * (toward its root) lies a little nearer. */
+            worst = fmax(worst, bound / (nearest + step));
+            over += 0.8 * bound > nearest + step;
+        }
+    printf("lip's march bound: at most %.3f of the distance; 0.8 of it above at %d of %d points\n",
+           worst, over, probes);
+    CHECK(probes > 1000);
+    CHECK(over == 0);
+}
+
 /* The lip's outer surface passes through the crest's top at its anchor
  * angle; the lip is thrown further the older the break, and exists only
  * from the break's start until it has thinned away. */
@@ -542,7 +609,7 @@ static void test_landing_shade(void)
     tl_giant_lip_at(&g, w, base_of(&s), &lip);
     CHECK(lip.present && lip.progress > 0.5);
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
-    double cs = lip.center[0] + lip.radius * (sin(lip.to) + ahead);
+    double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
     double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
     double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
     double vs = sun[0] * g.dir[0] + sun[2] * g.dir[1];
@@ -867,6 +934,7 @@ int main(void)
 {
     test_lip_heights();
     test_lip_behind_top();
+    test_lip_barrel();
     test_lip_life();
     test_lip_bounds();
     test_spray_density();

@@ -105,6 +105,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_GIANT_TROUGH_LIFT %.17g\n"
         "#define TL_GIANT_BACK_FILL %.17g\n"
         "#define TL_GIANT_LIP_RADIUS %.17g\n"
+        "#define TL_GIANT_LIP_THROW %.17g\n"
         "#define TL_GIANT_LIP_THICKNESS %.17g\n"
         "#define TL_GIANT_LIP_TIP %.17g\n"
         "#define TL_GIANT_LIP_GROW %.17g\n"
@@ -217,7 +218,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_WATER_MAX_OPTICAL %.17g\n",
         TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
         TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
-        TL_GIANT_TROUGH_LIFT, TL_GIANT_BACK_FILL, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THICKNESS,
+        TL_GIANT_TROUGH_LIFT, TL_GIANT_BACK_FILL, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THROW, TL_GIANT_LIP_THICKNESS,
         TL_GIANT_LIP_TIP, TL_GIANT_LIP_GROW, TL_GIANT_LIP_ANCHOR, TL_GIANT_LIP_ROOT,
         TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_GIANT_LIP_COLLAPSE, TL_GIANT_LIP_SWELL,
         TL_GIANT_LIP_LUMP, TL_GIANT_LIP_LUMP_CELL, TL_GIANT_LIP_TEAR, TL_GIANT_LIP_ROUGHEN,

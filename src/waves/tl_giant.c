@@ -590,19 +590,46 @@ double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle)
     return lip_half_smooth(lip, angle) * tl_giant_lip_lump(lip, angle);
 }
 
-static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, double y)
+/* The arc's point at `angle`, from its centre (TL_GIANT_LIP_THROW). */
+static void lip_arc_point(const tl_giant_lip *lip, double angle, double *s, double *y)
+{
+    *s = TL_GIANT_LIP_THROW * lip->radius * sin(angle);
+    *y = lip->radius * cos(angle);
+}
+
+/* The tube's signed distance in the cross-section. The arc is an ellipse:
+ * with the travel's axis shrunk by TL_GIANT_LIP_THROW it is a circle of
+ * radius R, and r the distance from its centre there; the distance to the
+ * arc is |r - R| over the gradient of r (first order, so the tube keeps
+ * its thickness where the arc runs down as where it runs across). *bound:
+ * |r - R| less the half thickness, which never exceeds the distance (r
+ * changes by at most a metre per metre), for marching. */
+static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, double y,
+                                         double *bound)
 {
     double qs = s - lip->center[0], qy = y - lip->center[1];
-    double angle = atan2(qs, qy); /* from up, clockwise toward +s */
-    if (angle >= lip->from && angle <= lip->to)
-        return fabs(hypot(qs, qy) - lip->radius) - tl_giant_lip_half_thickness(lip, angle);
-    /* Past either end: the round cap there, as thick as the tube's end. */
+    double es = qs / TL_GIANT_LIP_THROW;
+    double angle = atan2(es, qy); /* from up, clockwise toward +s */
+    if (angle >= lip->from && angle <= lip->to) {
+        double r = fmax(hypot(es, qy), 1e-9);
+        double slope = hypot(es / TL_GIANT_LIP_THROW, qy) / r;
+        double half = tl_giant_lip_half_thickness(lip, angle);
+        *bound = fabs(r - lip->radius) - half;
+        return fabs(r - lip->radius) / slope - half;
+    }
+    /* Past either end: the round cap there, as thick as the tube's end.
+     * The caps are not the nearest part of an ellipse's arc everywhere
+     * past its ends (near the centre, its top is): the bound is the
+     * nearer of them and of the band the arc lies in, |r - R| less the
+     * thickest the tube can be. */
     double d = 1e30;
     const double ends[2] = {lip->from, lip->to};
     for (int i = 0; i < 2; i++) {
-        double es = lip->radius * sin(ends[i]), ey = lip->radius * cos(ends[i]);
-        d = fmin(d, hypot(qs - es, qy - ey) - tl_giant_lip_half_thickness(lip, ends[i]));
+        double ps, py;
+        lip_arc_point(lip, ends[i], &ps, &py);
+        d = fmin(d, hypot(qs - ps, qy - py) - tl_giant_lip_half_thickness(lip, ends[i]));
     }
+    *bound = fmin(d, fabs(hypot(es, qy) - lip->radius) - lip->thickness * (1.0 + TL_GIANT_LIP_LUMP));
     return d;
 }
 
@@ -614,9 +641,19 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
  * crest's top, inside the water. */
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y)
 {
+    double bound;
+    return tl_giant_lip_distance_bounded(lip, s, y, &bound);
+}
+
+double tl_giant_lip_distance_bounded(const tl_giant_lip *lip, double s, double y, double *bound)
+{
+    *bound = 1e30;
     if (!lip->present)
         return 1e30;
-    return fmax(tl_giant_lip_tube_distance(lip, s, y), lip->center[0] - s);
+    double behind = lip->center[0] - s;
+    double tube = tl_giant_lip_tube_distance(lip, s, y, bound);
+    *bound = fmax(*bound, behind);
+    return fmax(tube, behind);
 }
 
 bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double across[2])
@@ -626,7 +663,8 @@ bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double a
     if (!g->active || !g->breaks)
         return false;
     /* Scanned across at the envelope's sample spacing; each cross-section's
-     * circle (radius + thickness) bounds its arc, widened by the spacing
+     * ellipse (its reach along the travel, THROW·radius, plus the
+     * thickness) bounds its arc, widened by the spacing
      * times the largest slope the arc's centre could have between samples. */
     const int n = TL_GIANT_PROFILE_SAMPLES;
     const double spacing = 2.0 * g->half_width / n;
@@ -638,7 +676,7 @@ bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double a
         if (!lip.present)
             continue;
         any = true;
-        double reach = lip.radius + lip.thickness * (1.0 + TL_GIANT_LIP_LUMP) +
+        double reach = TL_GIANT_LIP_THROW * lip.radius + lip.thickness * (1.0 + TL_GIANT_LIP_LUMP) +
                        spacing * (1.0 + g->max_dbow) + spacing * g->max_dlambda * g->amplitude;
         box[0] = fmin(box[0], lip.center[0] - reach);
         box[1] = fmax(box[1], lip.center[0] + reach);

@@ -91,7 +91,8 @@
 /* The break's distance from the peak is rounded over this many metres
  * there (sqrt(x² + r²) - r), so the settling crest has no corner at it. */
 #define TL_GIANT_PEEL_ROUND 2.0
-/* The lip: a tube along an arc of a circle in the crest's cross-section,
+/* The lip: a tube along an arc in the crest's cross-section (a circle
+ * stretched along the travel, TL_GIANT_LIP_THROW),
  * of this radius and half thickness (fractions of the crest's height
  * there). The arc's point at TL_GIANT_LIP_ANCHOR (degrees from straight
  * up, clockwise toward the travel) sits on the crest's top; it starts at
@@ -113,6 +114,13 @@
 #define TL_GIANT_LIP_FADE      0.8
 #define TL_GIANT_LIP_COLLAPSE  0.85
 #define TL_GIANT_LIP_SWELL     1.0
+/* The arc is a circle stretched forward into an ellipse: its reach along
+ * the travel is TL_GIANT_LIP_THROW times its radius, its drop the radius.
+ * The lip is thrown out over the face and falls, leaving a barrel of air
+ * under it; a circle's arc, falling at 45 degrees from the top, lay on any
+ * face steeper than that (a rope on the face, judges). The tube keeps its
+ * thickness across the arc (tl_giant_lip_distance). */
+#define TL_GIANT_LIP_THROW 1.6
 /* The tube thins from its root to its free end: its half thickness
  * falls linearly along the arc, to TL_GIANT_LIP_TIP of the root's at the
  * end of the whole sweep, so the lip reads as a sheet thrown off the crest
@@ -344,6 +352,9 @@ bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double a
 /* Signed distance from (s, y) to the lip's tube in its cross-section
  * (negative inside); a large positive value where there is no lip. */
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y);
+/* The same, and in *bound a lower bound of the distance to the lip's
+ * surface (the march's step; the distance itself is first order). */
+double tl_giant_lip_distance_bounded(const tl_giant_lip *lip, double s, double y, double *bound);
 
 /* The heights above `floor` (the height field's there) at which a
  * vertical line at world (x, z) crosses the lip's faces, lowest first, at

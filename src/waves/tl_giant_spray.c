@@ -196,7 +196,7 @@ static bool landing_at(const tl_giant_spray *sp, const tl_giant_lip *lip, double
     if (!lip->present || !(lip->progress > 0.5))
         return false;
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip->spent);
-    *ts = lip->center[0] + lip->radius * (sin(lip->to) + ahead) - s;
+    *ts = lip->center[0] + lip->radius * (TL_GIANT_LIP_THROW * sin(lip->to) + ahead) - s;
     *ty = lip->center[1] + lip->radius * (cos(lip->to) + TL_SPRAY_SPLASH_RISE * lip->spent) - y;
     *r = TL_SPRAY_LANDING_RADIUS * lip->radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip->spent);
     *peak = TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip->progress) *
