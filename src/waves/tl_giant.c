@@ -604,8 +604,7 @@ static void lip_arc_point(const tl_giant_lip *lip, double angle, double *s, doub
  * its thickness where the arc runs down as where it runs across). *bound:
  * |r - R| less the half thickness, which never exceeds the distance (r
  * changes by at most a metre per metre), for marching. */
-static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, double y,
-                                         double *bound)
+static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, double y, double *bound)
 {
     double qs = s - lip->center[0], qy = y - lip->center[1];
     double es = qs / TL_GIANT_LIP_THROW;
@@ -629,7 +628,8 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
         lip_arc_point(lip, ends[i], &ps, &py);
         d = fmin(d, hypot(qs - ps, qy - py) - tl_giant_lip_half_thickness(lip, ends[i]));
     }
-    *bound = fmin(d, fabs(hypot(es, qy) - lip->radius) - lip->thickness * (1.0 + TL_GIANT_LIP_LUMP));
+    *bound =
+        fmin(d, fabs(hypot(es, qy) - lip->radius) - lip->thickness * (1.0 + TL_GIANT_LIP_LUMP));
     return d;
 }
 
