@@ -139,6 +139,14 @@ vec2 giant_lip_arc_point(GiantLip lip, float angle)
     return lip.radius * vec2(TL_GIANT_LIP_THROW * sin(angle), cos(angle));
 }
 
+// The angle along the arc of the point sy of the cross-section
+// (tl_giant_lip_angle).
+float giant_lip_angle(GiantLip lip, vec2 sy)
+{
+    vec2 q = sy - lip.center;
+    return atan(q.x / TL_GIANT_LIP_THROW, q.y);
+}
+
 // Signed distance to the tube in the cross-section (negative inside), and
 // in *n2 the unit direction of its gradient there (the thinning along the
 // arc tilts it by a few degrees at most: left out). With the travel's axis
@@ -156,7 +164,7 @@ float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2, out float boun
         return 1e30;
     vec2 q = sy - lip.center;
     vec2 e = vec2(q.x / TL_GIANT_LIP_THROW, q.y);
-    float angle = atan(e.x, e.y);
+    float angle = giant_lip_angle(lip, sy);
     if (angle >= lip.from && angle <= lip.to) {
         float r = max(length(e), 1.0e-6);
         vec2 grad = vec2(e.x / TL_GIANT_LIP_THROW, e.y) / r;

@@ -31,7 +31,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     vec3 n = normalize(n2.x * vec3(d.x, 0.0, d.y) + vec3(0.0, n2.y, 0.0));
     vec3 across = vec3(d.y, 0.0, -d.x);
     vec2 q = vec2(sw.x, hit.y) - lip.center;
-    float angle = atan(q.x, q.y);
+    float angle = giant_lip_angle(lip, vec2(sw.x, hit.y));
     // Metres along the arc from its root, and the share of the whole sweep.
     float flow = (angle - radians(TL_GIANT_LIP_ROOT)) * lip.radius;
     float thrown = giant_lip_along(angle);
@@ -41,7 +41,11 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // lumps' cells are metres).
     if (giant_lip_roughness(lip, angle) > 0.0 && angle >= lip.from && angle <= lip.to) {
         const float e = 0.05;
-        float r = max(length(q), 1.0e-3), de = e / max(lip.radius, 1.0e-3);
+        // The arc's speed (metres per radian) at the point's distance from
+        // the centre: the ellipse's, scaled as the point lies off it.
+        float r = max(length(vec2(q.x / TL_GIANT_LIP_THROW, q.y)), 1.0e-3) *
+                  length(vec2(TL_GIANT_LIP_THROW * cos(angle), sin(angle)));
+        float de = e / max(lip.radius, 1.0e-3);
         float h0 = giant_lip_half(lip, angle);
         float dh_arc =
             (giant_lip_half_smooth(lip, angle + de) * giant_lip_lump(lip, angle + de, lip.w) - h0) /
@@ -49,7 +53,8 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
         float dh_w = giant_lip_half_smooth(lip, angle) *
                      (giant_lip_lump(lip, angle, lip.w + e) - giant_lip_lump(lip, angle, lip.w)) /
                      e;
-        vec3 tangent = cos(angle) * vec3(d.x, 0.0, d.y) - vec3(0.0, sin(angle), 0.0);
+        vec3 tangent = normalize(TL_GIANT_LIP_THROW * cos(angle) * vec3(d.x, 0.0, d.y) -
+                                 vec3(0.0, sin(angle), 0.0));
         n = normalize(n - dh_arc * tangent - dh_w * across);
     }
 #ifdef TL_PASS_AOV

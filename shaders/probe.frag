@@ -222,8 +222,7 @@ void main()
     } else if (u_probe_mode == 22) {
         vec2 sw = giant_coords(p), n2;
         GiantLip lip = giant_lip_at(sw.y);
-        vec2 q = vec2(sw.x, input4.z) - lip.center;
-        float angle = atan(q.x, q.y);
+        float angle = giant_lip_angle(lip, vec2(sw.x, input4.z));
         result.xyz = vec3(giant_lip_distance(lip, vec2(sw.x, input4.z), n2),
                           giant_lip_lump(lip, angle, lip.w), giant_lip_roughness(lip, angle));
     }

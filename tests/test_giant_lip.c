@@ -793,7 +793,7 @@ static void test_gpu_mirror(tl_renderer *r)
                    z = in4[4 * i + 1] + s.camera.position[2];
             double rx = x - g.origin[0], rz = z - g.origin[1];
             double sv = g.dir[0] * rx + g.dir[1] * rz, y = in4[4 * i + 2];
-            double angle = atan2(sv - cpu[i].center[0], y - cpu[i].center[1]);
+            double angle = tl_giant_lip_angle(&cpu[i], sv, y);
             double d = tl_giant_lip_distance(&cpu[i], sv, y);
             if (fabs(d) < 50.0)
                 worst_distance = fmax(worst_distance, fabs(dist4[4 * i] - d));

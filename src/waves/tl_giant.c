@@ -597,6 +597,11 @@ static void lip_arc_point(const tl_giant_lip *lip, double angle, double *s, doub
     *y = lip->radius * cos(angle);
 }
 
+double tl_giant_lip_angle(const tl_giant_lip *lip, double s, double y)
+{
+    return atan2((s - lip->center[0]) / TL_GIANT_LIP_THROW, y - lip->center[1]);
+}
+
 /* The tube's signed distance in the cross-section. The arc is an ellipse:
  * with the travel's axis shrunk by TL_GIANT_LIP_THROW it is a circle of
  * radius R, and r the distance from its centre there; the distance to the
@@ -608,7 +613,7 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
 {
     double qs = s - lip->center[0], qy = y - lip->center[1];
     double es = qs / TL_GIANT_LIP_THROW;
-    double angle = atan2(es, qy); /* from up, clockwise toward +s */
+    double angle = tl_giant_lip_angle(lip, s, y);
     if (angle >= lip->from && angle <= lip->to) {
         double r = fmax(hypot(es, qy), 1e-9);
         double slope = hypot(es / TL_GIANT_LIP_THROW, qy) / r;

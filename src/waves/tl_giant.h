@@ -349,6 +349,11 @@ double tl_giant_lip_lump(const tl_giant_lip *lip, double angle);
  * thrown anywhere (then the frame compiles none). */
 bool tl_giant_lip_bounds(const tl_giant *g, double base, double box[4], double across[2]);
 
+/* The angle along the lip's arc (from up, clockwise toward the travel)
+ * of the point (s, y) of its cross-section: the circle's, with the
+ * travel's axis shrunk by TL_GIANT_LIP_THROW. */
+double tl_giant_lip_angle(const tl_giant_lip *lip, double s, double y);
+
 /* Signed distance from (s, y) to the lip's tube in its cross-section
  * (negative inside); a large positive value where there is no lip. */
 double tl_giant_lip_distance(const tl_giant_lip *lip, double s, double y);
