@@ -54,6 +54,10 @@
 //   mode 21: the crest's caustics at camera-relative (x, z) for light that
 //           crossed the input's third float metres of the crest, its
 //           fourth the footprint                   (tl_caustic_crest)
+//   mode 29: a small wave's shading normal on the giant wave at camera-
+//           relative (x, z), the small wave's slope the input's third and
+//           fourth floats added to the wave's, seen from the camera
+//           (at the wave's height there)             (tl_giant_facet_seen)
 //   mode 22: the giant wave's lip at camera-relative (x, z) and height y,
 //           the input's third float: its signed distance in the
 //           cross-section, the lumps' factor and roughness at that angle
@@ -207,6 +211,13 @@ void main()
     else if (u_probe_mode == 28) {
         result.x = optics_normal_blend(input4.z);
         result.y = giant_face_blend(giant_sample(p), result.x);
+    }
+    else if (u_probe_mode == 29) {
+        GiantSample g = giant_sample(p);
+        vec2 slope = g.grad + input4.zw;
+        vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
+        vec3 ray = normalize(vec3(p.x, g.height - u_cam_height, p.y));
+        result.xyz = giant_facet_seen(n, ray, g);
     }
     else if (u_probe_mode == 24) {
         vec2 flat_dir = input4.zw;

@@ -141,7 +141,7 @@ vec3 water_color(vec3 ray, vec3 hit, float dist)
     float short_gain = giant_short_wave_gain(giant);
     slope_var *= short_gain * short_gain;
     vec2 slope = -n.xz / n.y * short_gain + giant.grad;
-    n = normalize(vec3(-slope.x, 1.0, -slope.y));
+    n = giant_facet_seen(normalize(vec3(-slope.x, 1.0, -slope.y)), ray, giant);
     ocean_y -= giant.height;
 #endif
 #ifdef TL_FEATURE_WAKE

@@ -1,4 +1,5 @@
-/* The giant wave's face keeps its small waves far away: the water's
+/* The giant wave's face keeps its small waves far away, and its facets
+ * met edge-on are shaded as the footprint sees them: the water's
  * normals are blended toward up with distance (a far, grazing view of a
  * level sea averages their detail away), less on the face, which the view
  * meets nearly head on (TL_GIANT_FACE_SHARP_*). The blend on the GPU
@@ -64,6 +65,78 @@ static void test_blend_probe(tl_renderer *r, double x, double z, double t)
     CHECK(off == 1.0);
 }
 
+/* The small waves' facets on the face (TL_GIANT_FACET_GRAZE): the GPU's
+ * turned normal against the CPU's, along the centre line and beside the
+ * wave, with small-wave slopes up to 3 in every direction, so that some
+ * facets face away from the camera or graze. Every facet is met at least
+ * at the limit after; one met more squarely than that is unchanged; off
+ * the wave (level water met at grazing) the limit is near 0. */
+static void test_facet_probe(tl_renderer *r, double x, double z, double t)
+{
+    const double cam[3] = {x, 6.0, z};
+    enum { N = 96 };
+    tl_scene s;
+    tl_waves w;
+    tl_giant g;
+    tl_frame_uniforms u;
+    centre_line_scene(&s, t, cam, &w, &g, &u);
+    double crest = g.fade * g.curl / g.k;
+    float in4[4 * N], gpu[4 * N];
+    for (int i = 0; i < N; i++) {
+        double at = crest - 60.0 + 120.0 * (i % 24) / 23.0, beside = i >= 88 ? 400.0 : 0.0;
+        centre_line_point(&g, cam, at, beside, in4 + 4 * i);
+        double angle = 2.399963 * i, size = 3.0 * ((i * 7) % 11) / 10.0;
+        in4[4 * i + 2] = (float)(size * cos(angle));
+        in4[4 * i + 3] = (float)(size * sin(angle));
+    }
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe4(r, &u, 29, in4, N, s.quality.march_octaves, gpu, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return;
+    }
+    double worst = 0.0, least_after = 1.0, off_limit = 0.0;
+    int turned = 0, kept = 0;
+    for (int i = 0; i < N; i++) {
+        double px = cam[0] + (double)in4[4 * i], pz = cam[2] + (double)in4[4 * i + 1];
+        tl_giant_sample smp;
+        tl_giant_sample_at(&g, px, pz, s.quality.giant_iterations, &smp);
+        double slope[2] = {smp.grad[0] + in4[4 * i + 2], smp.grad[1] + in4[4 * i + 3]};
+        double len = sqrt(slope[0] * slope[0] + 1.0 + slope[1] * slope[1]);
+        double n[3] = {-slope[0] / len, 1.0 / len, -slope[1] / len};
+        double ray[3] = {in4[4 * i], smp.height - cam[1], in4[4 * i + 1]};
+        double ray_len = sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
+        for (int k = 0; k < 3; k++)
+            ray[k] /= ray_len;
+        double out[3];
+        tl_giant_facet_seen(n, ray, smp.grad, out);
+        for (int k = 0; k < 3; k++)
+            worst = fmax(worst, fabs(gpu[4 * i + k] - out[k]));
+        double wave_len = sqrt(smp.grad[0] * smp.grad[0] + 1.0 + smp.grad[1] * smp.grad[1]);
+        double wave_seen = -(-smp.grad[0] * ray[0] + ray[1] - smp.grad[1] * ray[2]) / wave_len;
+        double limit = TL_GIANT_FACET_GRAZE * fmax(wave_seen, 0.0);
+        double seen = -(n[0] * ray[0] + n[1] * ray[1] + n[2] * ray[2]);
+        double after = -(out[0] * ray[0] + out[1] * ray[1] + out[2] * ray[2]);
+        if (seen < limit) {
+            turned++;
+            least_after = fmin(least_after, after - limit);
+        } else {
+            kept++;
+            CHECK(out[0] == n[0] && out[1] == n[1] && out[2] == n[2]);
+        }
+        if (i >= 88)
+            off_limit = fmax(off_limit, limit);
+    }
+    printf("facets at (%g, %g), t = %g: |gpu-cpu| <= %.2e; %d turned (met at least %.3f past "
+           "the limit after), %d kept; off the wave the limit is at most %.3f\n",
+           x, z, t, worst, turned, least_after, kept, off_limit);
+    CHECK(worst <= 2e-4);
+    CHECK(turned >= 10 && kept >= 10);
+    CHECK(least_after >= -0.02); /* turning by the difference, then normalising */
+    CHECK(off_limit < 0.03);
+}
+
 int main(void)
 {
     tl_gl_context *ctx = NULL;
@@ -72,6 +145,8 @@ int main(void)
         return 1;
     test_blend_probe(r, 0.0, 0.0, 10.0);
     test_blend_probe(r, 1e4, -7e3, 1e5);
+    test_facet_probe(r, 0.0, 0.0, 10.0);
+    test_facet_probe(r, 1e4, -7e3, 1e5);
     tl_renderer_destroy(r);
     tl_gl_context_destroy(ctx);
     TEST_END();

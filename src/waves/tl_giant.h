@@ -305,6 +305,14 @@ double tl_giant_short_wave_gain(const tl_giant *g, const tl_giant_sample *smp);
  * its slope is steep (shaders/giant.glsl, giant_face_blend). */
 double tl_giant_face_blend(const tl_giant_sample *smp, double level);
 
+/* The shading normal n (unit) of a small wave on the giant wave, whose
+ * own slope there is `grad`, seen along the unit `ray`: turned toward the
+ * ray until the ray meets it at TL_GIANT_FACET_GRAZE of the cosine at
+ * which it meets the wave's surface, if it meets it more edge-on; else n
+ * (shaders/giant.glsl, giant_facet_seen). */
+void tl_giant_facet_seen(const double n[3], const double ray[3], const double grad[2],
+                         double out[3]);
+
 /* The wave's origin in its own frame (along the travel, across it),
  * wrapped every 65536 m: the world-fixed coordinates of the foam it
  * leaves behind are these plus (s0, w) (the shaders' u_giant_world). */
@@ -411,5 +419,16 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
 #define TL_GIANT_FACE_SHARP_FROM  0.1
 #define TL_GIANT_FACE_SHARP_TO    0.5
 #define TL_GIANT_FACE_SHARP_SHARE 0.5
+
+/* A small wave's facet on the face that the view meets more edge-on than
+ * TL_GIANT_FACET_GRAZE of the cosine at which it meets the wave's own
+ * surface is shaded as if met at that (tl_giant_facet_seen). A pixel's
+ * one sample stands for all the facets its footprint covers, weighted by
+ * how much of the view each takes: one met edge-on takes almost none of
+ * it. Shaded as it was, each small wave's limb mirrored the sky at
+ * Fresnel's grazing 1 and lost the light through the crest, in dark
+ * hairlines down the glowing face (judges). On a level sea seen at
+ * grazing the limit is near 0: the horizon's mirror stays. */
+#define TL_GIANT_FACET_GRAZE 0.3
 
 #endif
