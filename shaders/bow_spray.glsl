@@ -39,34 +39,61 @@ float spray_erf(float x)
     return sign(x) * (1.0 - poly * exp(-x * x));
 }
 
-// The sheet's envelope integrated from offset d toward the sun, in closed
-// form (tl_bow_spray_sheet_depth).
-float bow_spray_sheet_depth(vec3 d, vec2 h, float radius, vec3 sun)
+// How far from its centre the sheet of `radius` split by `split` metres
+// reaches: the sphere a march covers (tl_bow_spray_reach).
+float bow_spray_reach(float radius, float split)
 {
-    vec3 scale = vec3(0.4, 1.3, 0.9) * radius;
-    vec3 q = vec3(dot(d.xz, h), d.x * h.y - d.z * h.x, d.y) / scale;
+    return split > 0.0 ? split + sqrt(TL_BOW_SPRAY_END) * max(TL_BOW_SPRAY_WING, 0.9) * radius
+                       : TL_BOW_SPRAY_REACH * radius;
+}
+
+// The sheet's width across the heading: one sheet's, or each wing's.
+float bow_spray_across(float radius, float split)
+{
+    return (split > 0.0 ? TL_BOW_SPRAY_WING : 1.3) * radius;
+}
+
+// The sheet's envelope integrated from offset d toward the sun, in closed
+// form; split, its wings' sum (tl_bow_spray_sheet_depth).
+float bow_spray_sheet_depth(vec3 d, vec2 h, float radius, float split, vec3 sun)
+{
+    vec3 scale = vec3(0.4 * radius, bow_spray_across(radius, split), 0.9 * radius);
     vec3 e = vec3(dot(sun.xz, h), sun.x * h.y - sun.z * h.x, sun.y) / scale;
-    float len = length(e), a = dot(q, e) / len;
-    float perp = max(dot(q, q) - a * a, 0.0);
-    return exp(-perp) * 0.5 * sqrt(TL_PI) / len * (1.0 - spray_erf(a));
+    float len = length(e), depth = 0.0;
+    for (int wing = split > 0.0 ? -1 : 0; wing <= (split > 0.0 ? 1 : 0); wing += 2) {
+        vec3 q = vec3(dot(d.xz, h), d.x * h.y - d.z * h.x - float(wing) * split, d.y) / scale;
+        float a = dot(q, e) / len;
+        float perp = max(dot(q, q) - a * a, 0.0);
+        depth += exp(-perp) * 0.5 * sqrt(TL_PI) / len * (1.0 - spray_erf(a));
+    }
+    return depth;
 }
 
 // The sheet's shape at offset d (metres) from its centre for a boat
-// heading h (unit x z) and a burst of `radius`: thin along the heading,
-// wide across it, rising; torn by the noise. 0 beyond TL_BOW_SPRAY_REACH
-// radii (tl_bow_spray_sheet).
-float bow_spray_sheet(vec3 d, vec2 h, float radius)
+// heading h (unit x z), a burst of `radius` and its `split` (0: one
+// sheet; else a wing each side of the hull, `split` metres out,
+// TL_BOW_SPRAY_WING radii wide): thin along the heading, wide across it,
+// rising; torn by the noise. 0 beyond bow_spray_reach (tl_bow_spray_sheet).
+float bow_spray_sheet(vec3 d, vec2 h, float radius, float split)
 {
     float along = dot(d.xz, h) / (0.4 * radius);
-    float side = (d.x * h.y - d.z * h.x) / (1.3 * radius);
-    float up = d.y / (0.9 * radius);
-    float r2 = along * along + side * side + up * up;
-    if (r2 >= TL_BOW_SPRAY_END)
+    float side_m = d.x * h.y - d.z * h.x;
+    float up = d.y / (0.9 * radius), across = bow_spray_across(radius, split);
+    float envelope = 0.0;
+    for (int wing = split > 0.0 ? -1 : 0; wing <= (split > 0.0 ? 1 : 0); wing += 2) {
+        float side = (side_m - float(wing) * split) / across;
+        float r2 = along * along + side * side + up * up;
+        if (r2 < TL_BOW_SPRAY_END)
+            envelope += exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2));
+    }
+    if (!(envelope > 0.0))
         return 0.0;
-    // Torn into sheets and clots of droplets: two scales of noise.
+    // Torn into sheets and clots of droplets: two scales of noise; the
+    // wings tear alike, mirrored.
+    float side = (split > 0.0 ? abs(side_m) - split : side_m) / across;
     float torn = 0.65 * foam_noise(vec2(side * 2.6 + 17.0, up * 3.1 - along)) +
                  0.35 * foam_noise(vec2(side * 7.3 - 4.0, up * 8.9 + along * 2.0));
-    return exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2)) * smoothstep(0.48, 0.62, torn);
+    return envelope * smoothstep(0.48, 0.62, torn);
 }
 
 #ifdef TL_FEATURE_BOW_SPRAY
@@ -75,7 +102,7 @@ float bow_spray_sheet(vec3 d, vec2 h, float radius)
 float bow_spray_density(int o, vec3 p)
 {
     vec4 spray = u_objects[o].bow_spray, shape = u_objects[o].bow_spray_shape;
-    return spray.w * bow_spray_sheet(p - spray.xyz, shape.xy, shape.z);
+    return spray.w * bow_spray_sheet(p - spray.xyz, shape.xy, shape.z, 0.0);
 }
 
 // The optical depth from camera-relative p toward the sun through object
@@ -84,7 +111,7 @@ float bow_spray_shade(int o, vec3 p)
 {
     vec4 spray = u_objects[o].bow_spray, shape = u_objects[o].bow_spray_shape;
     return TL_SPRAY_SIGMA * TL_BOW_SPRAY_TORN_MEAN * spray.w *
-           bow_spray_sheet_depth(p - spray.xyz, shape.xy, shape.z, u_sun_dir);
+           bow_spray_sheet_depth(p - spray.xyz, shape.xy, shape.z, 0.0, u_sun_dir);
 }
 
 // Object o's burst along `ray` from the camera to `dist`, over `color`,
@@ -99,7 +126,7 @@ vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
     if (!(spray.w > 0.0))
         return color;
     vec3 c = spray.xyz - vec3(0.0, u_cam_height, 0.0);
-    float along = dot(c, ray), R = TL_BOW_SPRAY_REACH * u_objects[o].bow_spray_shape.z;
+    float along = dot(c, ray), R = bow_spray_reach(u_objects[o].bow_spray_shape.z, 0.0);
     float h = R * R - (dot(c, c) - along * along);
     if (h <= 0.0)
         return color;

@@ -159,22 +159,6 @@ float giant_face_blend(GiantSample g, float level)
                                                                  length(g.grad)));
 }
 
-// A small wave's shading normal n on the wave at its sample g, seen along
-// `ray`: a facet met more edge-on than TL_GIANT_FACET_GRAZE of the cosine
-// at which the ray meets the wave's own surface is turned toward the ray
-// until it is met at that (tl_giant_facet_seen). The pixel's one sample
-// stands for the facets its footprint covers, each as much as it takes of
-// the view: an edge-on one takes almost none. Shaded as met, every small
-// wave's limb mirrored the sky at Fresnel's grazing 1 and lost the light
-// through the crest: dark hairlines down the glowing face (judges).
-vec3 giant_facet_seen(vec3 n, vec3 ray, GiantSample g)
-{
-    vec3 wave = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
-    float least = TL_GIANT_FACET_GRAZE * max(dot(wave, -ray), 0.0);
-    float seen = dot(n, -ray);
-    return seen < least ? normalize(n - (least - seen) * ray) : n;
-}
-
 float giant_height(vec2 p)
 {
     return giant_sample(p).height;
@@ -241,6 +225,26 @@ vec2 giant_ray_interval(vec3 ray)
 float giant_top(GiantSample g)
 {
     return clamp(g.height / max(u_giant_shape.y * g.lambda, 1.0e-3), 0.0, 1.0);
+}
+
+// A small wave's shading normal n on the wave at its sample g, seen along
+// `ray`: a facet met more edge-on than TL_GIANT_FACET_GRAZE of the cosine
+// at which the ray meets the wave's own surface is turned toward the ray
+// until it is met at that (tl_giant_facet_seen). The pixel's one sample
+// stands for the facets its footprint covers, each as much as it takes of
+// the view: an edge-on one takes almost none. Shaded as met, every small
+// wave's limb mirrored the sky at Fresnel's grazing 1 and lost the light
+// through the crest: dark hairlines down the glowing face (judges). Part
+// of quality.facing_normals (water_facing): off, n is left as it is.
+vec3 giant_facet_seen(vec3 n, vec3 ray, GiantSample g)
+{
+    vec3 wave = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
+    // On the face only (as giant_face_blend): off the wave and on its
+    // level top the sea keeps its own facets.
+    float least = TL_GIANT_FACET_GRAZE * max(dot(wave, -ray), 0.0) *
+                  smoothstep(TL_GIANT_FACE_SHARP_FROM, TL_GIANT_FACE_SHARP_TO, length(g.grad));
+    float seen = dot(n, -ray);
+    return u_facing_normals && seen < least ? normalize(n - (least - seen) * ray) : n;
 }
 
 // How much steeper the small waves are at g than on open water: riding the

@@ -83,12 +83,14 @@ float giant_spray_sample(vec3 p, float span, out float shade)
     }
     if (u_giant_spray_bow.w > 0.0) {
         vec3 d = p - u_giant_spray_bow.xyz;
-        float sheet = bow_spray_sheet(d, u_giant_spray_heading, u_giant_spray.w);
+        float sheet = bow_spray_sheet(d, u_giant_spray_heading.xy, u_giant_spray.w,
+                                      u_giant_spray_heading.z);
         density += u_giant_spray_bow.w * sheet;
         // Its own shade (tl_giant_spray_shade), where it has any spray.
         if (sheet > 0.0)
             shade += TL_SPRAY_SIGMA * TL_BOW_SPRAY_TORN_MEAN * u_giant_spray_bow.w *
-                     bow_spray_sheet_depth(d, u_giant_spray_heading, u_giant_spray.w, u_sun_dir);
+                     bow_spray_sheet_depth(d, u_giant_spray_heading.xy, u_giant_spray.w,
+                                                u_giant_spray_heading.z, u_sun_dir);
     }
     return density;
 }
@@ -131,7 +133,8 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     if (u_giant_spray_bow.w > 0.0) {
         // The sphere the bow's burst reaches.
         vec3 c = u_giant_spray_bow.xyz - vec3(0.0, u_cam_height, 0.0);
-        float along = dot(c, ray), R = TL_BOW_SPRAY_REACH * u_giant_spray.w;
+        float along = dot(c, ray),
+              R = bow_spray_reach(u_giant_spray.w, u_giant_spray_heading.z);
         float h = R * R - (dot(c, c) - along * along);
         if (h > 0.0) {
             float b0 = max(along - sqrt(h), 0.0), b1 = min(along + sqrt(h), dist);

@@ -753,7 +753,7 @@ static void test_bow_spray(tl_renderer *r, const tl_mesh *m)
         tl_frame_free(&with);
         return;
     }
-    const double reach = TL_BOW_SPRAY_REACH * sp.radius;
+    const double reach = tl_bow_spray_reach(sp.radius, 0.0);
     long whiter = 0, outside = 0;
     for (int y = 0; y < s.height; y++)
         for (int x = 0; x < s.width; x++) {

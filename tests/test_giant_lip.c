@@ -515,6 +515,23 @@ static void test_crossing_burst(void)
     CHECK(fabs(sp.bow_amount - TL_SPRAY_CROSS_GAIN * 1.5) < 1e-9);
     CHECK(fabs(sp.bow_radius - TL_SPRAY_CROSS_RADIUS * L) < 1e-9);
     CHECK(fabs(sp.bow[1] - (top_y - 0.1 * sp.bow_radius)) < 1e-9); /* a skirt at the crest */
+    /* Split into a wing each side of the hull: over the hull's centre line
+     * the spray is thin, out at the wings it is thick. */
+    CHECK(fabs(sp.bow_split - TL_SPRAY_CROSS_SPLIT * L) < 1e-9);
+    double centre_line = 0.0, wings = 0.0;
+    for (int i = 0; i < 21; i++)
+        for (int j = 0; j < 11; j++)
+            for (int side = -1; side <= 1; side++) {
+                double a = 0.4 * sp.bow_radius * (i - 10) / 10.0, up = sp.bow_radius * j / 10.0;
+                double out = side * sp.bow_split;
+                double x = sp.bow[0] + sp.heading[0] * a + sp.heading[1] * out;
+                double z = sp.bow[2] + sp.heading[1] * a - sp.heading[0] * out;
+                double d = tl_giant_spray_density(&sp, &g, x, sp.bow[1] + up, z, 0.0);
+                *(side == 0 ? &centre_line : &wings) += side == 0 ? d : 0.5 * d;
+            }
+    printf("crossing burst split %.2f m: over the hull's centre line %.3f of the wings' spray\n",
+           sp.bow_split, centre_line / wings);
+    CHECK(wings > 0.0 && centre_line < 0.2 * wings);
     /* The crest 1.5 hull lengths beyond the bow: nothing from the crossing. */
     double far_mid = -(0.5 + 1.5) * L;
     tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, AT(far_mid));
@@ -562,28 +579,34 @@ static void test_burst_shade(void)
     const double radius = 3.0, headings[2][2] = {{1.0, 0.0}, {0.6, 0.8}};
     const double elevations[2] = {0.15, 0.9};
     double worst = 0.0, near = 0.0, far = 0.0;
-    for (int k = 0; k < 4; k++) {
-        const double *h = headings[k % 2], el = elevations[k / 2], az = 0.7;
+    for (int k = 0; k < 8; k++) {
+        /* One sheet, and split into wings 2.5 m out. */
+        const double *h = headings[k % 2], el = elevations[(k / 2) % 2], az = 0.7;
+        const double split = k < 4 ? 0.0 : 2.5;
+        const double across = (k < 4 ? 1.3 : TL_BOW_SPRAY_WING) * radius;
         const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)};
         for (int j = -1; j <= 1; j++) {
             const double d[3] = {j * radius * sun[0], j * radius * sun[1] + 0.4,
-                                 j * radius * sun[2] - 0.3};
-            double closed = tl_bow_spray_sheet_depth(d, h, radius, sun), sum = 0.0, dt = 0.002;
+                                 j * radius * sun[2] - 0.3 + split};
+            double closed = tl_bow_spray_sheet_depth(d, h, radius, split, sun), sum = 0.0;
+            const double dt = 0.002;
             for (int i = 0; i < 20000; i++) {
                 double t = (i + 0.5) * dt;
                 const double p[3] = {d[0] + sun[0] * t, d[1] + sun[1] * t, d[2] + sun[2] * t};
                 double a = (p[0] * h[0] + p[2] * h[1]) / (0.4 * radius);
-                double c = (p[0] * h[1] - p[2] * h[0]) / (1.3 * radius);
                 double u = p[1] / (0.9 * radius);
-                sum += exp(-(a * a + c * c + u * u)) * dt;
+                for (int wing = split > 0.0 ? -1 : 0; wing <= (split > 0.0 ? 1 : 0); wing += 2) {
+                    double c = (p[0] * h[1] - p[2] * h[0] - wing * split) / across;
+                    sum += exp(-(a * a + c * c + u * u)) * dt;
+                }
             }
             worst = fmax(worst, fabs(closed - sum) / fmax(sum, 1e-9));
             if (k == 0 && j != 0)
                 *(j > 0 ? &near : &far) = closed;
         }
     }
-    printf("burst's shade: closed form within %.2g of the sum; sunward side %.3f m, far side "
-           "%.3f m\n",
+    printf("burst's shade: closed form within %.2g of the sum (one sheet and split); sunward "
+           "side %.3f m, far side %.3f m\n",
            worst, near, far);
     CHECK(worst < 1e-3);
     CHECK(near < 0.2 * far);
@@ -734,7 +757,7 @@ static void test_gpu_mirror(tl_renderer *r)
             double y = base_of(&s) + lambda * g.amplitude + 0.5 * (i % 3);
             tl_giant_lip_at(&g, w, base_of(&s), &cpu[i]);
             if (i % 4 == 3 && cpu[i].present) { /* beside the lip's tip: where it lands */
-                sv = cpu[i].center[0] + cpu[i].radius * sin(cpu[i].to) + 0.3;
+                sv = cpu[i].center[0] + TL_GIANT_LIP_THROW * cpu[i].radius * sin(cpu[i].to) + 0.3;
                 y = cpu[i].center[1] + cpu[i].radius * cos(cpu[i].to) + 0.2;
             }
             double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;

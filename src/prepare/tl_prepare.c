@@ -141,6 +141,8 @@ static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniform
     u->giant_spray_bow[3] = (float)sp.bow_amount;
     u->giant_spray_heading[0] = (float)sp.heading[0];
     u->giant_spray_heading[1] = (float)sp.heading[1];
+    u->giant_spray_heading[2] = (float)sp.bow_split;
+    u->giant_spray_heading[3] = 0.0f;
 }
 
 /* The sun's light below a flat surface (the way it travels, refracted)
@@ -354,7 +356,7 @@ static void prepare_bow_spray(const tl_scene *s, const tl_boat *b, int k, tl_obj
     double c[3];
     for (int i = 0; i < 3; i++)
         c[i] = sp.center[i] - s->camera.position[i];
-    if (!sp.active || !sphere_in_view(s, c, TL_BOW_SPRAY_REACH * sp.radius))
+    if (!sp.active || !sphere_in_view(s, c, tl_bow_spray_reach(sp.radius, 0.0)))
         return;
     u->features |= TL_FEATURE_BOW_SPRAY;
     o->bow_spray[0] = (float)c[0];

@@ -236,7 +236,7 @@ typedef struct tl_frame_uniforms {
     /* TL_FEATURE_GIANT_SPRAY: (amount, reach, drift, bow radius), the
      * crest's box, the bow's burst (camera-relative x, absolute y, z,
      * amount). */
-    float giant_spray[4], giant_spray_box[4], giant_spray_bow[4], giant_spray_heading[2];
+    float giant_spray[4], giant_spray_box[4], giant_spray_bow[4], giant_spray_heading[4];
     float spray_step; /* quality.spray_step: metres a step of the spray's march */
     /* TL_FEATURE_BOW_SPRAY (tl_bow_spray): the centre relative to the
      * camera (y absolute) and amount; the heading (x, z) and radius. */

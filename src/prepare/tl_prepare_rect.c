@@ -81,7 +81,7 @@ static void cover_box(const tl_frame_uniforms *u, double cam_y, double min_y, do
         const double bx = u->giant_spray_bow[0], bz = u->giant_spray_bow[2];
         const double s = u->giant_frame[2] + dx * bx + dz * bz;
         const double w = u->giant_frame[3] + dz * bx - dx * bz;
-        const double r = TL_BOW_SPRAY_REACH * (double)u->giant_spray[3];
+        const double r = tl_bow_spray_reach(u->giant_spray[3], u->giant_spray_heading[2]);
         lo[0] = fmin(lo[0], s - r);
         hi[0] = fmax(hi[0], s + r);
         hi[1] = fmax(hi[1], u->giant_spray_bow[1] + r);

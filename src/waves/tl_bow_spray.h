@@ -31,6 +31,12 @@
  * march covers). */
 #define TL_BOW_SPRAY_END   2.5
 #define TL_BOW_SPRAY_REACH (1.3 * 1.5811388300841898)
+/* Split: the sheet as two wings, one each side of the hull, centred
+ * `split` metres out from its centre line, each TL_BOW_SPRAY_WING radii
+ * wide across (where the crest passes under the hull: the hull splits the
+ * water and throws it out to both sides; one sheet across the centre line
+ * veiled the deck in a pale fog, judges). */
+#define TL_BOW_SPRAY_WING 0.6
 
 /* One frame's burst at one bow. */
 typedef struct tl_bow_spray {
@@ -44,10 +50,14 @@ typedef struct tl_bow_spray {
 /* The burst of boat b (its pose, length, impact and boat.spray). */
 void tl_bow_spray_prepare(tl_bow_spray *sp, const tl_boat *b);
 
+/* How far from its centre the sheet of `radius` split by `split` metres
+ * reaches (the sphere a march covers): TL_BOW_SPRAY_REACH radii unsplit. */
+double tl_bow_spray_reach(double radius, double split);
+
 /* The sheet's shape at offset d (world metres) from its centre, for a
- * boat heading (x, z) and a burst of `radius`: in [0, 1], 0 beyond
- * TL_BOW_SPRAY_REACH radii (the sphere a march covers). */
-double tl_bow_spray_sheet(const double d[3], const double heading[2], double radius);
+ * boat heading (x, z), a burst of `radius` and its `split` (0: one
+ * sheet): in [0, 1], 0 beyond tl_bow_spray_reach. */
+double tl_bow_spray_sheet(const double d[3], const double heading[2], double radius, double split);
 
 /* The sheet's envelope (its shape before the tearing, exp(-r²) in its
  * scaled frame) integrated from offset d toward the sun (unit `sun`) to
@@ -57,7 +67,7 @@ double tl_bow_spray_sheet(const double d[3], const double heading[2], double rad
  * sheet: a dense burst is bright on its sunward side and grey in its own
  * shade, not a uniformly glowing fog. */
 double tl_bow_spray_sheet_depth(const double d[3], const double heading[2], double radius,
-                                const double sun[3]);
+                                double split, const double sun[3]);
 
 /* The burst's density at world (x, y, z). */
 double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z);

@@ -478,7 +478,9 @@ void tl_giant_facet_seen(const double n[3], const double ray[3], const double gr
     double wave[3] = {-grad[0], 1.0, -grad[1]};
     double wave_len = sqrt(wave[0] * wave[0] + 1.0 + wave[2] * wave[2]);
     double wave_seen = -(wave[0] * ray[0] + wave[1] * ray[1] + wave[2] * ray[2]) / wave_len;
-    double least = TL_GIANT_FACET_GRAZE * fmax(wave_seen, 0.0);
+    double least =
+        TL_GIANT_FACET_GRAZE * fmax(wave_seen, 0.0) *
+        smoothstep(TL_GIANT_FACE_SHARP_FROM, TL_GIANT_FACE_SHARP_TO, hypot(grad[0], grad[1]));
     double seen = -(n[0] * ray[0] + n[1] * ray[1] + n[2] * ray[2]);
     for (int i = 0; i < 3; i++)
         out[i] = seen < least ? n[i] - (least - seen) * ray[i] : n[i];

@@ -308,7 +308,8 @@ double tl_giant_face_blend(const tl_giant_sample *smp, double level);
 /* The shading normal n (unit) of a small wave on the giant wave, whose
  * own slope there is `grad`, seen along the unit `ray`: turned toward the
  * ray until the ray meets it at TL_GIANT_FACET_GRAZE of the cosine at
- * which it meets the wave's surface, if it meets it more edge-on; else n
+ * which it meets the wave's surface (times the face's share by slope,
+ * TL_GIANT_FACE_SHARP_*), if it meets it more edge-on; else n
  * (shaders/giant.glsl, giant_facet_seen). */
 void tl_giant_facet_seen(const double n[3], const double ray[3], const double grad[2],
                          double out[3]);
@@ -427,8 +428,10 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
  * how much of the view each takes: one met edge-on takes almost none of
  * it. Shaded as it was, each small wave's limb mirrored the sky at
  * Fresnel's grazing 1 and lost the light through the crest, in dark
- * hairlines down the glowing face (judges). On a level sea seen at
- * grazing the limit is near 0: the horizon's mirror stays. */
+ * hairlines down the glowing face (judges). Only on the face: the limit
+ * grows as TL_GIANT_FACE_SHARP_* with the wave's slope, 0 off the wave and
+ * on its level top (the sea's own facets, and the silhouette's mirror of
+ * the horizon, stay). */
 #define TL_GIANT_FACET_GRAZE 0.3
 
 #endif

@@ -56,7 +56,7 @@ static double bow_burst(const tl_giant *g, const tl_giant_hull *hull, double cen
  * the hull from there, in hull lengths. A hull lying along the crest
  * (beam on) does not split it: no burst. */
 static double crossing_burst(const tl_giant *g, const tl_giant_hull *hull, double base,
-                             double centre[3], double *radius, double *hold)
+                             double centre[3], double *radius, double *split, double *hold)
 {
     *hold = 0.0;
     double mid[2] = {0.5 * (hull->stem[0] + hull->stern[0]),
@@ -84,6 +84,7 @@ static double crossing_burst(const tl_giant *g, const tl_giant_hull *hull, doubl
     for (int i = 0; i < 3; i++)
         at[i] = first[i] + k * (last[i] - first[i]);
     *radius = TL_SPRAY_CROSS_RADIUS * hull->length;
+    *split = TL_SPRAY_CROSS_SPLIT * hull->length;
     centre[0] = at[0];
     /* A skirt where the hull splits the crest, the bow rising out of it:
      * centred higher, it veiled the bow. */
@@ -101,8 +102,8 @@ static void prepare_burst(tl_giant_spray *sp, const tl_giant *g, double amount,
 {
     /* Set even where the crossing has none: weighted by 0 it must not be
      * garbage (0 times NaN is NaN). */
-    double at_bow[3], at_crest[3] = {0.0, 0.0, 0.0}, r_bow, r_crest = 0.0, hold;
-    double crest = crossing_burst(g, hull, sp->base, at_crest, &r_crest, &hold);
+    double at_bow[3], at_crest[3] = {0.0, 0.0, 0.0}, r_bow, r_crest = 0.0, split = 0.0, hold;
+    double crest = crossing_burst(g, hull, sp->base, at_crest, &r_crest, &split, &hold);
     double bow = bow_burst(g, hull, at_bow, &r_bow) * (1.0 - hold);
     if (!(bow + crest > 0.0))
         return;
@@ -110,6 +111,7 @@ static void prepare_burst(tl_giant_spray *sp, const tl_giant *g, double amount,
     for (int i = 0; i < 3; i++)
         sp->bow[i] = at_bow[i] + k * (at_crest[i] - at_bow[i]);
     sp->bow_radius = r_bow + k * (r_crest - r_bow);
+    sp->bow_split = k * split; /* the bow's burst is one sheet */
     sp->bow_amount = amount * fmax(TL_SPRAY_BOW_GAIN * bow, TL_SPRAY_CROSS_GAIN * crest);
     sp->heading[0] = hull->heading[0];
     sp->heading[1] = hull->heading[1];
@@ -278,7 +280,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
     }
     if (sp->bow_amount > 0.0) {
         const double d[3] = {x - sp->bow[0], y - sp->bow[1], z - sp->bow[2]};
-        density += sp->bow_amount * tl_bow_spray_sheet(d, sp->heading, sp->bow_radius);
+        density +=
+            sp->bow_amount * tl_bow_spray_sheet(d, sp->heading, sp->bow_radius, sp->bow_split);
     }
     return density;
 }
@@ -289,9 +292,10 @@ double tl_giant_spray_shade(const tl_giant_spray *sp, const tl_giant *g, double 
     double shade = tl_giant_spray_landing_shade(sp, g, x, y, z, sun);
     const double d[3] = {x - sp->bow[0], y - sp->bow[1], z - sp->bow[2]};
     /* Only where the sheet holds spray: the shade of empty air is no use. */
-    if (sp->bow_amount > 0.0 && tl_bow_spray_sheet(d, sp->heading, sp->bow_radius) > 0.0) {
+    if (sp->bow_amount > 0.0 &&
+        tl_bow_spray_sheet(d, sp->heading, sp->bow_radius, sp->bow_split) > 0.0) {
         shade += TL_SPRAY_SIGMA * sp->bow_amount * TL_BOW_SPRAY_TORN_MEAN *
-                 tl_bow_spray_sheet_depth(d, sp->heading, sp->bow_radius, sun);
+                 tl_bow_spray_sheet_depth(d, sp->heading, sp->bow_radius, sp->bow_split, sun);
     }
     return shade;
 }

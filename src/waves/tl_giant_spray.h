@@ -46,7 +46,13 @@
 /* The crossing's burst is this much denser than the spindrift: the
  * crest's top thrown up by the hull, a white skirt around it (at 25 times
  * the boat it lifts over the crest was washed out to a white ghost). */
-#define TL_SPRAY_CROSS_GAIN  10.0
+#define TL_SPRAY_CROSS_GAIN 10.0
+/* The crossing's burst is split into a wing each side of the hull
+ * (TL_BOW_SPRAY_WING), their centres this share of the hull's length out
+ * from its centre line: the hull's half beam and the wing's half width.
+ * One sheet across the centre line sat on the deck, a pale fog that made
+ * the boat a ghost (judges). */
+#define TL_SPRAY_CROSS_SPLIT 0.4
 #define TL_SPRAY_CROSS_EARLY 0.3
 #define TL_SPRAY_CROSS_LATE  0.4
 /* Where the lip lands, whitewater erupts: a cloud around its tip of this
@@ -97,6 +103,7 @@ typedef struct tl_giant_spray {
     double bow[3];     /* world position of the burst's centre */
     double bow_radius; /* metres */
     double bow_amount; /* its density, 0 without a burst */
+    double bow_split;  /* metres its wings lie out from the hull's centre line (0: one sheet) */
     double heading[2]; /* the boat's heading, unit (x, z) */
     double box[4];     /* (s low, s high, y low, y high) in the wave's coordinates */
 } tl_giant_spray;
