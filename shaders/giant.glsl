@@ -519,7 +519,13 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     if (daylight <= 0.0)
         return vec3(0.0);
-    float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
+    // The view ray refracted in by a normal partway to the wave's own
+    // (TL_GIANT_GLOW_WAVE_SHARE): the light leaving has been scattered
+    // broadly, and by the small waves' normal alone the forward lobe lit
+    // each of them like a bump of gel.
+    vec3 wave_normal = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
+    vec3 glow_normal = normalize(mix(n, wave_normal, TL_GIANT_GLOW_WAVE_SHARE));
+    float mu = dot(refract(ray, glow_normal, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float leaves = 1.0 - optics_schlick(ray, n);
     vec2 path = giant_thickness(hit, g);
@@ -539,7 +545,6 @@ vec3 giant_scatter(GiantSample g, vec3 hit, vec3 ray, vec3 n, float footprint, f
     // lit through). With the small waves' normal, every ripple's lee side
     // on the sea in front glowed green. Weighting by where the light came
     // in, high up the crest or not, cut the glow off at one height.
-    vec3 wave_normal = normalize(vec3(-g.grad.x, 1.0, -g.grad.y));
     // The gate's ramp runs up to 0.55 to 0.95 of the wave's height, by a
     // noise in fingers 6 m across, long down the face: the wave is not
     // equally thick all along, and ramped to one height everywhere the glow

@@ -434,4 +434,14 @@ double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const do
  * the horizon, stay). */
 #define TL_GIANT_FACET_GRAZE 0.3
 
+/* The light through the crest leaves the face by the phase function of the
+ * view ray refracted in: refracted by a normal this share of the way from
+ * the small waves' to the wave's own. Sunlight that has crossed metres of
+ * water is scattered broadly by the time it leaves, so a small wave's tilt
+ * changes it little; refracted by the small waves' normal alone, the
+ * forward lobe lit each of them like a bump of gel (judges: "soft cloud
+ * or jelly" seen from above). Their Fresnel and mirror keep the full
+ * normal. */
+#define TL_GIANT_GLOW_WAVE_SHARE 0.6
+
 #endif
