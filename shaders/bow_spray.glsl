@@ -53,20 +53,34 @@ float bow_spray_across(float radius, float split)
     return (split > 0.0 ? TL_BOW_SPRAY_WING : 1.3) * radius;
 }
 
+// One lobe's envelope integrated from q (scaled) toward the sun, e scaled
+// by the same widths (tl_bow_spray_sheet_depth's closed form).
+float bow_spray_lobe_depth(vec3 q, vec3 e)
+{
+    float len = length(e), a = dot(q, e) / len;
+    float perp = max(dot(q, q) - a * a, 0.0);
+    return exp(-perp) * 0.5 * sqrt(TL_PI) / len * (1.0 - spray_erf(a));
+}
+
 // The sheet's envelope integrated from offset d toward the sun, in closed
 // form; split, its wings' sum (tl_bow_spray_sheet_depth).
 float bow_spray_sheet_depth(vec3 d, vec2 h, float radius, float split, vec3 sun)
 {
     vec3 scale = vec3(0.4 * radius, bow_spray_across(radius, split), 0.9 * radius);
     vec3 e = vec3(dot(sun.xz, h), sun.x * h.y - sun.z * h.x, sun.y) / scale;
-    float len = length(e), depth = 0.0;
-    for (int wing = split > 0.0 ? -1 : 0; wing <= (split > 0.0 ? 1 : 0); wing += 2) {
-        vec3 q = vec3(dot(d.xz, h), d.x * h.y - d.z * h.x - float(wing) * split, d.y) / scale;
-        float a = dot(q, e) / len;
-        float perp = max(dot(q, q) - a * a, 0.0);
-        depth += exp(-perp) * 0.5 * sqrt(TL_PI) / len * (1.0 - spray_erf(a));
-    }
+    vec3 q = vec3(dot(d.xz, h), d.x * h.y - d.z * h.x, d.y);
+    float depth = bow_spray_lobe_depth((q - vec3(0.0, split, 0.0)) / scale, e);
+    if (split > 0.0)
+        depth += bow_spray_lobe_depth((q + vec3(0.0, split, 0.0)) / scale, e);
     return depth;
+}
+
+// One lobe's envelope at scaled (along, side, up): a Gaussian cut off
+// smoothly from 1 to TL_BOW_SPRAY_END of its scaled radius squared.
+float bow_spray_lobe(float along, float side, float up)
+{
+    float r2 = along * along + side * side + up * up;
+    return r2 < TL_BOW_SPRAY_END ? exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2)) : 0.0;
 }
 
 // The sheet's shape at offset d (metres) from its centre for a boat
@@ -79,13 +93,9 @@ float bow_spray_sheet(vec3 d, vec2 h, float radius, float split)
     float along = dot(d.xz, h) / (0.4 * radius);
     float side_m = d.x * h.y - d.z * h.x;
     float up = d.y / (0.9 * radius), across = bow_spray_across(radius, split);
-    float envelope = 0.0;
-    for (int wing = split > 0.0 ? -1 : 0; wing <= (split > 0.0 ? 1 : 0); wing += 2) {
-        float side = (side_m - float(wing) * split) / across;
-        float r2 = along * along + side * side + up * up;
-        if (r2 < TL_BOW_SPRAY_END)
-            envelope += exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2));
-    }
+    float envelope = bow_spray_lobe(along, (side_m - split) / across, up);
+    if (split > 0.0)
+        envelope += bow_spray_lobe(along, (side_m + split) / across, up);
     if (!(envelope > 0.0))
         return 0.0;
     // Torn into sheets and clots of droplets: two scales of noise; the
