@@ -18,34 +18,24 @@
  * TL_GIANT_FACE_SHARP_SHARE of it. */
 static void test_blend_probe(tl_renderer *r, double x, double z, double t)
 {
-    const double cam[3] = {x, 6.0, z};
     enum { N = 64 };
-    tl_scene s;
-    tl_waves w;
-    tl_giant g;
-    tl_frame_uniforms u;
-    centre_line_scene(&s, t, cam, &w, &g, &u);
-    double crest = g.fade * g.curl / g.k;
+    centre_line c;
+    centre_line_open(&c, x, z, t);
     float in4[4 * N], gpu[4 * N];
     for (int i = 0; i < N; i++) {
-        double at = crest - 60.0 + 120.0 * i / (N - 2), beside = i == N - 1 ? 400.0 : 0.0;
-        centre_line_point(&g, cam, at, beside, in4 + 4 * i);
+        double at = c.crest - 60.0 + 120.0 * i / (N - 2), beside = i == N - 1 ? 400.0 : 0.0;
+        centre_line_point(&c.g, c.cam, at, beside, in4 + 4 * i);
         in4[4 * i + 2] = (float)(5.0 + 395.0 * (i % 7) / 6.0);
         in4[4 * i + 3] = 0.0f;
     }
-    tl_error err;
-    tl_error_clear(&err);
-    if (tl_renderer_probe4(r, &u, 28, in4, N, s.quality.march_octaves, gpu, &err)) {
-        fprintf(stderr, "probe: %s\n", err.message);
-        CHECK(0);
+    if (!centre_line_probe4(r, &c, 28, in4, N, gpu))
         return;
-    }
     double worst = 0.0, steepest = 0.0, at_steepest = 0.0, off = -1.0;
     for (int i = 0; i < N; i++) {
         tl_giant_sample smp;
-        tl_giant_sample_at(&g, cam[0] + (double)in4[4 * i], cam[2] + (double)in4[4 * i + 1],
-                           s.quality.giant_iterations, &smp);
-        double level = tl_optics_normal_blend(&s.water, in4[4 * i + 2]);
+        tl_giant_sample_at(&c.g, c.cam[0] + (double)in4[4 * i], c.cam[2] + (double)in4[4 * i + 1],
+                           c.s.quality.giant_iterations, &smp);
+        double level = tl_optics_normal_blend(&c.s.water, in4[4 * i + 2]);
         double face = tl_giant_face_blend(&smp, level);
         worst = fmax(worst, fmax(fabs(gpu[4 * i] - level), fabs(gpu[4 * i + 1] - face)));
         double slope = hypot(smp.grad[0], smp.grad[1]);
@@ -73,39 +63,29 @@ static void test_blend_probe(tl_renderer *r, double x, double z, double t)
  * the wave the limit is 0 (the sea keeps its own facets). */
 static void test_facet_probe(tl_renderer *r, double x, double z, double t)
 {
-    const double cam[3] = {x, 6.0, z};
     enum { N = 96 };
-    tl_scene s;
-    tl_waves w;
-    tl_giant g;
-    tl_frame_uniforms u;
-    centre_line_scene(&s, t, cam, &w, &g, &u);
-    double crest = g.fade * g.curl / g.k;
+    centre_line c;
+    centre_line_open(&c, x, z, t);
     float in4[4 * N], gpu[4 * N];
     for (int i = 0; i < N; i++) {
-        double at = crest - 60.0 + 120.0 * (i % 24) / 23.0, beside = i >= 88 ? 400.0 : 0.0;
-        centre_line_point(&g, cam, at, beside, in4 + 4 * i);
+        double at = c.crest - 60.0 + 120.0 * (i % 24) / 23.0, beside = i >= 88 ? 400.0 : 0.0;
+        centre_line_point(&c.g, c.cam, at, beside, in4 + 4 * i);
         double angle = 2.399963 * i, size = 3.0 * ((i * 7) % 11) / 10.0;
         in4[4 * i + 2] = (float)(size * cos(angle));
         in4[4 * i + 3] = (float)(size * sin(angle));
     }
-    tl_error err;
-    tl_error_clear(&err);
-    if (tl_renderer_probe4(r, &u, 29, in4, N, s.quality.march_octaves, gpu, &err)) {
-        fprintf(stderr, "probe: %s\n", err.message);
-        CHECK(0);
+    if (!centre_line_probe4(r, &c, 29, in4, N, gpu))
         return;
-    }
     double worst = 0.0, least_after = 1.0, off_limit = 0.0;
     int turned = 0, kept = 0;
     for (int i = 0; i < N; i++) {
-        double px = cam[0] + (double)in4[4 * i], pz = cam[2] + (double)in4[4 * i + 1];
+        double px = c.cam[0] + (double)in4[4 * i], pz = c.cam[2] + (double)in4[4 * i + 1];
         tl_giant_sample smp;
-        tl_giant_sample_at(&g, px, pz, s.quality.giant_iterations, &smp);
+        tl_giant_sample_at(&c.g, px, pz, c.s.quality.giant_iterations, &smp);
         double slope[2] = {smp.grad[0] + in4[4 * i + 2], smp.grad[1] + in4[4 * i + 3]};
         double len = sqrt(slope[0] * slope[0] + 1.0 + slope[1] * slope[1]);
         double n[3] = {-slope[0] / len, 1.0 / len, -slope[1] / len};
-        double ray[3] = {in4[4 * i], smp.height - cam[1], in4[4 * i + 1]};
+        double ray[3] = {in4[4 * i], smp.height - c.cam[1], in4[4 * i + 1]};
         double ray_len = sqrt(ray[0] * ray[0] + ray[1] * ray[1] + ray[2] * ray[2]);
         for (int k = 0; k < 3; k++)
             ray[k] /= ray_len;

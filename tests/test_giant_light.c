@@ -621,24 +621,19 @@ static void test_mirror_clear(tl_renderer *r)
  * steep as this one (k·A = 1.4). */
 static void test_short_wave_gain(tl_renderer *r, double x, double z, double t)
 {
-    const double cam[3] = {x, 6.0, z};
     enum { N = 64 };
-    tl_scene s;
-    tl_waves w;
-    tl_giant g;
-    tl_frame_uniforms u;
-    centre_line_scene(&s, t, cam, &w, &g, &u);
-    double crest = g.fade * g.curl / g.k;
+    centre_line c;
+    centre_line_open(&c, x, z, t);
     float xz[2 * N], gpu[4 * N];
     double at[N];
     for (int i = 0; i < N; i++) {
-        at[i] = crest - 60.0 + 120.0 * i / (N - 1);
+        at[i] = c.crest - 60.0 + 120.0 * i / (N - 1);
         /* the last point is 400 m beside the wave, off it */
-        centre_line_point(&g, cam, at[i], i == N - 1 ? 400.0 : 0.0, xz + 2 * i);
+        centre_line_point(&c.g, c.cam, at[i], i == N - 1 ? 400.0 : 0.0, xz + 2 * i);
     }
     tl_error err;
     tl_error_clear(&err);
-    if (tl_renderer_probe(r, &u, 23, xz, N, s.quality.march_octaves, gpu, &err)) {
+    if (tl_renderer_probe(r, &c.u, 23, xz, N, c.s.quality.march_octaves, gpu, &err)) {
         fprintf(stderr, "probe: %s\n", err.message);
         CHECK(0);
         return;
@@ -646,15 +641,15 @@ static void test_short_wave_gain(tl_renderer *r, double x, double z, double t)
     double worst = 0.0, most = 0.0, most_at = 0.0, ahead = 0.0;
     for (int i = 0; i < N; i++) {
         tl_giant_sample smp;
-        tl_giant_sample_at(&g, cam[0] + (double)xz[2 * i], cam[2] + (double)xz[2 * i + 1],
-                           s.quality.giant_iterations, &smp);
-        double cpu = tl_giant_short_wave_gain(&g, &smp);
+        tl_giant_sample_at(&c.g, c.cam[0] + (double)xz[2 * i], c.cam[2] + (double)xz[2 * i + 1],
+                           c.s.quality.giant_iterations, &smp);
+        double cpu = tl_giant_short_wave_gain(&c.g, &smp);
         worst = fmax(worst, fabs(cpu - gpu[4 * i]));
         if (i < N - 1 && cpu > most) {
             most = cpu;
-            most_at = at[i] - crest;
+            most_at = at[i] - c.crest;
         }
-        if (at[i] - crest > 40.0 && i < N - 1)
+        if (at[i] - c.crest > 40.0 && i < N - 1)
             ahead = fmax(ahead, fabs(cpu - 1.0));
     }
     printf("short-wave gain at (%g, %g), t = %g: |gpu-cpu| <= %.2e; most %.3f at %.1f m from "

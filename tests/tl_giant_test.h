@@ -22,17 +22,45 @@ static inline void wave_scene(tl_scene *s, double height, double t, const double
     s->giant.angle = 0.3;
 }
 
-/* wave_scene with a 20 m wave at full strength, prepared: its ocean, the
- * wave in double and the frame's uniforms (the probes along its centre
+/* A 20 m wave at full strength (wave_scene), prepared, seen from 6 m up
+ * at (x, z): its ocean, the wave in double, the frame's uniforms and
+ * where its crest lies along its travel (the probes along its centre
  * line: test_giant_light, test_giant_face). */
-static inline void centre_line_scene(tl_scene *s, double t, const double cam[3], tl_waves *w,
-                                     tl_giant *g, tl_frame_uniforms *u)
+typedef struct centre_line {
+    double cam[3];
+    tl_scene s;
+    tl_waves w;
+    tl_giant g;
+    tl_frame_uniforms u;
+    double crest; /* metres along the travel from the wave's origin */
+} centre_line;
+
+static inline void centre_line_open(centre_line *c, double x, double z, double t)
 {
-    wave_scene(s, 20.0, t, cam);
-    s->giant.fade = 1.0;
-    tl_waves_init(w, &s->ocean);
-    tl_giant_prepare(g, &s->giant, s->time);
-    tl_prepare_frame(s, w, u);
+    c->cam[0] = x;
+    c->cam[1] = 6.0;
+    c->cam[2] = z;
+    wave_scene(&c->s, 20.0, t, c->cam);
+    c->s.giant.fade = 1.0;
+    tl_waves_init(&c->w, &c->s.ocean);
+    tl_giant_prepare(&c->g, &c->s.giant, c->s.time);
+    tl_prepare_frame(&c->s, &c->w, &c->u);
+    c->crest = c->g.fade * c->g.curl / c->g.k;
+}
+
+/* Probe mode `mode` at n points for c's frame; false (and a failed check)
+ * where the probe fails. */
+static inline bool centre_line_probe4(tl_renderer *r, const centre_line *c, int mode,
+                                      const float *in4, int n, float *out)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    if (tl_renderer_probe4(r, &c->u, mode, in4, n, c->s.quality.march_octaves, out, &err)) {
+        fprintf(stderr, "probe: %s\n", err.message);
+        CHECK(0);
+        return false;
+    }
+    return true;
 }
 
 /* The camera-relative (x, z) of the point `at` metres along the wave's
