@@ -4,19 +4,13 @@
 #include <string.h>
 
 #include "waves/tl_giant_spray.h"
+#include "waves/tl_glsl.h"
 #include "waves/tl_noise.h"
-
-static double smoothstep(double a, double b, double x)
-{
-    double t = (x - a) / (b - a);
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    return t * t * (3.0 - 2.0 * t);
-}
 
 void tl_bow_spray_prepare(tl_bow_spray *sp, const tl_boat *b)
 {
     memset(sp, 0, sizeof *sp);
-    double strength = smoothstep(TL_BOW_SPRAY_FROM, TL_BOW_SPRAY_FULL, b->impact);
+    double strength = tl_smoothstep(TL_BOW_SPRAY_FROM, TL_BOW_SPRAY_FULL, b->impact);
     if (!(strength > 0.0) || !(b->spray > 0.0) || !(b->length > 0.0))
         return;
     sp->heading[0] = sin(b->heading);
@@ -55,7 +49,7 @@ double tl_bow_spray_sheet(const double d[3], const double heading[2], double rad
         double side = (side_m - wing * split) / across;
         double r2 = along * along + side * side + up * up;
         if (r2 < TL_BOW_SPRAY_END)
-            envelope += exp(-r2) * (1.0 - smoothstep(1.0, TL_BOW_SPRAY_END, r2));
+            envelope += exp(-r2) * (1.0 - tl_smoothstep(1.0, TL_BOW_SPRAY_END, r2));
     }
     if (!(envelope > 0.0))
         return 0.0;
@@ -65,7 +59,7 @@ double tl_bow_spray_sheet(const double d[3], const double heading[2], double rad
     double side = (split > 0.0 ? fabs(side_m) - split : side_m) / across;
     double torn = 0.65 * tl_noise_value(side * 2.6 + 17.0, up * 3.1 - along) +
                   0.35 * tl_noise_value(side * 7.3 - 4.0, up * 8.9 + along * 2.0);
-    return envelope * smoothstep(0.48, 0.62, torn);
+    return envelope * tl_smoothstep(0.48, 0.62, torn);
 }
 
 double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z)

@@ -1,17 +1,11 @@
 #include "tl_giant_spray.h"
 
 #include "tl_bow_spray.h"
+#include "tl_glsl.h"
 #include "tl_noise.h"
 
 #include <math.h>
 #include <string.h>
-
-static double smoothstep(double e0, double e1, double x)
-{
-    x = (x - e0) / (e1 - e0);
-    x = x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x;
-    return x * x * (3.0 - 2.0 * x);
-}
 
 /* The plume's thickness (metres, its Gaussian's scale) over a crest
  * `height` tall whose spray reaches `reach` back. */
@@ -44,7 +38,7 @@ static double bow_burst(const tl_giant *g, const tl_giant_hull *hull, double cen
     centre[0] = hull->stem[0] + hull->heading[0] * 0.5 * *radius;
     centre[1] = hull->stem[1] + 0.6 * *radius;
     centre[2] = hull->stem[2] + hull->heading[1] * 0.5 * *radius;
-    return smoothstep(TL_SPRAY_BOW_SLOPE_FROM, TL_SPRAY_BOW_SLOPE, slope);
+    return tl_smoothstep(TL_SPRAY_BOW_SLOPE_FROM, TL_SPRAY_BOW_SLOPE, slope);
 }
 
 /* The burst where the crest passes under the hull: its strength, centre
@@ -73,11 +67,12 @@ static double crossing_burst(const tl_giant *g, const tl_giant_hull *hull, doubl
     const double *first = s_stem < s_stern ? hull->stem : hull->stern;
     const double *last = s_stem < s_stern ? hull->stern : hull->stem;
     double u = (top_s - fmin(s_stem, s_stern)) / span;
-    double tall = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / (g->lambda_max * g->amplitude));
-    double start = smoothstep(-TL_SPRAY_CROSS_EARLY, 0.0, u);
-    double strength = start * (1.0 - smoothstep(1.0, 1.0 + TL_SPRAY_CROSS_LATE, u)) * tall;
+    double tall =
+        tl_smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / (g->lambda_max * g->amplitude));
+    double start = tl_smoothstep(-TL_SPRAY_CROSS_EARLY, 0.0, u);
+    double strength = start * (1.0 - tl_smoothstep(1.0, 1.0 + TL_SPRAY_CROSS_LATE, u)) * tall;
     *hold = start * tall *
-            (1.0 - smoothstep(1.0 + TL_SPRAY_CROSS_LATE, 1.0 + 2.0 * TL_SPRAY_CROSS_LATE, u));
+            (1.0 - tl_smoothstep(1.0 + TL_SPRAY_CROSS_LATE, 1.0 + 2.0 * TL_SPRAY_CROSS_LATE, u));
     if (!(strength > 0.0))
         return 0.0;
     double k = u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u, at[3];
@@ -201,7 +196,7 @@ static bool landing_at(const tl_giant_spray *sp, const tl_giant_lip *lip, double
     *ts = lip->center[0] + lip->radius * (TL_GIANT_LIP_THROW * sin(lip->to) + ahead) - s;
     *ty = lip->center[1] + lip->radius * (cos(lip->to) + TL_SPRAY_SPLASH_RISE * lip->spent) - y;
     *r = TL_SPRAY_LANDING_RADIUS * lip->radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip->spent);
-    *peak = TL_SPRAY_LANDING_GAIN * sp->amount * smoothstep(0.5, 1.0, lip->progress) *
+    *peak = TL_SPRAY_LANDING_GAIN * sp->amount * tl_smoothstep(0.5, 1.0, lip->progress) *
             (1.0 - lip->spent * lip->spent);
     return true;
 }
@@ -247,20 +242,20 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double top_s, height;
         double top_y = crest_top(g, w, sp->base, &top_s, &height);
         double dp, breaking = g->breaks ? tl_giant_break_progress(g, w, &dp) : 0.0;
-        double source = smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / g->amplitude) *
+        double source = tl_smoothstep(TL_SPRAY_FROM, TL_SPRAY_FULL, height / g->amplitude) *
                         (0.4 + 0.6 * breaking);
         double back = top_s - s, up = y - top_y;
         double rise = plume_rise(height, sp->reach);
         double lift = TL_SPRAY_LIFT * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
-        double plume = smoothstep(-0.05 * height, 0.05 * height, back) *
+        double plume = tl_smoothstep(-0.05 * height, 0.05 * height, back) *
                        exp(-fmax(back, 0.0) / sp->reach) *
-                       (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
+                       (1.0 - tl_smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
                        tl_giant_spray_layer(up - lift, rise + 1e-6, span);
         /* Streaks drawn out along the wind, narrow across the crest. */
         double drifted = back + sp->drift;
-        double wisps = smoothstep(0.3, 0.75,
-                                  0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
-                                      0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
+        double wisps = tl_smoothstep(0.3, 0.75,
+                                     0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
+                                         0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
         density += sp->amount * source * plume * wisps;
         /* The lip's landing. */
         tl_giant_lip lip;
@@ -275,7 +270,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                             tl_noise_value(w / 1.6 - 2.0, ty / 1.6 + 4.0);
             double grain = tl_noise_value(w / 0.5 - 3.0, (ts + ty) / 0.5);
             density += peak * exp(-(ts * ts + ty * ty) / (r * r)) *
-                       smoothstep(0.12, 0.45, (0.8 + 0.2 * grain) * billow + 0.1 * grain);
+                       tl_smoothstep(0.12, 0.45, (0.8 + 0.2 * grain) * billow + 0.1 * grain);
         }
     }
     if (sp->bow_amount > 0.0) {

@@ -1,13 +1,8 @@
 /* The Kelvin wake's waves (tl_kelvin.h). */
 #include "tl_kelvin.h"
+#include "tl_glsl.h"
 
 #include <math.h>
-
-static double smoothstep(double e0, double e1, double x)
-{
-    double t = fmin(fmax((x - e0) / (e1 - e0), 0.0), 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
 
 void tl_kelvin_slope(double behind, double across, double speed, double length, double footprint,
                      double slope[2])
@@ -30,10 +25,10 @@ void tl_kelvin_slope(double behind, double across, double speed, double length, 
      * past a wavelength; taller near the cusp, where the two systems
      * meet, and faded in just inside it. */
     double height = TL_KELVIN_HEIGHT * length * f * f * sqrt(wavelength / (wavelength + distance));
-    height *=
-        (1.0 + TL_KELVIN_CUSP_GAIN * (1.0 - smoothstep(0.0, 0.3, c))) * smoothstep(0.0, 0.04, c);
+    height *= (1.0 + TL_KELVIN_CUSP_GAIN * (1.0 - tl_smoothstep(0.0, 0.3, c))) *
+              tl_smoothstep(0.0, 0.04, c);
     /* Faded in over the hull's length behind the stern. */
-    height *= smoothstep(0.0, length, behind);
+    height *= tl_smoothstep(0.0, length, behind);
     double root = sqrt(c);
     for (int system = 0; system < 2; system++) {
         /* tan(theta) of the wave that is stationary here: 2 r t^2 - t + r = 0. */
@@ -47,7 +42,8 @@ void tl_kelvin_slope(double behind, double across, double speed, double length, 
         double secant = sqrt(1.0 + t * t);
         double k = k0 * secant * secant; /* the wave's number: k0 / cos^2 theta */
         /* Shorter than four footprints: faded before a pixel aliases them. */
-        double resolved = footprint > 0.0 ? 1.0 - smoothstep(0.25, 0.5, k * footprint / M_PI) : 1.0;
+        double resolved =
+            footprint > 0.0 ? 1.0 - tl_smoothstep(0.25, 0.5, k * footprint / M_PI) : 1.0;
         if (resolved <= 0.0)
             continue;
         double phase = k0 * (behind + across * t) * secant;
@@ -71,12 +67,13 @@ double tl_kelvin_whitecap(double behind, double across, double speed, double len
     if (c <= 0.0 || r < 1e-9)
         return 0.0;
     double f = fmin(speed / sqrt(g * length) / TL_KELVIN_FROUDE, 1.0);
-    double cusp = (1.0 - smoothstep(0.0, TL_KELVIN_WHITECAP_CUSP, c)) * smoothstep(0.0, 0.04, c);
+    double cusp =
+        (1.0 - tl_smoothstep(0.0, TL_KELVIN_WHITECAP_CUSP, c)) * tl_smoothstep(0.0, 0.04, c);
     /* The divergent waves' phase; their height goes as its cosine. */
     double t = (1.0 + sqrt(c)) / (4.0 * r);
     double secant = sqrt(1.0 + t * t);
     double phase = k0 * (behind + fabs(across) * t) * secant;
-    return f * f * cusp * smoothstep(0.0, length, behind) *
+    return f * f * cusp * tl_smoothstep(0.0, length, behind) *
            exp(-behind / (TL_KELVIN_WHITECAP_LENGTHS * length)) *
-           smoothstep(0.75, 0.98, cos(phase));
+           tl_smoothstep(0.75, 0.98, cos(phase));
 }
