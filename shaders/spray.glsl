@@ -40,7 +40,7 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         float reach = u_giant_spray.y;
         float back = top_s - sw.x, up = p.y - top_y;
         float rise = TL_SPRAY_RISE * (height + reach);
-        float lift = TL_SPRAY_LIFT * rise * min(max(back, 0.0) / reach, 1.0);
+        float lift = TL_SPRAY_LIFT * rise * sqrt(min(max(back, 0.0) / reach, 1.0));
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
                       (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * reach))) *
@@ -50,7 +50,8 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         float wisps = smoothstep(0.3, 0.75,
                                  0.65 * foam_noise(vec2(sw.y / 0.9, drifted / 6.0 + up / 2.0)) +
                                      0.35 * foam_noise(vec2(sw.y / 0.4, drifted / 2.5 - up / 0.8)));
-        density += u_giant_spray.x * source * plume * wisps;
+        density += TL_SPRAY_PLUME_GAIN * u_giant_spray.x * source * plume *
+                   (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
 #ifdef TL_FEATURE_GIANT_LIP
         // Where the lip lands, whitewater erupts.
         GiantLip lip = giant_lip_at(sw.y);

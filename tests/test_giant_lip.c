@@ -320,7 +320,8 @@ static void test_spray_density(void)
                 double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
                 double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
                 double d = tl_giant_spray_density(&sp, &g, x, y, z, 0.0);
-                CHECK(d >= 0.0 && d <= sp.amount); /* no bow here: the spindrift alone */
+                /* no bow here: the spindrift alone */
+                CHECK(d >= 0.0 && d <= TL_SPRAY_PLUME_GAIN * sp.amount);
                 if (sv > top_s + 2.0)
                     ahead = fmax(ahead, d);
                 else
@@ -330,9 +331,35 @@ static void test_spray_density(void)
             }
     }
     printf("spray: densest behind the crest %.3f, ahead of it %.3g\n", most, ahead);
-    CHECK(most > 0.3);
+    CHECK(most > 0.3 * TL_SPRAY_PLUME_GAIN);
     CHECK(ahead < 1e-3 * most);
     CHECK(outside == 0);
+    /* The plume leaves the top steeply: a quarter of its reach back, its
+     * densest height stands half its full lift over the crest's top (the
+     * square root's), where a lift in proportion would stand a quarter. */
+    {
+        double lambda = tl_giant_lambda(&g, 0.0, &dl);
+        double top_s = tl_giant_bow(&g, 0.0, &db) + lambda * g.curl / g.k - 0.25 * sp.reach;
+        double top_y = base_of(&s) + lambda * g.amplitude;
+        double rise = TL_SPRAY_RISE * (lambda * g.amplitude + sp.reach), best = -1.0, best_up = 0.0;
+        for (int j = 0; j <= 400; j++) {
+            double up = -rise + j * (TL_SPRAY_LIFT + 1.0) * rise / 400.0, sum = 0.0;
+            for (int k = 0; k < 64; k++) { /* across the crest: the streaks' mean */
+                double w = -8.0 + 16.0 * k / 63.0;
+                sum += tl_giant_spray_density(
+                    &sp, &g, g.origin[0] + g.dir[0] * top_s + g.across[0] * w, top_y + up,
+                    g.origin[1] + g.dir[1] * top_s + g.across[1] * w, 0.0);
+            }
+            if (sum > best) {
+                best = sum;
+                best_up = up;
+            }
+        }
+        printf("spray: a quarter reach back, densest %.2f m over the top (full lift %.2f m)\n",
+               best_up, TL_SPRAY_LIFT * rise);
+        CHECK(best > 0.0);
+        CHECK(best_up > 0.4 * TL_SPRAY_LIFT * rise && best_up < 0.6 * TL_SPRAY_LIFT * rise);
+    }
     /* A bow on the rising face ahead of the crest, heading into it. */
     double sv = g.curl / g.k + 10.0;
     double bow[3] = {g.origin[0] + g.dir[0] * sv + g.across[0] * 10.0, 5.0,
@@ -516,8 +543,11 @@ static void test_crossing_burst(void)
     CHECK(fabs(sp.bow_radius - TL_SPRAY_CROSS_RADIUS * L) < 1e-9);
     CHECK(fabs(sp.bow[1] - (top_y - 0.1 * sp.bow_radius)) < 1e-9); /* a skirt at the crest */
     /* Split into a wing each side of the hull: over the hull's centre line
-     * the spray is thin, out at the wings it is thick. */
+     * the spray is thin, out at the wings it is thick (the burst's alone:
+     * the spindrift without a hull is taken off). */
     CHECK(fabs(sp.bow_split - TL_SPRAY_CROSS_SPLIT * L) < 1e-9);
+    tl_giant_spray plume;
+    tl_giant_spray_prepare(&plume, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
     double centre_line = 0.0, wings = 0.0;
     for (int i = 0; i < 21; i++)
         for (int j = 0; j < 11; j++)
@@ -526,7 +556,8 @@ static void test_crossing_burst(void)
                 double out = side * sp.bow_split;
                 double x = sp.bow[0] + sp.heading[0] * a + sp.heading[1] * out;
                 double z = sp.bow[2] + sp.heading[1] * a - sp.heading[0] * out;
-                double d = tl_giant_spray_density(&sp, &g, x, sp.bow[1] + up, z, 0.0);
+                double d = tl_giant_spray_density(&sp, &g, x, sp.bow[1] + up, z, 0.0) -
+                           tl_giant_spray_density(&plume, &g, x, sp.bow[1] + up, z, 0.0);
                 *(side == 0 ? &centre_line : &wings) += side == 0 ? d : 0.5 * d;
             }
     printf("crossing burst split %.2f m: over the hull's centre line %.3f of the wings' spray\n",
@@ -838,7 +869,7 @@ static void test_gpu_mirror(tl_renderer *r)
         CHECK(present > N / 2);
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
-        CHECK(worst_density <= 2e-3 * s.giant.spray);
+        CHECK(worst_density <= 2e-3 * TL_SPRAY_PLUME_GAIN * s.giant.spray);
         CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
         CHECK(worst_shade <= 2e-3);
         CHECK(landing > 0.1);            /* the landing's cloud is among the points compared */

@@ -246,7 +246,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                         (0.4 + 0.6 * breaking);
         double back = top_s - s, up = y - top_y;
         double rise = plume_rise(height, sp->reach);
-        double lift = TL_SPRAY_LIFT * rise * fmin(fmax(back, 0.0) / sp->reach, 1.0);
+        double lift = TL_SPRAY_LIFT * rise * sqrt(fmin(fmax(back, 0.0) / sp->reach, 1.0));
         double plume = tl_smoothstep(-0.05 * height, 0.05 * height, back) *
                        exp(-fmax(back, 0.0) / sp->reach) *
                        (1.0 - tl_smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
@@ -256,7 +256,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double wisps = tl_smoothstep(0.3, 0.75,
                                      0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
                                          0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
-        density += sp->amount * source * plume * wisps;
+        density += TL_SPRAY_PLUME_GAIN * sp->amount * source * plume *
+                   (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
         /* The lip's landing. */
         tl_giant_lip lip;
         tl_giant_lip_at(g, w, sp->base, &lip);

@@ -17,14 +17,26 @@
 /* The plume's thickness: this share of the crest's height plus its
  * reach. The plume ends TL_SPRAY_REACHES reaches behind the crest (faded
  * to nothing over its last two fifths), and rises TL_SPRAY_LIFT of its
- * thicknesses over its first reach. Half as thick, rising 1.5 of itself
- * over two thirds of the reach, it hugged the crest: from in front of
- * the wave only a faint haze showed along the top. Its box reaches
+ * thicknesses over its first reach, as the square root of how far back
+ * it has come: the wind meeting the face is turned up over the crest, so
+ * the spray leaves the top steeply before the wind lays it back. Half as
+ * thick, rising 1.5 of itself over two thirds of the reach, it hugged the
+ * crest: from in front of the wave only a faint haze showed along the
+ * top; rising in proportion to the distance, it lay behind the top, and
+ * from the foot of the face nothing of it showed. Its box reaches
  * TL_SPRAY_BOX_RISES thicknesses below and above it. */
 #define TL_SPRAY_RISE      0.1
 #define TL_SPRAY_BOX_RISES 2.5
 #define TL_SPRAY_REACHES   2.5
 #define TL_SPRAY_LIFT      2.5
+/* The plume's density at giant.spray 1, at its middle just behind the
+ * crest (the other clouds' gains below are per unit of giant.spray too).
+ * At 1 the plume was a faint beige haze over the crest's top (judges: "no
+ * spindrift anywhere"); backlit spindrift glows. */
+#define TL_SPRAY_PLUME_GAIN 6.0
+/* Between its streaks the plume keeps this share of its density: with
+ * none, the crest's dark top showed through the gaps as a dotted kerb. */
+#define TL_SPRAY_WISP_FLOOR 0.3
 /* The crest makes spindrift once its envelope is this high (a share of
  * the wave's full height), fully at the second. */
 #define TL_SPRAY_FROM 0.3
@@ -43,7 +55,7 @@
  * the bow alone ended as the bow cleared the face: the boat sat on the
  * crest's ridge dry, a model pasted on the water. */
 #define TL_SPRAY_CROSS_RADIUS 0.4
-/* The crossing's burst is this much denser than the spindrift: the
+/* The crossing's burst's density per unit of giant.spray: the
  * crest's top thrown up by the hull, a white skirt around it (at 25 times
  * the boat it lifts over the crest was washed out to a white ghost). */
 #define TL_SPRAY_CROSS_GAIN 10.0
@@ -70,14 +82,14 @@
 #define TL_SPRAY_SPLASH_RISE    0.8
 #define TL_SPRAY_SPLASH_GROW    1.2
 #define TL_SPRAY_SPLASH_AHEAD   0.6
-/* The landing's whitewater is this much denser than the spindrift: an
+/* The landing's whitewater's density per unit of giant.spray: an
  * opaque, churning cloud, not a veil (at 30, seen against the sky from
  * the low shot, it read as steam). */
 #define TL_SPRAY_LANDING_GAIN 60.0
 /* The landing's billows (a smoothstep of crossed noises) average about
  * this: what its self-shade takes for the noise. */
 #define TL_SPRAY_LANDING_MEAN 0.47
-/* The burst is this much denser than the spindrift: thrown water, not
+/* The bow's burst's density per unit of giant.spray: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  12.0
 #define TL_SPRAY_BOW_SLOPE 0.8
