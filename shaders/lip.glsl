@@ -31,13 +31,22 @@ float giant_lip_along(float angle)
     return clamp((angle - radians(TL_GIANT_LIP_ROOT)) / radians(TL_GIANT_LIP_SWEEP), 0.0, 1.0);
 }
 
-// The tube's half thickness at `angle` along its arc before its lumps:
-// it thins from the root to TL_GIANT_LIP_TIP of that at the end of the
-// whole sweep, and evens out as it collapses into whitewater.
-float giant_lip_half_smooth(GiantLip lip, float angle)
+// The tube's half thickness at `angle` along its arc before its lumps
+// and its edge: it thins from the root to TL_GIANT_LIP_TIP of that at the
+// end of the whole sweep, and evens out as it collapses into whitewater.
+float giant_lip_half_body(GiantLip lip, float angle)
 {
     float along = giant_lip_along(angle);
     return lip.thickness * (1.0 - (1.0 - TL_GIANT_LIP_TIP) * along * (1.0 - lip.spent));
+}
+
+// The body thinned toward the free end, however short the throw
+// (TL_GIANT_LIP_EDGE over the last TL_GIANT_LIP_EDGE_ARC degrees).
+float giant_lip_half_smooth(GiantLip lip, float angle)
+{
+    float edge = smoothstep(0.0, radians(TL_GIANT_LIP_EDGE_ARC), lip.to - angle);
+    return giant_lip_half_body(lip, angle) *
+           (1.0 - (1.0 - TL_GIANT_LIP_EDGE) * (1.0 - edge) * (1.0 - lip.spent));
 }
 
 // How much the lumps roughen the tube at `angle` (tl_giant_lip_roughness:
@@ -86,7 +95,7 @@ GiantLip giant_lip_at(float w)
     // The tube's outer surface passes through the crest's top at the
     // anchor: the lip is the crest's top thrown on, not a tube laid on it.
     lip.center = vec2(top_s, top_y) -
-                 (lip.radius + giant_lip_half_smooth(lip, anchor)) * vec2(sin(anchor), cos(anchor));
+                 (lip.radius + giant_lip_half_body(lip, anchor)) * vec2(sin(anchor), cos(anchor));
     float sweep = lip.progress * tall * radians(TL_GIANT_LIP_SWEEP);
     lip.to = radians(TL_GIANT_LIP_ROOT) + sweep;
     lip.from = radians(TL_GIANT_LIP_ROOT) +
@@ -124,7 +133,14 @@ GiantLip giant_lip_at(float w)
     // along w.
     float lumped = lip.thickness * (1.0 + TL_GIANT_LIP_LUMP);
     float lump_rate = lumped * 3.0 * TL_GIANT_LIP_LUMP / TL_GIANT_LIP_LUMP_CELL;
-    lip.slope = 2.0 * lump_rate;
+    // The edge thins the tube along the arc at most 1.5 (1 - EDGE) of it
+    // per EDGE_ARC (the smoothstep's steepest; on the inner side, twice
+    // that per metre), and along w as the free end sweeps (it follows the
+    // arc's end) and as the collapse evens it out.
+    float edge_thin = lumped * (1.0 - TL_GIANT_LIP_EDGE);
+    float edge_arc = 1.5 / radians(TL_GIANT_LIP_EDGE_ARC);
+    lip.slope = 2.0 * lump_rate + 2.0 * edge_thin * edge_arc / max(lip.radius, 1.0e-3);
+    tip += edge_thin * (1.0 + TL_GIANT_LIP_SWELL) * (edge_arc * sweep_rate + spent_rate);
     lip.rate = tip + abs(db) + lump_rate +
                lumped * TL_GIANT_LIP_LUMP * 1.5 / TL_GIANT_LIP_ROUGHEN * spent_rate +
                abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +

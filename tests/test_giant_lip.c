@@ -207,8 +207,10 @@ static void test_lip_barrel(void)
 }
 
 /* The lip's outer surface passes through the crest's top at its anchor
- * angle; the lip is thrown further the older the break, and exists only
- * from the break's start until it has thinned away. */
+ * angle once the throw has passed it by the edge's arc (before, the thin
+ * edge lies inside the crest, under its top); the lip is thrown further
+ * the older the break, and exists only from the break's start until it
+ * has thinned away. */
 static void test_lip_life(void)
 {
     tl_scene s;
@@ -219,15 +221,50 @@ static void test_lip_life(void)
     tl_giant_lip lip;
     tl_giant_lip_at(&g, w, base_of(&s), &lip);
     CHECK(lip.present);
-    double lambda = tl_giant_lambda(&g, w, &dl);
-    double top_s = tl_giant_bow(&g, w, &db) + lambda * g.curl / g.k;
-    double top_y = base_of(&s) + lambda * g.amplitude;
-    double anchor = TL_GIANT_LIP_ANCHOR * M_PI / 180.0;
-    /* The tube's outer surface, not its centre line, holds the crest's top. */
-    double outer = lip.radius + tl_giant_lip_half_thickness(&lip, anchor);
-    CHECK_NEAR(lip.center[0] + outer * sin(anchor), top_s, 1e-9);
-    CHECK_NEAR(lip.center[1] + outer * cos(anchor), top_y, 1e-9);
-    CHECK_NEAR(tl_giant_lip_distance(&lip, top_s, top_y), 0.0, 1e-9);
+    double anchor = TL_GIANT_LIP_ANCHOR * M_PI / 180.0,
+           edge_arc = TL_GIANT_LIP_EDGE_ARC * M_PI / 180.0;
+    /* The tube's outer surface, not its centre line, holds the crest's top
+     * (0.7 of the throw's time into the break). */
+    {
+        tl_scene later;
+        breaking_scene(&later, 10.0, 0.7 * g.throw_time, 0.0, 0.0);
+        tl_giant gl;
+        tl_giant_prepare(&gl, &later.giant, later.time);
+        tl_giant_lip held;
+        tl_giant_lip_at(&gl, w, base_of(&later), &held);
+        double lam = tl_giant_lambda(&gl, w, &dl);
+        double hs = tl_giant_bow(&gl, w, &db) + lam * gl.curl / gl.k;
+        double hy = base_of(&later) + lam * gl.amplitude;
+        CHECK(held.present && held.to > anchor + edge_arc);
+        double outer = held.radius + tl_giant_lip_half_thickness(&held, anchor);
+        CHECK_NEAR(held.center[0] + outer * sin(anchor), hs, 1e-9);
+        CHECK_NEAR(held.center[1] + outer * cos(anchor), hy, 1e-9);
+        CHECK_NEAR(tl_giant_lip_distance(&held, hs, hy), 0.0, 1e-9);
+    }
+    /* Where the throw has just passed the top (toward the peel's front),
+     * the edge is thin: a point on the arc's centre line past its end is
+     * covered by less than the root's half thickness, and the crest's top
+     * lies outside the tube. */
+    double front = w, step = 0.05;
+    tl_giant_lip at_front;
+    for (double x = w; x < w + 40.0; x += step) {
+        tl_giant_lip_at(&g, x, base_of(&s), &at_front);
+        if (at_front.present && at_front.to > anchor + 0.2 * edge_arc)
+            front = x;
+    }
+    tl_giant_lip_at(&g, front, base_of(&s), &at_front);
+    double root = at_front.thickness *
+                  (1.0 - (1.0 - TL_GIANT_LIP_TIP) * (anchor - TL_GIANT_LIP_ROOT * M_PI / 180.0) /
+                             (TL_GIANT_LIP_SWEEP * M_PI / 180.0));
+    double edge = tl_giant_lip_half_thickness(&at_front, at_front.to);
+    printf("lip at the peel's front (%.2f m from the peak, %.1f deg past the top): edge %.3f m "
+           "against a root of %.3f m\n",
+           front - w, (at_front.to - anchor) * 180.0 / M_PI, edge, root);
+    CHECK(at_front.to - anchor < edge_arc);
+    CHECK(edge < 0.3 * root); /* fresh, short of the tearing: no lumps here */
+    double lambda_f = tl_giant_lambda(&g, front, &dl);
+    double top_s_f = tl_giant_bow(&g, front, &db) + lambda_f * g.curl / g.k;
+    CHECK(tl_giant_lip_distance(&at_front, top_s_f, base_of(&s) + lambda_f * g.amplitude) > 0.0);
     /* Further from the peak the break is younger: a shorter arc. */
     tl_giant_lip side;
     tl_giant_lip_at(&g, w + 5.0, base_of(&s), &side);

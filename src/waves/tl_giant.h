@@ -126,6 +126,15 @@
  * end of the whole sweep, so the lip reads as a sheet thrown off the crest
  * that thins to an edge, not as a hose of even bore. */
 #define TL_GIANT_LIP_TIP 0.15
+/* Thrown water is thinnest at its leading edge, however short the throw:
+ * over the last TL_GIANT_LIP_EDGE_ARC degrees of its arc the tube thins to
+ * TL_GIANT_LIP_EDGE of itself (evening out as it collapses). Thinned along
+ * the whole sweep alone, a short throw ended as thick as its root: at the
+ * peel's front the lip came out of the crest as a tube cut square
+ * (judges). The arc's centre keeps the root's thickness, so the crest's
+ * top holds the tube's outer surface once the throw is past the arc. */
+#define TL_GIANT_LIP_EDGE     0.2
+#define TL_GIANT_LIP_EDGE_ARC 50.0
 /* The tube grows from nothing over the throw's first TL_GIANT_LIP_GROW
  * (of its progress): at the peel's front the lip rises out of the crest
  * instead of starting as a wall of full thickness. */

@@ -21,12 +21,22 @@ static double lip_along(double angle)
     return along < 0.0 ? 0.0 : along > 1.0 ? 1.0 : along;
 }
 
-/* The tube's half thickness at `angle` before its lumps: it thins along
- * the arc (TL_GIANT_LIP_TIP) and evens out as it collapses. */
-static double lip_half_smooth(const tl_giant_lip *lip, double angle)
+/* The tube's half thickness at `angle` before its lumps and its edge: it
+ * thins along the whole sweep (TL_GIANT_LIP_TIP) and evens out as it
+ * collapses. */
+static double lip_half_body(const tl_giant_lip *lip, double angle)
 {
     return lip->thickness *
            (1.0 - (1.0 - TL_GIANT_LIP_TIP) * lip_along(angle) * (1.0 - lip->spent));
+}
+
+/* The body's half thickness thinned toward the free end
+ * (TL_GIANT_LIP_EDGE). */
+static double lip_half_smooth(const tl_giant_lip *lip, double angle)
+{
+    double edge = tl_smoothstep(0.0, TL_GIANT_LIP_EDGE_ARC * (M_PI / 180.0), lip->to - angle);
+    return lip_half_body(lip, angle) *
+           (1.0 - (1.0 - TL_GIANT_LIP_EDGE) * (1.0 - edge) * (1.0 - lip->spent));
 }
 
 void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip)
@@ -56,7 +66,7 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     double top_s = tl_giant_bow(g, w, &db) + lambda * g->curl / g->k, top_y = base + height;
     /* The tube's outer surface passes through the crest's top at the
      * anchor: the lip is the crest's top thrown on, not a tube laid on it. */
-    double outer = lip->radius + lip_half_smooth(lip, anchor);
+    double outer = lip->radius + lip_half_body(lip, anchor);
     lip->center[0] = top_s - outer * sin(anchor);
     lip->center[1] = top_y - outer * cos(anchor);
     double sweep = progress * tall * TL_GIANT_LIP_SWEEP * (M_PI / 180.0);
