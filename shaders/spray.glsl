@@ -43,6 +43,8 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         float lift = TL_SPRAY_LIFT * rise * sqrt(min(max(back, 0.0) / reach, 1.0));
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
+                      (1.0 + TL_SPRAY_ROOT_GAIN *
+                                 exp(-max(back, 0.0) / (TL_SPRAY_ROOT_REACH * reach))) *
                       (1.0 - smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * reach))) *
                       giant_spray_layer(up - lift, rise + 1.0e-6, span);
         // Streaks drawn out along the wind, narrow across the crest.
@@ -50,6 +52,14 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         float wisps = smoothstep(0.3, 0.75,
                                  0.65 * foam_noise(vec2(sw.y / 0.9, drifted / 6.0 + up / 2.0)) +
                                      0.35 * foam_noise(vec2(sw.y / 0.4, drifted / 2.5 - up / 0.8)));
+        // No spindrift off the stretch of crest a hull has broken.
+        if (u_giant_spray_heading.w > 0.0) {
+            float bw = giant_coords(u_giant_spray_bow.xz).y;
+            source *= 1.0 - u_giant_spray_heading.w *
+                                (1.0 - smoothstep(TL_SPRAY_SHELTER_IN * u_giant_spray.w,
+                                                  TL_SPRAY_SHELTER_OUT * u_giant_spray.w,
+                                                  abs(sw.y - bw)));
+        }
         density += TL_SPRAY_PLUME_GAIN * u_giant_spray.x * source * plume *
                    (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
 #ifdef TL_FEATURE_GIANT_LIP

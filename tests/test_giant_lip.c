@@ -358,7 +358,8 @@ static void test_spray_density(void)
                 double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
                 double d = tl_giant_spray_density(&sp, &g, x, y, z, 0.0);
                 /* no bow here: the spindrift alone */
-                CHECK(d >= 0.0 && d <= TL_SPRAY_PLUME_GAIN * sp.amount);
+                CHECK(d >= 0.0 &&
+                      d <= TL_SPRAY_PLUME_GAIN * (1.0 + TL_SPRAY_ROOT_GAIN) * sp.amount);
                 if (sv > top_s + 2.0)
                     ahead = fmax(ahead, d);
                 else
@@ -583,8 +584,9 @@ static void test_crossing_burst(void)
      * the spray is thin, out at the wings it is thick (the burst's alone:
      * the spindrift without a hull is taken off). */
     CHECK(fabs(sp.bow_split - TL_SPRAY_CROSS_SPLIT * L) < 1e-9);
-    tl_giant_spray plume;
+    tl_giant_spray plume, open = sp;
     tl_giant_spray_prepare(&plume, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
+    open.shelter = 0.0; /* the burst over the whole plume */
     double centre_line = 0.0, wings = 0.0;
     for (int i = 0; i < 21; i++)
         for (int j = 0; j < 11; j++)
@@ -593,13 +595,35 @@ static void test_crossing_burst(void)
                 double out = side * sp.bow_split;
                 double x = sp.bow[0] + sp.heading[0] * a + sp.heading[1] * out;
                 double z = sp.bow[2] + sp.heading[1] * a - sp.heading[0] * out;
-                double d = tl_giant_spray_density(&sp, &g, x, sp.bow[1] + up, z, 0.0) -
+                double d = tl_giant_spray_density(&open, &g, x, sp.bow[1] + up, z, 0.0) -
                            tl_giant_spray_density(&plume, &g, x, sp.bow[1] + up, z, 0.0);
                 *(side == 0 ? &centre_line : &wings) += side == 0 ? d : 0.5 * d;
             }
     printf("crossing burst split %.2f m: over the hull's centre line %.3f of the wings' spray\n",
            sp.bow_split, centre_line / wings);
     CHECK(wings > 0.0 && centre_line < 0.2 * wings);
+    /* The hull has broken the crest's top: behind it, beyond the burst's
+     * reach, the plume is gone across the hull, and whole a few radii out
+     * along the crest. */
+    CHECK(sp.shelter > 0.99);
+    {
+        double bw =
+            g.across[0] * (sp.bow[0] - g.origin[0]) + g.across[1] * (sp.bow[2] - g.origin[1]);
+        double behind = top_s - 2.0 * sp.reach, kept[2] = {0.0, 0.0}, whole[2] = {0.0, 0.0};
+        for (int k = 0; k < 2; k++)
+            for (int j = 0; j < 60; j++) {
+                double across = bw + k * 2.0 * TL_SPRAY_SHELTER_OUT * sp.bow_radius;
+                double x = g.origin[0] + g.dir[0] * behind + g.across[0] * across;
+                double z = g.origin[1] + g.dir[1] * behind + g.across[1] * across;
+                double y = top_y - 2.0 + 0.25 * j;
+                kept[k] += tl_giant_spray_density(&sp, &g, x, y, z, 0.0);
+                whole[k] += tl_giant_spray_density(&plume, &g, x, y, z, 0.0);
+            }
+        printf("spindrift behind the hull: %.3g of the plume; %.1f radii along the crest %.3g\n",
+               kept[0] / whole[0], 2.0 * TL_SPRAY_SHELTER_OUT, kept[1] / whole[1]);
+        CHECK(whole[0] > 0.0 && kept[0] < 0.02 * whole[0]);
+        CHECK(whole[1] > 0.0 && fabs(kept[1] - whole[1]) < 1e-9 * whole[1]);
+    }
     /* The crest 1.5 hull lengths beyond the bow: nothing from the crossing. */
     double far_mid = -(0.5 + 1.5) * L;
     tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, AT(far_mid));
@@ -906,7 +930,8 @@ static void test_gpu_mirror(tl_renderer *r)
         CHECK(present > N / 2);
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
-        CHECK(worst_density <= 2e-3 * TL_SPRAY_PLUME_GAIN * s.giant.spray);
+        CHECK(worst_density <=
+              2e-3 * TL_SPRAY_PLUME_GAIN * (1.0 + TL_SPRAY_ROOT_GAIN) * s.giant.spray);
         CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
         CHECK(worst_shade <= 2e-3);
         CHECK(landing > 0.1);            /* the landing's cloud is among the points compared */

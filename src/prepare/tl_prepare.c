@@ -142,7 +142,7 @@ static void prepare_spray(const tl_scene *s, const tl_giant *g, tl_frame_uniform
     u->giant_spray_heading[0] = (float)sp.heading[0];
     u->giant_spray_heading[1] = (float)sp.heading[1];
     u->giant_spray_heading[2] = (float)sp.bow_split;
-    u->giant_spray_heading[3] = 0.0f;
+    u->giant_spray_heading[3] = (float)sp.shelter;
 }
 
 /* The sun's light below a flat surface (the way it travels, refracted)

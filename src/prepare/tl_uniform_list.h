@@ -93,7 +93,7 @@
     X(VEC4, giant_spray, 0, TL_FEATURE_GIANT_SPRAY, "(amount, reach, drift, bow radius)") \
     X(VEC4, giant_spray_box, 0, TL_FEATURE_GIANT_SPRAY, "the crest's spray box (s low, s high, y low, y high)") \
     X(VEC4, giant_spray_bow, 0, TL_FEATURE_GIANT_SPRAY, "the bow's burst: camera-relative centre, amount") \
-    X(VEC4, giant_spray_heading, 0, TL_FEATURE_GIANT_SPRAY, "the boat's heading, unit (x, z); the burst's split, metres") \
+    X(VEC4, giant_spray_heading, 0, TL_FEATURE_GIANT_SPRAY, "the boat's heading, unit (x, z); the burst's split, metres; the crossing's shelter") \
     X(FLOAT, spray_step, 0, 0, "quality.spray_step: metres a step of the spray's march") \
     X(VEC4, giant_foam, 0, TL_FEATURE_GIANT_WAVE, "(Jacobian where foam starts, trail metres, amount, breaking)") \
     X(VEC4, giant_scatter, 0, TL_FEATURE_GIANT_WAVE, "(strength, forward g, backward g, giant.caustics)") \

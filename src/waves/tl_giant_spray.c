@@ -107,6 +107,7 @@ static void prepare_burst(tl_giant_spray *sp, const tl_giant *g, double amount,
         sp->bow[i] = at_bow[i] + k * (at_crest[i] - at_bow[i]);
     sp->bow_radius = r_bow + k * (r_crest - r_bow);
     sp->bow_split = k * split; /* the bow's burst is one sheet */
+    sp->shelter = crest;
     sp->bow_amount = amount * fmax(TL_SPRAY_BOW_GAIN * bow, TL_SPRAY_CROSS_GAIN * crest);
     sp->heading[0] = hull->heading[0];
     sp->heading[1] = hull->heading[1];
@@ -247,15 +248,24 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double back = top_s - s, up = y - top_y;
         double rise = plume_rise(height, sp->reach);
         double lift = TL_SPRAY_LIFT * rise * sqrt(fmin(fmax(back, 0.0) / sp->reach, 1.0));
-        double plume = tl_smoothstep(-0.05 * height, 0.05 * height, back) *
-                       exp(-fmax(back, 0.0) / sp->reach) *
-                       (1.0 - tl_smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
-                       tl_giant_spray_layer(up - lift, rise + 1e-6, span);
+        double plume =
+            tl_smoothstep(-0.05 * height, 0.05 * height, back) * exp(-fmax(back, 0.0) / sp->reach) *
+            (1.0 + TL_SPRAY_ROOT_GAIN * exp(-fmax(back, 0.0) / (TL_SPRAY_ROOT_REACH * sp->reach))) *
+            (1.0 - tl_smoothstep(0.6, 1.0, back / (TL_SPRAY_REACHES * sp->reach))) *
+            tl_giant_spray_layer(up - lift, rise + 1e-6, span);
         /* Streaks drawn out along the wind, narrow across the crest. */
         double drifted = back + sp->drift;
         double wisps = tl_smoothstep(0.3, 0.75,
                                      0.65 * tl_noise_value(w / 0.9, drifted / 6.0 + up / 2.0) +
                                          0.35 * tl_noise_value(w / 0.4, drifted / 2.5 - up / 0.8));
+        if (sp->shelter > 0.0) {
+            double bw = g->across[0] * (sp->bow[0] - g->origin[0]) +
+                        g->across[1] * (sp->bow[2] - g->origin[1]);
+            source *=
+                1.0 - sp->shelter * (1.0 - tl_smoothstep(TL_SPRAY_SHELTER_IN * sp->bow_radius,
+                                                         TL_SPRAY_SHELTER_OUT * sp->bow_radius,
+                                                         fabs(w - bw)));
+        }
         density += TL_SPRAY_PLUME_GAIN * sp->amount * source * plume *
                    (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
         /* The lip's landing. */

@@ -35,8 +35,23 @@
  * spindrift anywhere"); backlit spindrift glows. */
 #define TL_SPRAY_PLUME_GAIN 6.0
 /* Between its streaks the plume keeps this share of its density: with
- * none, the crest's dark top showed through the gaps as a dotted kerb. */
-#define TL_SPRAY_WISP_FLOOR 0.3
+ * none (and at 0.3), the crest's dark top showed through the gaps as a
+ * dotted kerb. */
+#define TL_SPRAY_WISP_FLOOR 0.65
+/* The spray is densest where it leaves the crest: 1 + TL_SPRAY_ROOT_GAIN
+ * times the plume's density there, falling back to the plume's over
+ * TL_SPRAY_ROOT_REACH of its reach. Thinner, the veil over the crest's
+ * rounded top let it through as a brown-grey stripe (judges). */
+#define TL_SPRAY_ROOT_GAIN  2.0
+#define TL_SPRAY_ROOT_REACH 0.25
+/* Where the crest passes under a hull, the hull has broken its top, and
+ * no spindrift comes off that stretch: the plume is gone within
+ * TL_SPRAY_SHELTER_IN of the burst's radius across the crest from its
+ * centre, whole again at TL_SPRAY_SHELTER_OUT, by the crossing's
+ * strength. Blown back over the boat, the denser plume veiled its
+ * foredeck. */
+#define TL_SPRAY_SHELTER_IN  0.6
+#define TL_SPRAY_SHELTER_OUT 1.5
 /* The crest makes spindrift once its envelope is this high (a share of
  * the wave's full height), fully at the second. */
 #define TL_SPRAY_FROM 0.3
@@ -116,6 +131,7 @@ typedef struct tl_giant_spray {
     double bow_radius; /* metres */
     double bow_amount; /* its density, 0 without a burst */
     double bow_split;  /* metres its wings lie out from the hull's centre line (0: one sheet) */
+    double shelter;    /* 0 .. 1: the crossing's strength, which keeps the plume off the hull */
     double heading[2]; /* the boat's heading, unit (x, z) */
     double box[4];     /* (s low, s high, y low, y high) in the wave's coordinates */
 } tl_giant_spray;
