@@ -16,6 +16,15 @@
 // curtain is in shade, lit by the sky: floored at 0.6 of the sun, it read
 // as salmon-pink shells.
 #define TL_GIANT_LIP_BEAM 2.0
+// Where the tube faces down (its normal's height below
+// TL_GIANT_LIP_UNDER_FROM, none of it above TL_GIANT_LIP_UNDER_TO), what
+// it mirrors is the barrel's water, wherever the combing tilts the
+// mirrored ray: a ray off the lip's underside runs into the barrel, onto
+// the face or the lip again. Mirroring the sky wherever that ray rose a
+// little, the combed underside was striped with pale sky, a sheet torn
+// into strips (judges).
+#define TL_GIANT_LIP_UNDER_FROM -0.4
+#define TL_GIANT_LIP_UNDER_TO   0.1
 
 // The lip at camera-relative `hit`, seen along `ray`: water thrown off
 // the crest that mirrors the sky, lit through (it is thin: the sun's light
@@ -94,12 +103,14 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
                (u_giant_scatter.x * daylight);
     vec3 body = u_scatter_color * u_scatter_strength * (u_scatter_base + 0.5);
     // What it mirrors: the sky above, and below (the lip's underside faces
-    // the face and the trough) the lit water of the face, not the sky.
+    // the face and the trough) the lit water of the face, not the sky
+    // (TL_GIANT_LIP_UNDER_*).
     float fresnel = optics_schlick(ray, n);
     vec3 r = normalize(reflect(ray, n));
     vec3 below = layer_emit(TL_LIGHT_BODY, body + lit * (0.25 / TL_PI));
-    vec3 reflection =
-        mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit), smoothstep(-0.1, 0.05, r.y));
+    float sky_share = smoothstep(-0.1, 0.05, r.y) *
+                      smoothstep(TL_GIANT_LIP_UNDER_FROM, TL_GIANT_LIP_UNDER_TO, n.y);
+    vec3 reflection = mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit), sky_share);
     vec3 color =
         fresnel * reflection + (1.0 - fresnel) * layer_emit(TL_LIGHT_BODY, body + lit * phase);
     // Aerated: the thrown sheet takes air as it goes and is white along its
