@@ -40,7 +40,9 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         float reach = u_giant_spray.y;
         float back = top_s - sw.x, up = p.y - top_y;
         float rise = TL_SPRAY_RISE * (height + reach);
-        float lift = TL_SPRAY_LIFT * rise * sqrt(min(max(back, 0.0) / reach, 1.0));
+        // Gusts along the crest (tl_giant_spray_gust).
+        float gust = 1.0 + TL_SPRAY_GUST * (2.0 * foam_noise(vec2(sw.y / TL_SPRAY_GUST_CELL, 41.7)) - 1.0);
+        float lift = TL_SPRAY_LIFT * rise * gust * sqrt(min(max(back, 0.0) / reach, 1.0));
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
                       (1.0 + TL_SPRAY_ROOT_GAIN *
@@ -60,7 +62,7 @@ float giant_spray_sample(vec3 p, float span, out float shade)
                                                   TL_SPRAY_SHELTER_OUT * u_giant_spray.w,
                                                   abs(sw.y - bw)));
         }
-        density += TL_SPRAY_PLUME_GAIN * u_giant_spray.x * source * plume *
+        density += TL_SPRAY_PLUME_GAIN * u_giant_spray.x * gust * source * plume *
                    (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
 #ifdef TL_FEATURE_GIANT_LIP
         // Where the lip lands, whitewater erupts.

@@ -146,7 +146,8 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
         s_lo = fmin(s_lo, top_s - TL_SPRAY_REACHES * sp->reach);
         s_hi = fmax(s_hi, top_s + 0.1 * full);
         y_lo = fmin(y_lo, top_y - TL_SPRAY_BOX_RISES * rise);
-        y_hi = fmax(y_hi, top_y + (TL_SPRAY_LIFT + TL_SPRAY_BOX_RISES) * rise);
+        y_hi =
+            fmax(y_hi, top_y + (TL_SPRAY_LIFT * (1.0 + TL_SPRAY_GUST) + TL_SPRAY_BOX_RISES) * rise);
     }
     if (tall) {
         sp->box[0] = s_lo;
@@ -169,6 +170,11 @@ void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount
     }
     if (hull && hull->length > 0.0)
         prepare_burst(sp, g, amount, hull);
+}
+
+double tl_giant_spray_gust(double w)
+{
+    return 1.0 + TL_SPRAY_GUST * (2.0 * tl_noise_value(w / TL_SPRAY_GUST_CELL, 41.7) - 1.0);
 }
 
 double tl_giant_spray_layer(double x, double r, double span)
@@ -247,7 +253,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                         (0.4 + 0.6 * breaking);
         double back = top_s - s, up = y - top_y;
         double rise = plume_rise(height, sp->reach);
-        double lift = TL_SPRAY_LIFT * rise * sqrt(fmin(fmax(back, 0.0) / sp->reach, 1.0));
+        double gust = tl_giant_spray_gust(w);
+        double lift = TL_SPRAY_LIFT * rise * gust * sqrt(fmin(fmax(back, 0.0) / sp->reach, 1.0));
         double plume =
             tl_smoothstep(-0.05 * height, 0.05 * height, back) * exp(-fmax(back, 0.0) / sp->reach) *
             (1.0 + TL_SPRAY_ROOT_GAIN * exp(-fmax(back, 0.0) / (TL_SPRAY_ROOT_REACH * sp->reach))) *
@@ -266,7 +273,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
                                                          TL_SPRAY_SHELTER_OUT * sp->bow_radius,
                                                          fabs(w - bw)));
         }
-        density += TL_SPRAY_PLUME_GAIN * sp->amount * source * plume *
+        density += TL_SPRAY_PLUME_GAIN * sp->amount * gust * source * plume *
                    (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
         /* The lip's landing. */
         tl_giant_lip lip;

@@ -34,6 +34,13 @@
  * At 1 the plume was a faint beige haze over the crest's top (judges: "no
  * spindrift anywhere"); backlit spindrift glows. */
 #define TL_SPRAY_PLUME_GAIN 6.0
+/* The crest sheds spray unevenly along its length: in gusts
+ * TL_SPRAY_GUST_CELL metres across (a value noise along the crest), the
+ * plume rises 1 ∓ TL_SPRAY_GUST of its lift and is as much denser or
+ * thinner. Even along the crest, it was one haze over the whole of it
+ * (judges), a band along the top seen from below the face. */
+#define TL_SPRAY_GUST      0.5
+#define TL_SPRAY_GUST_CELL 9.0
 /* Between its streaks the plume keeps this share of its density: with
  * none (and at 0.3), the crest's dark top showed through the gaps as a
  * dotted kerb. */
@@ -173,5 +180,9 @@ void tl_giant_hull_of(tl_giant_hull *hull, const tl_boat *b);
 /* The mean of exp(-x²/r²) over [x - h, x + h], h = span/2: the plume's
  * profile in height, x the height over its middle and r its rise. */
 double tl_giant_spray_layer(double x, double r, double span);
+
+/* The plume's gust at w metres across the crest: its lift's and its
+ * density's factor, 1 - TL_SPRAY_GUST .. 1 + TL_SPRAY_GUST. */
+double tl_giant_spray_gust(double w);
 
 #endif
