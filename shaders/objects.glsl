@@ -10,7 +10,7 @@ struct Floating {
     mat4 shadow;     // -> its shadow map's s, t and depth
     vec4 hull;       // model y of the top, the water plane's camera-relative y, speed (m/s), shadow layer (-1: none)
     vec4 outline_z;  // the waterline's model z from x to y, the widest plan's from z to w
-    vec4 shadow_map; // a texel's width (m), the share of the layer in use
+    vec4 shadow_map; // a texel's width (m), the share of the layer in use; the keel's model y
     vec4 waterline[TL_MESH_WATERLINE_STATIONS / 4];
     vec4 plan[TL_MESH_WATERLINE_STATIONS / 4];
     vec4 plan_y[TL_MESH_WATERLINE_STATIONS / 4];

@@ -601,6 +601,49 @@ static void test_no_water_on_deck(tl_renderer *r, const tl_mesh *m)
     tl_frame_free(&f);
 }
 
+/* The foam where the hull meets the water needs water that meets it: a
+ * boat at rest whitens the water along its side (against the same sea
+ * without the boat); held 3 m up, over water far below its keel (seen
+ * under it), it whitens none of it (its shadow only darkens). */
+static void test_contact_needs_water(tl_renderer *r, const tl_mesh *m)
+{
+    tl_error err;
+    tl_error_clear(&err);
+    CHECK(tl_renderer_set_mesh(r, m, &err) == 0);
+    long whiter[2] = {0, 0}, water[2] = {0, 0};
+    for (int k = 0; k < 2; k++) {
+        tl_scene s;
+        boat_scene(&s);
+        s.boat.heading = 0.0;
+        s.boat.pitch = s.boat.roll = 0.0;
+        s.boat.position[1] = k == 0 ? -0.4 : 3.0;
+        s.width = 480; /* the line is a few pixels wide at this size */
+        s.height = 288;
+        tl_scene none = s;
+        none.boat.enabled = false;
+        tl_frame with, without;
+        if (render(r, &s, &with))
+            return;
+        if (render(r, &none, &without)) {
+            tl_frame_free(&with);
+            return;
+        }
+        for (size_t i = 0; i < (size_t)s.width * s.height; i++) {
+            if (!(with.depth[i] < 1e5f && fabsf(with.depth[i] - without.depth[i]) < 0.01f))
+                continue; /* the hull, or its foam's water hidden */
+            water[k]++;
+            whiter[k] += luminance(with.color + 4 * i) > luminance(without.color + 4 * i) + 0.05;
+        }
+        tl_frame_free(&with);
+        tl_frame_free(&without);
+    }
+    printf("contact foam: %ld of %ld water pixels whiter at rest, %ld of %ld held 3 m up\n",
+           whiter[0], water[0], whiter[1], water[1]);
+    CHECK(water[0] > 1000 && water[1] > 1000);
+    CHECK(whiter[0] > 100);
+    CHECK(whiter[1] < whiter[0] / 50);
+}
+
 /* The nearest hit of pixel (px, py)'s ray with the mesh placed by `u`:
  * its distance (INFINITY for none), the hit in model units and its
  * triangle's model normal's y, facing up. */
@@ -795,6 +838,7 @@ int main(int argc, char **argv)
     test_depth(r, &skiff, "skiff.gltf", &s);
     test_no_water_on_deck(r, &builtin);
     test_pitched_deck(r, &builtin);
+    test_contact_needs_water(r, &builtin);
     test_hull_antialiased(r, &builtin);
     test_mesh_scale(r, &builtin);
     test_underside_mirror(r, &builtin);

@@ -211,6 +211,7 @@ int tl_renderer_upload_objects(tl_renderer *r, const tl_frame_uniforms *u, tl_er
         b->outline_z[1] = o->waterline_z[1];
         b->outline_z[2] = o->plan_z[0];
         b->outline_z[3] = o->plan_z[1];
+        b->shadow_map[2] = o->bottom;
         /* Its lamps, camera-relative, lit by boat.lights (the model matrix
          * is column-major, its scale uniform). */
         const float *mm = u->object_pass[i].model;

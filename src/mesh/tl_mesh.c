@@ -204,6 +204,7 @@ void tl_mesh_outline_of(const tl_mesh *m, tl_mesh_outline *out)
     waterline(m, out->waterline, out->waterline_z);
     plan(m, out);
     out->top = m->bounds_max[1];
+    out->bottom = m->bounds_min[1];
 }
 
 /* A half-width table's value at model z, 0 outside its range. */

@@ -133,7 +133,8 @@ typedef struct tl_mesh_outline {
     /* The widest half width over the mesh's whole height and the model y
      * where it is, from z = plan_z[0] to [1] (the bounds). */
     float plan[TL_MESH_WATERLINE_STATIONS], plan_y[TL_MESH_WATERLINE_STATIONS], plan_z[2];
-    float top; /* the mesh's highest y */
+    float top;    /* the mesh's highest y */
+    float bottom; /* its lowest y (the keel): water below it does not touch the hull */
 } tl_mesh_outline;
 void tl_mesh_outline_of(const tl_mesh *m, tl_mesh_outline *out);
 

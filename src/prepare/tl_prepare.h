@@ -118,8 +118,10 @@ typedef struct tl_object_uniforms {
      * mirror image is taken in, speed over the ground (m/s, the bow
      * wave's), its shadow map's layer (-1: it casts none). */
     float hull[4];
-    float outline_z[4];  /* the waterline's model z from x to y, the widest plan's from z to w */
-    float shadow_map[4]; /* a texel's width (m), the share of the layer in use, unused x 2 */
+    float outline_z[4]; /* the waterline's model z from x to y, the widest plan's from z to w */
+    /* A texel of its shadow map's width (m), the share of the layer in
+     * use; the model y of the hull's lowest point (the keel); unused. */
+    float shadow_map[4];
     float waterline[TL_MESH_WATERLINE_STATIONS];
     float plan[TL_MESH_WATERLINE_STATIONS];
     float plan_y[TL_MESH_WATERLINE_STATIONS];
