@@ -379,15 +379,9 @@ static void test_hull_from_below(tl_renderer *r, const tl_mesh *m)
     s.camera.yaw = -90.0 * M_PI / 180.0;
     s.camera.pitch = 60.0 * M_PI / 180.0;
     s.camera.vfov = 75.0 * M_PI / 180.0;
-    tl_scene none = s;
-    none.boat.enabled = false;
     tl_frame with, without;
-    if (render(r, &s, &with))
+    if (render_boat_pair(r, &s, &with, &without))
         return;
-    if (render(r, &none, &without)) {
-        tl_frame_free(&with);
-        return;
-    }
     double *l = NULL, behind = 0.0;
     int count = hull_pixels(&with, &without, &l, &behind);
     CHECK(count > 500);
@@ -422,15 +416,9 @@ static void test_hull_above(tl_renderer *r, const tl_mesh *m)
     s.camera.position[2] = -8.0;
     const double target[3] = {0.0, 1.0, 0.0};
     tl_scene_camera_look_at(&s.camera, target, NULL);
-    tl_scene none = s;
-    none.boat.enabled = false;
     tl_frame with, without;
-    if (render(r, &s, &with))
+    if (render_boat_pair(r, &s, &with, &without))
         return;
-    if (render(r, &none, &without)) {
-        tl_frame_free(&with);
-        return;
-    }
     double mean = 0.0;
     for (size_t i = 0; i < (size_t)with.width * with.height; i++)
         mean += luminance(with.color + 4 * i);

@@ -233,15 +233,9 @@ static void test_underside_mirror(tl_renderer *r, const tl_mesh *m)
     s.camera.position[2] = 0.0;
     s.camera.yaw = -90.0 * M_PI / 180.0;
     s.camera.pitch = 2.0 * M_PI / 180.0;
-    tl_scene none = s;
-    none.boat.enabled = false;
     tl_frame with, without;
-    if (render(r, &s, &with))
+    if (render_boat_pair(r, &s, &with, &without))
         return;
-    if (render(r, &none, &without)) {
-        tl_frame_free(&with);
-        return;
-    }
     long mirrored = 0, surface = 0;
     for (int y = 0; y < s.height; y++)
         for (int x = 0; x < s.width; x++) {
@@ -619,15 +613,9 @@ static void test_contact_needs_water(tl_renderer *r, const tl_mesh *m)
         s.boat.position[1] = k == 0 ? -0.4 : 3.0;
         s.width = 480; /* the line is a few pixels wide at this size */
         s.height = 288;
-        tl_scene none = s;
-        none.boat.enabled = false;
         tl_frame with, without;
-        if (render(r, &s, &with))
+        if (render_boat_pair(r, &s, &with, &without))
             return;
-        if (render(r, &none, &without)) {
-            tl_frame_free(&with);
-            return;
-        }
         for (size_t i = 0; i < (size_t)s.width * s.height; i++) {
             if (!(with.depth[i] < 1e5f && fabsf(with.depth[i] - without.depth[i]) < 0.01f))
                 continue; /* the hull, or its foam's water hidden */

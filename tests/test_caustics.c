@@ -355,15 +355,9 @@ static int hull_luminance(tl_renderer *r, double caustics, double t, double *lum
     s.camera.vfov = 60.0 * TL_DEG;
     s.underwater.caustics = caustics;
     s.underwater.shafts = 0.0;
-    tl_scene none = s;
-    none.boat.enabled = false;
     tl_frame with, without;
-    if (render(r, &s, &with))
+    if (render_boat_pair(r, &s, &with, &without))
         return -1;
-    if (render(r, &none, &without)) {
-        tl_frame_free(&with);
-        return -1;
-    }
     int count = 0;
     for (int i = 0; i < s.width * s.height; i++) {
         mask[i] = with.depth[i] < 0.99f * without.depth[i];

@@ -230,21 +230,36 @@ static inline int render(tl_renderer *r, const tl_scene *scene, tl_frame *f)
     return render_prepared(r, &u, scene->width, scene->height, f);
 }
 
-/* Renders `scene` into `with` and, its wake's strength at 0, into
- * `without` (both allocated here, both freed on failure); 0 when both
- * rendered. */
-static inline int render_wake_pair(tl_renderer *r, const tl_scene *scene, tl_frame *with,
-                                   tl_frame *without)
+/* Renders `a` into `fa` and `b` into `fb` (both allocated here, both
+ * freed on failure); 0 when both rendered. */
+static inline int render_pair(tl_renderer *r, const tl_scene *a, const tl_scene *b, tl_frame *fa,
+                              tl_frame *fb)
 {
-    if (render(r, scene, with))
+    if (render(r, a, fa))
         return 1;
-    tl_scene dry = *scene;
-    dry.boat.wake = 0.0;
-    if (render(r, &dry, without)) {
-        tl_frame_free(with);
+    if (render(r, b, fb)) {
+        tl_frame_free(fa);
         return 1;
     }
     return 0;
+}
+
+/* `scene` with its boat and without it (the same sea). */
+static inline int render_boat_pair(tl_renderer *r, const tl_scene *scene, tl_frame *with,
+                                   tl_frame *without)
+{
+    tl_scene none = *scene;
+    none.boat.enabled = false;
+    return render_pair(r, scene, &none, with, without);
+}
+
+/* `scene` with its wake and with the wake's strength at 0. */
+static inline int render_wake_pair(tl_renderer *r, const tl_scene *scene, tl_frame *with,
+                                   tl_frame *without)
+{
+    tl_scene dry = *scene;
+    dry.boat.wake = 0.0;
+    return render_pair(r, scene, &dry, with, without);
 }
 
 /* Pixels of `a` lighter than `b`'s by more than 0.01 (foam over water). */
