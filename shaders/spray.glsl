@@ -18,7 +18,7 @@ float giant_spray_layer(float x, float r, float span)
     return 0.25 * sqrt(TL_PI) * r / h * (spray_erf((x + h) / r) - spray_erf((x - h) / r));
 }
 
-// Density (0 .. giant.spray) at camera-relative p (y absolute); `span`:
+// Density (0 or more) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
 float giant_spray_sample(vec3 p, float span, out float shade)
 {

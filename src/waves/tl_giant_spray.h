@@ -149,8 +149,9 @@ typedef struct tl_giant_spray {
 void tl_giant_spray_prepare(tl_giant_spray *sp, const tl_giant *g, double amount, double wind,
                             double t, double depth, const tl_giant_hull *hull);
 
-/* Spray density (0 .. amount) at world (x, y, z). `span`: the height (m)
- * a sample of a march stands for (0 for the point): the plume's thin
+/* Spray density (0 or more: its extinction is TL_SPRAY_SIGMA times it per
+ * metre) at world (x, y, z). `span`: the height (m) a sample of a march
+ * stands for (0 for the point): the plume's thin
  * layer is averaged over [y - span/2, y + span/2] in closed form
  * (tl_giant_spray_layer), so a step that straddles it counts what it
  * holds wherever the step's sample lands. */
