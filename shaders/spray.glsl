@@ -41,7 +41,8 @@ float giant_spray_sample(vec3 p, float span, out float shade)
         float back = top_s - sw.x, up = p.y - top_y;
         float rise = TL_SPRAY_RISE * (height + reach);
         // Gusts along the crest (tl_giant_spray_gust).
-        float gust = 1.0 + TL_SPRAY_GUST * (2.0 * foam_noise(vec2(sw.y / TL_SPRAY_GUST_CELL, 41.7)) - 1.0);
+        float gust =
+            1.0 + TL_SPRAY_GUST * (2.0 * foam_noise(vec2(sw.y / TL_SPRAY_GUST_CELL, 41.7)) - 1.0);
         float lift = TL_SPRAY_LIFT * rise * gust * sqrt(min(max(back, 0.0) / reach, 1.0));
         float plume = smoothstep(-0.05 * height, 0.05 * height, back) *
                       exp(-max(back, 0.0) / reach) *
