@@ -104,8 +104,13 @@ vec3 boat_composite(vec3 water, vec3 ray, inout float dist)
 }
 
 // Metres from the water point p (camera-relative x z, absolute y) out to
-// object o's waterline outline (0 inside it); *along: where along the hull
-// it lies, 0 at the stern to 1 at the stem; *model: p's model x z, metres.
+// object o's waterline outline (0 inside it), and down from its keel, in
+// the hull's frame: water below the keel does not touch the hull (a stern
+// hanging over a steep face's trough; measured in the waterline's plan
+// alone, the water under such a stern lay at 0 and drew a white slab
+// beside the hull, cut square at the transom, giant_wave.tl 10.4 s);
+// *along: where along the hull it lies, 0 at the stern to 1 at the stem;
+// *model: p's model x z, metres.
 float boat_waterline_gap(int o, vec3 p, out float along, out vec2 model)
 {
     mat4 to_model = u_objects[o].to_model;
@@ -116,7 +121,9 @@ float boat_waterline_gap(int o, vec3 p, out float along, out vec2 model)
     float f = along * float(TL_MESH_WATERLINE_STATIONS - 1);
     int i = min(int(f), TL_MESH_WATERLINE_STATIONS - 2);
     float half_width = mix(object_waterline(o, i), object_waterline(o, i + 1), f - float(i));
-    vec2 outside = max(vec2(abs(m.x) - half_width, abs(m.z - clamp(m.z, z0, z1))), 0.0);
+    vec3 outside = max(vec3(abs(m.x) - half_width, abs(m.z - clamp(m.z, z0, z1)),
+                            u_objects[o].shadow_map.z - m.y), // the keel's model y
+                       0.0);
     model = m.xz / per_metre;
     return length(outside) / per_metre;
 }
@@ -135,21 +142,12 @@ float boat_contact_foam_one(int o, vec3 p, vec2 slope, float value, float footpr
     float along;
     vec2 model;
     float gap = boat_waterline_gap(o, p, along, model);
-    // Water below the keel does not touch the hull (a stern hanging over
-    // a steep face's trough): the gap takes the drop to it too, in the
-    // hull's frame. Measured in the waterline's plan alone, the water
-    // under such a stern lay at gap 0 and drew a white slab beside the
-    // hull, cut square at the transom (giant_wave.tl 10.4 s, judges).
-    mat4 to_model = u_objects[o].to_model;
-    float keel_y = u_objects[o].shadow_map.z;
-    float below = max(keel_y - (to_model * vec4(p.x, p.y - u_cam_height, p.z, 1.0)).y, 0.0) /
-                  length(to_model[0].xyz);
-    gap = length(vec2(gap, below));
     float speed = u_objects[o].hull.z;
     float reach = TL_BOAT_CONTACT_LINE + TL_BOAT_BOW_WAVE * speed; // the bow wave's width, m
     if (gap > 4.0 * reach + 0.5)
         return 0.0;
     // The bow's heading: the model's +z in the world (the inverse's row).
+    mat4 to_model = u_objects[o].to_model;
     vec2 heading = normalize(vec2(to_model[0].z, to_model[2].z));
     float rising = clamp(dot(slope, heading), 0.0, 1.0);
     float line = exp(-(gap * gap) / (TL_BOAT_CONTACT_LINE * TL_BOAT_CONTACT_LINE));
