@@ -98,12 +98,14 @@ float bow_spray_sheet(vec3 d, vec2 h, float radius, float split)
         envelope += bow_spray_lobe(along, (side_m + split) / across, up);
     if (!(envelope > 0.0))
         return 0.0;
-    // Torn into sheets and clots of droplets: two scales of noise; the
-    // wings tear alike, mirrored.
+    // Torn into sheets and clots of droplets: two scales of noise, the
+    // clots shrinking toward the edge; the wings tear alike, mirrored.
     float side = (split > 0.0 ? abs(side_m) - split : side_m) / across;
     float torn = 0.65 * foam_noise(vec2(side * 2.6 + 17.0, up * 3.1 - along)) +
                  0.35 * foam_noise(vec2(side * 7.3 - 4.0, up * 8.9 + along * 2.0));
-    return envelope * smoothstep(0.48, 0.62, torn);
+    float cover = sqrt(min(envelope, 1.0));
+    return cover * smoothstep(TL_BOW_SPRAY_TEAR_FROM, TL_BOW_SPRAY_TEAR_TO,
+                              torn + TL_BOW_SPRAY_THIN * (cover - 1.0));
 }
 
 #ifdef TL_FEATURE_BOW_SPRAY

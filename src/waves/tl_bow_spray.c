@@ -54,12 +54,15 @@ double tl_bow_spray_sheet(const double d[3], const double heading[2], double rad
     if (!(envelope > 0.0))
         return 0.0;
     /* Torn into sheets and clots of droplets: two scales of noise, cut
-     * sharply (a soft cut left a smoke, not thrown water); the wings tear
-     * alike, mirrored. */
+     * sharply (a soft cut left a smoke, not thrown water), the clots
+     * shrinking toward the edge (TL_BOW_SPRAY_THIN); the wings tear alike,
+     * mirrored. */
     double side = (split > 0.0 ? fabs(side_m) - split : side_m) / across;
     double torn = 0.65 * tl_noise_value(side * 2.6 + 17.0, up * 3.1 - along) +
                   0.35 * tl_noise_value(side * 7.3 - 4.0, up * 8.9 + along * 2.0);
-    return envelope * tl_smoothstep(0.48, 0.62, torn);
+    double cover = sqrt(fmin(envelope, 1.0));
+    return cover * tl_smoothstep(TL_BOW_SPRAY_TEAR_FROM, TL_BOW_SPRAY_TEAR_TO,
+                                 torn + TL_BOW_SPRAY_THIN * (cover - 1.0));
 }
 
 double tl_bow_spray_density(const tl_bow_spray *sp, double x, double y, double z)

@@ -21,9 +21,20 @@
  * centre then: thrown water, an opaque white sheet where it is thickest. */
 #define TL_BOW_SPRAY_RADIUS 0.25
 #define TL_BOW_SPRAY_GAIN   8.0
-/* The sheet's tearing (the smoothstep of its noises) averages about this:
- * what its self-shade takes for the noise. */
-#define TL_BOW_SPRAY_TORN_MEAN 0.387
+/* The sheet tears into clots of thrown water: where its noises' sum
+ * passes from TL_BOW_SPRAY_TEAR_FROM to TL_BOW_SPRAY_TEAR_TO, a clot's
+ * edge. Toward the sheet's edge the clots shrink and thin rather than
+ * fade alike: its coverage (the square root of its envelope) both scales
+ * them and lowers the noise by TL_BOW_SPRAY_THIN of what it lacks. Faded
+ * alike, the whole sheet's edge was a thin veil over what lay behind it:
+ * a dark deck seen through it read as brown smudges on the hull
+ * (judges). */
+#define TL_BOW_SPRAY_TEAR_FROM 0.5
+#define TL_BOW_SPRAY_TEAR_TO   0.56
+#define TL_BOW_SPRAY_THIN      0.3
+/* The torn sheet's mass over its envelope's (test_giant_lip measures it):
+ * what its self-shade takes for the tearing. */
+#define TL_BOW_SPRAY_TORN_MEAN 0.18
 /* The sheet ends where its scaled radius squared reaches this (its
  * Gaussian cut off smoothly from 1): carried out to three radii, its faint
  * tail glowed against the sun as a fog around the burst. Its widest reach
