@@ -38,8 +38,10 @@
  * TL_SPRAY_GUST_CELL metres across (a value noise along the crest), the
  * plume rises 1 ∓ TL_SPRAY_GUST of its lift and is as much denser or
  * thinner. Even along the crest, it was one haze over the whole of it
- * (judges), a band along the top seen from below the face. */
-#define TL_SPRAY_GUST      0.5
+ * (judges), a band along the top seen from below the face; at 0.5, seen
+ * through its length against the sun, still a white wall over the
+ * horizon (judge): at 0.8 the lulls between gusts open it. */
+#define TL_SPRAY_GUST      0.8
 #define TL_SPRAY_GUST_CELL 9.0
 /* Between its streaks the plume keeps this share of its density: with
  * none (and at 0.3), the crest's dark top showed through the gaps as a
