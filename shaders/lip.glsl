@@ -19,6 +19,7 @@ struct GiantLip {
     float from, to;  // the arc's angles
     float progress;  // the throw, 0 .. 1
     float spent;     // 0 .. 1 once it has landed: it collapses, whitens and thins away
+    float fillet;    // metres the inner side is thicker at the root (the barrel's roof)
     float rate;      // how fast the cross-section moves along w, m/m (marching)
     float slope;     // how fast the lumps change the half thickness along the arc, m/m
     float w;         // where across the crest (the lumps' noise is taken there)
@@ -72,9 +73,17 @@ float giant_lip_half(GiantLip lip, float angle)
     return giant_lip_half_smooth(lip, angle) * giant_lip_lump(lip, angle, lip.w);
 }
 
+// What the barrel's roof adds to the inner side's half thickness at
+// `angle` (tl_giant_lip_fillet).
+float giant_lip_fillet(GiantLip lip, float angle)
+{
+    float f = 1.0 - smoothstep(0.0, radians(TL_GIANT_LIP_FILLET_ARC), angle);
+    return lip.fillet * f * f;
+}
+
 GiantLip giant_lip_at(float w)
 {
-    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, w);
+    GiantLip lip = GiantLip(false, vec2(0.0), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, w);
     float age = giant_break_age(w), T = u_giant_break.z;
     if (abs(w) >= u_giant_mask.z || !(age > 0.0) || age >= T * (1.0 + TL_GIANT_LIP_FADE))
         return lip;
@@ -100,6 +109,8 @@ GiantLip giant_lip_at(float w)
     lip.to = radians(TL_GIANT_LIP_ROOT) + sweep;
     lip.from = radians(TL_GIANT_LIP_ROOT) +
                TL_GIANT_LIP_COLLAPSE * smoothstep(0.0, 1.0, lip.spent) * sweep;
+    lip.fillet = TL_GIANT_LIP_FILLET * lip.radius * (1.0 - lip.spent) *
+                 smoothstep(radians(TL_GIANT_LIP_FILLET_FROM), radians(TL_GIANT_LIP_FILLET_TO), lip.to);
     // The march's local bound on how far a point of the tube moves per
     // metre along w. Its free end sweeps with the throw (which runs from 0
     // to 1 over T·peel metres of crest, at most 1.5 times as fast as on
@@ -141,6 +152,15 @@ GiantLip giant_lip_at(float w)
     float edge_arc = 1.5 / radians(TL_GIANT_LIP_EDGE_ARC);
     lip.slope = 2.0 * lump_rate + 2.0 * edge_thin * edge_arc / max(lip.radius, 1.0e-3);
     tip += edge_thin * (1.0 + TL_GIANT_LIP_SWELL) * (edge_arc * sweep_rate + spent_rate);
+    // The barrel's roof thickens the inner side by at most 2 · 1.5 of
+    // itself per FILLET_ARC along the arc (the square of a smoothstep; on
+    // the inner side, twice that per metre), and along w as the throw's end
+    // passes FILLET_FROM .. FILLET_TO, as it collapses and with the radius.
+    float roof = TL_GIANT_LIP_FILLET * lip.radius;
+    lip.slope += 2.0 * 3.0 * lip.fillet / (radians(TL_GIANT_LIP_FILLET_ARC) * max(lip.radius, 1.0e-3));
+    tip += roof * (1.5 / radians(TL_GIANT_LIP_FILLET_TO - TL_GIANT_LIP_FILLET_FROM) * sweep_rate +
+                   spent_rate) +
+           TL_GIANT_LIP_FILLET * TL_GIANT_LIP_RADIUS * u_giant_shape.y * abs(dl);
     lip.rate = tip + abs(db) + lump_rate +
                lumped * TL_GIANT_LIP_LUMP * 1.5 / TL_GIANT_LIP_ROUGHEN * spent_rate +
                abs(dl) * (u_giant_shape.w / u_giant_shape.x + u_giant_shape.y +
@@ -185,9 +205,15 @@ float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2, out float boun
         float r = max(length(e), 1.0e-6);
         vec2 grad = vec2(e.x / TL_GIANT_LIP_THROW, e.y) / r;
         float slope = length(grad);
-        float half_thickness = giant_lip_half(lip, angle);
+        float half_thickness = giant_lip_half(lip, angle), roof = 0.0;
+        if (r < lip.radius) {
+            // The roof is thicker toward the root: the bound takes it as
+            // thick as within the point's reach along the inner side.
+            roof = giant_lip_fillet(lip, angle - (lip.radius - r) / max(r, 0.5 * lip.radius));
+            half_thickness += giant_lip_fillet(lip, angle);
+        }
         n2 = (r >= lip.radius ? 1.0 : -1.0) * grad / slope;
-        bound = abs(r - lip.radius) - half_thickness;
+        bound = abs(r - lip.radius) - max(half_thickness, giant_lip_half(lip, angle) + roof);
         return abs(r - lip.radius) / slope - half_thickness;
     }
     vec2 d0 = q - giant_lip_arc_point(lip, lip.from), d1 = q - giant_lip_arc_point(lip, lip.to);
@@ -198,7 +224,8 @@ float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2, out float boun
     // The caps are not the nearest part of the arc everywhere past its
     // ends (near the centre, its top is): the bound is the nearer of them
     // and of the band the arc lies in, less the thickest the tube can be.
-    bound = min(min(c0, c1), abs(length(e) - lip.radius) - lip.thickness * (1.0 + TL_GIANT_LIP_LUMP));
+    bound = min(min(c0, c1), abs(length(e) - lip.radius) -
+                                 lip.thickness * (1.0 + TL_GIANT_LIP_LUMP) - lip.fillet);
     return min(c0, c1);
 }
 

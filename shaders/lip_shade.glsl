@@ -48,17 +48,20 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // is the radial direction less the half thickness's slope along the
     // arc and along the crest (by differences over a few centimetres; the
     // lumps' cells are metres).
-    if (giant_lip_roughness(lip, angle) > 0.0 && angle >= lip.from && angle <= lip.to) {
+    // On the inner side the barrel's roof thins along the arc too.
+    float inner = length(vec2(q.x / TL_GIANT_LIP_THROW, q.y)) < lip.radius ? 1.0 : 0.0;
+    if ((giant_lip_roughness(lip, angle) > 0.0 || inner * lip.fillet > 0.0) &&
+        angle >= lip.from && angle <= lip.to) {
         const float e = 0.05;
         // The arc's speed (metres per radian) at the point's distance from
         // the centre: the ellipse's, scaled as the point lies off it.
         float r = max(length(vec2(q.x / TL_GIANT_LIP_THROW, q.y)), 1.0e-3) *
                   length(vec2(TL_GIANT_LIP_THROW * cos(angle), sin(angle)));
         float de = e / max(lip.radius, 1.0e-3);
-        float h0 = giant_lip_half(lip, angle);
-        float dh_arc =
-            (giant_lip_half_smooth(lip, angle + de) * giant_lip_lump(lip, angle + de, lip.w) - h0) /
-            (de * r);
+        float h0 = giant_lip_half(lip, angle) + inner * giant_lip_fillet(lip, angle);
+        float h1 = giant_lip_half_smooth(lip, angle + de) * giant_lip_lump(lip, angle + de, lip.w) +
+                   inner * giant_lip_fillet(lip, angle + de);
+        float dh_arc = (h1 - h0) / (de * r);
         float dh_w = giant_lip_half_smooth(lip, angle) *
                      (giant_lip_lump(lip, angle, lip.w + e) - giant_lip_lump(lip, angle, lip.w)) /
                      e;

@@ -206,6 +206,87 @@ static void test_lip_barrel(void)
     CHECK(over == 0);
 }
 
+/* The lowest point of the lip's tube over (s, y) columns at s: scanned
+ * down from above the arc in 1 cm steps; NAN where the column misses it. */
+static double lip_underside(const tl_giant_lip *lip, double sv)
+{
+    double top = lip->center[1] + lip->radius + 2.0 * lip->thickness, lowest = NAN;
+    for (double y = top; y > lip->center[1] - 2.0 * lip->radius; y -= 0.01)
+        if (tl_giant_lip_distance(lip, sv, y) < 0.0)
+            lowest = y;
+    return lowest;
+}
+
+/* The barrel's roof (TL_GIANT_LIP_FILLET): where a thrown lip leaves the
+ * face its underside curves away from it instead of meeting it at a
+ * crease. Going forward from the crest's top, the air under the lip grows
+ * to a tenth of the crest's height further out than under a tube of even
+ * thickness; past the roof's arc the underside is the tube's as before;
+ * the outer side is untouched; and a short throw has no roof. */
+static void test_lip_roof(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 2.0, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    const double base = base_of(&s), w = s.giant.peak;
+    tl_giant_lip lip;
+    tl_giant_lip_at(&g, w, base, &lip);
+    CHECK(lip.present && lip.spent == 0.0);
+    CHECK(fabs(lip.fillet - TL_GIANT_LIP_FILLET * lip.radius) < 1e-9);
+    tl_giant_lip plain = lip;
+    plain.fillet = 0.0;
+    double dl, height = tl_giant_lambda(&g, w, &dl) * g.amplitude;
+    /* Where the air under the even tube first reaches a twentieth of the
+     * crest's height (the crease lies just behind), the roof leaves less
+     * than half of it: the underside comes down to the face. */
+    double at = NAN, roof_air = NAN, plain_air = NAN;
+    for (int i = 1; i <= 400 && isnan(at); i++) {
+        double sv = lip.center[0] + TL_GIANT_LIP_THROW * lip.radius * i / 400.0;
+        double x = g.origin[0] + g.dir[0] * sv + g.across[0] * w;
+        double z = g.origin[1] + g.dir[1] * sv + g.across[1] * w;
+        double face = base + tl_giant_height(&g, x, z, 8);
+        plain_air = lip_underside(&plain, sv) - face;
+        if (plain_air > 0.05 * height) {
+            at = sv - lip.center[0];
+            roof_air = fmax(lip_underside(&lip, sv) - face, 0.0);
+        }
+    }
+    /* Past the roof's arc (and its reach) the two undersides agree. */
+    double beyond = 1.2 * TL_GIANT_LIP_FILLET_ARC * (M_PI / 180.0), worst = 0.0;
+    double r_in = lip.radius - tl_giant_lip_half_thickness(&lip, beyond);
+    double sv = lip.center[0] + TL_GIANT_LIP_THROW * r_in * sin(beyond);
+    worst = fabs(lip_underside(&lip, sv) - lip_underside(&plain, sv));
+    /* The outer side at the crest's top is where it was. */
+    double outer = 0.0;
+    for (double y = lip.center[1] + 2.0 * lip.radius; y > lip.center[1]; y -= 0.001)
+        if (tl_giant_lip_distance(&lip, lip.center[0] + 0.01, y) < 0.0) {
+            outer = y - (lip.center[1] + lip.radius + tl_giant_lip_half_thickness(&lip, 0.0));
+            break;
+        }
+    printf("lip's roof: %.2f m thick at the root; %.2f m out from the crest's top %.2f m of air "
+           "under an even tube, %.2f m under the roof; past its arc the undersides differ by "
+           "%.3f m, the outer side by %.3f m\n",
+           lip.fillet, at, plain_air, roof_air, worst, outer);
+    CHECK(!isnan(at) && roof_air < 0.5 * plain_air);
+    CHECK(worst < 0.02);
+    CHECK(fabs(outer) < 0.01);
+
+    /* Early in the throw (its end short of FILLET_FROM past the top) there
+     * is no roof. */
+    int short_throws = 0;
+    for (double age = 0.01; age < 2.0; age += 0.01) {
+        breaking_scene(&s, 10.0, age, 0.0, 0.0);
+        tl_giant_prepare(&g, &s.giant, s.time);
+        tl_giant_lip_at(&g, w, base_of(&s), &lip);
+        if (lip.present && lip.to < TL_GIANT_LIP_FILLET_FROM * (M_PI / 180.0)) {
+            short_throws++;
+            CHECK(lip.fillet == 0.0);
+        }
+    }
+    CHECK(short_throws > 5);
+}
+
 /* The lip's outer surface passes through the crest's top at its anchor
  * angle once the throw has passed it by the edge's arc (before, the thin
  * edge lies inside the crest, under its top); the lip is thrown further
@@ -982,7 +1063,7 @@ static void test_gpu_mirror(tl_renderer *r)
               2e-3 * TL_SPRAY_PLUME_GAIN * (1.0 + TL_SPRAY_ROOT_GAIN) * s.giant.spray);
         CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
         CHECK(worst_shade <= 2e-3);
-        CHECK(landing > 0.1);            /* the landing's cloud is among the points compared */
+        CHECK(landing > 0.1);             /* the landing's cloud is among the points compared */
         CHECK(!crossing || burst > 0.02); /* and the crossing's burst (a clot of it) */
     }
 }
@@ -1099,6 +1180,7 @@ int main(void)
     test_lip_heights();
     test_lip_behind_top();
     test_lip_barrel();
+    test_lip_roof();
     test_lip_life();
     test_lip_bounds();
     test_spray_density();

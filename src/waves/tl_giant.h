@@ -135,6 +135,20 @@
  * top holds the tube's outer surface once the throw is past the arc. */
 #define TL_GIANT_LIP_EDGE     0.2
 #define TL_GIANT_LIP_EDGE_ARC 50.0
+/* The barrel's roof: where the lip leaves the face the water curves from
+ * the one into the other. The tube's inner side is thicker near its root
+ * by up to TL_GIANT_LIP_FILLET of its radius, thinning to nothing over the
+ * first TL_GIANT_LIP_FILLET_ARC degrees past straight up (as the square
+ * of 1 - a smoothstep), once the throw's end has passed from
+ * TL_GIANT_LIP_FILLET_FROM to TL_GIANT_LIP_FILLET_TO degrees past it (a
+ * short throw's stub is thin to its root) and less as it collapses. The
+ * outer side is the crest's top as before. Of even thickness, the tube's
+ * underside met the face at a sharp crease: seen from the foot of the face
+ * the lip was a blade stuck into the crest (judges). */
+#define TL_GIANT_LIP_FILLET      0.3
+#define TL_GIANT_LIP_FILLET_ARC  50.0
+#define TL_GIANT_LIP_FILLET_FROM 30.0
+#define TL_GIANT_LIP_FILLET_TO   90.0
 /* The tube grows from nothing over the throw's first TL_GIANT_LIP_GROW
  * (of its progress): at the peel's front the lip rises out of the crest
  * instead of starting as a wall of full thickness. */
@@ -346,6 +360,7 @@ typedef struct tl_giant_lip {
     double from, to;  /* the arc's angles, radians from up, clockwise toward +s */
     double progress;  /* the throw, 0 .. 1 (tl_giant_break_progress) */
     double spent;     /* 0 .. 1 once it has landed: it collapses, whitens and thins away */
+    double fillet;    /* metres the inner side is thicker at the root (TL_GIANT_LIP_FILLET) */
     double w;         /* where across the crest (the lumps' noise is taken there) */
 } tl_giant_lip;
 
@@ -355,6 +370,10 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
 /* The tube's half thickness at `angle` along its arc (TL_GIANT_LIP_TIP),
  * lumped (TL_GIANT_LIP_LUMP). */
 double tl_giant_lip_half_thickness(const tl_giant_lip *lip, double angle);
+
+/* What the barrel's roof adds to the inner side's half thickness at
+ * `angle` (TL_GIANT_LIP_FILLET). */
+double tl_giant_lip_fillet(const tl_giant_lip *lip, double angle);
 
 /* How much the lumps roughen the tube at `angle` along its arc, 0 .. 1,
  * and their factor on the half thickness there

@@ -73,6 +73,15 @@ void tl_giant_lip_at(const tl_giant *g, double w, double base, tl_giant_lip *lip
     lip->to = TL_GIANT_LIP_ROOT * (M_PI / 180.0) + sweep;
     lip->from = TL_GIANT_LIP_ROOT * (M_PI / 180.0) +
                 TL_GIANT_LIP_COLLAPSE * tl_smoothstep(0.0, 1.0, lip->spent) * sweep;
+    lip->fillet = TL_GIANT_LIP_FILLET * lip->radius * (1.0 - lip->spent) *
+                  tl_smoothstep(TL_GIANT_LIP_FILLET_FROM * (M_PI / 180.0),
+                                TL_GIANT_LIP_FILLET_TO * (M_PI / 180.0), lip->to);
+}
+
+double tl_giant_lip_fillet(const tl_giant_lip *lip, double angle)
+{
+    double f = 1.0 - tl_smoothstep(0.0, TL_GIANT_LIP_FILLET_ARC * (M_PI / 180.0), angle);
+    return lip->fillet * f * f;
 }
 
 double tl_giant_lip_roughness(const tl_giant_lip *lip, double angle)
@@ -120,8 +129,16 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
     if (angle >= lip->from && angle <= lip->to) {
         double r = fmax(hypot(es, qy), 1e-9);
         double slope = hypot(es / TL_GIANT_LIP_THROW, qy) / r;
-        double half = tl_giant_lip_half_thickness(lip, angle);
-        *bound = fabs(r - lip->radius) - half;
+        double half = tl_giant_lip_half_thickness(lip, angle), roof = 0.0;
+        if (r < lip->radius) {
+            /* The roof is thicker toward the root: the bound takes it as
+             * thick as it is within the point's reach along the inner
+             * side (whose radius is at least half the centre line's). */
+            double reach = (lip->radius - r) / fmax(r, 0.5 * lip->radius);
+            roof = tl_giant_lip_fillet(lip, angle - reach);
+            half += tl_giant_lip_fillet(lip, angle);
+        }
+        *bound = fabs(r - lip->radius) - fmax(half, tl_giant_lip_half_thickness(lip, angle) + roof);
         return fabs(r - lip->radius) / slope - half;
     }
     /* Past either end: the round cap there, as thick as the tube's end.
@@ -136,8 +153,8 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
         lip_arc_point(lip, ends[i], &ps, &py);
         d = fmin(d, hypot(qs - ps, qy - py) - tl_giant_lip_half_thickness(lip, ends[i]));
     }
-    *bound =
-        fmin(d, fabs(hypot(es, qy) - lip->radius) - lip->thickness * (1.0 + TL_GIANT_LIP_LUMP));
+    *bound = fmin(d, fabs(hypot(es, qy) - lip->radius) -
+                         lip->thickness * (1.0 + TL_GIANT_LIP_LUMP) - lip->fillet);
     return d;
 }
 
