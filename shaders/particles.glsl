@@ -2,7 +2,8 @@
 // the camera that catch the light, one at most in each cell of a world
 // grid TL_PARTICLE_CELL metres on a side (u_particles per cubic metre on
 // average), out to TL_PARTICLE_RANGE. Each is a sphere of radius
-// TL_PARTICLE_RADIUS_MIN .. MAX that scatters TL_PARTICLE_EFFICIENCY
+// TL_PARTICLE_RADIUS_MIN .. MAX (a density ∝ 1/r²: many fine, a few
+// coarse; tl_optics_particle_scattering) that scatters TL_PARTICLE_EFFICIENCY
 // times its cross-section of the sun's beam (by the water's phase
 // function: bright looking toward the sun) and of the sky's light at its
 // depth, dimmed on the way back to the eye. A mote is drawn as a Gaussian
@@ -57,8 +58,10 @@ vec3 water_particles(vec3 ray, float dist)
             vec3 rel = (vec3(cell) + 0.15 + 0.7 * h.xyz - eye) * TL_PARTICLE_CELL;
             float along = dot(rel, ray);
             if (along > TL_PARTICLE_NEAR && along < range) {
-                // h.w / presence is even in [0, 1) for the cells that hold one.
-                float radius = mix(TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, h.w / presence);
+                // h.w / presence is even in [0, 1) for the cells that hold
+                // one: the inverse of the 1/r² law's distribution.
+                float radius = 1.0 / mix(1.0 / TL_PARTICLE_RADIUS_MIN, 1.0 / TL_PARTICLE_RADIUS_MAX,
+                                         h.w / presence);
                 // Its angular spread: its size, and out of focus a blur
                 // disc (a disc D across has a standard deviation of D / 4).
                 float blur = 0.25 * TL_PARTICLE_PUPIL * abs(1.0 / along - 1.0 / TL_PARTICLE_FOCUS);

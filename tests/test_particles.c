@@ -13,7 +13,7 @@
 
 enum { W = 96, H = 54 };
 
-#define DENSITY 40.0
+#define DENSITY 60.0
 
 /* The camera 5 m down looks level toward azimuth `yaw_deg` with a view
  * `vfov_deg` high; the sun at azimuth 200 deg, 55 deg up; no shafts

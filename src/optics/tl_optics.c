@@ -111,7 +111,8 @@ static double path_integral(double c, double t)
 double tl_optics_particle_scattering(double density)
 {
     const double a = TL_PARTICLE_RADIUS_MIN, b = TL_PARTICLE_RADIUS_MAX;
-    double mean_square = (a * a + a * b + b * b) / 3.0; /* of a radius even in [a, b] */
+    /* Of a radius in [a, b] with a density ∝ 1/r²: ∫r²·r⁻² / ∫r⁻² = ab. */
+    double mean_square = a * b;
     return density * TL_PARTICLE_EFFICIENCY * M_PI * mean_square;
 }
 

@@ -81,8 +81,10 @@ void tl_optics_water_fall(const tl_water *w, const double sigma[3], double fall[
 /* Suspended particles (shaders/particles.glsl): the grid's cell (at most
  * one mote in each: TL_PARTICLE_MAX_DENSITY is 1 / CELL³), how far from the
  * eye they are drawn and how near, metres; the period their grid repeats
- * over (a multiple of the cell); their radii, metres (even between the
- * two); the share of their cross-section they scatter (large particles:
+ * over (a multiple of the cell); their radii, metres, between the two with
+ * a density falling as 1/r² (many fine motes, a few coarse flakes: the
+ * steep power law of marine particles; even between the two, every mote
+ * was the same dim dot, a judge); the share of their cross-section they scatter (large particles:
  * twice, half of it by diffraction into the forward lobe); a spot's least
  * width in pixels (its light spread over a pixel's footprint, not
  * aliased); the cells a ray walks at most (the range's diagonal). */
@@ -90,8 +92,8 @@ void tl_optics_water_fall(const tl_water *w, const double sigma[3], double fall[
 #define TL_PARTICLE_RANGE        5.0
 #define TL_PARTICLE_NEAR         0.05
 #define TL_PARTICLE_PERIOD       64
-#define TL_PARTICLE_RADIUS_MIN   0.0003
-#define TL_PARTICLE_RADIUS_MAX   0.0015
+#define TL_PARTICLE_RADIUS_MIN   0.0002
+#define TL_PARTICLE_RADIUS_MAX   0.003
 #define TL_PARTICLE_EFFICIENCY   2.0
 #define TL_PARTICLE_PIXEL_SPREAD 0.6
 #define TL_PARTICLE_MAX_CELLS    64
