@@ -45,6 +45,16 @@ static double base_of(const tl_scene *s)
     return -0.5 * s->ocean.depth;
 }
 
+/* The scene of breaking_scene 2 s into the break, its wave and the lip
+ * at its peak (thrown, not yet landed); returns the ocean's mean level. */
+static double thrown_lip(tl_scene *s, tl_giant *g, tl_giant_lip *lip)
+{
+    breaking_scene(s, 10.0, 2.0, 0.0, 0.0);
+    tl_giant_prepare(g, &s->giant, s->time);
+    tl_giant_lip_at(g, s->giant.peak, base_of(s), lip);
+    return base_of(s);
+}
+
 /* A level hull of 9 m with its stem at `stem`, heading (x, z). */
 static const tl_giant_hull *level_hull(tl_giant_hull *h, const double stem[3],
                                        const double heading[2])
@@ -147,12 +157,9 @@ static void test_lip_behind_top(void)
 static void test_lip_barrel(void)
 {
     tl_scene s;
-    breaking_scene(&s, 10.0, 2.0, 0.0, 0.0);
     tl_giant g;
-    tl_giant_prepare(&g, &s.giant, s.time);
-    const double base = base_of(&s), w = s.giant.peak;
     tl_giant_lip lip;
-    tl_giant_lip_at(&g, w, base, &lip);
+    const double base = thrown_lip(&s, &g, &lip), w = s.giant.peak;
     CHECK(lip.present && lip.progress > 0.8 && lip.spent == 0.0);
     double dl, height = tl_giant_lambda(&g, w, &dl) * g.amplitude, gap = 0.0;
     for (int is = 0; is <= 200; is++) {
@@ -218,20 +225,17 @@ static double lip_underside(const tl_giant_lip *lip, double sv)
 }
 
 /* The barrel's roof (TL_GIANT_LIP_FILLET): where a thrown lip leaves the
- * face its underside curves away from it instead of meeting it at a
- * crease. Going forward from the crest's top, the air under the lip grows
- * to a tenth of the crest's height further out than under a tube of even
- * thickness; past the roof's arc the underside is the tube's as before;
- * the outer side is untouched; and a short throw has no roof. */
+ * face its underside curves down to it instead of meeting it at a crease.
+ * Where the air under an even tube first reaches a twentieth of the
+ * crest's height, the roof leaves less than half of it; past the roof's
+ * arc the underside is the tube's as before; the outer side is untouched;
+ * and a short throw has no roof. */
 static void test_lip_roof(void)
 {
     tl_scene s;
-    breaking_scene(&s, 10.0, 2.0, 0.0, 0.0);
     tl_giant g;
-    tl_giant_prepare(&g, &s.giant, s.time);
-    const double base = base_of(&s), w = s.giant.peak;
     tl_giant_lip lip;
-    tl_giant_lip_at(&g, w, base, &lip);
+    const double base = thrown_lip(&s, &g, &lip), w = s.giant.peak;
     CHECK(lip.present && lip.spent == 0.0);
     CHECK(fabs(lip.fillet - TL_GIANT_LIP_FILLET * lip.radius) < 1e-9);
     tl_giant_lip plain = lip;
