@@ -98,6 +98,31 @@ static void boat_at(const tl_timeline *tl, int object, double t, const tl_boat *
         *heading = atan2(tangent[0], tangent[2]);
 }
 
+/* The giant wave of moment `past` as the boat at (px, pz) then met it:
+ * this one moved back along its travel, and across with the object its
+ * centre follows, if any (`leader`, `lead`). Its break and envelope are
+ * this moment's: they change over seconds, the springs' past is short. */
+static void giant_then(const tl_giant *giant, const tl_timeline *tl, int object, int leader,
+                       const tl_boat *lead, double t, double past, double px, double pz,
+                       tl_giant *then)
+{
+    *then = *giant;
+    if (!giant->active)
+        return;
+    double back = giant->speed * (t - past);
+    then->origin[0] -= giant->dir[0] * back;
+    then->origin[1] -= giant->dir[1] * back;
+    if (lead) { /* the centre line follows its object across */
+        double lx = px, lz = pz, lh;
+        if (leader != object)
+            boat_at(tl, leader, past, lead, 0, &lx, &lz, &lh);
+        double across = giant->across[0] * (lx - lead->position[0]) +
+                        giant->across[1] * (lz - lead->position[2]);
+        then->origin[0] += giant->across[0] * across;
+        then->origin[1] += giant->across[1] * across;
+    }
+}
+
 /* TL_FLOAT_MAX_TILT's soft limit: the angle itself up to the knee, then a
  * tanh toward the limit with the same slope there. */
 static double limit_tilt(double a)
@@ -121,11 +146,11 @@ void tl_timeline_float_boat(const tl_timeline *tl, int object, double t, int hea
     const int leader = tl->giant_follow.target == TL_TARGET_BOAT ? tl->giant_follow.object : -1;
     const tl_boat *lead = leader >= 0 ? tl_scene_object(s, leader) : NULL;
 
-    /* The spring, at the boat's past poses. The giant wave of a past
-     * moment is this one moved back along its travel (and across with the
-     * object its centre follows, if any). Its break and envelope are
-     * this moment's: they change over seconds, the spring's past is short. */
+    /* The springs, at the boat's past poses (giant_then: the giant wave
+     * as it was met then). The giant wave's slope goes through a quicker
+     * one (TL_FLOAT_GIANT_TIME). */
     const double w = 1.0 / b->float_time, h = FLOAT_SPAN / FLOAT_NODES;
+    const double w_giant = 1.0 / fmin(b->float_time, TL_FLOAT_GIANT_TIME);
     hull_pose sum = {0.0, 0.0, 0.0};
     double weights = 0.0;
     for (int i = 0; i <= FLOAT_NODES; i++) {
@@ -136,27 +161,19 @@ void tl_timeline_float_boat(const tl_timeline *tl, int object, double t, int hea
             continue;
         double past = t - x / w, px, pz, heading;
         boat_at(tl, object, past, b, heading_from_path, &px, &pz, &heading);
+        tl_giant then;
+        giant_then(&giant, tl, object, leader, lead, t, past, px, pz, &then);
         oc.t = past;
-        tl_giant then = giant;
-        if (giant.active) {
-            double back = giant.speed * (t - past);
-            then.origin[0] -= giant.dir[0] * back;
-            then.origin[1] -= giant.dir[1] * back;
-            if (lead) { /* the centre line follows its object across */
-                double lx = px, lz = pz, lh;
-                if (leader != object)
-                    boat_at(tl, leader, past, lead, 0, &lx, &lz, &lh);
-                double across = giant.across[0] * (lx - lead->position[0]) +
-                                giant.across[1] * (lz - lead->position[2]);
-                then.origin[0] += giant.across[0] * across;
-                then.origin[1] += giant.across[1] * across;
-            }
-        }
         oc.giant = &then;
         hull_pose p = sample_hull(b, px, pz, heading, ocean_height, &oc);
         if (giant.active) {
-            giant_ctx gc = {&then, s->quality.giant_iterations, -0.5 * s->ocean.depth};
-            hull_pose g = sample_hull(b, px, pz, heading, giant_height, &gc);
+            /* The giant wave's slope through its own, quicker spring. */
+            double past_g = t - x / w_giant, gx, gz, gh;
+            boat_at(tl, object, past_g, b, heading_from_path, &gx, &gz, &gh);
+            tl_giant then_g;
+            giant_then(&giant, tl, object, leader, lead, t, past_g, gx, gz, &then_g);
+            giant_ctx gc = {&then_g, s->quality.giant_iterations, -0.5 * s->ocean.depth};
+            hull_pose g = sample_hull(b, gx, gz, gh, giant_height, &gc);
             p.pitch += g.pitch;
             p.roll += g.roll;
         }

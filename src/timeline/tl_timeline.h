@@ -125,6 +125,14 @@ int tl_timeline_add_object(tl_timeline *tl, const char *name, int line, int colu
  * the giant wave's steep face hung its stern in the air above it. */
 #define TL_FLOAT_MAX_TILT  (50.0 * 3.14159265358979323846 / 180.0)
 #define TL_FLOAT_TILT_KNEE (25.0 * 3.14159265358979323846 / 180.0)
+/* The giant wave's slope reaches pitch and roll through a spring of this
+ * response time, seconds (or boat.float_time, if shorter), not the
+ * chop's: its face steepens under a climbing hull within a second, and
+ * lagging boat.float_time behind it the hull pitched 39° on a 64° face,
+ * its bow metres inside the face and its stern in the air (judges).
+ * Followed directly, the pitch flipped by 17° in a frame as the crest
+ * passed under the hull. */
+#define TL_FLOAT_GIANT_TIME 0.15
 void tl_timeline_float_boat(const tl_timeline *tl, int object, double t, int heading_from_path,
                             tl_scene *s);
 
