@@ -18,6 +18,21 @@ float giant_spray_layer(float x, float r, float span)
     return 0.25 * sqrt(TL_PI) * r / h * (spray_erf((x + h) / r) - spray_erf((x - h) / r));
 }
 
+// The landing's density over its peak at w across the crest, (ts, ty)
+// from its centre: round billows (two noises in crossed planes
+// multiplied, with a finer grain) that shrink toward the cloud's edge and
+// close in its core (tl_giant_spray_billows).
+float giant_spray_billows(float envelope, float w, float ts, float ty)
+{
+    float billow = foam_noise(vec2(w / 1.6 + 5.0, ts / 1.6)) *
+                   foam_noise(vec2(w / 1.6 - 2.0, ty / 1.6 + 4.0));
+    float grain = foam_noise(vec2(w / 0.5 - 3.0, (ts + ty) / 0.5));
+    float cover = sqrt(envelope);
+    return cover * smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
+                              (0.8 + 0.2 * grain) * billow + 0.1 * grain +
+                                  TL_SPRAY_LANDING_CLOSE * (cover - TL_SPRAY_LANDING_OPEN));
+}
+
 // Density (0 or more) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
 float giant_spray_sample(vec3 p, float span, out float shade)
@@ -84,14 +99,8 @@ float giant_spray_sample(vec3 p, float span, out float shade)
             float d2 = max(ts * ts + ty * ty - a * a, 0.0);
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
                     sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
-            // Billows: two noises in crossed planes multiplied, round
-            // lumps about 1.6 m across in all three directions, with a
-            // finer grain (as tl_giant_spray_density).
-            float billow = foam_noise(vec2(sw.y / 1.6 + 5.0, ts / 1.6)) *
-                           foam_noise(vec2(sw.y / 1.6 - 2.0, ty / 1.6 + 4.0));
-            float grain = foam_noise(vec2(sw.y / 0.5 - 3.0, (ts + ty) / 0.5));
-            density += landing * exp(-(ts * ts + ty * ty) / (r * r)) *
-                       smoothstep(0.12, 0.45, (0.8 + 0.2 * grain) * billow + 0.1 * grain);
+            density +=
+                landing * giant_spray_billows(exp(-(ts * ts + ty * ty) / (r * r)), sw.y, ts, ty);
         }
 #endif
     }

@@ -837,6 +837,30 @@ static void test_burst_torn_mean(void)
     CHECK(worst < 0.1);
 }
 
+/* What the landing's self-shade takes for its billows
+ * (TL_SPRAY_LANDING_MEAN) is the billowed cloud's mass over its
+ * envelope's: summed over a grid through a cloud 4 m in radius along 40 m
+ * of crest, within a tenth of the constant. */
+static void test_landing_billow_mean(void)
+{
+    const double r = 4.0;
+    double billowed = 0.0, envelope = 0.0;
+    for (int i = 0; i < 200; i++)
+        for (int j = 0; j < 100; j++)
+            for (int k = 0; k < 100; k++) {
+                double w = 40.0 * (i + 0.5) / 200.0;
+                double ts = 2.5 * r * (2.0 * (j + 0.5) / 100.0 - 1.0);
+                double ty = 2.5 * r * (2.0 * (k + 0.5) / 100.0 - 1.0);
+                double e = exp(-(ts * ts + ty * ty) / (r * r));
+                billowed += tl_giant_spray_billows(e, w, ts, ty);
+                envelope += e;
+            }
+    double ratio = billowed / envelope;
+    printf("landing's billowed mass over its envelope's: %.3f (constant %.3f)\n", ratio,
+           TL_SPRAY_LANDING_MEAN);
+    CHECK(fabs(ratio - TL_SPRAY_LANDING_MEAN) < 0.1 * TL_SPRAY_LANDING_MEAN);
+}
+
 /* The landing's self-shade (tl_giant_spray_landing_shade) is its
  * envelope's optical depth toward the sun: the closed form matches a
  * midpoint sum of the envelope's density (noise at its mean) along the
@@ -1195,6 +1219,7 @@ int main(void)
     test_crossing_burst();
     test_burst_shade();
     test_burst_torn_mean();
+    test_landing_billow_mean();
     test_landing_shade();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;

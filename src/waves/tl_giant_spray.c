@@ -280,15 +280,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         tl_giant_lip_at(g, w, sp->base, &lip);
         double ts, ty, r, peak;
         if (landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak)) {
-            /* Billows: two noises in crossed planes multiplied, round
-             * lumps about 1.6 m across in all three directions, with a
-             * finer grain. A noise of one plane drew the cloud out in
-             * streaks: an airbrushed smear, see-through (judge). */
-            double billow = tl_noise_value(w / 1.6 + 5.0, ts / 1.6) *
-                            tl_noise_value(w / 1.6 - 2.0, ty / 1.6 + 4.0);
-            double grain = tl_noise_value(w / 0.5 - 3.0, (ts + ty) / 0.5);
-            density += peak * exp(-(ts * ts + ty * ty) / (r * r)) *
-                       tl_smoothstep(0.12, 0.45, (0.8 + 0.2 * grain) * billow + 0.1 * grain);
+            density +=
+                peak * tl_giant_spray_billows(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
         }
     }
     if (sp->bow_amount > 0.0) {
@@ -297,6 +290,21 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
             sp->bow_amount * tl_bow_spray_sheet(d, sp->heading, sp->bow_radius, sp->bow_split);
     }
     return density;
+}
+
+double tl_giant_spray_billows(double envelope, double w, double ts, double ty)
+{
+    /* Two noises in crossed planes multiplied, round lumps about 1.6 m
+     * across in all three directions, with a finer grain. A noise of one
+     * plane drew the cloud out in streaks: an airbrushed smear,
+     * see-through (judge). */
+    double billow =
+        tl_noise_value(w / 1.6 + 5.0, ts / 1.6) * tl_noise_value(w / 1.6 - 2.0, ty / 1.6 + 4.0);
+    double grain = tl_noise_value(w / 0.5 - 3.0, (ts + ty) / 0.5);
+    double cover = sqrt(envelope);
+    return cover * tl_smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
+                                 (0.8 + 0.2 * grain) * billow + 0.1 * grain +
+                                     TL_SPRAY_LANDING_CLOSE * (cover - TL_SPRAY_LANDING_OPEN));
 }
 
 double tl_giant_spray_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,

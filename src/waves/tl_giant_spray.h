@@ -110,9 +110,20 @@
  * opaque, churning cloud, not a veil (at 30, seen against the sky from
  * the low shot, it read as steam). */
 #define TL_SPRAY_LANDING_GAIN 60.0
-/* The landing's billows (a smoothstep of crossed noises) average about
- * this: what its self-shade takes for the noise. */
-#define TL_SPRAY_LANDING_MEAN 0.47
+/* The landing's billows: where crossed noises pass from
+ * TL_SPRAY_LANDING_TEAR_FROM to _TO, a billow's edge. Toward the cloud's
+ * edge the billows shrink rather than fade alike, and its core closes: its
+ * coverage c (the square root of its Gaussian envelope) scales them and
+ * shifts the noise by TL_SPRAY_LANDING_CLOSE · (c − TL_SPRAY_LANDING_OPEN).
+ * Faded alike, the whitewater was a soft mist the sky showed through, a
+ * cotton ball (judges). */
+#define TL_SPRAY_LANDING_TEAR_FROM 0.2
+#define TL_SPRAY_LANDING_TEAR_TO   0.3
+#define TL_SPRAY_LANDING_CLOSE     0.8
+#define TL_SPRAY_LANDING_OPEN      0.75
+/* The billowed cloud's mass over its envelope's (test_giant_lip measures
+ * it): what its self-shade takes for the billows. */
+#define TL_SPRAY_LANDING_MEAN 0.59
 /* The bow's burst's density per unit of giant.spray: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  12.0
@@ -183,6 +194,11 @@ void tl_giant_hull_of(tl_giant_hull *hull, const tl_boat *b);
 /* The mean of exp(-x²/r²) over [x - h, x + h], h = span/2: the plume's
  * profile in height, x the height over its middle and r its rise. */
 double tl_giant_spray_layer(double x, double r, double span);
+
+/* The landing's density over its peak for its Gaussian `envelope` (0 ..
+ * 1) at w across the crest, (ts, ty) from the cloud's centre: its billows
+ * (TL_SPRAY_LANDING_TEAR_*, _CLOSE, _OPEN). */
+double tl_giant_spray_billows(double envelope, double w, double ts, double ty);
 
 /* The plume's gust at w metres across the crest: its lift's and its
  * density's factor, 1 - TL_SPRAY_GUST .. 1 + TL_SPRAY_GUST. */
