@@ -109,8 +109,9 @@ GiantLip giant_lip_at(float w)
     lip.to = radians(TL_GIANT_LIP_ROOT) + sweep;
     lip.from = radians(TL_GIANT_LIP_ROOT) +
                TL_GIANT_LIP_COLLAPSE * smoothstep(0.0, 1.0, lip.spent) * sweep;
-    lip.fillet = TL_GIANT_LIP_FILLET * lip.radius * (1.0 - lip.spent) *
-                 smoothstep(radians(TL_GIANT_LIP_FILLET_FROM), radians(TL_GIANT_LIP_FILLET_TO), lip.to);
+    lip.fillet =
+        TL_GIANT_LIP_FILLET * lip.radius * (1.0 - lip.spent) *
+        smoothstep(radians(TL_GIANT_LIP_FILLET_FROM), radians(TL_GIANT_LIP_FILLET_TO), lip.to);
     // The march's local bound on how far a point of the tube moves per
     // metre along w. Its free end sweeps with the throw (which runs from 0
     // to 1 over T·peel metres of crest, at most 1.5 times as fast as on
@@ -157,7 +158,8 @@ GiantLip giant_lip_at(float w)
     // the inner side, twice that per metre), and along w as the throw's end
     // passes FILLET_FROM .. FILLET_TO, as it collapses and with the radius.
     float roof = TL_GIANT_LIP_FILLET * lip.radius;
-    lip.slope += 2.0 * 3.0 * lip.fillet / (radians(TL_GIANT_LIP_FILLET_ARC) * max(lip.radius, 1.0e-3));
+    lip.slope +=
+        2.0 * 3.0 * lip.fillet / (radians(TL_GIANT_LIP_FILLET_ARC) * max(lip.radius, 1.0e-3));
     tip += roof * (1.5 / radians(TL_GIANT_LIP_FILLET_TO - TL_GIANT_LIP_FILLET_FROM) * sweep_rate +
                    spent_rate) +
            TL_GIANT_LIP_FILLET * TL_GIANT_LIP_RADIUS * u_giant_shape.y * abs(dl);

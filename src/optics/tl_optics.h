@@ -84,8 +84,9 @@ void tl_optics_water_fall(const tl_water *w, const double sigma[3], double fall[
  * over (a multiple of the cell); their radii, metres, between the two with
  * a density falling as 1/r² (many fine motes, a few coarse flakes: the
  * steep power law of marine particles; even between the two, every mote
- * was the same dim dot, a judge); the share of their cross-section they scatter (large particles:
- * twice, half of it by diffraction into the forward lobe); a spot's least
+ * was the same dim dot, a judge); the share of their cross-section they
+ * scatter (large particles: twice, half of it by diffraction into the
+ * forward lobe); a spot's least
  * width in pixels (its light spread over a pixel's footprint, not
  * aliased); the cells a ray walks at most (the range's diagonal). */
 #define TL_PARTICLE_CELL         0.25
