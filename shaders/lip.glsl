@@ -207,7 +207,7 @@ float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2, out float boun
         float r = max(length(e), 1.0e-6);
         vec2 grad = vec2(e.x / TL_GIANT_LIP_THROW, e.y) / r;
         float slope = length(grad);
-        float half_thickness = giant_lip_half(lip, angle), roof = 0.0;
+        float body = giant_lip_half(lip, angle), half_thickness = body, roof = 0.0;
         if (r < lip.radius) {
             // The roof is thicker toward the root: the bound takes it as
             // thick as within the point's reach along the inner side.
@@ -215,7 +215,7 @@ float giant_lip_tube_distance(GiantLip lip, vec2 sy, out vec2 n2, out float boun
             half_thickness += giant_lip_fillet(lip, angle);
         }
         n2 = (r >= lip.radius ? 1.0 : -1.0) * grad / slope;
-        bound = abs(r - lip.radius) - max(half_thickness, giant_lip_half(lip, angle) + roof);
+        bound = abs(r - lip.radius) - max(half_thickness, body + roof);
         return abs(r - lip.radius) / slope - half_thickness;
     }
     vec2 d0 = q - giant_lip_arc_point(lip, lip.from), d1 = q - giant_lip_arc_point(lip, lip.to);

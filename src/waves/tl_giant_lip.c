@@ -129,7 +129,7 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
     if (angle >= lip->from && angle <= lip->to) {
         double r = fmax(hypot(es, qy), 1e-9);
         double slope = hypot(es / TL_GIANT_LIP_THROW, qy) / r;
-        double half = tl_giant_lip_half_thickness(lip, angle), roof = 0.0;
+        double body = tl_giant_lip_half_thickness(lip, angle), half = body, roof = 0.0;
         if (r < lip->radius) {
             /* The roof is thicker toward the root: the bound takes it as
              * thick as it is within the point's reach along the inner
@@ -138,7 +138,7 @@ static double tl_giant_lip_tube_distance(const tl_giant_lip *lip, double s, doub
             roof = tl_giant_lip_fillet(lip, angle - reach);
             half += tl_giant_lip_fillet(lip, angle);
         }
-        *bound = fabs(r - lip->radius) - fmax(half, tl_giant_lip_half_thickness(lip, angle) + roof);
+        *bound = fabs(r - lip->radius) - fmax(half, body + roof);
         return fabs(r - lip->radius) / slope - half;
     }
     /* Past either end: the round cap there, as thick as the tube's end.
