@@ -474,18 +474,17 @@ vec2 giant_thickness(vec3 hit, GiantSample g)
     return vec2(t - a_in / max(toward.y, 0.1), wave_in);
 }
 
-// Metres of the wave's water that the sun's light crosses on its way to a
-// point above the height field (camera-relative `from`; the lip's sheet):
-// the ray toward the sun is stepped, each step 1.6 times the last, and the
-// stretches under the surface summed (linearly between steps). A curtain
-// falling in front of the face is lit through the crest behind it, not
-// only through its own sheet, so it is green and dim low on the face and
-// pale only where it stands clear against the sky.
-#define TL_GIANT_THROUGH_STEPS 10
-float giant_water_toward_sun(vec3 from)
+// Metres of the wave's water that a ray from camera-relative `from` along
+// unit `toward` crosses (tl_giant_water_along): the ray is stepped, each
+// step longer than the last, and the stretches under the surface summed
+// (linearly between steps). A curtain falling in front of the face is lit
+// through the crest behind it, not only through its own sheet, so it is
+// green and dim low on the face and pale only where it stands clear
+// against the sky; and the lip's sheet lets through what lies behind it
+// along the view only where no crest stands there (lip_shade.glsl).
+float giant_water_along(vec3 from, vec3 toward)
 {
-    vec3 toward = u_sun_dir;
-    float t = 0.0, step = 0.5, crossed = 0.0;
+    float t = 0.0, step = TL_GIANT_THROUGH_FIRST, crossed = 0.0;
     float above = from.y - giant_height(from.xz);
     for (int i = 0; i < TL_GIANT_THROUGH_STEPS; i++) {
         float t_next = t + step;
@@ -497,11 +496,16 @@ float giant_water_toward_sun(vec3 from)
             crossed += step * max(-above, -next) / abs(next - above);
         t = t_next;
         above = next;
-        step *= 1.6;
+        step *= TL_GIANT_THROUGH_GROWTH;
     }
     // Still under water: the rest of the way as the depth left over the
     // rate the ray climbs (the surface held level beyond).
     return crossed + max(-above, 0.0) / max(toward.y, 0.1);
+}
+
+float giant_water_toward_sun(vec3 from)
+{
+    return giant_water_along(from, u_sun_dir);
 }
 
 // Light through the crest (seed 003's subsurface term, with its depth

@@ -25,6 +25,12 @@
 // into strips (judges).
 #define TL_GIANT_LIP_UNDER_FROM -0.4
 #define TL_GIANT_LIP_UNDER_TO   0.1
+// Per metre, grey: what the air and the stirred-up matter in the thrown
+// sheet take out of the light seen through it, over the water's own
+// extinction. Clear water alone let the sky through a metre-thick lip
+// nearly whole, a sheet of tinted glass; at a metre per metre it was a
+// dull opaque teal again.
+#define TL_GIANT_LIP_AERATION 0.3
 
 // The lip at camera-relative `hit`, seen along `ray`: water thrown off
 // the crest that mirrors the sky, lit through (it is thin: the sun's light
@@ -114,8 +120,20 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     float sky_share = smoothstep(-0.1, 0.05, r.y) *
                       smoothstep(TL_GIANT_LIP_UNDER_FROM, TL_GIANT_LIP_UNDER_TO, n.y);
     vec3 reflection = mix(below, sky_reflected(vec3(r.x, abs(r.y), r.z), sunlit), sky_share);
-    vec3 color =
-        fresnel * reflection + (1.0 - fresnel) * layer_emit(TL_LIGHT_BODY, body + lit * phase);
+    // Seen through: the sheet is a metre or two of water, and what lies
+    // behind it along the view shows through it, dimmed per colour by the
+    // water crossed: the sky where the lip stands clear of the crest, the
+    // crest itself (all its water, so nothing) where the lip lies in front
+    // of the face. The water scatters into the view what it takes out of
+    // it (the body's light, as much as it is opaque). Opaque everywhere,
+    // the lip was one flat teal blade (judges).
+    float sheet = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_THICKEN * ridges) /
+                  max(abs(dot(ray, n)), 0.25);
+    float beyond = giant_water_along(hit + ray * sheet, ray);
+    vec3 through = exp(-u_giant_sigma * (sheet + beyond) - TL_GIANT_LIP_AERATION * sheet);
+    vec3 color = fresnel * reflection +
+                 (1.0 - fresnel) * (layer_emit(TL_LIGHT_BODY, (1.0 - through) * body + lit * phase) +
+                                    through * sky_color(ray));
     // Aerated: the thrown sheet takes air as it goes and is white along its
     // free edge, feathered into streaks along the flow; once landed the
     // rest of it collapses into whitewater, in lace, not a solid coat (a

@@ -79,6 +79,10 @@
 //           metres from the eye, on a level sea (x) and on the giant wave
 //           at camera-relative (x, z) (y)
 //                          (tl_optics_normal_blend, tl_giant_face_blend)
+//   mode 30: metres of the giant wave's water a ray crosses from
+//           camera-relative (x, the input's third float, z), in the
+//           vertical plane of the wave's travel at the input's fourth float
+//           radians up from its travel direction   (tl_giant_water_along)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -218,6 +222,11 @@ void main()
         vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
         vec3 ray = normalize(vec3(p.x, g.height - u_cam_height, p.y));
         result.xyz = giant_facet_seen(n, ray, g);
+    }
+    else if (u_probe_mode == 30) {
+        vec2 d = u_giant_frame.xy;
+        vec3 dir = vec3(cos(input4.w) * d.x, sin(input4.w), cos(input4.w) * d.y);
+        result.x = giant_water_along(vec3(p.x, input4.z, p.y), dir);
     }
     else if (u_probe_mode == 24) {
         vec2 flat_dir = input4.zw;

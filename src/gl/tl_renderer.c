@@ -100,6 +100,9 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_GIANT_SLOPE_BINS %d\n"
         "#define TL_GIANT_CONVERGED %.1e\n"
         "#define TL_GIANT_SHADOW_FADE %.3f\n"
+        "#define TL_GIANT_THROUGH_STEPS %d\n"
+        "#define TL_GIANT_THROUGH_FIRST %.17g\n"
+        "#define TL_GIANT_THROUGH_GROWTH %.17g\n"
         "#define TL_GIANT_VARIATION_WEIGHTS %.17g, %.17g, %.17g\n"
         "#define TL_GIANT_PEEL_ROUND %.17g\n"
         "#define TL_GIANT_TROUGH_LIFT %.17g\n"
@@ -241,7 +244,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_WATER_MIN_SUN_DOWN %.17g\n"
         "#define TL_WATER_MAX_OPTICAL %.17g\n",
         TL_MAX_OCTAVES, (double)TL_FRAME_SKY_DEPTH, TL_GIANT_SLOPE_BINS, TL_GIANT_CONVERGED,
-        TL_GIANT_SHADOW_FADE, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
+        TL_GIANT_SHADOW_FADE, TL_GIANT_THROUGH_STEPS, TL_GIANT_THROUGH_FIRST,
+        TL_GIANT_THROUGH_GROWTH, variation[0], variation[1], variation[2], TL_GIANT_PEEL_ROUND,
         TL_GIANT_TROUGH_LIFT, TL_GIANT_BACK_FILL, TL_GIANT_LIP_RADIUS, TL_GIANT_LIP_THROW,
         TL_GIANT_LIP_THICKNESS, TL_GIANT_LIP_TIP, TL_GIANT_LIP_GROW, TL_GIANT_LIP_ANCHOR,
         TL_GIANT_LIP_ROOT, TL_GIANT_LIP_SWEEP, TL_GIANT_LIP_FADE, TL_GIANT_LIP_COLLAPSE,

@@ -422,6 +422,26 @@ double tl_giant_height(const tl_giant *g, double x, double z, int iterations)
     return smp.height;
 }
 
+double tl_giant_water_along(const tl_giant *g, const double from[3], const double dir[3],
+                            int iterations)
+{
+    double t = 0.0, step = TL_GIANT_THROUGH_FIRST, crossed = 0.0;
+    double above = from[1] - tl_giant_height(g, from[0], from[2], iterations);
+    for (int i = 0; i < TL_GIANT_THROUGH_STEPS; i++) {
+        double t_next = t + step;
+        double x = from[0] + dir[0] * t_next, z = from[2] + dir[2] * t_next;
+        double next = from[1] + dir[1] * t_next - tl_giant_height(g, x, z, iterations);
+        if (above < 0.0 && next < 0.0)
+            crossed += step;
+        else if (above < 0.0 || next < 0.0)
+            crossed += step * fmax(-above, -next) / fabs(next - above);
+        t = t_next;
+        above = next;
+        step *= TL_GIANT_THROUGH_GROWTH;
+    }
+    return crossed + fmax(-above, 0.0) / fmax(dir[1], 0.1);
+}
+
 double tl_giant_sunlit(const tl_giant *g, double x, double z, double y, const double sun[3])
 {
     return tl_giant_clear(g, x, z, y, sun, 0.0);

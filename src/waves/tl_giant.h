@@ -201,6 +201,11 @@
  * the sea's mean level; a crest the width mask lets down casts a fainter
  * one, and none at 0 (tl_giant_sunlit). */
 #define TL_GIANT_SHADOW_FADE 0.5
+/* The steps of tl_giant_water_along: a few dozen metres covered in a few
+ * steps, fine near the start where a thin sheet is crossed. */
+#define TL_GIANT_THROUGH_STEPS  10
+#define TL_GIANT_THROUGH_FIRST  0.5
+#define TL_GIANT_THROUGH_GROWTH 1.6
 
 /* The giant wave's matte (the compositing passes' mask_giant and its
  * Cryptomatte object): the water it raises above this share of its height
@@ -422,6 +427,17 @@ double tl_giant_foam_coverage(const tl_giant *g, const tl_giant_sample *smp, dou
  * shaders/giant.glsl's giant_clear is the same rule. */
 double tl_giant_clear(const tl_giant *g, double x, double z, double y, const double dir[3],
                       double spread);
+
+/* Metres of the wave's water that a ray from world `from` along unit
+ * `dir` crosses (the height field alone, not the lip): the ray is stepped,
+ * each step TL_GIANT_THROUGH_GROWTH times the last from
+ * TL_GIANT_THROUGH_FIRST metres, TL_GIANT_THROUGH_STEPS in all, and the
+ * stretches under the surface summed (linearly between steps); a ray still
+ * under water at the end adds the depth left over the rate it climbs (the
+ * surface held level beyond; at least 0.1). The light through the lip's
+ * sheet comes along these rays (giant_water_along). */
+double tl_giant_water_along(const tl_giant *g, const double from[3], const double dir[3],
+                            int iterations);
 
 /* How much of the sun (unit direction `sun`, toward it) a point sees past
  * the crest: its shadow, tl_giant_clear toward the sun with no spread
