@@ -35,10 +35,13 @@ float giant_spray_billows(float envelope, float w, float ts, float ty)
 
 // Density (0 or more) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
-float giant_spray_sample(vec3 p, float span, out float shade)
+// `cloud`: the landing's envelope there (0 outside it), where the march
+// takes finer steps.
+float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
 {
     float density = 0.0;
     shade = 0.0;
+    cloud = 0.0;
     vec2 sw = giant_coords(p.xz);
     if (abs(sw.y) < u_giant_mask.z && sw.x >= u_giant_spray_box.x && sw.x <= u_giant_spray_box.y &&
         p.y >= u_giant_spray_box.z && p.y <= u_giant_spray_box.w) {
@@ -99,8 +102,9 @@ float giant_spray_sample(vec3 p, float span, out float shade)
             float d2 = max(ts * ts + ty * ty - a * a, 0.0);
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
                     sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
-            density +=
-                landing * giant_spray_billows(exp(-(ts * ts + ty * ty) / (r * r)), sw.y, ts, ty);
+            float envelope = exp(-(ts * ts + ty * ty) / (r * r));
+            cloud = landing > 0.0 ? envelope : 0.0;
+            density += landing * giant_spray_billows(envelope, sw.y, ts, ty);
         }
 #endif
     }
@@ -116,6 +120,12 @@ float giant_spray_sample(vec3 p, float span, out float shade)
                                                 u_giant_spray_heading.z, u_sun_dir);
     }
     return density;
+}
+
+float giant_spray_sample(vec3 p, float span, out float shade)
+{
+    float cloud;
+    return giant_spray_sample(p, span, shade, cloud);
 }
 
 // The spray's density alone (tl_giant_spray_density).
@@ -145,6 +155,13 @@ float giant_spray_density(vec3 p, float span)
 // samples found other wisps, a grain like asphalt over the back of the
 // wave.
 #define TL_SPRAY_SHADE_WATER 4.0
+// The landing's cloud is marched TL_SPRAY_CLOUD_REFINE times finer than
+// quality.spray_step, in at most TL_SPRAY_CLOUD_STEPS parts of a step,
+// where its envelope is over TL_SPRAY_CLOUD_FROM.
+#define TL_SPRAY_CLOUD_REFINE 2.0
+#define TL_SPRAY_CLOUD_STEPS  16
+#define TL_SPRAY_CLOUD_FROM   0.003
+#define TL_SPRAY_OPAQUE       0.005
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
     // The crest's box in the wave's frame, and the bow's sphere.
@@ -180,12 +197,30 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
     float offset = spray_step_offset();
+    // In the landing's cloud a step is cut into TL_SPRAY_CLOUD_REFINE or
+    // more parts (at most TL_SPRAY_CLOUD_STEPS): its billows' edges are
+    // sharper than a step, and each pixel's one sample per step fell in or
+    // out of them, a grain of white dots over its edges. Whether the cloud
+    // is there is known from the step before (the envelope is metres
+    // across, smooth): the first step into it is taken whole.
+    float cloud = 0.0;
     for (int i = 0; i < steps; i++) {
-        vec3 p = vec3(0.0, u_cam_height, 0.0) + ray * (t0 + (float(i) + offset) * dt);
+        // Past TL_SPRAY_OPAQUE of the light left, the rest of the ray adds
+        // at most that share of the cloud's light: the march stops.
+        if (trans < TL_SPRAY_OPAQUE)
+            break;
+        int parts = cloud > TL_SPRAY_CLOUD_FROM
+                        ? clamp(int(ceil(TL_SPRAY_CLOUD_REFINE * dt / u_spray_step)), 1,
+                                TL_SPRAY_CLOUD_STEPS)
+                        : 1;
+        float part = dt / float(parts);
+        for (int k = 0; k < parts; k++) {
+        vec3 p = vec3(0.0, u_cam_height, 0.0) +
+                 ray * (t0 + float(i) * dt + (float(k) + offset) * part);
         float shade;
-        float density = giant_spray_sample(p, abs(ray.y) * dt, shade);
+        float density = giant_spray_sample(p, abs(ray.y) * part, shade, cloud);
         float sigma = TL_SPRAY_SIGMA * density;
-        float step_trans = exp(-sigma * dt);
+        float step_trans = exp(-sigma * part);
         // A dense cloud (the landing's whitewater, the bow's burst) scatters
         // the sun many times inside and looks white from every side: its
         // share of TL_SPRAY_DIFFUSE/pi on top of the single-scattering lobe.
@@ -211,6 +246,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
             TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
+        }
     }
     return color * trans + layer_emit(TL_LIGHT_SPRAY, scattered);
 }

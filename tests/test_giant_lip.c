@@ -6,32 +6,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "tl_gl_test.h"
+#include "tl_breaking_test.h"
 #include "waves/tl_bow_spray.h"
 #include "waves/tl_giant_spray.h"
-
-/* A breaking wave whose peak broke `age` seconds before t, centred on
- * (cx, cz) with the crest on the centre line there. */
-static void breaking_scene(tl_scene *s, double t, double age, double cx, double cz)
-{
-    tl_scene_defaults(s);
-    s->time = t;
-    s->giant.enabled = true;
-    s->giant.height = 16.0;
-    s->giant.wavelength = 100.0;
-    s->giant.width = 160.0;
-    s->giant.steepness = 0.75;
-    s->giant.curve_strength = 0.6;
-    s->giant.angle = 20.0 * M_PI / 180.0;
-    s->giant.center[0] = cx;
-    s->giant.center[1] = cz;
-    s->giant.arrival = t;
-    s->giant.peak = -20.0;
-    s->giant.breaking = true;
-    s->giant.break_time = t - age;
-    s->giant.peel_speed = 7.0;
-    s->giant.spray = 1.5;
-}
 
 static double smoothstep_test(double e0, double e1, double x)
 {
