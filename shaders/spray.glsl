@@ -35,8 +35,8 @@ float giant_spray_billows(float envelope, float w, float ts, float ty)
 
 // Density (0 or more) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
-// `cloud`: the landing's envelope there (0 outside it), where the march
-// takes finer steps.
+// `cloud`: the most density the landing's billows can have there (0
+// outside it), where the march takes finer steps.
 float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
 {
     float density = 0.0;
@@ -103,7 +103,7 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
                     sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
             float envelope = exp(-(ts * ts + ty * ty) / (r * r));
-            cloud = landing > 0.0 ? envelope : 0.0;
+            cloud = landing * sqrt(envelope);
             density += landing * giant_spray_billows(envelope, sw.y, ts, ty);
         }
 #endif
@@ -160,7 +160,7 @@ float giant_spray_density(vec3 p, float span)
 // where its envelope is over TL_SPRAY_CLOUD_FROM.
 #define TL_SPRAY_CLOUD_REFINE 2.0
 #define TL_SPRAY_CLOUD_STEPS  16
-#define TL_SPRAY_CLOUD_FROM   0.003
+#define TL_SPRAY_CLOUD_FROM   0.01
 #define TL_SPRAY_OPAQUE       0.005
 vec3 giant_spray(vec3 ray, float dist, vec3 color)
 {
@@ -203,22 +203,29 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     // out of them, a grain of white dots over its edges. Whether the cloud
     // is there is known from the step before (the envelope is metres
     // across, smooth): the first step into it is taken whole.
+    // One loop over steps and their parts (nested loops of a varying
+    // count compiled to far slower code on llvmpipe).
     float cloud = 0.0;
-    for (int i = 0; i < steps; i++) {
-        // Past TL_SPRAY_OPAQUE of the light left, the rest of the ray adds
-        // at most that share of the cloud's light: the march stops.
-        if (trans < TL_SPRAY_OPAQUE)
-            break;
-        int parts = cloud > TL_SPRAY_CLOUD_FROM
+    int i = 0, k = 0, parts = 1;
+    for (int n = 0; n < TL_SPRAY_STEPS_MAX * TL_SPRAY_CLOUD_STEPS; n++) {
+        if (k == parts) {
+            k = 0;
+            i++;
+            parts = TL_SPRAY_SIGMA * cloud * dt > TL_SPRAY_CLOUD_FROM
                         ? clamp(int(ceil(TL_SPRAY_CLOUD_REFINE * dt / u_spray_step)), 1,
                                 TL_SPRAY_CLOUD_STEPS)
                         : 1;
+        }
+        // Past TL_SPRAY_OPAQUE of the light left, the rest of the ray adds
+        // at most that share of the cloud's light: the march stops.
+        if (i >= steps || trans < TL_SPRAY_OPAQUE)
+            break;
         float part = dt / float(parts);
-        for (int k = 0; k < parts; k++) {
         vec3 p = vec3(0.0, u_cam_height, 0.0) +
                  ray * (t0 + float(i) * dt + (float(k) + offset) * part);
         float shade;
         float density = giant_spray_sample(p, abs(ray.y) * part, shade, cloud);
+        k++;
         float sigma = TL_SPRAY_SIGMA * density;
         float step_trans = exp(-sigma * part);
         // A dense cloud (the landing's whitewater, the bow's burst) scatters
@@ -246,7 +253,6 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
             TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
-        }
     }
     return color * trans + layer_emit(TL_LIGHT_SPRAY, scattered);
 }
