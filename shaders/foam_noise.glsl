@@ -60,3 +60,37 @@ float foam_detail(vec2 p, float footprint)
     }
     return sum / 0.96875;
 }
+
+// Cellular noise (tl_noise_cells): the distance from p to the border
+// between the cells of its two nearest points, one point per unit cell at
+// a hashed place, F2 - F1 (0 on a border, about 1 at most). Foam's
+// spent lace is a net of bubbles along such borders.
+float foam_cells(vec2 p)
+{
+    vec2 i = floor(p), f = p - i;
+    float f1 = 8.0, f2 = 8.0;
+    for (int y = -1; y <= 1; y++)
+        for (int x = -1; x <= 1; x++) {
+            ivec2 c = ivec2(i) + ivec2(x, y);
+            vec2 at = vec2(x, y) + vec2(TL_NOISE_CELL_MARGIN) +
+                      (1.0 - 2.0 * TL_NOISE_CELL_MARGIN) *
+                          vec2(foam_hash(c), foam_hash(c + ivec2(TL_NOISE_CELL_SHIFT_X,
+                                                                   TL_NOISE_CELL_SHIFT_Y)));
+            float d = length(at - f);
+            if (d < f1) {
+                f2 = f1;
+                f1 = d;
+            } else if (d < f2)
+                f2 = d;
+        }
+    return f2 - f1;
+}
+
+// A net of lines `width` (cell units) wide along the cells' borders at p,
+// for a pixel `footprint` cell units across: a line narrower than the
+// pixel is drawn a pixel wide and as much fainter, so it cannot flicker.
+float foam_net(vec2 p, float width, float footprint)
+{
+    float drawn = max(width, footprint);
+    return (1.0 - smoothstep(0.2 * drawn, drawn, foam_cells(p))) * width / drawn;
+}

@@ -83,6 +83,8 @@
 //           camera-relative (x, the input's third float, z), in the
 //           vertical plane of the wave's travel at the input's fourth float
 //           radians up from its travel direction   (tl_giant_water_along)
+//   mode 31: the foam's cellular noise at (x, z), not camera-relative
+//                                                   (tl_noise_cells)
 #include "uniforms.glsl"
 #include "waves.glsl"
 #include "sky.glsl"
@@ -165,6 +167,8 @@ void main()
         result.xyz = material_env_brdf(vec3(0.04, 0.5, 0.9), p.y, p.x);
     else if (u_probe_mode == 15)
         result.x = material_wetness(p.x, p.y);
+    else if (u_probe_mode == 31)
+        result.x = foam_cells(p);
     else if (u_probe_mode == 26)
         result.x = hull_wash_cover(input4.x, hull_wash_top(input4.y, input4.z), input4.w);
 #ifdef TL_FEATURE_CAUSTICS

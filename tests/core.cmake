@@ -50,6 +50,7 @@ tl_add_test(test_giant_light SOURCES test_giant_light.c LIBS tideline_gl LABELS 
 tl_add_test(test_giant_face SOURCES test_giant_face.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_through SOURCES test_giant_through.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_spray_march SOURCES test_spray_march.c LIBS tideline_gl LABELS gl)
+tl_add_test(test_foam_cells SOURCES test_foam_cells.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_giant_lip SOURCES test_giant_lip.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_mesh SOURCES test_mesh.c LIBS tideline_core ARGS ${PROJECT_SOURCE_DIR}/tests/meshes LABELS unit)
 tl_add_test(test_boat_render SOURCES test_boat_render.c LIBS tideline_gl
