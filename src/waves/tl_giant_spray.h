@@ -32,8 +32,11 @@
 /* The plume's density at giant.spray 1, at its middle just behind the
  * crest (the other clouds' gains below are per unit of giant.spray too).
  * At 1 the plume was a faint beige haze over the crest's top (judges: "no
- * spindrift anywhere"); backlit spindrift glows. */
-#define TL_SPRAY_PLUME_GAIN 6.0
+ * spindrift anywhere"); backlit spindrift glows. At 6, seen from above
+ * through its length toward a low sun, it was a white fog that hid the sea
+ * and the horizon behind the crest, and from the foot of the face a white
+ * fringe along the crest (judges). */
+#define TL_SPRAY_PLUME_GAIN 3.0
 /* The crest sheds spray unevenly along its length: in gusts
  * TL_SPRAY_GUST_CELL metres across (a value noise along the crest), the
  * plume rises 1 ∓ TL_SPRAY_GUST of its lift and is as much denser or
@@ -44,9 +47,10 @@
 #define TL_SPRAY_GUST      0.8
 #define TL_SPRAY_GUST_CELL 9.0
 /* Between its streaks the plume keeps this share of its density: with
- * none (and at 0.3), the crest's dark top showed through the gaps as a
- * dotted kerb. */
-#define TL_SPRAY_WISP_FLOOR 0.65
+ * none, the crest's dark top showed through the gaps as a dotted kerb; at
+ * 0.65 the plume was one even veil, a fog rather than streaks torn off the
+ * crest (judges). */
+#define TL_SPRAY_WISP_FLOOR 0.3
 /* The spray is densest where it leaves the crest: 1 + TL_SPRAY_ROOT_GAIN
  * times the plume's density there, falling back to the plume's over
  * TL_SPRAY_ROOT_REACH of its reach. Thinner, the veil over the crest's
