@@ -86,6 +86,21 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
 #ifdef TL_FEATURE_GIANT_LIP
         // Where the lip lands, whitewater erupts.
         GiantLip lip = giant_lip_at(sw.y);
+        // Its free edge tears into droplets while it throws (TL_SPRAY_TIP_*,
+        // tl_giant_spray.c's tip_density).
+        if (lip.present) {
+            float tip_s = lip.center.x + lip.radius * TL_GIANT_LIP_THROW * sin(lip.to) - sw.x;
+            float tip_y = lip.center.y + lip.radius * cos(lip.to) - p.y;
+            float rt = TL_SPRAY_TIP_RADIUS * lip.radius;
+            float torn = TL_SPRAY_TIP_GAIN * u_giant_spray.x *
+                         smoothstep(TL_SPRAY_TIP_START, TL_SPRAY_TIP_FULL, lip.progress) *
+                         (1.0 - smoothstep(TL_SPRAY_TIP_FADE, TL_SPRAY_TIP_GONE, lip.progress));
+            float envelope = exp(-(tip_s * tip_s + tip_y * tip_y) / (rt * rt));
+            cloud = max(cloud, torn * sqrt(envelope));
+            density += torn * giant_spray_billows(envelope, lip.w * TL_SPRAY_TIP_SCALE,
+                                                  tip_s * TL_SPRAY_TIP_SCALE,
+                                                  tip_y * TL_SPRAY_TIP_SCALE);
+        }
         if (lip.present && lip.progress > 0.5) {
             float ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
             float ts = lip.center.x + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead) - sw.x;
@@ -103,7 +118,7 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
                     sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
             float envelope = exp(-(ts * ts + ty * ty) / (r * r));
-            cloud = landing * sqrt(envelope);
+            cloud = max(cloud, landing * sqrt(envelope));
             density += landing * giant_spray_billows(envelope, sw.y, ts, ty);
         }
 #endif

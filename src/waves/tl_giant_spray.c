@@ -191,6 +191,25 @@ double tl_giant_spray_layer(double x, double r, double span)
     return 0.25 * sqrt(M_PI) * r / h * (erf((x + h) / r) - erf((x - h) / r));
 }
 
+/* The droplets the lip's free edge tears off while it throws, at (s, y)
+ * and the lip's w (TL_SPRAY_TIP_*). */
+static double tip_density(const tl_giant_spray *sp, const tl_giant_lip *lip, double s, double y)
+{
+    if (!lip->present)
+        return 0.0;
+    double ts = lip->center[0] + lip->radius * TL_GIANT_LIP_THROW * sin(lip->to) - s;
+    double ty = lip->center[1] + lip->radius * cos(lip->to) - y;
+    double r = TL_SPRAY_TIP_RADIUS * lip->radius;
+    double torn = TL_SPRAY_TIP_GAIN * sp->amount *
+                  tl_smoothstep(TL_SPRAY_TIP_START, TL_SPRAY_TIP_FULL, lip->progress) *
+                  (1.0 - tl_smoothstep(TL_SPRAY_TIP_FADE, TL_SPRAY_TIP_GONE, lip->progress));
+    if (!(torn > 0.0))
+        return 0.0;
+    return torn * tl_giant_spray_billows(exp(-(ts * ts + ty * ty) / (r * r)),
+                                         lip->w * TL_SPRAY_TIP_SCALE, ts * TL_SPRAY_TIP_SCALE,
+                                         ty * TL_SPRAY_TIP_SCALE);
+}
+
 /* The lip's landing cloud as seen from (s, y) at the lip's w: the offset
  * (ts, ty) from the point to the cloud's middle, its radius, and its
  * density at the middle (before the noise); false where there is none. */
@@ -275,9 +294,10 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         }
         density += TL_SPRAY_PLUME_GAIN * sp->amount * gust * source * plume *
                    (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
-        /* The lip's landing. */
+        /* The lip's torn edge and its landing. */
         tl_giant_lip lip;
         tl_giant_lip_at(g, w, sp->base, &lip);
+        density += tip_density(sp, &lip, s, y);
         double ts, ty, r, peak;
         if (landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak)) {
             density +=

@@ -128,6 +128,22 @@
 /* The billowed cloud's mass over its envelope's (test_giant_lip measures
  * it): what its self-shade takes for the billows. */
 #define TL_SPRAY_LANDING_MEAN 0.59
+/* The lip's free edge tears into droplets while it throws: a tube along
+ * the crest round the tip of its arc, TL_SPRAY_TIP_RADIUS of the lip's
+ * radius across, TL_SPRAY_TIP_GAIN per unit of giant.spray at its middle,
+ * in the landing's billows TL_SPRAY_TIP_SCALE times finer. It comes in as
+ * the throw passes from TL_SPRAY_TIP_START to _FULL and goes as it passes
+ * from TL_SPRAY_TIP_FADE to _GONE (the landing's whitewater takes over).
+ * Without it the lip ended in a clean, hard edge, "a stiff paper flap"
+ * (judges); seen along the crest the tube is long, and at 20 and a
+ * third of the radius it hid the whole lip in a white wall. */
+#define TL_SPRAY_TIP_RADIUS 0.15
+#define TL_SPRAY_TIP_GAIN   3.0
+#define TL_SPRAY_TIP_SCALE  3.0
+#define TL_SPRAY_TIP_START  0.02
+#define TL_SPRAY_TIP_FULL   0.2
+#define TL_SPRAY_TIP_FADE   0.6
+#define TL_SPRAY_TIP_GONE   0.9
 /* The bow's burst's density per unit of giant.spray: thrown water, not
  * blown droplets. */
 #define TL_SPRAY_BOW_GAIN  12.0
