@@ -35,8 +35,8 @@ float giant_spray_billows(float envelope, float w, float ts, float ty)
 
 // Density (0 or more) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
-// `cloud`: the most density the landing's billows can have there (0
-// outside it), where the march takes finer steps.
+// `cloud`: the most density the lip's spray (its torn edge, its landing)
+// can have there (0 outside it), where the march takes finer steps.
 float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
 {
     float density = 0.0;
@@ -84,10 +84,9 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
         density += TL_SPRAY_PLUME_GAIN * u_giant_spray.x * gust * source * plume *
                    (TL_SPRAY_WISP_FLOOR + (1.0 - TL_SPRAY_WISP_FLOOR) * wisps);
 #ifdef TL_FEATURE_GIANT_LIP
-        // Where the lip lands, whitewater erupts.
+        // The lip's free edge tears into droplets while it throws
+        // (TL_SPRAY_TIP_*, tl_giant_spray.c's tip_density).
         GiantLip lip = giant_lip_at(sw.y);
-        // Its free edge tears into droplets while it throws (TL_SPRAY_TIP_*,
-        // tl_giant_spray.c's tip_density).
         if (lip.present) {
             float tip_s = lip.center.x + lip.radius * TL_GIANT_LIP_THROW * sin(lip.to) - sw.x;
             float tip_y = lip.center.y + lip.radius * cos(lip.to) - p.y;
@@ -101,6 +100,7 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
                                                   tip_s * TL_SPRAY_TIP_SCALE,
                                                   tip_y * TL_SPRAY_TIP_SCALE);
         }
+        // Where the lip lands, whitewater erupts.
         if (lip.present && lip.progress > 0.5) {
             float ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
             float ts = lip.center.x + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead) - sw.x;
@@ -170,9 +170,10 @@ float giant_spray_density(vec3 p, float span)
 // samples found other wisps, a grain like asphalt over the back of the
 // wave.
 #define TL_SPRAY_SHADE_WATER 4.0
-// The landing's cloud is marched TL_SPRAY_CLOUD_REFINE times finer than
+// The lip's spray is marched TL_SPRAY_CLOUD_REFINE times finer than
 // quality.spray_step, in at most TL_SPRAY_CLOUD_STEPS parts of a step,
-// where its envelope is over TL_SPRAY_CLOUD_FROM.
+// where a step could hold an optical depth over TL_SPRAY_CLOUD_FROM of it;
+// the march stops with under TL_SPRAY_OPAQUE of the light left.
 #define TL_SPRAY_CLOUD_REFINE 2.0
 #define TL_SPRAY_CLOUD_STEPS  16
 #define TL_SPRAY_CLOUD_FROM   0.01
@@ -212,7 +213,7 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
     float trans = 1.0;
     vec3 scattered = vec3(0.0);
     float offset = spray_step_offset();
-    // In the landing's cloud a step is cut into TL_SPRAY_CLOUD_REFINE or
+    // In the lip's spray a step is cut into TL_SPRAY_CLOUD_REFINE or
     // more parts (at most TL_SPRAY_CLOUD_STEPS): its billows' edges are
     // sharper than a step, and each pixel's one sample per step fell in or
     // out of them, a grain of white dots over its edges. Whether the cloud
