@@ -100,9 +100,10 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // Light through the tube: its thickness there along the sun's ray.
     float daylight = smoothstep(-0.05, 0.1, u_sun_dir.y);
     // The combed sheet is thicker under its ridges and thinner between
-    // them, so the glow through it is streaked along the flow too.
-    float across_sun = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_THICKEN * ridges) /
-                       max(abs(dot(u_sun_dir, n)), 0.25);
+    // them, so the glow through it (and the view, below) is streaked along
+    // the flow too.
+    float thickness = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_THICKEN * ridges);
+    float across_sun = thickness / max(abs(dot(u_sun_dir, n)), 0.25);
     float mu = dot(refract(ray, n, 1.0 / u_water_ior), u_sun_dir);
     float phase = 0.5 * (giant_hg(mu, u_giant_scatter.y) + giant_hg(mu, -u_giant_scatter.z));
     float behind = giant_water_toward_sun(hit);
@@ -127,8 +128,7 @@ vec3 giant_lip_color(vec3 ray, vec3 hit)
     // of the face. The water scatters into the view what it takes out of
     // it (the body's light, as much as it is opaque). Opaque everywhere,
     // the lip was one flat teal blade (judges).
-    float sheet = 2.0 * giant_lip_half(lip, angle) * (1.0 + TL_GIANT_LIP_THICKEN * ridges) /
-                  max(abs(dot(ray, n)), 0.25);
+    float sheet = thickness / max(abs(dot(ray, n)), 0.25);
     float beyond = giant_water_along(hit + ray * sheet, ray);
     vec3 through = exp(-u_giant_sigma * (sheet + beyond) - TL_GIANT_LIP_AERATION * sheet);
     vec3 color = fresnel * reflection +
