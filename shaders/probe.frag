@@ -25,7 +25,9 @@
 //   mode 12: the spray's density at camera-relative (x, z) and height y,
 //           the input's third float, over the span of height its fourth
 //           (tl_giant_spray_density), and in .y the landing's and the
-//           burst's optical depth toward the sun there (tl_giant_spray_shade)
+//           burst's optical depth toward the sun there (tl_giant_spray_shade),
+//           in .z and .w what the landing's billows let in of the sun and of
+//           the sky overhead (tl_giant_spray_open)
 //   mode 13: a material's BRDF x cos for the normal +y, the view at angle x
 //           from it, the light at angle y, z the azimuth between them; w
 //           the roughness, negative for a metal; base colour 0.8 0.4 0.1
@@ -252,8 +254,12 @@ void main()
     }
 #endif
 #ifdef TL_FEATURE_GIANT_SPRAY
-    else if (u_probe_mode == 12)
-        result.x = giant_spray_sample(vec3(p.x, input4.z, p.y), input4.w, result.y);
+    else if (u_probe_mode == 12) {
+        float cloud;
+        vec2 open;
+        result.x = giant_spray_sample(vec3(p.x, input4.z, p.y), input4.w, result.y, cloud, open);
+        result.zw = open;
+    }
 #endif
 #ifdef TL_FEATURE_WAKE
     else if (u_probe_mode == 9) {

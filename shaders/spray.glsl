@@ -18,30 +18,52 @@ float giant_spray_layer(float x, float r, float span)
     return 0.25 * sqrt(TL_PI) * r / h * (spray_erf((x + h) / r) - spray_erf((x - h) / r));
 }
 
-// The landing's density over its peak at w across the crest, (ts, ty)
-// from its centre: round billows (two noises in crossed planes
-// multiplied, with a finer grain) that shrink toward the cloud's edge and
-// close in its core (tl_giant_spray_billows).
-float giant_spray_billows(float envelope, float w, float ts, float ty)
+// The landing's billows' field at w across the crest, (ts, ty) from its
+// centre: round lumps (two noises in crossed planes multiplied, with a
+// finer grain), shifted up in its core (tl_giant_spray_billow_field).
+float giant_spray_billow_field(float envelope, float w, float ts, float ty)
 {
     float billow = foam_noise(vec2(w / 1.6 + 5.0, ts / 1.6)) *
                    foam_noise(vec2(w / 1.6 - 2.0, ty / 1.6 + 4.0));
     float grain = foam_noise(vec2(w / 0.5 - 3.0, (ts + ty) / 0.5));
-    float cover = sqrt(envelope);
-    return cover * smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
-                              (0.8 + 0.2 * grain) * billow + 0.1 * grain +
-                                  TL_SPRAY_LANDING_CLOSE * (cover - TL_SPRAY_LANDING_OPEN));
+    return (0.8 + 0.2 * grain) * billow + 0.1 * grain +
+           TL_SPRAY_LANDING_CLOSE * (sqrt(envelope) - TL_SPRAY_LANDING_OPEN);
+}
+
+// Billows' density over their peak: whole, with hard edges, fewer toward
+// the cloud's edge (tl_giant_spray_billows).
+float giant_spray_billows(float envelope, float w, float ts, float ty)
+{
+    return smoothstep(TL_SPRAY_LANDING_EDGE_FROM, TL_SPRAY_LANDING_EDGE_TO, sqrt(envelope)) *
+           smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
+                      giant_spray_billow_field(envelope, w, ts, ty));
+}
+
+// What of a light along unit `light` a billow at (w, ts, ty) of a cloud
+// of radius r lets in: its field TL_SPRAY_BURY_STEP toward the light
+// (tl_giant_spray.c's billow_open).
+float giant_spray_billow_open(float w, float ts, float ty, float r, vec3 light)
+{
+    vec2 d = u_giant_frame.xy;
+    float ls = dot(d, light.xz), lw = dot(vec2(d.y, -d.x), light.xz);
+    float s2 = ts - TL_SPRAY_BURY_STEP * ls, y2 = ty - TL_SPRAY_BURY_STEP * light.y;
+    float field = giant_spray_billow_field(exp(-(s2 * s2 + y2 * y2) / (r * r)),
+                                           w + TL_SPRAY_BURY_STEP * lw, s2, y2);
+    return 1.0 - TL_SPRAY_BURY * smoothstep(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO, field);
 }
 
 // Density (0 or more) at camera-relative p (y absolute); `span`:
 // the height a march's sample stands for (tl_giant_spray_density).
 // `cloud`: the most density the lip's spray (its torn edge, its landing)
 // can have there (0 outside it), where the march takes finer steps.
-float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
+// `open`: what of the sun's light (x) and the sky's overhead (y) the
+// landing's billows let in there (tl_giant_spray_open).
+float giant_spray_sample(vec3 p, float span, out float shade, out float cloud, out vec2 open)
 {
-    float density = 0.0;
+    float density = 0.0, billowed = 0.0;
     shade = 0.0;
     cloud = 0.0;
+    open = vec2(1.0);
     vec2 sw = giant_coords(p.xz);
     if (abs(sw.y) < u_giant_mask.z && sw.x >= u_giant_spray_box.x && sw.x <= u_giant_spray_box.y &&
         p.y >= u_giant_spray_box.z && p.y <= u_giant_spray_box.w) {
@@ -106,10 +128,11 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
             float ts = lip.center.x + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead) - sw.x;
             float ty =
                 lip.center.y + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent) - p.y;
-            float r =
-                TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
-            float landing = TL_SPRAY_LANDING_GAIN * u_giant_spray.x *
-                            smoothstep(0.5, 1.0, lip.progress) * (1.0 - lip.spent * lip.spent);
+            float r = TL_SPRAY_LANDING_RADIUS * lip.radius *
+                      (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent) *
+                      (TL_SPRAY_LANDING_SEED +
+                       (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep(0.5, 1.0, lip.progress));
+            float landing = TL_SPRAY_LANDING_GAIN * u_giant_spray.x * (1.0 - lip.spent * lip.spent);
             // Its own shade (tl_giant_spray_landing_shade): the envelope
             // integrated toward the sun in closed form.
             vec2 v = vec2(dot(u_sun_dir.xz, u_giant_frame.xy), u_sun_dir.y);
@@ -118,8 +141,19 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
             shade = TL_SPRAY_SIGMA * landing * TL_SPRAY_LANDING_MEAN * exp(-d2 / (r * r)) * 0.5 *
                     sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
             float envelope = exp(-(ts * ts + ty * ty) / (r * r));
-            cloud = max(cloud, landing * sqrt(envelope));
-            density += landing * giant_spray_billows(envelope, sw.y, ts, ty);
+            float cover = sqrt(envelope);
+            cloud = max(cloud, landing * (smoothstep(TL_SPRAY_LANDING_EDGE_FROM,
+                                                     TL_SPRAY_LANDING_EDGE_TO, cover) +
+                                          TL_SPRAY_LANDING_MIST * cover));
+            // Its billows in their mist (tl_giant_spray_whitewater).
+            float billows =
+                giant_spray_billows(envelope, sw.y, ts, ty) + TL_SPRAY_LANDING_MIST * cover;
+            density += landing * billows;
+            if (billows > 0.1 && landing > 0.0) {
+                billowed = landing * billows;
+                open = vec2(giant_spray_billow_open(sw.y, ts, ty, r, u_sun_dir),
+                            giant_spray_billow_open(sw.y, ts, ty, r, vec3(0.0, 1.0, 0.0)));
+            }
         }
 #endif
     }
@@ -134,13 +168,17 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud)
                      bow_spray_sheet_depth(d, u_giant_spray_heading.xy, u_giant_spray.w,
                                                 u_giant_spray_heading.z, u_sun_dir);
     }
+    // The billows' shade weighed by their share of the density there.
+    if (billowed > 0.0)
+        open = 1.0 + (open - 1.0) * (billowed / density);
     return density;
 }
 
 float giant_spray_sample(vec3 p, float span, out float shade)
 {
     float cloud;
-    return giant_spray_sample(p, span, shade, cloud);
+    vec2 open;
+    return giant_spray_sample(p, span, shade, cloud, open);
 }
 
 // The spray's density alone (tl_giant_spray_density).
@@ -240,7 +278,8 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         vec3 p = vec3(0.0, u_cam_height, 0.0) +
                  ray * (t0 + float(i) * dt + (float(k) + offset) * part);
         float shade;
-        float density = giant_spray_sample(p, abs(ray.y) * part, shade, cloud);
+        vec2 open;
+        float density = giant_spray_sample(p, abs(ray.y) * part, shade, cloud, open);
         k++;
         float sigma = TL_SPRAY_SIGMA * density;
         float step_trans = exp(-sigma * part);
@@ -263,10 +302,12 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         vec3 through = max(vec3(sunlit), dense * exp(-u_giant_sigma * TL_SPRAY_SHADE_WATER));
         // The landing's and the burst's own shade dims the sun's single
         // scattering, and its many scatterings less (they carry light in
-        // from the lit side).
+        // from the lit side); the billows' own shade dims the sun's and
+        // the sky's light alike.
         float shaded = exp(-shade);
-        vec3 light =
-            TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through + ambient);
+        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through *
+                                            open.x +
+                                        ambient * open.y);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }

@@ -829,7 +829,7 @@ static void test_landing_billow_mean(void)
                 double ts = 2.5 * r * (2.0 * (j + 0.5) / 100.0 - 1.0);
                 double ty = 2.5 * r * (2.0 * (k + 0.5) / 100.0 - 1.0);
                 double e = exp(-(ts * ts + ty * ty) / (r * r));
-                billowed += tl_giant_spray_billows(e, w, ts, ty);
+                billowed += tl_giant_spray_whitewater(e, w, ts, ty);
                 envelope += e;
             }
     double ratio = billowed / envelope;
@@ -860,7 +860,9 @@ static void test_landing_shade(void)
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
     double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
     double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
-    double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent);
+    double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent) *
+               (TL_SPRAY_LANDING_SEED +
+                (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep_test(0.5, 1.0, lip.progress));
     double vs = sun[0] * g.dir[0] + sun[2] * g.dir[1];
     double worst = 0.0, side[2];
     for (int k = -1; k <= 1; k++) {
@@ -878,7 +880,7 @@ static void test_landing_shade(void)
             sum += exp(-(qs * qs + qy * qy) / (r * r)) * dt;
         }
         sum *= TL_SPRAY_SIGMA * TL_SPRAY_LANDING_GAIN * 1.5 * TL_SPRAY_LANDING_MEAN *
-               smoothstep_test(0.5, 1.0, lip.progress) * (1.0 - lip.spent * lip.spent);
+               (1.0 - lip.spent * lip.spent);
         worst = fmax(worst, fabs(closed - sum) / fmax(sum, 1e-9));
         if (k != 0)
             side[k > 0] = closed;
@@ -888,6 +890,69 @@ static void test_landing_shade(void)
         worst, side[1], side[0]);
     CHECK(worst < 1e-3);
     CHECK(side[1] < 0.5 * side[0]);
+}
+
+/* The billows' own shade (tl_giant_spray_open): inside the landing's
+ * cloud, a billow's top (clear air TL_SPRAY_BURY_STEP over it) lets in
+ * more of the sky than its underside or a fold (a billow over it), and
+ * likewise toward the sun; outside the cloud all the light comes in. */
+static void test_landing_billow_shade(void)
+{
+    tl_scene s;
+    breaking_scene(&s, 10.0, 2.5, 0.0, 0.0);
+    tl_giant g;
+    tl_giant_prepare(&g, &s.giant, s.time);
+    tl_giant_spray sp;
+    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
+    const double el = 0.2, az = 2.8; /* low, behind the wave */
+    const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)}, up[3] = {0, 1, 0};
+    const double *lights[2] = {up, sun};
+    double w0 = s.giant.peak;
+    tl_giant_lip lip;
+    tl_giant_lip_at(&g, w0, base_of(&s), &lip);
+    CHECK(lip.present && lip.progress > 0.5);
+    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
+    double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
+    double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
+    double peak = TL_SPRAY_LANDING_GAIN * sp.amount;
+    /* [light][0: buried, 1: clear over it] */
+    double sum[2][2] = {{0, 0}, {0, 0}};
+    int n[2][2] = {{0, 0}, {0, 0}};
+    for (int iw = 0; iw < 20; iw++)
+        for (int i = -20; i <= 20; i++)
+            for (int j = -20; j <= 20; j++) {
+                double w = w0 - 5.0 + 0.5 * iw, ps = cs + 0.25 * i, py = cy + 0.25 * j;
+                double x = g.origin[0] + g.dir[0] * ps + g.across[0] * w;
+                double z = g.origin[1] + g.dir[1] * ps + g.across[1] * w;
+                if (tl_giant_spray_density(&sp, &g, x, py, z, 0.0) < 0.5 * peak)
+                    continue; /* inside a billow only */
+                for (int l = 0; l < 2; l++) {
+                    const double *L = lights[l], step = TL_SPRAY_BURY_STEP;
+                    double o = tl_giant_spray_open(&sp, &g, x, py, z, 0.0, L);
+                    CHECK(o >= 1.0 - TL_SPRAY_BURY - 1e-12 && o <= 1.0);
+                    double over = tl_giant_spray_density(&sp, &g, x + step * L[0], py + step * L[1],
+                                                         z + step * L[2], 0.0);
+                    if (over < 0.1 * peak || over > 0.9 * peak) {
+                        sum[l][over < 0.1 * peak] += o;
+                        n[l][over < 0.1 * peak]++;
+                    }
+                }
+            }
+    double ps = cs + 4.0 * lip.radius; /* far ahead of the cloud */
+    double far_open = tl_giant_spray_open(&sp, &g, g.origin[0] + g.dir[0] * ps + g.across[0] * w0,
+                                          cy, g.origin[1] + g.dir[1] * ps + g.across[1] * w0, 0.0,
+                                          up);
+    for (int l = 0; l < 2; l++)
+        for (int k = 0; k < 2; k++) {
+            CHECK(n[l][k] > 20);
+            sum[l][k] /= n[l][k] > 0 ? n[l][k] : 1;
+        }
+    printf("landing's billows let in of the sky %.3f at their tops, %.3f under a billow; of the "
+           "sun %.3f and %.3f; %.3f outside the cloud\n",
+           sum[0][1], sum[0][0], sum[1][1], sum[1][0], far_open);
+    CHECK(sum[0][1] > sum[0][0] + 0.3 * TL_SPRAY_BURY);
+    CHECK(sum[1][1] > sum[1][0] + 0.3 * TL_SPRAY_BURY);
+    CHECK(far_open == 1.0);
 }
 
 /* Only a tall stretch of the crest throws a lip: none where the envelope
@@ -968,8 +1033,8 @@ static void test_gpu_mirror(tl_renderer *r)
         CHECK(u.features & TL_FEATURE_GIANT_SPRAY);
         enum { N = 48 };
         float in4[4 * N], lip4[4 * N], ang4[4 * N], spray4[4 * N], dist4[4 * N];
-        double shade[N];
-        const double sun[3] = {u.sun_dir[0], u.sun_dir[1], u.sun_dir[2]};
+        double shade[N], open_sun[N], open_sky[N];
+        const double sun[3] = {u.sun_dir[0], u.sun_dir[1], u.sun_dir[2]}, up[3] = {0.0, 1.0, 0.0};
         tl_giant_lip cpu[N];
         double density[N];
         tl_giant_spray sp;
@@ -1000,6 +1065,8 @@ static void test_gpu_mirror(tl_renderer *r)
             double span = 0.6 * (i % 5);
             density[i] = tl_giant_spray_density(&sp, &g, x, y, z, span);
             shade[i] = tl_giant_spray_shade(&sp, &g, x, y, z, sun);
+            open_sun[i] = tl_giant_spray_open(&sp, &g, x, y, z, span, sun);
+            open_sky[i] = tl_giant_spray_open(&sp, &g, x, y, z, span, up);
             in4[4 * i + 0] = (float)(x - s.camera.position[0]);
             in4[4 * i + 1] = (float)(z - s.camera.position[2]);
             in4[4 * i + 2] = (float)y;
@@ -1020,8 +1087,8 @@ static void test_gpu_mirror(tl_renderer *r)
          * centre line), as the CPU's. */
         double worst = 0.0, worst_angle = 0.0, worst_density = 0.0, landing = 0.0;
         double worst_distance = 0.0, worst_lump = 0.0, worst_shade = 0.0, most_shade = 0.0;
-        double burst = 0.0;
-        int present = 0, rough = 0;
+        double burst = 0.0, worst_open = 0.0;
+        int present = 0, rough = 0, buried = 0;
         for (int i = 0; i < N; i++) {
             CHECK((ang4[4 * i + 3] > 0.5) == cpu[i].present);
             if (!cpu[i].present)
@@ -1036,6 +1103,9 @@ static void test_gpu_mirror(tl_renderer *r)
             worst_shade =
                 fmax(worst_shade, fabs(spray4[4 * i + 1] - shade[i]) / fmax(shade[i], 1.0));
             most_shade = fmax(most_shade, shade[i]);
+            worst_open = fmax(worst_open, fabs(spray4[4 * i + 2] - open_sun[i]));
+            worst_open = fmax(worst_open, fabs(spray4[4 * i + 3] - open_sky[i]));
+            buried += open_sun[i] < 0.99 || open_sky[i] < 0.99;
             /* The tube's signed distance there and its lumps (the point's
              * (s, y) back from its world position, as the GPU has it). */
             double x = in4[4 * i + 0] + s.camera.position[0],
@@ -1058,9 +1128,10 @@ static void test_gpu_mirror(tl_renderer *r)
         }
         printf("t = %g s, %g m out: lip %d of %d, |GPU - CPU| %.3g m, %.3g rad; spray %.3g; "
                "distance %.3g m, lumps %.3g (%d points rough); shade %.3g (up to %.3g; in the "
-               "burst %.3g)\n",
+               "burst %.3g); billows' light %.3g (%d points shaded)\n",
                s.time, hypot(where[k][1], where[k][2]), present, N, worst, worst_angle,
-               worst_density, worst_distance, worst_lump, rough, worst_shade, most_shade, burst);
+               worst_density, worst_distance, worst_lump, rough, worst_shade, most_shade, burst,
+               worst_open, buried);
         CHECK(present > N / 2);
         CHECK(worst <= 1e-3);
         CHECK(worst_angle <= 1e-4);
@@ -1068,6 +1139,7 @@ static void test_gpu_mirror(tl_renderer *r)
               2e-3 * TL_SPRAY_PLUME_GAIN * (1.0 + TL_SPRAY_ROOT_GAIN) * s.giant.spray);
         CHECK(worst_distance <= 1e-3 && worst_lump <= 1e-3 && rough > 0);
         CHECK(worst_shade <= 2e-3);
+        CHECK(worst_open <= 2e-3);
         CHECK(landing > 0.1);             /* the landing's cloud is among the points compared */
         CHECK(!crossing || burst > 0.02); /* and the crossing's burst (a clot of it) */
     }
@@ -1198,6 +1270,7 @@ int main(void)
     test_burst_torn_mean();
     test_landing_billow_mean();
     test_landing_shade();
+    test_landing_billow_shade();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);

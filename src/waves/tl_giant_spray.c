@@ -221,9 +221,10 @@ static bool landing_at(const tl_giant_spray *sp, const tl_giant_lip *lip, double
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip->spent);
     *ts = lip->center[0] + lip->radius * (TL_GIANT_LIP_THROW * sin(lip->to) + ahead) - s;
     *ty = lip->center[1] + lip->radius * (cos(lip->to) + TL_SPRAY_SPLASH_RISE * lip->spent) - y;
-    *r = TL_SPRAY_LANDING_RADIUS * lip->radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip->spent);
-    *peak = TL_SPRAY_LANDING_GAIN * sp->amount * tl_smoothstep(0.5, 1.0, lip->progress) *
-            (1.0 - lip->spent * lip->spent);
+    *r = TL_SPRAY_LANDING_RADIUS * lip->radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip->spent) *
+         (TL_SPRAY_LANDING_SEED +
+          (1.0 - TL_SPRAY_LANDING_SEED) * tl_smoothstep(0.5, 1.0, lip->progress));
+    *peak = TL_SPRAY_LANDING_GAIN * sp->amount * (1.0 - lip->spent * lip->spent);
     return true;
 }
 
@@ -301,7 +302,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double ts, ty, r, peak;
         if (landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak)) {
             density +=
-                peak * tl_giant_spray_billows(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
+                peak * tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
         }
     }
     if (sp->bow_amount > 0.0) {
@@ -312,7 +313,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
     return density;
 }
 
-double tl_giant_spray_billows(double envelope, double w, double ts, double ty)
+double tl_giant_spray_billow_field(double envelope, double w, double ts, double ty)
 {
     /* Two noises in crossed planes multiplied, round lumps about 1.6 m
      * across in all three directions, with a finer grain. A noise of one
@@ -321,10 +322,57 @@ double tl_giant_spray_billows(double envelope, double w, double ts, double ty)
     double billow =
         tl_noise_value(w / 1.6 + 5.0, ts / 1.6) * tl_noise_value(w / 1.6 - 2.0, ty / 1.6 + 4.0);
     double grain = tl_noise_value(w / 0.5 - 3.0, (ts + ty) / 0.5);
+    return (0.8 + 0.2 * grain) * billow + 0.1 * grain +
+           TL_SPRAY_LANDING_CLOSE * (sqrt(envelope) - TL_SPRAY_LANDING_OPEN);
+}
+
+double tl_giant_spray_billows(double envelope, double w, double ts, double ty)
+{
     double cover = sqrt(envelope);
-    return cover * tl_smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
-                                 (0.8 + 0.2 * grain) * billow + 0.1 * grain +
-                                     TL_SPRAY_LANDING_CLOSE * (cover - TL_SPRAY_LANDING_OPEN));
+    return tl_smoothstep(TL_SPRAY_LANDING_EDGE_FROM, TL_SPRAY_LANDING_EDGE_TO, cover) *
+           tl_smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
+                         tl_giant_spray_billow_field(envelope, w, ts, ty));
+}
+
+double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty)
+{
+    return tl_giant_spray_billows(envelope, w, ts, ty) + TL_SPRAY_LANDING_MIST * sqrt(envelope);
+}
+
+/* What of a light along (ls, ly) in the crest's cross-section and lw
+ * across it a billow at (w, ts, ty) of a cloud of radius r lets in. */
+static double billow_open(double w, double ts, double ty, double r, double ls, double lw,
+                          double ly)
+{
+    double s2 = ts - TL_SPRAY_BURY_STEP * ls, y2 = ty - TL_SPRAY_BURY_STEP * ly;
+    double field = tl_giant_spray_billow_field(exp(-(s2 * s2 + y2 * y2) / (r * r)),
+                                               w + TL_SPRAY_BURY_STEP * lw, s2, y2);
+    return 1.0 - TL_SPRAY_BURY * tl_smoothstep(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO, field);
+}
+
+double tl_giant_spray_open(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                           double z, double span, const double light[3])
+{
+    if (!sp->active)
+        return 1.0;
+    double rx = x - g->origin[0], rz = z - g->origin[1];
+    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
+    if (!(fabs(w) < g->half_width && s >= sp->box[0] && s <= sp->box[1] && y >= sp->box[2] &&
+          y <= sp->box[3]))
+        return 1.0;
+    tl_giant_lip lip;
+    tl_giant_lip_at(g, w, sp->base, &lip);
+    double ts, ty, r, peak;
+    if (!landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak))
+        return 1.0;
+    double b = tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
+    if (!(b > 0.1) || !(peak > 0.0))
+        return 1.0;
+    double ls = light[0] * g->dir[0] + light[2] * g->dir[1],
+           lw = light[0] * g->across[0] + light[2] * g->across[1];
+    double open = billow_open(w, ts, ty, r, ls, lw, light[1]);
+    double share = peak * b / tl_giant_spray_density(sp, g, x, y, z, span);
+    return 1.0 + (open - 1.0) * share;
 }
 
 double tl_giant_spray_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,

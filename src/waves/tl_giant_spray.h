@@ -112,8 +112,13 @@
 #define TL_SPRAY_SPLASH_AHEAD   0.6
 /* The landing's whitewater's density per unit of giant.spray: an
  * opaque, churning cloud, not a veil (at 30, seen against the sky from
- * the low shot, it read as steam). */
+ * the low shot, it read as steam). It has all of it from the moment the
+ * lip lands, and grows instead: its radius starts at
+ * TL_SPRAY_LANDING_SEED of the full one and reaches it as the throw ends
+ * (faded in by density, the growing cloud was a veil the sky showed
+ * through: "steam", judges). */
 #define TL_SPRAY_LANDING_GAIN 60.0
+#define TL_SPRAY_LANDING_SEED 0.3
 /* The landing's billows: where crossed noises pass from
  * TL_SPRAY_LANDING_TEAR_FROM to _TO, a billow's edge. Toward the cloud's
  * edge the billows shrink rather than fade alike, and its core closes: its
@@ -125,9 +130,28 @@
 #define TL_SPRAY_LANDING_TEAR_TO   0.3
 #define TL_SPRAY_LANDING_CLOSE     0.8
 #define TL_SPRAY_LANDING_OPEN      0.75
+/* The billows are whole, at the cloud's full density, wherever its
+ * coverage is over TL_SPRAY_LANDING_EDGE_TO, and come in from
+ * TL_SPRAY_LANDING_EDGE_FROM at its edge: whitewater is opaque lumps with
+ * hard edges, and only its fringe is mist. Billows that thinned with the
+ * envelope were see-through over most of the cloud (judges: steam). The
+ * mist round them: TL_SPRAY_LANDING_MIST of the peak times the coverage. */
+#define TL_SPRAY_LANDING_EDGE_FROM 0.05
+#define TL_SPRAY_LANDING_EDGE_TO   0.3
+#define TL_SPRAY_LANDING_MIST      0.03
+/* The billows' own shade: the billows' field (before its edge is drawn)
+ * TL_SPRAY_BURY_STEP metres toward a light (the sun, the sky overhead),
+ * passing from TL_SPRAY_BURY_FROM to _TO, takes up to TL_SPRAY_BURY of
+ * that light: a lump's top is lit, its underside and the folds between
+ * lumps are not. Lit alike, the opaque cloud was a flat white or, in the
+ * wave's shadow, a flat grey-blue cut-out. */
+#define TL_SPRAY_BURY_STEP 0.6
+#define TL_SPRAY_BURY      0.6
+#define TL_SPRAY_BURY_FROM 0.1
+#define TL_SPRAY_BURY_TO   0.6
 /* The billowed cloud's mass over its envelope's (test_giant_lip measures
  * it): what its self-shade takes for the billows. */
-#define TL_SPRAY_LANDING_MEAN 0.59
+#define TL_SPRAY_LANDING_MEAN 0.85
 /* The lip's free edge tears into droplets while it throws: a tube along
  * the crest round the tip of its arc, TL_SPRAY_TIP_RADIUS of the lip's
  * radius across, TL_SPRAY_TIP_GAIN per unit of giant.spray at its middle,
@@ -215,10 +239,27 @@ void tl_giant_hull_of(tl_giant_hull *hull, const tl_boat *b);
  * profile in height, x the height over its middle and r its rise. */
 double tl_giant_spray_layer(double x, double r, double span);
 
-/* The landing's density over its peak for its Gaussian `envelope` (0 ..
- * 1) at w across the crest, (ts, ty) from the cloud's centre: its billows
- * (TL_SPRAY_LANDING_TEAR_*, _CLOSE, _OPEN). */
+/* The landing's billows' field for its Gaussian `envelope` (0 .. 1) at w
+ * across the crest, (ts, ty) from the cloud's centre: crossed noises
+ * shifted by its coverage (TL_SPRAY_LANDING_CLOSE, _OPEN); a billow is
+ * where it is over TL_SPRAY_LANDING_TEAR_FROM .. _TO. */
+double tl_giant_spray_billow_field(double envelope, double w, double ts, double ty);
+
+/* Billows' density over their peak there (TL_SPRAY_LANDING_TEAR_*,
+ * _EDGE_*): the lip's torn edge's and its landing's. */
 double tl_giant_spray_billows(double envelope, double w, double ts, double ty);
+
+/* The landing's density over its peak there: its billows and their mist
+ * (TL_SPRAY_LANDING_MIST). */
+double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty);
+
+/* How much of a light along unit `light` (world) the landing's billows
+ * let reach world (x, y, z): 1 - TL_SPRAY_BURY at most taken where the
+ * billows' field TL_SPRAY_BURY_STEP toward the light is inside a billow,
+ * weighed by the landing's share of the spray's density there (`span` as
+ * for tl_giant_spray_density). 1 where the point holds no billow. */
+double tl_giant_spray_open(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
+                           double z, double span, const double light[3]);
 
 /* The plume's gust at w metres across the crest: its lift's and its
  * density's factor, 1 - TL_SPRAY_GUST .. 1 + TL_SPRAY_GUST. */
