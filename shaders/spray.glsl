@@ -20,8 +20,9 @@ float giant_spray_layer(float x, float r, float span)
 
 // The landing's billows' field at w across the crest, (ts, ty) from its
 // centre: round lumps (two noises in crossed planes multiplied, with a
-// finer grain), shifted up in its core (tl_giant_spray_billow_field).
-float giant_spray_billow_field(float envelope, float w, float ts, float ty)
+// finer grain), shifted up in its core (tl_giant_spray.c's
+// billow_coarse).
+float giant_spray_billow_coarse(float envelope, float w, float ts, float ty)
 {
     float billow = foam_noise(vec2(w / 1.6 + 5.0, ts / 1.6)) *
                    foam_noise(vec2(w / 1.6 - 2.0, ty / 1.6 + 4.0));
@@ -30,13 +31,35 @@ float giant_spray_billow_field(float envelope, float w, float ts, float ty)
            TL_SPRAY_LANDING_CLOSE * (sqrt(envelope) - TL_SPRAY_LANDING_OPEN);
 }
 
+// The smaller lumps on them, TL_SPRAY_LANDING_FINE_LOW ..
+// TL_SPRAY_LANDING_FINE_HIGH (billow_fine).
+float giant_spray_billow_fine(float w, float ts, float ty)
+{
+    float fine = foam_noise(vec2(w / 0.6 + 1.3, ts / 0.6)) *
+                 foam_noise(vec2(w / 0.6 - 4.1, ty / 0.6 + 2.2));
+    float finer = foam_noise(vec2(w / 0.25 + 7.7, (ts - ty) / 0.25));
+    return TL_SPRAY_LANDING_FINE * (fine - 0.25) + TL_SPRAY_LANDING_FINER * (finer - 0.5);
+}
+
+// smoothstep(lo, hi) of the field: the smaller lumps are taken only where
+// they can change it (tl_giant_spray.c's billow_ramp).
+float giant_spray_billow_ramp(float lo, float hi, float envelope, float w, float ts, float ty)
+{
+    float coarse = giant_spray_billow_coarse(envelope, w, ts, ty);
+    if (coarse + TL_SPRAY_LANDING_FINE_HIGH <= lo)
+        return 0.0;
+    if (coarse + TL_SPRAY_LANDING_FINE_LOW >= hi)
+        return 1.0;
+    return smoothstep(lo, hi, coarse + giant_spray_billow_fine(w, ts, ty));
+}
+
 // Billows' density over their peak: whole, with hard edges, fewer toward
 // the cloud's edge (tl_giant_spray_billows).
 float giant_spray_billows(float envelope, float w, float ts, float ty)
 {
     return smoothstep(TL_SPRAY_LANDING_EDGE_FROM, TL_SPRAY_LANDING_EDGE_TO, sqrt(envelope)) *
-           smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
-                      giant_spray_billow_field(envelope, w, ts, ty));
+           giant_spray_billow_ramp(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO, envelope,
+                                   w, ts, ty);
 }
 
 // What of a light along unit `light` a billow at (w, ts, ty) of a cloud
@@ -47,9 +70,9 @@ float giant_spray_billow_open(float w, float ts, float ty, float r, vec3 light)
     vec2 d = u_giant_frame.xy;
     float ls = dot(d, light.xz), lw = dot(vec2(d.y, -d.x), light.xz);
     float s2 = ts - TL_SPRAY_BURY_STEP * ls, y2 = ty - TL_SPRAY_BURY_STEP * light.y;
-    float field = giant_spray_billow_field(exp(-(s2 * s2 + y2 * y2) / (r * r)),
-                                           w + TL_SPRAY_BURY_STEP * lw, s2, y2);
-    return 1.0 - TL_SPRAY_BURY * smoothstep(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO, field);
+    return 1.0 - TL_SPRAY_BURY * giant_spray_billow_ramp(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO,
+                                                         exp(-(s2 * s2 + y2 * y2) / (r * r)),
+                                                         w + TL_SPRAY_BURY_STEP * lw, s2, y2);
 }
 
 // Density (0 or more) at camera-relative p (y absolute); `span`:

@@ -313,7 +313,8 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
     return density;
 }
 
-double tl_giant_spray_billow_field(double envelope, double w, double ts, double ty)
+/* The field less its smaller lumps. */
+static double billow_coarse(double envelope, double w, double ts, double ty)
 {
     /* Two noises in crossed planes multiplied, round lumps about 1.6 m
      * across in all three directions, with a finer grain. A noise of one
@@ -326,12 +327,34 @@ double tl_giant_spray_billow_field(double envelope, double w, double ts, double 
            TL_SPRAY_LANDING_CLOSE * (sqrt(envelope) - TL_SPRAY_LANDING_OPEN);
 }
 
+/* Smaller lumps on them, 0.6 m (crossed) and 0.25 m, cut their edges into
+ * cauliflower: smooth 1.6 m lumps alone read as cotton wool (judge).
+ * TL_SPRAY_LANDING_FINE_LOW .. _HIGH. */
+static double billow_fine(double w, double ts, double ty)
+{
+    double fine =
+        tl_noise_value(w / 0.6 + 1.3, ts / 0.6) * tl_noise_value(w / 0.6 - 4.1, ty / 0.6 + 2.2);
+    double finer = tl_noise_value(w / 0.25 + 7.7, (ts - ty) / 0.25);
+    return TL_SPRAY_LANDING_FINE * (fine - 0.25) + TL_SPRAY_LANDING_FINER * (finer - 0.5);
+}
+
+/* smoothstep(lo, hi) of the field, the smaller lumps taken only where
+ * they can change it (the same value: the shader's saves their noise). */
+static double billow_ramp(double lo, double hi, double envelope, double w, double ts, double ty)
+{
+    double coarse = billow_coarse(envelope, w, ts, ty);
+    if (coarse + TL_SPRAY_LANDING_FINE_HIGH <= lo)
+        return 0.0;
+    if (coarse + TL_SPRAY_LANDING_FINE_LOW >= hi)
+        return 1.0;
+    return tl_smoothstep(lo, hi, coarse + billow_fine(w, ts, ty));
+}
+
 double tl_giant_spray_billows(double envelope, double w, double ts, double ty)
 {
     double cover = sqrt(envelope);
     return tl_smoothstep(TL_SPRAY_LANDING_EDGE_FROM, TL_SPRAY_LANDING_EDGE_TO, cover) *
-           tl_smoothstep(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO,
-                         tl_giant_spray_billow_field(envelope, w, ts, ty));
+           billow_ramp(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO, envelope, w, ts, ty);
 }
 
 double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty)
@@ -345,9 +368,9 @@ static double billow_open(double w, double ts, double ty, double r, double ls, d
                           double ly)
 {
     double s2 = ts - TL_SPRAY_BURY_STEP * ls, y2 = ty - TL_SPRAY_BURY_STEP * ly;
-    double field = tl_giant_spray_billow_field(exp(-(s2 * s2 + y2 * y2) / (r * r)),
-                                               w + TL_SPRAY_BURY_STEP * lw, s2, y2);
-    return 1.0 - TL_SPRAY_BURY * tl_smoothstep(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO, field);
+    return 1.0 - TL_SPRAY_BURY * billow_ramp(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO,
+                                             exp(-(s2 * s2 + y2 * y2) / (r * r)),
+                                             w + TL_SPRAY_BURY_STEP * lw, s2, y2);
 }
 
 double tl_giant_spray_open(const tl_giant_spray *sp, const tl_giant *g, double x, double y,

@@ -122,14 +122,21 @@
 /* The landing's billows: where crossed noises pass from
  * TL_SPRAY_LANDING_TEAR_FROM to _TO, a billow's edge. Toward the cloud's
  * edge the billows shrink rather than fade alike, and its core closes: its
- * coverage c (the square root of its Gaussian envelope) scales them and
- * shifts the noise by TL_SPRAY_LANDING_CLOSE · (c − TL_SPRAY_LANDING_OPEN).
+ * coverage c (the square root of its Gaussian envelope) shifts the noise
+ * by TL_SPRAY_LANDING_CLOSE · (c − TL_SPRAY_LANDING_OPEN).
  * Faded alike, the whitewater was a soft mist the sky showed through, a
  * cotton ball (judges). */
 #define TL_SPRAY_LANDING_TEAR_FROM 0.2
 #define TL_SPRAY_LANDING_TEAR_TO   0.3
 #define TL_SPRAY_LANDING_CLOSE     0.8
 #define TL_SPRAY_LANDING_OPEN      0.75
+/* The smaller lumps' shares of the field (0.6 m, 0.25 m;
+ * billow_fine in tl_giant_spray.c), and the least and most they add to it
+ * (the noises are 0 .. 1; their product's mean is 0.25). */
+#define TL_SPRAY_LANDING_FINE      0.35
+#define TL_SPRAY_LANDING_FINER     0.12
+#define TL_SPRAY_LANDING_FINE_LOW  (-0.25 * TL_SPRAY_LANDING_FINE - 0.5 * TL_SPRAY_LANDING_FINER)
+#define TL_SPRAY_LANDING_FINE_HIGH (0.75 * TL_SPRAY_LANDING_FINE + 0.5 * TL_SPRAY_LANDING_FINER)
 /* The billows are whole, at the cloud's full density, wherever its
  * coverage is over TL_SPRAY_LANDING_EDGE_TO, and come in from
  * TL_SPRAY_LANDING_EDGE_FROM at its edge: whitewater is opaque lumps with
@@ -151,7 +158,7 @@
 #define TL_SPRAY_BURY_TO   0.6
 /* The billowed cloud's mass over its envelope's (test_giant_lip measures
  * it): what its self-shade takes for the billows. */
-#define TL_SPRAY_LANDING_MEAN 0.85
+#define TL_SPRAY_LANDING_MEAN 0.88
 /* The lip's free edge tears into droplets while it throws: a tube along
  * the crest round the tip of its arc, TL_SPRAY_TIP_RADIUS of the lip's
  * radius across, TL_SPRAY_TIP_GAIN per unit of giant.spray at its middle,
@@ -239,14 +246,12 @@ void tl_giant_hull_of(tl_giant_hull *hull, const tl_boat *b);
  * profile in height, x the height over its middle and r its rise. */
 double tl_giant_spray_layer(double x, double r, double span);
 
-/* The landing's billows' field for its Gaussian `envelope` (0 .. 1) at w
- * across the crest, (ts, ty) from the cloud's centre: crossed noises
- * shifted by its coverage (TL_SPRAY_LANDING_CLOSE, _OPEN); a billow is
- * where it is over TL_SPRAY_LANDING_TEAR_FROM .. _TO. */
-double tl_giant_spray_billow_field(double envelope, double w, double ts, double ty);
-
-/* Billows' density over their peak there (TL_SPRAY_LANDING_TEAR_*,
- * _EDGE_*): the lip's torn edge's and its landing's. */
+/* Billows' density over their peak for their Gaussian `envelope` (0 ..
+ * 1) at w across the crest, (ts, ty) from the cloud's centre: where a
+ * field of crossed noises with smaller lumps on them, shifted by the
+ * coverage (TL_SPRAY_LANDING_CLOSE, _OPEN, _FINE*), passes
+ * TL_SPRAY_LANDING_TEAR_FROM .. _TO, with the edge TL_SPRAY_LANDING_EDGE_*:
+ * the lip's torn edge's and its landing's. */
 double tl_giant_spray_billows(double envelope, double w, double ts, double ty);
 
 /* The landing's density over its peak there: its billows and their mist
