@@ -146,7 +146,7 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud, o
                                                   tip_y * TL_SPRAY_TIP_SCALE);
         }
         // Where the lip lands, whitewater erupts.
-        if (lip.present && lip.progress > 0.5) {
+        if (lip.present && lip.progress > TL_SPRAY_LANDING_FROM) {
             float ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
             float ts = lip.center.x + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead) - sw.x;
             float ty =
@@ -154,7 +154,7 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud, o
             float r = TL_SPRAY_LANDING_RADIUS * lip.radius *
                       (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent) *
                       (TL_SPRAY_LANDING_SEED +
-                       (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep(0.5, 1.0, lip.progress));
+                       (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep(TL_SPRAY_LANDING_FROM, 1.0, lip.progress));
             float landing = TL_SPRAY_LANDING_GAIN * u_giant_spray.x * (1.0 - lip.spent * lip.spent);
             // Its own shade (tl_giant_spray_landing_shade): the envelope
             // integrated toward the sun in closed form.

@@ -865,13 +865,13 @@ static void test_landing_shade(void)
     double w = s.giant.peak;
     tl_giant_lip lip;
     tl_giant_lip_at(&g, w, base_of(&s), &lip);
-    CHECK(lip.present && lip.progress > 0.5);
+    CHECK(lip.present && lip.progress > TL_SPRAY_LANDING_FROM);
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
     double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
     double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
     double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent) *
                (TL_SPRAY_LANDING_SEED +
-                (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep_test(0.5, 1.0, lip.progress));
+                (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep_test(TL_SPRAY_LANDING_FROM, 1.0, lip.progress));
     double vs = sun[0] * g.dir[0] + sun[2] * g.dir[1];
     double worst = 0.0, side[2];
     for (int k = -1; k <= 1; k++) {
@@ -919,7 +919,7 @@ static void test_landing_billow_shade(void)
     double w0 = s.giant.peak;
     tl_giant_lip lip;
     tl_giant_lip_at(&g, w0, base_of(&s), &lip);
-    CHECK(lip.present && lip.progress > 0.5);
+    CHECK(lip.present && lip.progress > TL_SPRAY_LANDING_FROM);
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
     double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
     double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);

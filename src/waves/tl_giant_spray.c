@@ -216,14 +216,14 @@ static double tip_density(const tl_giant_spray *sp, const tl_giant_lip *lip, dou
 static bool landing_at(const tl_giant_spray *sp, const tl_giant_lip *lip, double s, double y,
                        double *ts, double *ty, double *r, double *peak)
 {
-    if (!lip->present || !(lip->progress > 0.5))
+    if (!lip->present || !(lip->progress > TL_SPRAY_LANDING_FROM))
         return false;
     double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip->spent);
     *ts = lip->center[0] + lip->radius * (TL_GIANT_LIP_THROW * sin(lip->to) + ahead) - s;
     *ty = lip->center[1] + lip->radius * (cos(lip->to) + TL_SPRAY_SPLASH_RISE * lip->spent) - y;
     *r = TL_SPRAY_LANDING_RADIUS * lip->radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip->spent) *
          (TL_SPRAY_LANDING_SEED +
-          (1.0 - TL_SPRAY_LANDING_SEED) * tl_smoothstep(0.5, 1.0, lip->progress));
+          (1.0 - TL_SPRAY_LANDING_SEED) * tl_smoothstep(TL_SPRAY_LANDING_FROM, 1.0, lip->progress));
     *peak = TL_SPRAY_LANDING_GAIN * sp->amount * (1.0 - lip->spent * lip->spent);
     return true;
 }

@@ -119,6 +119,12 @@
  * through: "steam", judges). */
 #define TL_SPRAY_LANDING_GAIN 60.0
 #define TL_SPRAY_LANDING_SEED 0.3
+/* The whitewater erupts once the throw passes TL_SPRAY_LANDING_FROM, as
+ * the lip's tip comes down to the face (until then its torn edge alone
+ * sprays). From half the throw, a cloud hung in the air beside the lip
+ * while it was still thrown and hid its curl ("steam drifting sideways,
+ * detached from the lip", a judge). */
+#define TL_SPRAY_LANDING_FROM 0.8
 /* The landing's billows: where crossed noises pass from
  * TL_SPRAY_LANDING_TEAR_FROM to _TO, a billow's edge. Toward the cloud's
  * edge the billows shrink rather than fade alike, and its core closes: its
