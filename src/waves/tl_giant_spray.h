@@ -46,16 +46,20 @@
  * horizon (judge): at 0.8 the lulls between gusts open it. */
 #define TL_SPRAY_GUST      0.8
 #define TL_SPRAY_GUST_CELL 9.0
-/* Between its streaks the plume keeps this share of its density: with
- * none, the crest's dark top showed through the gaps as a dotted kerb; at
- * 0.65 the plume was one even veil, a fog rather than streaks torn off the
- * crest (judges). */
-#define TL_SPRAY_WISP_FLOOR 0.3
+/* Between its streaks the plume keeps this share of its density. At 0.65
+ * the plume was one even veil, a fog rather than streaks torn off the
+ * crest (judges); at 0.3, seen from above toward a low sun, still a flat
+ * white haze over the sea behind the crest ("not thin backlit veils", a
+ * judge). With none, the crest's dark top once showed through the gaps as
+ * a dotted kerb; the gusts and the plume's root now close them there. */
+#define TL_SPRAY_WISP_FLOOR 0.0
 /* The spray is densest where it leaves the crest: 1 + TL_SPRAY_ROOT_GAIN
  * times the plume's density there, falling back to the plume's over
- * TL_SPRAY_ROOT_REACH of its reach. Thinner, the veil over the crest's
- * rounded top let it through as a brown-grey stripe (judges). */
-#define TL_SPRAY_ROOT_GAIN  2.0
+ * TL_SPRAY_ROOT_REACH of its reach. With no root, the veil over the
+ * crest's rounded top let it through as a brown-grey stripe (judges); at
+ * 2, seen from above toward a low sun, the root itself was that stripe:
+ * warm light scattered over the dark trough behind the crest (a judge). */
+#define TL_SPRAY_ROOT_GAIN  1.0
 #define TL_SPRAY_ROOT_REACH 0.25
 /* Where the crest passes under a hull, the hull has broken its top, and
  * no spindrift comes off that stretch: the plume is gone within
