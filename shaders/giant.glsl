@@ -295,11 +295,13 @@ float giant_stringer_field(float s0, float w)
 // the trail's texture stays where the crest left it (world coordinates,
 // wrapped every 65536 m on the CPU).
 // The spent foam's film (giant_foam): its whiteness at most, its nets'
-// cells in metres (coarse, fine) and how much narrower they are across the
-// crest than along the travel.
+// cells in metres (coarse, fine), the fine net's share of the coarse's
+// whiteness and how much narrower they are across the crest than along
+// the travel.
 #define TL_GIANT_FILM         0.3
 #define TL_GIANT_FILM_CELL    1.6
 #define TL_GIANT_FILM_FINE    0.5
+#define TL_GIANT_FILM_FINE_SHARE 0.3
 #define TL_GIANT_FILM_STRETCH 1.7
 float giant_foam(GiantSample g, float ocean_value, float footprint, out float thickness,
                  out float aerated)
@@ -413,7 +415,7 @@ float giant_foam(GiantSample g, float ocean_value, float footprint, out float th
         float coarse = foam_net(film_at / TL_GIANT_FILM_CELL + 1.6 * warp, 0.12,
                                 pixel / TL_GIANT_FILM_CELL) *
                        smoothstep(0.45, 0.75, foam_lace(at * 3.1 + vec2(1.3, 5.5)) + 0.5 * detail);
-        float fine = 0.7 * foam_net(film_at / TL_GIANT_FILM_FINE +
+        float fine = TL_GIANT_FILM_FINE_SHARE * foam_net(film_at / TL_GIANT_FILM_FINE +
                                         1.2 * vec2(detail, foam_lace(at * 4.0)),
                                     0.15, pixel / TL_GIANT_FILM_FINE) *
                      smoothstep(0.35, 0.65, foam_lace(at * 2.2 + vec2(8.1, 0.9)) + 0.5 * detail);
