@@ -847,6 +847,26 @@ static void test_landing_billow_mean(void)
     CHECK(fabs(ratio - TL_SPRAY_LANDING_MEAN) < 0.1 * TL_SPRAY_LANDING_MEAN);
 }
 
+/* A landed lip 2.5 s into the break, at the peak: the scene, its wave,
+ * spray and lip, the landing cloud's middle (cs, cy) in the crest's
+ * cross-section, and a low sun behind the wave. */
+static void landing_scene(tl_scene *s, tl_giant *g, tl_giant_spray *sp, tl_giant_lip *lip,
+                          double *cs, double *cy, double sun[3])
+{
+    breaking_scene(s, 10.0, 2.5, 0.0, 0.0);
+    tl_giant_prepare(g, &s->giant, s->time);
+    tl_giant_spray_prepare(sp, g, 1.5, 8.0, s->time, s->ocean.depth, NULL);
+    tl_giant_lip_at(g, s->giant.peak, base_of(s), lip);
+    CHECK(lip->present && lip->progress > TL_SPRAY_LANDING_FROM);
+    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip->spent);
+    *cs = lip->center[0] + lip->radius * (TL_GIANT_LIP_THROW * sin(lip->to) + ahead);
+    *cy = lip->center[1] + lip->radius * (cos(lip->to) + TL_SPRAY_SPLASH_RISE * lip->spent);
+    const double el = 0.2, az = 2.8;
+    sun[0] = cos(el) * sin(az);
+    sun[1] = sin(el);
+    sun[2] = cos(el) * cos(az);
+}
+
 /* The landing's self-shade (tl_giant_spray_landing_shade) is its
  * envelope's optical depth toward the sun: the closed form matches a
  * midpoint sum of the envelope's density (noise at its mean) along the
@@ -855,23 +875,16 @@ static void test_landing_billow_mean(void)
 static void test_landing_shade(void)
 {
     tl_scene s;
-    breaking_scene(&s, 10.0, 2.5, 0.0, 0.0);
     tl_giant g;
-    tl_giant_prepare(&g, &s.giant, s.time);
     tl_giant_spray sp;
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
-    const double el = 0.2, az = 2.8; /* low, behind the wave */
-    const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)};
-    double w = s.giant.peak;
     tl_giant_lip lip;
-    tl_giant_lip_at(&g, w, base_of(&s), &lip);
-    CHECK(lip.present && lip.progress > TL_SPRAY_LANDING_FROM);
-    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
-    double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
-    double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
-    double r = TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent) *
-               (TL_SPRAY_LANDING_SEED +
-                (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep_test(TL_SPRAY_LANDING_FROM, 1.0, lip.progress));
+    double cs, cy, sun[3];
+    landing_scene(&s, &g, &sp, &lip, &cs, &cy, sun);
+    double w = s.giant.peak;
+    double r =
+        TL_SPRAY_LANDING_RADIUS * lip.radius * (1.0 + TL_SPRAY_SPLASH_GROW * lip.spent) *
+        (TL_SPRAY_LANDING_SEED +
+         (1.0 - TL_SPRAY_LANDING_SEED) * smoothstep_test(TL_SPRAY_LANDING_FROM, 1.0, lip.progress));
     double vs = sun[0] * g.dir[0] + sun[2] * g.dir[1];
     double worst = 0.0, side[2];
     for (int k = -1; k <= 1; k++) {
@@ -908,21 +921,13 @@ static void test_landing_shade(void)
 static void test_landing_billow_shade(void)
 {
     tl_scene s;
-    breaking_scene(&s, 10.0, 2.5, 0.0, 0.0);
     tl_giant g;
-    tl_giant_prepare(&g, &s.giant, s.time);
     tl_giant_spray sp;
-    tl_giant_spray_prepare(&sp, &g, 1.5, 8.0, s.time, s.ocean.depth, NULL);
-    const double el = 0.2, az = 2.8; /* low, behind the wave */
-    const double sun[3] = {cos(el) * sin(az), sin(el), cos(el) * cos(az)}, up[3] = {0, 1, 0};
-    const double *lights[2] = {up, sun};
-    double w0 = s.giant.peak;
     tl_giant_lip lip;
-    tl_giant_lip_at(&g, w0, base_of(&s), &lip);
-    CHECK(lip.present && lip.progress > TL_SPRAY_LANDING_FROM);
-    double ahead = TL_SPRAY_SPLASH_AHEAD * (0.3 + 0.7 * lip.spent);
-    double cs = lip.center[0] + lip.radius * (TL_GIANT_LIP_THROW * sin(lip.to) + ahead);
-    double cy = lip.center[1] + lip.radius * (cos(lip.to) + TL_SPRAY_SPLASH_RISE * lip.spent);
+    double cs, cy, sun[3];
+    landing_scene(&s, &g, &sp, &lip, &cs, &cy, sun);
+    const double up[3] = {0, 1, 0}, *lights[2] = {up, sun};
+    double w0 = s.giant.peak;
     double peak = TL_SPRAY_LANDING_GAIN * sp.amount;
     /* [light][0: buried, 1: clear over it] */
     double sum[2][2] = {{0, 0}, {0, 0}};
@@ -948,9 +953,9 @@ static void test_landing_billow_shade(void)
                 }
             }
     double ps = cs + 4.0 * lip.radius; /* far ahead of the cloud */
-    double far_open = tl_giant_spray_open(&sp, &g, g.origin[0] + g.dir[0] * ps + g.across[0] * w0,
-                                          cy, g.origin[1] + g.dir[1] * ps + g.across[1] * w0, 0.0,
-                                          up);
+    double far_open =
+        tl_giant_spray_open(&sp, &g, g.origin[0] + g.dir[0] * ps + g.across[0] * w0, cy,
+                            g.origin[1] + g.dir[1] * ps + g.across[1] * w0, 0.0, up);
     for (int l = 0; l < 2; l++)
         for (int k = 0; k < 2; k++) {
             CHECK(n[l][k] > 20);

@@ -250,7 +250,7 @@ GLuint tl_renderer_build_program(tl_renderer *r, const char *vs, const char *fs,
  * CPU, one line each), one line per feature and a program's own lines,
  * with room to spare: a full buffer is refused with an error (a frame with
  * every feature under water found the last limit), never cut short. */
-#define TL_DEFINES_SIZE 8192
+#define TL_DEFINES_SIZE 12288
 /* The shared #defines and one per feature bit into out; 0, or -1 when they
  * do not fit (the caller then fails rather than compile a cut-off line). */
 int tl_renderer_defines(unsigned features, char *out, size_t size);

@@ -228,20 +228,30 @@ static bool landing_at(const tl_giant_spray *sp, const tl_giant_lip *lip, double
     return true;
 }
 
+/* The landing cloud as seen from world (x, y, z) in the spray's box: the
+ * point's w and landing_at's values; false outside the box or where the
+ * lip there has no landing. */
+static bool landing_near(const tl_giant_spray *sp, const tl_giant *g, double x, double y, double z,
+                         double *w, double *ts, double *ty, double *r, double *peak)
+{
+    if (!sp->active)
+        return false;
+    double rx = x - g->origin[0], rz = z - g->origin[1];
+    double s = g->dir[0] * rx + g->dir[1] * rz;
+    *w = g->across[0] * rx + g->across[1] * rz;
+    if (!(fabs(*w) < g->half_width && s >= sp->box[0] && s <= sp->box[1] && y >= sp->box[2] &&
+          y <= sp->box[3]))
+        return false;
+    tl_giant_lip lip;
+    tl_giant_lip_at(g, *w, sp->base, &lip);
+    return landing_at(sp, &lip, s, y, ts, ty, r, peak);
+}
+
 double tl_giant_spray_landing_shade(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
                                     double z, const double sun[3])
 {
-    if (!sp->active)
-        return 0.0;
-    double rx = x - g->origin[0], rz = z - g->origin[1];
-    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
-    if (!(fabs(w) < g->half_width && s >= sp->box[0] && s <= sp->box[1] && y >= sp->box[2] &&
-          y <= sp->box[3]))
-        return 0.0;
-    tl_giant_lip lip;
-    tl_giant_lip_at(g, w, sp->base, &lip);
-    double ts, ty, r, peak;
-    if (!landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak))
+    double w, ts, ty, r, peak;
+    if (!landing_near(sp, g, x, y, z, &w, &ts, &ty, &r, &peak))
         return 0.0;
     /* Toward the sun the point's (s, y) moves by v per metre, so the
      * offset to the cloud's middle is q - v t; with u = |v| t, a = q·v/|v|
@@ -364,8 +374,7 @@ double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty
 
 /* What of a light along (ls, ly) in the crest's cross-section and lw
  * across it a billow at (w, ts, ty) of a cloud of radius r lets in. */
-static double billow_open(double w, double ts, double ty, double r, double ls, double lw,
-                          double ly)
+static double billow_open(double w, double ts, double ty, double r, double ls, double lw, double ly)
 {
     double s2 = ts - TL_SPRAY_BURY_STEP * ls, y2 = ty - TL_SPRAY_BURY_STEP * ly;
     return 1.0 - TL_SPRAY_BURY * billow_ramp(TL_SPRAY_BURY_FROM, TL_SPRAY_BURY_TO,
@@ -376,17 +385,8 @@ static double billow_open(double w, double ts, double ty, double r, double ls, d
 double tl_giant_spray_open(const tl_giant_spray *sp, const tl_giant *g, double x, double y,
                            double z, double span, const double light[3])
 {
-    if (!sp->active)
-        return 1.0;
-    double rx = x - g->origin[0], rz = z - g->origin[1];
-    double s = g->dir[0] * rx + g->dir[1] * rz, w = g->across[0] * rx + g->across[1] * rz;
-    if (!(fabs(w) < g->half_width && s >= sp->box[0] && s <= sp->box[1] && y >= sp->box[2] &&
-          y <= sp->box[3]))
-        return 1.0;
-    tl_giant_lip lip;
-    tl_giant_lip_at(g, w, sp->base, &lip);
-    double ts, ty, r, peak;
-    if (!landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak))
+    double w, ts, ty, r, peak;
+    if (!landing_near(sp, g, x, y, z, &w, &ts, &ty, &r, &peak))
         return 1.0;
     double b = tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
     if (!(b > 0.1) || !(peak > 0.0))
