@@ -14,6 +14,18 @@
 #define TL_SPRAY_ALBEDO    0.9
 #define TL_SPRAY_DIFFUSE   0.6
 
+// The share of the sun's light scattered many times inside a dense cloud
+// that gets through an optical depth `shade` of it toward the sun: the
+// two-stream diffusion's 1 / (1 + 3/4 (1 - g) shade). Most of it goes on
+// forward through a thick cloud, so a backlit whitewater glows on its far
+// side; as the square root of the direct light's exp(-shade), the far
+// side of the landing's cloud, lit by the sky alone, was a grey-blue
+// puff no brighter than the sky behind it ("steam", "cotton", judges).
+float spray_many_through(float shade)
+{
+    return 1.0 / (1.0 + 0.75 * (1.0 - TL_SPRAY_PHASE_G) * shade);
+}
+
 // Where in its segment a spray march's steps sample, in [0, 1): a hash
 // of the pixel, the same every frame (a frame renders alike alone or in a
 // sequence), different between neighbours (no blotches where the same
@@ -159,8 +171,9 @@ vec3 bow_spray_one(int o, vec3 ray, float dist, vec3 color)
         float density = bow_spray_density(o, p);
         float step_trans = exp(-TL_SPRAY_SIGMA * density * dt);
         float many = TL_SPRAY_DIFFUSE / TL_PI * smoothstep(1.0, 4.0, density);
-        float shaded = density > 0.0 ? exp(-bow_spray_shade(o, p)) : 1.0;
-        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) + ambient);
+        float shade = density > 0.0 ? bow_spray_shade(o, p) : 0.0;
+        vec3 light = TL_SPRAY_ALBEDO *
+                     (sun * (phase * exp(-shade) + many * spray_many_through(shade)) + ambient);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }

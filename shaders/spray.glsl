@@ -230,7 +230,7 @@ float giant_spray_density(vec3 p, float span)
 // landing's tall box, against wisps under a metre: each pixel's few
 // samples found other wisps, a grain like asphalt over the back of the
 // wave.
-#define TL_SPRAY_SHADE_WATER 4.0
+#define TL_SPRAY_SHADE_WATER 2.0
 // The lip's spray is marched TL_SPRAY_CLOUD_REFINE times finer than
 // quality.spray_step, in at most TL_SPRAY_CLOUD_STEPS parts of a step,
 // where a step could hold an optical depth over TL_SPRAY_CLOUD_FROM of it;
@@ -320,17 +320,18 @@ vec3 giant_spray(vec3 ray, float dist, vec3 color)
         // alone, was a faint grey puff. The water crossed is taken as
         // TL_SPRAY_SHADE_WATER metres: marched toward the sun once a ray it
         // looked alike and cost a third more over the lip's frames; over
-        // 10 m the whitewater was tinted into cyan smoke.
+        // 10 m the whitewater was tinted into cyan smoke, over 4 m mint
+        // (the curtain and the lip it comes through are a metre or two).
         float sunlit = density > 0.0 ? giant_sunlit(p.xz, p.y) : 1.0;
         vec3 through = max(vec3(sunlit), dense * exp(-u_giant_sigma * TL_SPRAY_SHADE_WATER));
         // The landing's and the burst's own shade dims the sun's single
-        // scattering, and its many scatterings less (they carry light in
-        // from the lit side); the billows' own shade dims the sun's and
-        // the sky's light alike.
-        float shaded = exp(-shade);
-        vec3 light = TL_SPRAY_ALBEDO * (sun * (phase * shaded + many * sqrt(shaded)) * through *
-                                            open.x +
-                                        ambient * open.y);
+        // scattering, and its many scatterings far less (they carry light
+        // on from the lit side, spray_many_through); the billows' own shade
+        // dims the sun's and the sky's light alike.
+        vec3 light = TL_SPRAY_ALBEDO *
+                     (sun * (phase * exp(-shade) + many * spray_many_through(shade)) * through *
+                          open.x +
+                      ambient * open.y);
         scattered += trans * (1.0 - step_trans) * light;
         trans *= step_trans;
     }
