@@ -204,8 +204,11 @@ static void prepare_giant(const tl_scene *s, const tl_waves *w, const tl_giant *
     u->giant_fade = (float)g.fade;
     double sun[3];
     tl_scene_sun_direction(&s->sun, sun);
-    if (s->giant.scatter > 0.0 && sun[1] > -0.05) /* giant_scatter's daylight */
+    if (s->giant.scatter > 0.0 && sun[1] > -0.05) { /* giant_scatter's daylight */
         u->features |= TL_FEATURE_GIANT_GLOW;
+        /* What of the light through the crest is still the sun's beam. */
+        u->water_scattering = (float)s->water.scattering;
+    }
     /* The far side's ripples focus the light through the crest only while
      * the sun is up (caustic_focus is 1 below the horizon). */
     if ((u->features & TL_FEATURE_GIANT_GLOW) && sun[1] > 0.0 && s->giant.caustics > 0.0) {

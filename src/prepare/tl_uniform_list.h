@@ -106,7 +106,7 @@
     X(VEC2, giant_rise, 0, TL_FEATURE_GIANT_WAVE, "s where the wave reaches the camera's height (empty: none)") \
     X(VEC3, water_sigma, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "extinction per metre, R G B") \
     X(VEC3, water_fall, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "the light from above: its fall per metre down, R G B") \
-    X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR | TL_FEATURE_GIANT_CAUSTICS, "per metre, grey") \
+    X(FLOAT, water_scattering, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR | TL_FEATURE_GIANT_CAUSTICS | TL_FEATURE_GIANT_GLOW, "per metre, grey") \
     X(FLOAT, beam_spread, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "radians the sun's beam under the water spreads: the waves' tilt and the sun's disc") \
     X(FLOAT, capillary_slope_var, 0, TL_FEATURE_UNDERWATER | TL_FEATURE_SEA_FLOOR, "water.capillaries: the slope variance per axis of the ripples finer than the waves") \
     X(FLOAT, cam_depth, 0, TL_FEATURE_UNDERWATER, "metres below the surface at the camera") \
