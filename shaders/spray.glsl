@@ -62,6 +62,30 @@ float giant_spray_billows(float envelope, float w, float ts, float ty)
                                    w, ts, ty);
 }
 
+// Where the landing's jets can be, 0 .. 1, and their direction from the
+// impact (tl_giant_spray.c's jet_reach).
+float giant_spray_jet_reach(float ts, float ty, float r, out vec2 dir)
+{
+    vec2 j = vec2(-ts, TL_SPRAY_JET_DROP * r - ty); // forward and up from the impact
+    float rho = length(j);
+    dir = rho > 1.0e-9 ? j / rho : vec2(0.0);
+    return smoothstep(TL_SPRAY_JET_FROM * r, TL_SPRAY_JET_IN * r, rho) *
+           (1.0 - smoothstep(TL_SPRAY_JET_OUT * r, TL_SPRAY_JET_END * r, rho)) *
+           smoothstep(-0.2, 0.4, dir.y);
+}
+
+// The landing's jets over its peak (tl_giant_spray_jets).
+float giant_spray_jets(float w, float ts, float ty, float r)
+{
+    vec2 dir;
+    float reach = giant_spray_jet_reach(ts, ty, r, dir);
+    if (!(reach > 0.0))
+        return 0.0;
+    float streak = foam_noise(vec2(6.0 * dir.x + w / 1.2, 6.0 * dir.y + 3.3)) *
+                   foam_noise(vec2(15.0 * dir.x - 1.7, 15.0 * dir.y + w / 0.5));
+    return TL_SPRAY_JET * reach * smoothstep(0.35, 0.6, streak);
+}
+
 // What of a light along unit `light` a billow at (w, ts, ty) of a cloud
 // of radius r lets in: its field TL_SPRAY_BURY_STEP toward the light
 // (tl_giant_spray.c's billow_open).
@@ -165,12 +189,14 @@ float giant_spray_sample(vec3 p, float span, out float shade, out float cloud, o
                     sqrt(TL_PI) * r * (1.0 + spray_erf(a / r)) / max(len, 0.1);
             float envelope = exp(-(ts * ts + ty * ty) / (r * r));
             float cover = sqrt(envelope);
+            vec2 jet_dir;
+            float jet_reach = giant_spray_jet_reach(ts, ty, r, jet_dir);
             cloud = max(cloud, landing * (smoothstep(TL_SPRAY_LANDING_EDGE_FROM,
                                                      TL_SPRAY_LANDING_EDGE_TO, cover) +
-                                          TL_SPRAY_LANDING_MIST * cover));
-            // Its billows in their mist (tl_giant_spray_whitewater).
-            float billows =
-                giant_spray_billows(envelope, sw.y, ts, ty) + TL_SPRAY_LANDING_MIST * cover;
+                                          TL_SPRAY_LANDING_MIST * cover + TL_SPRAY_JET * jet_reach));
+            // Its billows in their mist, and its jets (tl_giant_spray_whitewater).
+            float billows = giant_spray_billows(envelope, sw.y, ts, ty) +
+                            TL_SPRAY_LANDING_MIST * cover + giant_spray_jets(sw.y, ts, ty, r);
             density += landing * billows;
             if (billows > 0.1 && landing > 0.0) {
                 billowed = landing * billows;

@@ -838,7 +838,7 @@ static void test_landing_billow_mean(void)
                 double ts = 2.5 * r * (2.0 * (j + 0.5) / 100.0 - 1.0);
                 double ty = 2.5 * r * (2.0 * (k + 0.5) / 100.0 - 1.0);
                 double e = exp(-(ts * ts + ty * ty) / (r * r));
-                billowed += tl_giant_spray_whitewater(e, w, ts, ty);
+                billowed += tl_giant_spray_whitewater(e, w, ts, ty, r);
                 envelope += e;
             }
     double ratio = billowed / envelope;
@@ -967,6 +967,48 @@ static void test_landing_billow_shade(void)
     CHECK(sum[0][1] > sum[0][0] + 0.3 * TL_SPRAY_BURY);
     CHECK(sum[1][1] > sum[1][0] + 0.3 * TL_SPRAY_BURY);
     CHECK(far_open == 1.0);
+}
+
+/* The landing's jets (tl_giant_spray_jets) radiate from the impact: in
+ * their whole shell a point's density is its direction's, whatever its
+ * distance (a streak, not a lump); over the directions some carry a jet
+ * and some none; none point down (a direction whose downward part is over
+ * 0.2, past the gate's soft edge), none reach past TL_SPRAY_JET_END radii
+ * or start within TL_SPRAY_JET_FROM. */
+static void test_landing_jets(void)
+{
+    const double r = 5.0, drop = TL_SPRAY_JET_DROP * r;
+    int jets = 0, gaps = 0;
+    double worst = 0.0, down = 0.0, beyond = 0.0;
+    for (int k = 0; k < 180; k++) {
+        double a = M_PI * k / 179.0; /* forward (0) through up to back (pi) */
+        double dx = cos(a), dy = sin(a);
+        for (int iw = 0; iw < 4; iw++) {
+            double w = 3.1 * iw;
+            /* (ts, ty) of a point rho along the direction from the impact */
+            double near = tl_giant_spray_jets(w, -dx * TL_SPRAY_JET_IN * r,
+                                              drop - dy * TL_SPRAY_JET_IN * r, r);
+            double far = tl_giant_spray_jets(w, -dx * TL_SPRAY_JET_OUT * r,
+                                             drop - dy * TL_SPRAY_JET_OUT * r, r);
+            worst = fmax(worst, fabs(near - far));
+            if (dy > 0.5) {
+                jets += near > 0.5 * TL_SPRAY_JET;
+                gaps += near == 0.0;
+            }
+            if (dy >= 0.2) /* down more than the gate's soft edge */
+                down = fmax(down, tl_giant_spray_jets(w, -dx * r, drop + dy * r, r));
+            beyond = fmax(beyond, tl_giant_spray_jets(w, -dx * TL_SPRAY_JET_END * r,
+                                                      drop - dy * TL_SPRAY_JET_END * r, r));
+            beyond = fmax(beyond, tl_giant_spray_jets(w, -dx * 0.9 * TL_SPRAY_JET_FROM * r,
+                                                      drop - 0.9 * dy * TL_SPRAY_JET_FROM * r, r));
+        }
+    }
+    printf("landing's jets: %d directions up with a jet, %d with none; along a direction %.2g "
+           "apart; pointing down %.2g, outside the shell %.2g\n",
+           jets, gaps, worst, down, beyond);
+    CHECK(jets > 20 && gaps > 20);
+    CHECK(worst < 1e-12);
+    CHECK(down == 0.0 && beyond == 0.0);
 }
 
 /* Only a tall stretch of the crest throws a lip: none where the envelope
@@ -1285,6 +1327,7 @@ int main(void)
     test_landing_billow_mean();
     test_landing_shade();
     test_landing_billow_shade();
+    test_landing_jets();
     test_rect_holds_lip();
     tl_gl_context *ctx = NULL;
     tl_renderer *r = gl_test_open(&ctx);

