@@ -180,8 +180,8 @@
 #define TL_SPRAY_BURY      0.6
 #define TL_SPRAY_BURY_FROM 0.1
 #define TL_SPRAY_BURY_TO   0.6
-/* The billowed cloud's mass over its envelope's (test_giant_lip measures
- * it): what its self-shade takes for the billows. */
+/* The whitewater's mass (billows, mist, jets) over its envelope's
+ * (test_giant_lip measures it): what its self-shade takes for them. */
 #define TL_SPRAY_LANDING_MEAN 0.94
 /* The lip's free edge tears into droplets while it throws: a tube along
  * the crest round the tip of its arc, TL_SPRAY_TIP_RADIUS of the lip's
