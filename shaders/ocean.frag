@@ -198,6 +198,27 @@ vec3 trace(vec3 ray, out float dist)
     return color;
 }
 
+#ifdef TL_FEATURE_SHAFTS
+// The light shafts (shafts.glsl), added once per pixel along its centre's
+// ray up to the nearest thing its samples met (the surface, the floor, a
+// hull), in the pixel's whole quad at once. They take light from some
+// places (focus < 1) and give it to others: a dim pixel's share cannot go
+// below nothing.
+vec4 add_shafts(vec4 color, float depth)
+{
+    vec3 ray = camera_ray(gl_FragCoord.xy);
+    float seen = 1.0; // the meniscus dims them as the rest of the light
+#ifdef TL_FEATURE_WATERLINE
+    float gap = underwater_lens_gap(ray);
+    seen = gap < 0.0 ? mix(0.35, 1.0, smoothstep(0.0, 0.015, -gap)) : 0.0;
+#endif
+    vec3 shafts = seen > 0.0 ? water_shafts(ray, depth) : vec3(0.0);
+    shafts = shafts_quad_mean(shafts) * seen;
+    color.rgb = max(color.rgb + layer_emit(TL_LIGHT_BODY, shafts) * color.a, vec3(0.0));
+    return color;
+}
+#endif
+
 #ifdef TL_MARCH_PREPASS
 // A level of the march prepass: the march alone, one ray at the centre of
 // each block of u_prepass_scale x u_prepass_scale pixels.
@@ -262,6 +283,9 @@ void main()
         aov_add_sample();
     aov_write(1.0, u_sample_weight);
 #endif
+#endif
+#ifdef TL_FEATURE_SHAFTS
+    color = add_shafts(color, depth);
 #endif
     out_color = color * u_sample_weight;
     out_depth = depth;

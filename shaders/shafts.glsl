@@ -6,7 +6,9 @@
 // TL_SHAFT_RANGE metres. It adds only the bundles' departure from the
 // even beam (focus - 1): water_inscatter has the even beam's light
 // exactly, so with the shafts off the frame is as without them, and they
-// leave the mean brightness as it was.
+// leave the mean brightness as it was. A frame adds them once per pixel,
+// after the rest of its light (ocean.frag), where every pixel of a 2 x 2
+// quad is at hand to share its samples (shafts_quad_mean).
 
 // Where in its ds a pixel's samples sit: interleaved gradient noise
 // (Jimenez 2014), whose every 3 x 3 block of pixels spreads its offsets
@@ -17,7 +19,16 @@
 float shaft_offset()
 {
     vec2 p = floor(gl_FragCoord.xy);
+#ifdef GL_ARB_derivative_control
+    // A quad's four pixels take the four quarters of one offset, which
+    // interleaved gradient noise picks per quad: their mean (shafts_quad_mean)
+    // is a march four times finer.
+    vec2 q = floor(p * 0.5), in_quad = p - 2.0 * q;
+    float quarter = in_quad.x * 0.5 + in_quad.y * (0.75 - in_quad.x);
+    return fract(fract(52.9829189 * fract(dot(q, vec2(0.06711056, 0.00583715)))) * 0.25 + quarter);
+#else
     return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+#endif
 }
 
 // The light the shafts add along `ray` (unit, from the eye) over its
@@ -48,4 +59,23 @@ vec3 water_shafts(vec3 ray, float dist)
         sum += (focus - 1.0) * water_sun_at(depth) * exp(-u_water_sigma * s);
     }
     return (u_shafts * u_water_scattering * water_phase(dot(u_sun_water, -ray)) * ds) * sum;
+}
+
+// The mean of `v` over the pixel's 2 x 2 quad, from fine derivatives: a
+// pixel's neighbour across x is v plus or minus dFdxFine(v) by its column's
+// parity, and so on for y. The quad's four offsets (shaft_offset) sit
+// near the quarters of a step, so the mean is a march four times finer,
+// at a quarter of the resolution, which the shafts (broad, soft) do not
+// need. Without it the pixel filter left a diagonal grid of dots. It must
+// be called where the whole quad runs (not in a branch). Where the driver
+// has only coarse derivatives the pixel keeps its own value.
+vec3 shafts_quad_mean(vec3 v)
+{
+#ifdef GL_ARB_derivative_control
+    vec2 parity = mod(floor(gl_FragCoord.xy), 2.0) * -2.0 + 1.0; // +1 even, -1 odd
+    vec3 column = v + 0.5 * parity.y * dFdyFine(v);
+    return column + 0.5 * parity.x * dFdxFine(column);
+#else
+    return v;
+#endif
 }

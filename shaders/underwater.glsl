@@ -108,13 +108,8 @@ vec3 trace_underwater(vec3 ray, out float dist)
 {
     vec3 eye = vec3(0.0, u_cam_height, 0.0);
     float t = underwater_march(ray, underwater_start(ray));
-    if (t < 0.0) {
-        vec3 below = underwater_below(eye, ray, true, dist);
-#ifdef TL_FEATURE_SHAFTS
-        below = max(below + layer_emit(TL_LIGHT_BODY, water_shafts(ray, dist)), vec3(0.0));
-#endif
-        return below;
-    }
+    if (t < 0.0)
+        return underwater_below(eye, ray, true, dist);
 #ifdef TL_FEATURE_POLISH
     t = surface_polish(ray, t);
 #endif
@@ -201,11 +196,5 @@ vec3 trace_underwater(vec3 ray, out float dist)
     surface = mix(surface, layer_emit(TL_LIGHT_FOAM, foam_light), foam) +
               foam_bubbles(aerated, u_scatter_color, sunlit);
 #endif
-    vec3 color = surface * optics_water_transmittance(t) + water_inscatter(max(-u_cam_height, 0.0), ray, t);
-#ifdef TL_FEATURE_SHAFTS
-    // The shafts take light from some samples (focus < 1) and give it to
-    // others: a dim pixel's share cannot go below nothing.
-    color = max(color + layer_emit(TL_LIGHT_BODY, water_shafts(ray, t)), vec3(0.0));
-#endif
-    return color;
+    return surface * optics_water_transmittance(t) + water_inscatter(max(-u_cam_height, 0.0), ray, t);
 }

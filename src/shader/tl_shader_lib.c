@@ -203,6 +203,10 @@ int tl_shader_compose(const tl_shader_lib *lib, const char *entry, const char *d
     memset(out, 0, sizeof *out);
     buffer b = {0};
     buf_append(&b, "#version 330 core\n", 18);
+    /* Fine derivatives, where the driver has them (core from GL 4.5): the
+     * shafts share their samples across each 2 x 2 quad of pixels. */
+    static const char derivative_control[] = "#extension GL_ARB_derivative_control : enable\n";
+    buf_append(&b, derivative_control, sizeof derivative_control - 1);
     if (defines)
         buf_append(&b, defines, strlen(defines));
     int rc = expand(lib, entry, 0, &b, out, err);
