@@ -26,14 +26,35 @@ float optics_fresnel(float cos_i, float n1, float n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
+// The share of a standard normal distribution below a: the normal CDF,
+// by Abramowitz and Stegun's 7.1.26 for erf (error under 1.5e-7; the CPU
+// mirror takes libm's erfc).
+float optics_normal_cdf(float a)
+{
+    float x = abs(a) * 0.70710678;
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+    float half_erfc = 0.5 * poly * exp(-x * x);
+    return a >= 0.0 ? 1.0 - half_erfc : half_erfc;
+}
+
 // optics_fresnel averaged over a rough surface: facets whose tilt in the
 // plane of incidence spreads by `spread` radians (standard deviation)
-// about the mean normal's, by three-point Gauss-Hermite quadrature. From
-// the water side it softens the edge of Snell's window, where the
-// reflectance leaps to 1, over the facets' spread.
+// about the mean normal's. From the water side (n1 > n2) it softens the
+// edge of Snell's window, where the reflectance leaps to 1: the facets
+// past the critical angle reflect all, the rest as at their mean tilt.
+// From the air, three-point Gauss-Hermite quadrature (tl_optics.h says why).
 float optics_fresnel_rough(float cos_i, float n1, float n2, float spread)
 {
     float theta = acos(min(abs(cos_i), 1.0));
+    if (n1 > n2 && spread > 0.0) {
+        float critical = asin(n2 / n1), a = (critical - theta) / spread;
+        float inside = optics_normal_cdf(a);
+        float density = exp(-0.5 * a * a) * 0.39894228;
+        float mean = theta - spread * density / max(inside, TL_FRESNEL_LEAST_SHARE);
+        mean = min(abs(mean), critical);
+        return 1.0 - inside + inside * optics_fresnel(cos(mean), n1, n2);
+    }
     float d = TL_FRESNEL_TAP * spread;
     return (2.0 / 3.0) * optics_fresnel(cos_i, n1, n2) +
            (1.0 / 6.0) * (optics_fresnel(cos(min(theta + d, 0.5 * TL_PI)), n1, n2) +

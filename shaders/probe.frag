@@ -136,6 +136,8 @@ void main()
         result.x = optics_fresnel(p.x, p.y, 1.0);
     else if (u_probe_mode == 25)
         result.x = optics_window_share(p.x, p.y);
+    else if (u_probe_mode == 32) // cos_i, n1, spread; into air
+        result.x = optics_fresnel_rough(input4.x, input4.y, 1.0, input4.z);
     else if (u_probe_mode == 27)
         result.x = optics_lamp_glint(p.x, p.y);
 #ifdef TL_FEATURE_UNDERWATER

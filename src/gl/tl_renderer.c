@@ -268,6 +268,7 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         "#define TL_SHAFT_SMOOTH %.17g\n"
         "#define TL_FLOOR_PERIOD %d\n"
         "#define TL_FRESNEL_TAP %.17g\n"
+        "#define TL_FRESNEL_LEAST_SHARE %.17g\n"
         "#define TL_WINDOW_PIXEL_SPREAD %.17g\n"
         "#define TL_WATER_PHASE_G %.17g\n"
         "#define TL_WATER_SKY_SCATTER %.17g\n"
@@ -317,8 +318,8 @@ int tl_renderer_defines(unsigned features, char *out, size_t size)
         TL_PARTICLE_RADIUS_MIN, TL_PARTICLE_RADIUS_MAX, TL_PARTICLE_EFFICIENCY,
         TL_PARTICLE_PIXEL_SPREAD, TL_PARTICLE_MAX_CELLS, TL_PARTICLE_FOCUS, TL_PARTICLE_PUPIL,
         TL_SHAFT_FOOTPRINT, TL_SHAFT_SMOOTH, TL_FLOOR_PERIOD, TL_FRESNEL_TAP,
-        TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER, TL_WATER_MIN_SUN_DOWN,
-        TL_WATER_MAX_OPTICAL);
+        TL_FRESNEL_LEAST_SHARE, TL_WINDOW_PIXEL_SPREAD, TL_WATER_PHASE_G, TL_WATER_SKY_SCATTER,
+        TL_WATER_MIN_SUN_DOWN, TL_WATER_MAX_OPTICAL);
     for (int i = 0; i < TL_FEATURE_COUNT && n > 0 && (size_t)n < size; i++)
         if (features & (1u << i))
             n += snprintf(out + n, size - (size_t)n, "#define %s 1\n", tl_feature_define(i));

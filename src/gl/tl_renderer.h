@@ -193,7 +193,7 @@ int tl_renderer_present_view(tl_renderer *r, int width, int height, int false_co
  * wave's shadow and its small waves' steepening, the foam's close-up detail) at
  * `count` input pairs, with the frame's uniforms and features; out4 gets
  * four floats per input. The GPU side of the tests. */
-#define TL_PROBE_MODE_MAX 31 /* modes run 0 .. this */
+#define TL_PROBE_MODE_MAX 32 /* modes run 0 .. this */
 int tl_renderer_probe(tl_renderer *r, const tl_frame_uniforms *u, int mode, const float *xy,
                       int count, int octaves, float *out4, tl_error *err);
 /* The same with four floats per input (the modes that read more than two:

@@ -17,6 +17,16 @@ double tl_optics_fresnel(double cos_i, double n1, double n2)
 double tl_optics_fresnel_rough(double cos_i, double n1, double n2, double spread)
 {
     double theta = acos(fmin(fabs(cos_i), 1.0));
+    if (n1 > n2 && spread > 0.0) {
+        /* Past the critical angle a facet reflects all; short of it, the
+         * facets' mean tilt there stands for them. */
+        double critical = asin(n2 / n1), a = (critical - theta) / spread;
+        double inside = 0.5 * erfc(-a * M_SQRT1_2); /* the share short of it */
+        double density = exp(-0.5 * a * a) / sqrt(2.0 * M_PI);
+        double mean = theta - spread * density / fmax(inside, TL_FRESNEL_LEAST_SHARE);
+        mean = fmin(fabs(mean), critical);
+        return 1.0 - inside + inside * tl_optics_fresnel(cos(mean), n1, n2);
+    }
     double d = TL_FRESNEL_TAP * spread;
     return 2.0 / 3.0 * tl_optics_fresnel(cos_i, n1, n2) +
            1.0 / 6.0 *

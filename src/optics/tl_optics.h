@@ -22,12 +22,21 @@ void tl_optics_sun_in_water(const double sun[3], double n, double dir[3]);
 /* The quadrature's taps sit this many spreads either side: three-point
  * Gauss-Hermite (sqrt 3), weights 1/6, 2/3, 1/6. */
 #define TL_FRESNEL_TAP 1.7320508075688772
+/* The least share of facets short of the critical angle whose mean tilt
+ * is taken (a guard against 0 / 0 deep in total internal reflection,
+ * where that share weighs nothing). */
+#define TL_FRESNEL_LEAST_SHARE 1e-9
 
 /* tl_optics_fresnel averaged over a rough surface whose facets' tilt in
  * the plane of incidence spreads by `spread` radians (standard deviation)
- * about the mean (shaders/optics.glsl has the same). Under water it
- * softens the edge of Snell's window. A tap past grazing is taken at
- * grazing. */
+ * about the mean (shaders/optics.glsl has the same). Under water (n1 >
+ * n2) it softens the edge of Snell's window: the facets past the critical
+ * angle (a normal distribution's tail, by erfc) reflect all, and the rest
+ * reflect as at their mean tilt (the truncated distribution's mean). Three
+ * taps about the mean tilt, as from the air, drew the edge as three steep
+ * steps, hard-edged bands of rust and olive around the window at dusk.
+ * From the air the taps serve (the reflectance is smooth there); a tap
+ * past grazing is taken at grazing. */
 double tl_optics_fresnel_rough(double cos_i, double n1, double n2, double spread);
 
 /* Half-angle of Snell's window seen from a medium of index n into air:
