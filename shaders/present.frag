@@ -26,6 +26,7 @@ uniform sampler2D u_distance;
 uniform sampler2D u_glare; // glare.frag's image (TL_PRESENT_GLARE)
 uniform ivec2 u_out_size; // the output, pixels
 uniform float u_exposure;
+uniform vec3 u_white_gain; // the white balance (tl_prepare_white_gain)
 uniform float u_bloom;
 #ifdef TL_PRESENT_LUT
 // An OpenColorIO display transform baked into a table over a log2 shaper
@@ -90,6 +91,9 @@ void main()
     out_color = vec4(u_bloom * glare, 1.0);
 #endif
 #endif
+    // The white balance, as a camera's: the display's alone (out_color,
+    // the EXR's, keeps the scene's light).
+    hdr *= u_white_gain;
 #ifdef TL_PRESENT_LUT
     out_display = vec4(clamp(display_lut(hdr * u_exposure), 0.0, 1.0), 1.0);
 #else

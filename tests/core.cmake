@@ -67,6 +67,7 @@ tl_add_test(test_particles SOURCES test_particles.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_water_depth SOURCES test_water_depth.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_polish SOURCES test_polish.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_glare SOURCES test_glare.c LIBS tideline_gl LABELS gl)
+tl_add_test(test_white_balance SOURCES test_white_balance.c LIBS tideline_gl LABELS gl)
 tl_add_test(test_sky SOURCES test_sky.c LIBS tideline_gl ARGS ${PROJECT_SOURCE_DIR}/tests/references LABELS gl)
 # The live preview under Xvfb (its own X server): same pixels as still, hot
 # reload, keys, dynamic resolution, no display.

@@ -776,9 +776,9 @@ static void test_hull_antialiased(tl_renderer *r, const tl_mesh *m)
         tl_prepare_boat_sample(&pass, k);
         rc = tl_renderer_accumulate_sample(r, &pass, 1.0f / 16.0f, 1, k, &err);
     }
+    const tl_display_settings display = tl_display_of(&u);
     if (!rc)
-        rc = tl_renderer_finish(r, &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
-                                TL_PLANES_ALL, &each, &err);
+        rc = tl_renderer_finish(r, &display, TL_PLANES_ALL, &each, &err);
     CHECK(rc == 0);
     double err_one = 0.0, err_each = 0.0;
     int pixels = box_errors(&ref, &one, &each, &err_one, &err_each); /* they differ at the hull */

@@ -172,11 +172,11 @@ static void test_queued_readback(tl_renderer *r)
         CHECK(tl_renderer_begin(r, u[k].width, u[k].height, u[k].out_width, u[k].out_height,
                                 &err) == 0);
         CHECK(tl_renderer_accumulate(r, &u[k], 1.0f, 1, &err) == 0);
-        CHECK(tl_renderer_finish_begin(
-                  r, &(tl_display_settings){u[k].exposure, u[k].bloom, u[k].pixel_filter},
-                  TL_PLANES_ALL, &err) == 0);
+        const tl_display_settings display = tl_display_of(&u[k]);
+        CHECK(tl_renderer_finish_begin(r, &display, TL_PLANES_ALL, &err) == 0);
     }
-    CHECK(tl_renderer_finish_begin(r, &(tl_display_settings){1, 0, 0}, TL_PLANES_ALL, &err) != 0);
+    CHECK(tl_renderer_finish_begin(r, &(tl_display_settings){1, 0, 0, {1, 1, 1}}, TL_PLANES_ALL,
+                                   &err) != 0);
     CHECK_STR_CONTAINS(err.message, "collect one first");
     int w = 0, h = 0;
     CHECK(tl_renderer_queued_size(r, &w, &h) == 2 && w == 160 && h == 96);
@@ -195,8 +195,8 @@ static void test_queued_readback(tl_renderer *r)
     CHECK(tl_frame_alloc(&small, 80, 48, &err) == 0);
     CHECK(tl_renderer_begin(r, 160, 96, 160, 96, &err) == 0);
     CHECK(tl_renderer_accumulate(r, &u[0], 1.0f, 1, &err) == 0);
-    CHECK(tl_renderer_finish_begin(r, &(tl_display_settings){1, 0, 0}, TL_PLANE_DISPLAY, &err) ==
-          0);
+    CHECK(tl_renderer_finish_begin(r, &(tl_display_settings){1, 0, 0, {1, 1, 1}}, TL_PLANE_DISPLAY,
+                                   &err) == 0);
     CHECK(tl_renderer_finish_end(r, &small, &err) != 0);
     CHECK_STR_CONTAINS(err.message, "does not match");
     CHECK(tl_renderer_queued_size(r, &w, &h) == 0);
@@ -542,9 +542,9 @@ static void test_refine(tl_renderer *r)
     int rc = tl_renderer_begin(r, u.width, u.height, u.out_width, u.out_height, &err);
     for (int k = 0; !rc && k < 8; k++)
         rc = tl_renderer_refine(r, &u, k, &err);
+    const tl_display_settings settings = tl_display_of(&u);
     if (!rc)
-        rc = tl_renderer_finish(r, &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
-                                TL_PLANES_ALL, &steps, &err);
+        rc = tl_renderer_finish(r, &settings, TL_PLANES_ALL, &steps, &err);
     CHECK(rc == 0);
     CHECK(tl_renderer_refine(r, &u, 8, &err) != 0); /* past the last sample */
     size_t n = (size_t)s.width * s.height;
@@ -612,9 +612,9 @@ static int render_path(tl_renderer *r, const tl_scene *s, int path, tl_frame *f)
         rc = path == 0   ? tl_renderer_accumulate(r, &u, 1.0f, 1, &err)
              : path == 1 ? tl_renderer_accumulate_sample(r, &u, 1.0f / (float)u.spp, 1, k, &err)
                          : tl_renderer_refine(r, &u, k, &err);
+    const tl_display_settings display = tl_display_of(&u);
     if (!rc)
-        rc = tl_renderer_finish(r, &(tl_display_settings){u.exposure, u.bloom, u.pixel_filter},
-                                TL_PLANES_ALL, f, &err);
+        rc = tl_renderer_finish(r, &display, TL_PLANES_ALL, f, &err);
     if (rc)
         fprintf(stderr, "render path %d: %s\n", path, err.message);
     return rc;

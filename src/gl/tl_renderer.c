@@ -876,8 +876,8 @@ int tl_renderer_render(tl_renderer *r, const tl_frame_uniforms *u, tl_frame *fra
     int rc = tl_renderer_begin(r, u->width, u->height, u->out_width, u->out_height, err);
     if (!rc)
         rc = tl_renderer_accumulate(r, u, 1.0f, 1, err);
+    const tl_display_settings display = tl_display_of(u);
     if (!rc)
-        rc = tl_renderer_finish(r, &(tl_display_settings){u->exposure, u->bloom, u->pixel_filter},
-                                TL_PLANES_ALL, frame, err);
+        rc = tl_renderer_finish(r, &display, TL_PLANES_ALL, frame, err);
     return rc;
 }

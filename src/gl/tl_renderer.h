@@ -23,7 +23,17 @@ typedef struct tl_display_settings {
     /* Sigma, in output pixels, of a 3x3 Gaussian over the tonemapped
      * display values (quality.pixel_filter; 0: none), after any upscale. */
     float pixel_filter;
+    float white_gain[3]; /* the white balance, per channel, before the exposure */
 } tl_display_settings;
+
+/* The display's settings a frame's uniforms carry. */
+static inline tl_display_settings tl_display_of(const tl_frame_uniforms *u)
+{
+    return (tl_display_settings){u->exposure,
+                                 u->bloom,
+                                 u->pixel_filter,
+                                 {u->white_gain[0], u->white_gain[1], u->white_gain[2]}};
+}
 
 int tl_renderer_create(tl_renderer **out, const tl_shader_lib *lib, tl_error *err);
 void tl_renderer_destroy(tl_renderer *r);

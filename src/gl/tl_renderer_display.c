@@ -297,6 +297,7 @@ static int display_pass(tl_renderer *r, const tl_display_settings *d, unsigned p
     }
     glUniform2i(tl_renderer_loc(program, "u_out_size"), w, h);
     glUniform1f(tl_renderer_loc(program, "u_exposure"), d->exposure);
+    glUniform3fv(tl_renderer_loc(program, "u_white_gain"), 1, d->white_gain);
     r->display_exposure = d->exposure;
     glUniform1f(tl_renderer_loc(program, "u_bloom"), bloom);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -828,6 +828,18 @@ void tl_prepare_boat_sample(tl_frame_uniforms *u, int sample)
 TL_FRAME_UNIFORMS(CHECK_ROW)
 #undef CHECK_ROW
 
+void tl_prepare_white_gain(const tl_scene *s, float gain[3])
+{
+    double sigma[3], fall[3], white[3];
+    tl_optics_water_extinction(&s->water, sigma);
+    tl_optics_water_fall(&s->water, sigma, fall);
+    for (int c = 0; c < 3; c++)
+        white[c] = s->white_point[c] * exp(-fall[c] * s->white_depth);
+    double y = 0.2126 * white[0] + 0.7152 * white[1] + 0.0722 * white[2];
+    for (int c = 0; c < 3; c++)
+        gain[c] = (float)fmin(fmax(y / white[c], 1.0 / TL_WHITE_GAIN_MAX), TL_WHITE_GAIN_MAX);
+}
+
 void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u)
 {
     memset(u, 0, sizeof *u);
@@ -933,6 +945,7 @@ void tl_prepare_frame(const tl_scene *s, const tl_waves *w, tl_frame_uniforms *u
     u->exposure = (float)(s->exposure * exp2(-s->ev));
     u->bloom = (float)s->bloom;
     u->pixel_filter = (float)s->quality.pixel_filter;
+    tl_prepare_white_gain(s, u->white_gain);
     tl_giant giant;
     tl_giant_prepare(&giant, &s->giant, s->time);
     prepare_giant(s, w, &giant, u);

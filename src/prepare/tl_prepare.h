@@ -216,9 +216,10 @@ typedef struct tl_frame_uniforms {
     float sun_intensity, sun_sharpness, sky_brightness;
     float fresnel_f0, scatter_color[3], scatter_strength, scatter_base;
     float normal_smooth_max, normal_smooth_rate, normal_smooth_gain;
-    float exposure;     /* render.exposure × 2^-render.ev: the display's scale */
-    float bloom;        /* render.bloom: the display's glare */
-    float pixel_filter; /* quality.pixel_filter: the display's Gaussian, sigma in pixels */
+    float exposure;      /* render.exposure × 2^-render.ev: the display's scale */
+    float bloom;         /* render.bloom: the display's glare */
+    float pixel_filter;  /* quality.pixel_filter: the display's Gaussian, sigma in pixels */
+    float white_gain[3]; /* the display's white balance (tl_prepare_white_gain) */
 
     /* The giant wave (TL_FEATURE_GIANT_WAVE), see shaders/giant.glsl:
      * frame = (dir.x, dir.z, s, w of the camera relative to the crest),
@@ -352,6 +353,13 @@ tl_water_side tl_prepare_water_side(const tl_scene *s, const tl_waves *w, const 
 
 /* Fills `u` from `scene` (validated by the caller). `waves` must have been
  * built from scene->ocean; it is passed in so callers reuse it per shot. */
+/* The display's white balance (render.white_point, render.white_depth):
+ * per channel, the white's luminance over its value, so the white shows
+ * neutral at its own luminance (von Kries scaling in linear Rec.709), each
+ * held within 1 / TL_WHITE_GAIN_MAX .. TL_WHITE_GAIN_MAX. */
+#define TL_WHITE_GAIN_MAX 1e4
+void tl_prepare_white_gain(const tl_scene *s, float gain[3]);
+
 void tl_prepare_frame(const tl_scene *scene, const tl_waves *waves, tl_frame_uniforms *u);
 
 /* Shifts the boat's projection (u->view_proj) by the centre of sample

@@ -293,7 +293,7 @@ int tl_render_frame_layers(tl_render *r, const tl_scene *scene, unsigned planes,
     scene_draw draw = {&u};
     if (!rc)
         rc = redraw_scene(r, &draw, err);
-    const tl_display_settings display = {u.exposure, u.bloom, u.pixel_filter};
+    const tl_display_settings display = tl_display_of(&u);
     if (!rc)
         rc = tl_renderer_finish(r->renderer, &display, planes, frame, err);
     if (!rc)
@@ -320,12 +320,16 @@ void tl_render_frame_scene(const tl_timeline *tl, double t, const tl_render_sett
         scene->camera = *settings->camera;
 }
 
-/* The display pass's settings from the scene's exposure, glare and pixel
- * filter. */
+/* The display pass's settings from the scene's exposure, glare, pixel
+ * filter and white balance. */
 static tl_display_settings display_of(const tl_scene *scene)
 {
-    return (tl_display_settings){(float)(scene->exposure * exp2(-scene->ev)), (float)scene->bloom,
-                                 (float)scene->quality.pixel_filter};
+    tl_display_settings d = {(float)(scene->exposure * exp2(-scene->ev)),
+                             (float)scene->bloom,
+                             (float)scene->quality.pixel_filter,
+                             {1.0f, 1.0f, 1.0f}};
+    tl_prepare_white_gain(scene, d.white_gain);
+    return d;
 }
 
 /* The display pass with the scene's settings, then the planes read back

@@ -14,6 +14,8 @@ void tl_scene_defaults(tl_scene *s)
     s->adapt_time = 1.0;
     s->ev = 0.0;
     s->bloom = 0.02;
+    s->white_point[0] = s->white_point[1] = s->white_point[2] = 1.0;
+    s->white_depth = 0.0;
 
     s->camera.position[0] = 0.0;
     s->camera.position[1] = 1.5;

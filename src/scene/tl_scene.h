@@ -263,6 +263,10 @@ typedef struct tl_boat {
     double wake_step;
 } tl_boat;
 
+/* render.white_depth's range, metres: deeper, the default water's red
+ * daylight is under 1e-9 of what came in, past any balance. */
+#define TL_WHITE_DEPTH_MAX 50.0
+
 typedef struct tl_scene {
     double time; /* seconds since the start of the timeline */
     int width, height;
@@ -274,6 +278,11 @@ typedef struct tl_scene {
     double auto_exposure;
     double adapt_time;
     double bloom; /* share of the light spread into glare in the display image */
+    /* The white balance (display only): the scene's colour shown as
+     * neutral, linear Rec.709 (1 1 1), times the daylight left after
+     * `white_depth` metres of the scene's water (0). */
+    double white_point[3];
+    double white_depth;
     tl_camera camera;
     tl_camera_rig rig; /* the camera as Blender gives it (camera.rotation_mode, .focal_length) */
     tl_sun sun;

@@ -38,6 +38,12 @@ static const tl_channel channels[] = {
          "seconds the metered exposure takes to adapt (a time constant; 0 at once)"),
     REAL("render.bloom", 1, TL_UNIT_NONE, 0.0, 1.0, bloom,
          "share of the light spread into glare in the display image (not EXR)"),
+    REAL("render.white_point", 3, TL_UNIT_NONE, 1e-6, 1e6, white_point,
+         "white balance: the scene's colour (linear R G B) the display shows as neutral, "
+         "as a camera balanced on a grey card (not EXR)"),
+    REAL("render.white_depth", 1, TL_UNIT_LENGTH, 0.0, TL_WHITE_DEPTH_MAX, white_depth,
+         "white balance under water: the daylight at this depth of the scene's water shows as "
+         "white (metres; 0 none; not EXR)"),
 
     REAL("camera.position", 3, TL_UNIT_LENGTH, -BIG, BIG, camera.position,
          "camera position x y z (metres; +Y up, +Z north)"),
