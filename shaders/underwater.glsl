@@ -68,16 +68,17 @@ uniform sampler2D u_boat_underside;          // the hulls below the water mirror
 uniform sampler2D u_boat_underside_distance; // the mirrored path's length from the eye
 
 // What the surface's underside mirrors at the water point `hit` (camera-
-// relative x z, y absolute), `t` along the view ray, its normal n: the
-// depths seen along the mirrored ray `down` (`water`), or a hull's part
-// below the water mirrored in the surface (the mesh pass drew it from the
-// eye's mirror image), dimmed on its way from the surface with the water's
-// light between; looked up where the pixel is, shifted by the facet's slope
-// as the reflection from above is (boat_reflect), less near the hull. Without it the hull's
+// relative x z, y absolute), `t` along the view ray: the depths seen along
+// the mirrored ray `down` (`water`), or a hull's part below the water
+// mirrored in the surface (the mesh pass drew it from the eye's mirror
+// image), dimmed on its way from the surface with the water's light
+// between; looked up where the pixel is, shifted by the slope of the
+// waves at TL_MIRROR_UNDER_DETAIL's detail as the reflection from above is
+// (boat_reflect), less near the hull. Without it the hull's
 // upper part, hidden from an eye just under the surface by the surface's
 // underside, left a band of water between the boat above the waterline
 // and its keel below.
-vec3 boat_underside(vec3 water, vec3 n, vec3 hit, vec3 down, float t)
+vec3 boat_underside(vec3 water, vec3 hit, vec3 down, float t)
 {
     vec2 size = vec2(textureSize(u_boat_underside, 0));
     // A facet tilted by a slope turns the mirrored ray by twice that, which
@@ -88,6 +89,8 @@ vec3 boat_underside(vec3 water, vec3 n, vec3 hit, vec3 down, float t)
     float reach = texelFetch(u_boat_underside, here, 0).a > 0.0
                       ? max(texelFetch(u_boat_underside_distance, here, 0).r - t, 0.0)
                       : t;
+    float value, slope_var;
+    vec3 n = water_normal(hit.xz, u_normal_epsilon, TL_MIRROR_UNDER_DETAIL, value, slope_var);
     vec2 shift = n.xz * 0.15 * min(1.0, 2.0 * reach / max(t + reach, 1.0e-6));
     shift *= min(1.0, TL_MIRROR_SHIFT / max(length(shift), 1.0e-6));
     ivec2 at = ivec2(clamp(gl_FragCoord.xy + shift * size.y, vec2(0.0), size - 1.0));
@@ -159,7 +162,7 @@ vec3 trace_underwater(vec3 ray, out float dist)
     float mirrored;
     vec3 depths = underwater_below(hit, down, false, mirrored);
 #ifdef TL_FEATURE_BOAT
-    depths = boat_underside(depths, n, hit, down, t);
+    depths = boat_underside(depths, hit, down, t);
 #endif
     vec3 surface = (1.0 - fresnel) * through + fresnel * depths;
 #if defined(TL_FEATURE_GIANT_WAVE) || defined(TL_FEATURE_WAKE)

