@@ -10,19 +10,19 @@
 // after the rest of its light (ocean.frag), where every pixel of a 2 x 2
 // quad is at hand to share its samples (shafts_quad_mean).
 
-// Where in its ds a pixel's samples sit: interleaved gradient noise
-// (Jimenez 2014), whose every 3 x 3 block of pixels spreads its offsets
-// over nearly the whole step, so the display's pixel filter averages
-// neighbours into a finer march. A hash (white noise) left a grain no
-// filter takes out; a 4 x 4 ordered dither a grid it does not (its
-// period is wider than the filter).
+// Where in its step a pixel's samples sit. With fine derivatives the four
+// pixels of a 2 x 2 quad take the four quarters of one offset, which
+// interleaved gradient noise (Jimenez 2014) picks per quad, and share
+// their samples (shafts_quad_mean). Without, each pixel takes interleaved
+// gradient noise alone, whose every 3 x 3 block of pixels spreads its
+// offsets over nearly the whole step, so the display's pixel filter
+// averages neighbours into a finer march; that left a diagonal grid of
+// dots. A hash (white noise) left a grain no filter takes out; a 4 x 4
+// ordered dither a grid it does not (its period is wider than the filter).
 float shaft_offset()
 {
     vec2 p = floor(gl_FragCoord.xy);
 #ifdef GL_ARB_derivative_control
-    // A quad's four pixels take the four quarters of one offset, which
-    // interleaved gradient noise picks per quad: their mean (shafts_quad_mean)
-    // is a march four times finer.
     vec2 q = floor(p * 0.5), in_quad = p - 2.0 * q;
     float quarter = in_quad.x * 0.5 + in_quad.y * (0.75 - in_quad.x);
     return fract(fract(52.9829189 * fract(dot(q, vec2(0.06711056, 0.00583715)))) * 0.25 + quarter);
@@ -64,7 +64,7 @@ vec3 water_shafts(vec3 ray, float dist)
 // The mean of `v` over the pixel's 2 x 2 quad, from fine derivatives: a
 // pixel's neighbour across x is v plus or minus dFdxFine(v) by its column's
 // parity, and so on for y. The quad's four offsets (shaft_offset) sit
-// near the quarters of a step, so the mean is a march four times finer,
+// in the four quarters of a step, so the mean is a march four times finer,
 // at a quarter of the resolution, which the shafts (broad, soft) do not
 // need. Without it the pixel filter left a diagonal grid of dots. It must
 // be called where the whole quad runs (not in a branch). Where the driver
